@@ -1,0 +1,250 @@
+// Copyright (c) 2026 The Point_set_curvatures authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Speed and memory of the core estimators (issue: core package).
+//
+// 1M points of an ellipsoid (random order), radius chosen for about 40 neighbours. In one
+// run, each timed several times (best kept):
+//   - bare traversal: build the sorted uniform grid and visit every pair within r, adding
+//     one coordinate (the floor of any fixed-radius estimator),
+//   - CGAL Kd_tree + Fuzzy_sphere visiting the same pairs (why the package uses a grid),
+//   - APSS and ASO, sequential and parallel.
+// Prints a Markdown table with seconds, ns per (point, neighbour) pair and ratios to the
+// bare traversal, the parallel speed-up, and the peak heap used by ASO beyond its input
+// and its result vector.
+//
+// usage: aso_speed [number_of_points=1000000] [repetitions=3] [--no-kdtree]
+
+#include "memory_counter.h"
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/estimate_apss_curvatures.h>
+#include <CGAL/estimate_aso_curvatures.h>
+
+#include <CGAL/Fuzzy_sphere.h>
+#include <CGAL/Kd_tree.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/spatial_sort.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <functional>
+#include <random>
+#include <string>
+#include <vector>
+
+typedef CGAL::Simple_cartesian<double> Kernel;
+typedef Kernel::Point_3 Point;
+typedef Kernel::Vector_3 Vector;
+typedef std::pair<Point, Vector> Oriented_point;
+typedef CGAL::First_of_pair_property_map<Oriented_point> Point_map;
+typedef CGAL::Second_of_pair_property_map<Oriented_point> Normal_map;
+
+namespace PSCi = CGAL::Point_set_curvatures::internal;
+
+// Ellipsoid x^2/a^2 + y^2/b^2 + z^2/c^2 = 1 sampled by normalising Gaussian vectors (not
+// uniform in area, which is fine for timing), outward normals.
+std::vector<Oriented_point> ellipsoid(std::size_t n, double a, double b, double c, unsigned seed)
+{
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> g(0, 1);
+  std::vector<Oriented_point> pts;
+  pts.reserve(n);
+  while(pts.size() < n)
+  {
+    double u[3] = {g(rng), g(rng), g(rng)};
+    const double l = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    if(l < 1e-12)
+      continue;
+    const Point p(a * u[0] / l, b * u[1] / l, c * u[2] / l);
+    Vector nrm(p.x() / (a * a), p.y() / (b * b), p.z() / (c * c));
+    nrm = nrm / std::sqrt(nrm.squared_length());
+    pts.emplace_back(p, nrm);
+  }
+  return pts;
+}
+
+// Surface area of the ellipsoid (Knud Thomsen's formula, 1% accurate).
+double ellipsoid_area(double a, double b, double c)
+{
+  const double p = 1.6075;
+  return 4 * M_PI *
+         std::pow((std::pow(a * b, p) + std::pow(a * c, p) + std::pow(b * c, p)) / 3, 1 / p);
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Bare traversal: sorted grid built as the estimators build it, then every pair within r.
+// Returns the sum of the x coordinates of all neighbours (so nothing is optimised away)
+// and the number of pairs.
+std::pair<double, std::size_t> bare_traversal(const std::vector<Oriented_point>& pts, double r)
+{
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+  for(const auto& p : pts)
+    for(int i = 0; i < 3; ++i)
+    {
+      lo[i] = std::min(lo[i], p.first[i]);
+      hi[i] = std::max(hi[i], p.first[i]);
+    }
+  PSCi::Neighbor_grid grid;
+  grid.set_geometry(lo, hi, r);
+  std::vector<PSCi::Neighbor_grid::Keyed_index> keyed(pts.size());
+  for(std::size_t i = 0; i < pts.size(); ++i)
+    keyed[i] = {grid.key(pts[i].first.x(), pts[i].first.y(), pts[i].first.z()),
+                static_cast<std::uint32_t>(i)};
+  std::sort(keyed.begin(), keyed.end());
+  grid.set_cells(keyed);
+  std::vector<double> xyz(3 * pts.size());
+  for(std::size_t k = 0; k < pts.size(); ++k)
+    for(int i = 0; i < 3; ++i)
+      xyz[3 * k + i] = pts[keyed[k].second].first[i];
+  std::vector<PSCi::Neighbor_grid::Keyed_index>().swap(keyed);
+
+  const double r2 = r * r;
+  double sum = 0;
+  std::size_t pairs = 0;
+  grid.for_each_cell(0, grid.number_of_cells(), [&](PSCi::Index_range cell, const PSCi::Index_range* rows) {
+    for(std::uint32_t q = cell.begin; q < cell.end; ++q)
+    {
+      const double* x = &xyz[3 * q];
+      for(int row = 0; row < 9; ++row)
+        for(std::uint32_t j = rows[row].begin; j < rows[row].end; ++j)
+        {
+          const double dx = xyz[3 * j] - x[0], dy = xyz[3 * j + 1] - x[1], dz = xyz[3 * j + 2] - x[2];
+          if(dx * dx + dy * dy + dz * dz < r2)
+          {
+            sum += xyz[3 * j];
+            ++pairs;
+          }
+        }
+    }
+  });
+  return {sum, pairs};
+}
+
+// The same pairs with CGAL's Kd_tree and Fuzzy_sphere, points spatially sorted first.
+std::pair<double, std::size_t> kdtree_traversal(const std::vector<Oriented_point>& pts, double r)
+{
+  typedef CGAL::Search_traits_3<Kernel> Traits;
+  typedef CGAL::Kd_tree<Traits> Tree;
+  typedef CGAL::Fuzzy_sphere<Traits> Sphere;
+  std::vector<Point> sorted;
+  sorted.reserve(pts.size());
+  for(const auto& p : pts)
+    sorted.push_back(p.first);
+  CGAL::spatial_sort(sorted.begin(), sorted.end());
+  Tree tree(sorted.begin(), sorted.end());
+  tree.build();
+  double sum = 0;
+  std::size_t pairs = 0;
+  std::vector<Point> found;
+  for(const Point& p : sorted)
+  {
+    found.clear();
+    tree.search(std::back_inserter(found), Sphere(p, r, 0.));
+    for(const Point& q : found)
+      if(CGAL::squared_distance(p, q) < r * r)
+      {
+        sum += q.x();
+        ++pairs;
+      }
+  }
+  return {sum, pairs};
+}
+
+int main(int argc, char** argv)
+{
+  std::size_t n = 1000000;
+  int repetitions = 3;
+  bool kdtree = true;
+  int positional = 0;
+  for(int i = 1; i < argc; ++i)
+  {
+    if(std::strcmp(argv[i], "--no-kdtree") == 0)
+      kdtree = false;
+    else if(positional++ == 0)
+      n = std::stoul(argv[i]);
+    else
+      repetitions = std::stoi(argv[i]);
+  }
+
+  const double a = 1.0, b = 0.7, c = 0.5;
+  const std::vector<Oriented_point> pts = ellipsoid(n, a, b, c, 42);
+  const double r = std::sqrt(40.0 * ellipsoid_area(a, b, c) / (M_PI * double(n)));
+  const auto params = CGAL::parameters::point_map(Point_map()).normal_map(Normal_map());
+
+  double t_bare = 1e300, t_kd = 1e300, t_apss_s = 1e300, t_apss_p = 1e300, t_aso_s = 1e300,
+         t_aso_p = 1e300;
+  std::size_t pairs = 0;
+  long long aso_peak_extra = 0;
+  double checksum = 0;
+  for(int rep = 0; rep < repetitions; ++rep)
+  {
+    auto t0 = std::chrono::steady_clock::now();
+    const auto bare = bare_traversal(pts, r);
+    t_bare = std::min(t_bare, seconds_since(t0));
+    pairs = bare.second;
+    checksum += bare.first;
+
+    if(kdtree && rep == 0)  // slow; once is enough to make the point
+    {
+      t0 = std::chrono::steady_clock::now();
+      const auto kd = kdtree_traversal(pts, r);
+      t_kd = seconds_since(t0);
+      if(kd.second != pairs)
+        std::fprintf(stderr, "warning: kd-tree found %zu pairs, grid %zu\n", kd.second, pairs);
+    }
+
+    t0 = std::chrono::steady_clock::now();
+    auto apss = CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(pts, r, params);
+    t_apss_s = std::min(t_apss_s, seconds_since(t0));
+    checksum += apss[n / 2].mean_curvature;
+    decltype(apss)().swap(apss);
+
+    t0 = std::chrono::steady_clock::now();
+    apss = CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(pts, r, params);
+    t_apss_p = std::min(t_apss_p, seconds_since(t0));
+    decltype(apss)().swap(apss);
+
+    psc_bench::reset_peak();
+    const long long before = psc_bench::current_bytes();
+    t0 = std::chrono::steady_clock::now();
+    auto aso = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, r, params);
+    t_aso_s = std::min(t_aso_s, seconds_since(t0));
+    const long long result_bytes = static_cast<long long>(aso.capacity() * sizeof(aso[0]));
+    aso_peak_extra = psc_bench::peak_bytes() - before - result_bytes;
+    checksum += aso[n / 3].max_curvature;
+    decltype(aso)().swap(aso);
+
+    t0 = std::chrono::steady_clock::now();
+    aso = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, r, params);
+    t_aso_p = std::min(t_aso_p, seconds_since(t0));
+  }
+
+  const double ns_pair = 1e9 / double(pairs);
+  std::printf("points: %zu, radius: %.6g, mean neighbours (query included): %.2f, repetitions: %d (best kept)\n\n",
+              n, r, double(pairs) / double(n), repetitions);
+  std::printf("| run | seconds | ns per pair | ratio to bare traversal |\n|---|---|---|---|\n");
+  auto row = [&](const char* name, double t) {
+    std::printf("| %s | %.3f | %.1f | %.2f |\n", name, t, t * ns_pair, t / t_bare);
+  };
+  row("bare grid traversal (build + visit pairs)", t_bare);
+  if(kdtree)
+    row("CGAL Kd_tree + Fuzzy_sphere (spatially sorted)", t_kd);
+  row("APSS, Sequential_tag", t_apss_s);
+  row("APSS, Parallel_tag", t_apss_p);
+  row("ASO, Sequential_tag", t_aso_s);
+  row("ASO, Parallel_tag", t_aso_p);
+  std::printf("\nASO parallel speed-up: %.2fx; APSS parallel speed-up: %.2fx\n", t_aso_s / t_aso_p,
+              t_apss_s / t_apss_p);
+  std::printf("ASO peak heap beyond input and result: %.1f bytes per point\n",
+              double(aso_peak_extra) / double(n));
+  std::printf("(checksum %.6g)\n", checksum);
+  return 0;
+}

@@ -1,0 +1,88 @@
+// Copyright (c) 2026 The Point_set_curvatures authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_ALGEBRAIC_SHAPE_OPERATOR_FIT_H
+#define CGAL_ALGEBRAIC_SHAPE_OPERATOR_FIT_H
+
+#include <CGAL/Curvature_estimate.h>
+#include <CGAL/Point_set_curvatures/internal/algebraic_shape_operator.h>
+#include <CGAL/Point_set_curvatures/internal/local_frame.h>
+
+#include <CGAL/property_map.h>
+
+namespace CGAL {
+
+/// \ingroup PkgPointSetCurvaturesRef
+///
+/// The Algebraic Shape Operator of Lejemble et al. (2021) at one evaluation point, from
+/// neighbours that the caller provides: use it to evaluate at positions that are not
+/// input points, or with your own neighbourhoods. `estimate_aso_curvatures()` runs the
+/// same computation at every point of a cloud.
+///
+/// Neighbours are added one at a time (no allocation, constant memory); those at distance
+/// `>= radius` from the evaluation point, or with a non-finite position or a zero normal,
+/// are ignored. Add the evaluation point itself if it is a sample of the cloud.
+///
+/// \tparam GeomTraits a model of `Kernel` with a floating-point `FT`.
+template <class GeomTraits>
+class Algebraic_shape_operator_fit
+{
+public:
+  typedef typename GeomTraits::FT FT;
+  typedef typename GeomTraits::Point_3 Point_3;
+  typedef typename GeomTraits::Vector_3 Vector_3;
+
+  /// Starts a fit at `evaluation_point` with the kernel `(1 - d²/radius²)²`, projected on
+  /// the tangent plane chosen by `projection` (see `CGAL::Aso_projection`).
+  /// \throws std::invalid_argument if `radius` is not positive and finite or the
+  /// evaluation point is not finite.
+  Algebraic_shape_operator_fit(const Point_3& evaluation_point, FT radius,
+                               Aso_projection projection = Aso_projection::CORRECTED_NORMAL)
+    : m_frame(evaluation_point, CGAL::to_double(radius), "Algebraic_shape_operator_fit",
+              projection == Aso_projection::CORRECTED_NORMAL),
+      m_projection(projection)
+  {}
+
+  /// Adds the oriented point `(p, n)`; returns `true` if it lies at distance `< radius`
+  /// and was used. `n` need not be unit: it is normalised (except with
+  /// `Aso_projection::AUTHORS_IMPLEMENTATION`, which uses it as given).
+  bool add_neighbor(const Point_3& p, const Vector_3& n)
+  {
+    double q[3], nn[3];
+    if(!m_frame.to_frame(p, n, q, nn))
+      return false;
+    m_moments.add(q[0], q[1], q[2], nn[0], nn[1], nn[2]);
+    return true;
+  }
+
+  /// Adds every element of `range`, read through `point_map` and `normal_map`.
+  template <class Range, class PointMap, class NormalMap>
+  void add_neighbors(const Range& range, PointMap point_map, NormalMap normal_map)
+  {
+    for(const auto& item : range)
+      add_neighbor(get(point_map, item), get(normal_map, item));
+  }
+
+  /// number of neighbours used so far
+  std::size_t neighbor_count() const { return m_moments.count; }
+
+  /// Normal, principal curvatures and directions, mean and Gaussian curvature of the
+  /// neighbours added so far (invalid with `TOO_FEW_NEIGHBORS` below 3 neighbours, or
+  /// `DEGENERATE_FIT`).
+  Curvature_estimate<GeomTraits> estimate() const
+  {
+    return Point_set_curvatures::internal::to_curvature_estimate<GeomTraits>(
+      Point_set_curvatures::internal::algebraic_shape_operator(m_moments, m_frame.radius(),
+                                                               m_projection),
+      m_moments.count);
+  }
+
+private:
+  Point_set_curvatures::internal::Local_frame<GeomTraits> m_frame;
+  Point_set_curvatures::internal::Aso_moments m_moments;
+  Aso_projection m_projection;
+};
+
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,376 @@
+// Copyright (c) 2026 The Point_set_curvatures authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The driver shared by every per-point estimator of the package:
+//   1. read the named parameters and check the radius,
+//   2. read points and normals through the property maps, flag unusable points
+//      (non-finite coordinates, zero or non-finite normal), which are nobody's neighbour,
+//   3. sort the usable points into a Neighbor_grid (copies in sorted order, so the
+//      neighbour loops read contiguous memory),
+//   4. for every point, gather the points at distance < r into a small reusable buffer
+//      in the point's scaled centred frame and hand it to the estimator,
+//      sequentially or with TBB, reporting progress through `callback` between batches,
+//   5. return one Curvature_estimate per input point, in input order.
+//
+// An estimator is a copyable callable `Local_estimate operator()(const Neighborhood&)
+// const` with a member `bool normalize_normals` (Estimator_base); it must not keep state
+// between calls. Results do not depend on the concurrency tag: every point sees its
+// neighbours in the same (grid) order.
+
+#ifndef CGAL_POINT_SET_CURVATURES_INTERNAL_ESTIMATION_DRIVER_H
+#define CGAL_POINT_SET_CURVATURES_INTERNAL_ESTIMATION_DRIVER_H
+
+#include <CGAL/Curvature_estimate.h>
+#include <CGAL/Point_set_curvatures/internal/local_estimate.h>
+#include <CGAL/Point_set_curvatures/internal/neighbor_grid.h>
+
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/number_utils.h>
+#include <CGAL/property_map.h>
+#include <CGAL/tags.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+#endif
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <iterator>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Point_set_curvatures {
+namespace internal {
+
+// Common part of the per-point estimators: whether they want unit normals (the driver
+// normalises once per point) or the input normals as given.
+struct Estimator_base
+{
+  bool normalize_normals = true;
+};
+
+template <class ConcurrencyTag>
+constexpr bool is_parallel()
+{
+  return std::is_convertible<ConcurrencyTag, Parallel_tag>::value;
+}
+
+template <class ConcurrencyTag>
+void check_concurrency_tag()
+{
+#ifndef CGAL_LINKED_WITH_TBB
+  static_assert(!is_parallel<ConcurrencyTag>(),
+                "Error: CGAL::Parallel_tag needs TBB: link with TBB::tbb and define "
+                "CGAL_LINKED_WITH_TBB (CMake: target_link_libraries(... CGAL::TBB_support)), "
+                "or use CGAL::Sequential_tag.");
+#endif
+}
+
+// Throws std::invalid_argument unless the radius is positive and finite.
+inline void check_radius(double radius, const char* function_name)
+{
+  if(!(radius > 0) || !std::isfinite(radius))
+  {
+    std::ostringstream msg;
+    msg << function_name << ": parameter 'radius' must be positive and finite, got " << radius;
+    throw std::invalid_argument(msg.str());
+  }
+}
+
+// Converts a Local_estimate to the user's kernel.
+template <class GeomTraits>
+Curvature_estimate<GeomTraits> to_curvature_estimate(const Local_estimate& e, std::size_t count)
+{
+  typedef typename GeomTraits::FT FT;
+  typedef typename GeomTraits::Vector_3 Vector_3;
+  Curvature_estimate<GeomTraits> r;
+  r.neighbor_count = count;
+  r.status = e.status;
+  if(e.status != Curvature_estimate_status::VALID)
+    return r;  // every numeric field stays NaN
+  r.normal = Vector_3(FT(e.normal[0]), FT(e.normal[1]), FT(e.normal[2]));
+  r.mean_curvature = FT(e.mean);
+  r.gaussian_curvature = FT(e.gaussian);
+  r.min_curvature = FT(e.k_min);
+  r.max_curvature = FT(e.k_max);
+  r.min_direction = Vector_3(FT(e.d_min[0]), FT(e.d_min[1]), FT(e.d_min[2]));
+  r.max_direction = Vector_3(FT(e.d_max[0]), FT(e.d_max[1]), FT(e.d_max[2]));
+  return r;
+}
+
+// Reusable neighbourhood storage of one thread: grows, never shrinks, so the hot loop
+// allocates only when a neighbourhood is larger than every previous one.
+class Neighbor_buffer
+{
+public:
+  void reserve(std::size_t n)
+  {
+    if(n <= m_capacity)
+      return;
+    std::size_t cap = std::max<std::size_t>(64, m_capacity);
+    while(cap < n)
+      cap *= 2;
+    std::vector<double> grown(6 * cap);
+    for(int a = 0; a < 6; ++a)
+      std::copy(m_data.begin() + a * m_capacity, m_data.begin() + a * m_capacity + m_size,
+                grown.begin() + a * cap);
+    m_data.swap(grown);
+    m_capacity = cap;
+  }
+  double* column(int a) { return m_data.data() + a * m_capacity; }
+  void set_size(std::size_t n) { m_size = n; }
+
+private:
+  std::vector<double> m_data;
+  std::size_t m_capacity = 0, m_size = 0;
+};
+
+// Usable points in grid order with their input positions.
+struct Sorted_cloud
+{
+  Neighbor_grid grid;
+  std::vector<std::uint32_t> input_index;  // grid order -> position in the input range
+  std::vector<double> position;            // xyz per point, grid order
+  std::vector<double> normal;              // normal per point (unit if asked), grid order
+};
+
+// Reads the range through the maps, fills the statuses of unusable points in `results`
+// and returns the usable points sorted in a grid of cell size >= radius, with unit normals
+// if `normalize_normals`.
+template <class ConcurrencyTag, class PointRange, class PointMap, class NormalMap, class GeomTraits>
+void read_and_sort(const PointRange& points, PointMap point_map, NormalMap normal_map,
+                   double radius, bool normalize_normals,
+                   std::vector<Curvature_estimate<GeomTraits> >& results, Sorted_cloud& cloud)
+{
+  typedef typename PointRange::const_iterator Iterator;
+  const std::size_t n = results.size();
+  if(n >= std::numeric_limits<std::uint32_t>::max())
+    throw std::length_error("Point_set_curvatures: more than 2^32 - 1 points are not supported");
+
+  // Pass 1: usable points and their bounding box.
+  std::vector<unsigned char> usable(n, 0);
+  double lo[3] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+                  std::numeric_limits<double>::infinity()};
+  double hi[3] = {-lo[0], -lo[1], -lo[2]};
+  std::size_t n_usable = 0, i = 0;
+  for(Iterator it = points.begin(); it != points.end(); ++it, ++i)
+  {
+    const auto& p = get(point_map, *it);
+    const double x[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+    if(!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+    {
+      results[i].status = Curvature_estimate_status::NON_FINITE_POINT;
+      continue;
+    }
+    const auto& v = get(normal_map, *it);
+    const double nv[3] = {CGAL::to_double(v.x()), CGAL::to_double(v.y()), CGAL::to_double(v.z())};
+    const double nn = nv[0] * nv[0] + nv[1] * nv[1] + nv[2] * nv[2];
+    if(!(nn > 0) || !std::isfinite(nn))
+    {
+      results[i].status = Curvature_estimate_status::INVALID_NORMAL;
+      continue;
+    }
+    usable[i] = 1;
+    ++n_usable;
+    for(int a = 0; a < 3; ++a)
+    {
+      lo[a] = std::min(lo[a], x[a]);
+      hi[a] = std::max(hi[a], x[a]);
+    }
+  }
+  if(n_usable == 0)
+    return;
+
+  // Pass 2: cell keys, sorted.
+  cloud.grid.set_geometry(lo, hi, radius);
+  std::vector<Neighbor_grid::Keyed_index> keyed;
+  keyed.reserve(n_usable);
+  i = 0;
+  for(Iterator it = points.begin(); it != points.end(); ++it, ++i)
+    if(usable[i])
+    {
+      const auto& p = get(point_map, *it);
+      keyed.emplace_back(cloud.grid.key(CGAL::to_double(p.x()), CGAL::to_double(p.y()),
+                                        CGAL::to_double(p.z())),
+                         static_cast<std::uint32_t>(i));
+    }
+  std::vector<unsigned char>().swap(usable);
+#ifdef CGAL_LINKED_WITH_TBB
+  if(is_parallel<ConcurrencyTag>())
+    tbb::parallel_sort(keyed.begin(), keyed.end());
+  else
+#endif
+    std::sort(keyed.begin(), keyed.end());
+  cloud.grid.set_cells(keyed);
+  cloud.input_index.resize(n_usable);
+  for(std::size_t k = 0; k < n_usable; ++k)
+    cloud.input_index[k] = keyed[k].second;
+  std::vector<Neighbor_grid::Keyed_index>().swap(keyed);
+
+  // Pass 3: coordinates and unit normals in grid order.
+  cloud.position.resize(3 * n_usable);
+  cloud.normal.resize(3 * n_usable);
+  auto store = [&](std::size_t k, const typename PointRange::const_iterator::value_type& item) {
+    const auto& p = get(point_map, item);
+    const auto& v = get(normal_map, item);
+    double* x = &cloud.position[3 * k];
+    double* nv = &cloud.normal[3 * k];
+    x[0] = CGAL::to_double(p.x()); x[1] = CGAL::to_double(p.y()); x[2] = CGAL::to_double(p.z());
+    nv[0] = CGAL::to_double(v.x()); nv[1] = CGAL::to_double(v.y()); nv[2] = CGAL::to_double(v.z());
+    if(normalize_normals)
+    {
+      const double inv = 1.0 / std::sqrt(nv[0] * nv[0] + nv[1] * nv[1] + nv[2] * nv[2]);
+      nv[0] *= inv; nv[1] *= inv; nv[2] *= inv;
+    }
+  };
+  typedef typename std::iterator_traits<Iterator>::iterator_category Category;
+  if(std::is_convertible<Category, std::random_access_iterator_tag>::value)
+  {
+    for(std::size_t k = 0; k < n_usable; ++k)
+      store(k, *std::next(points.begin(), cloud.input_index[k]));
+  }
+  else
+  {
+    std::vector<Iterator> iterators;
+    iterators.reserve(n);
+    for(Iterator it = points.begin(); it != points.end(); ++it)
+      iterators.push_back(it);
+    for(std::size_t k = 0; k < n_usable; ++k)
+      store(k, *iterators[cloud.input_index[k]]);
+  }
+}
+
+// Runs `estimator` on the neighbourhood of every point of the cells [first, last) and
+// writes the results at the points' input positions.
+template <class GeomTraits, class Estimator>
+void estimate_cells(const Sorted_cloud& cloud, double radius, const Estimator& estimator,
+                    std::size_t first_cell, std::size_t last_cell, Neighbor_buffer& buffer,
+                    std::vector<Curvature_estimate<GeomTraits> >& results)
+{
+  const double r2 = radius * radius, inv_r = 1.0 / radius;
+  const double* position = cloud.position.data();
+  const double* normal = cloud.normal.data();
+  cloud.grid.for_each_cell(first_cell, last_cell, [&](Index_range cell, const Index_range* rows) {
+    for(std::uint32_t query = cell.begin; query < cell.end; ++query)
+    {
+      const double* x = position + 3 * query;
+      std::size_t k = 0;
+      for(int r = 0; r < 9; ++r)
+      {
+        buffer.reserve(k + (rows[r].end - rows[r].begin));
+        double *qx = buffer.column(0), *qy = buffer.column(1), *qz = buffer.column(2);
+        double *nx = buffer.column(3), *ny = buffer.column(4), *nz = buffer.column(5);
+        for(std::uint32_t j = rows[r].begin; j < rows[r].end; ++j)
+        {
+          // branch-free append: written always, kept if inside the open ball
+          const double dx = position[3 * j] - x[0];
+          const double dy = position[3 * j + 1] - x[1];
+          const double dz = position[3 * j + 2] - x[2];
+          qx[k] = dx * inv_r; qy[k] = dy * inv_r; qz[k] = dz * inv_r;
+          nx[k] = normal[3 * j]; ny[k] = normal[3 * j + 1]; nz[k] = normal[3 * j + 2];
+          k += (dx * dx + dy * dy + dz * dz < r2) ? 1 : 0;
+        }
+        buffer.set_size(k);
+      }
+      Neighborhood nb;
+      nb.size = k;
+      nb.qx = buffer.column(0); nb.qy = buffer.column(1); nb.qz = buffer.column(2);
+      nb.nx = buffer.column(3); nb.ny = buffer.column(4); nb.nz = buffer.column(5);
+      nb.radius = radius;
+      for(int a = 0; a < 3; ++a)
+      {
+        nb.center[a] = x[a];
+        nb.query_normal[a] = normal[3 * query + a];
+      }
+      results[cloud.input_index[query]] = to_curvature_estimate<GeomTraits>(estimator(nb), k);
+    }
+  });
+}
+
+// The driver. Returns one estimate per element of `points`, in order.
+template <class ConcurrencyTag, class PointRange, class NamedParameters, class Estimator>
+std::vector<Curvature_estimate<
+  typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
+estimate_at_every_point(const PointRange& points, double radius, const NamedParameters& np,
+                        const Estimator& estimator, const char* function_name)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
+  typedef typename NP_helper::Geom_traits Geom_traits;
+  static_assert(NP_helper::has_normal_map(),
+                "Error: no normal map. Pass CGAL::parameters::normal_map(...): the estimators "
+                "of this package need oriented normals.");
+  check_concurrency_tag<ConcurrencyTag>();
+  check_radius(radius, function_name);
+
+  const auto point_map = NP_helper::get_const_point_map(points, np);
+  const auto normal_map = NP_helper::get_normal_map(points, np);
+  const std::function<bool(double)> callback =
+    choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
+
+  std::vector<Curvature_estimate<Geom_traits> > results(
+    static_cast<std::size_t>(std::distance(points.begin(), points.end())));
+  if(results.empty())
+    return results;
+
+  Sorted_cloud cloud;
+  read_and_sort<ConcurrencyTag>(points, point_map, normal_map, radius,
+                                estimator.normalize_normals, results, cloud);
+  const std::size_t n_cells = cloud.grid.number_of_cells();
+  const std::size_t n_points = cloud.grid.number_of_points();
+
+  // Batches of cells between two progress reports: one batch without a callback,
+  // otherwise about 1% of the points (at least 16384) per batch.
+  const std::size_t batch_points =
+    callback ? std::max<std::size_t>(16384, n_points / 100) : n_points + 1;
+
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::enumerable_thread_specific<Neighbor_buffer> buffers;
+#endif
+  Neighbor_buffer sequential_buffer;
+  std::size_t done = 0;
+  for(std::size_t first = 0; first < n_cells;)
+  {
+    std::size_t last = first;
+    const std::size_t stop = done + batch_points;
+    std::size_t batch_end = done;
+    while(last < n_cells && batch_end < stop)
+      batch_end = cloud.grid.points_of_cell(last++).end;
+
+#ifdef CGAL_LINKED_WITH_TBB
+    if(is_parallel<ConcurrencyTag>())
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last, 64),
+                        [&](const tbb::blocked_range<std::size_t>& range) {
+                          estimate_cells(cloud, radius, estimator, range.begin(), range.end(),
+                                         buffers.local(), results);
+                        });
+    else
+#endif
+      estimate_cells(cloud, radius, estimator, first, last, sequential_buffer, results);
+
+    done = batch_end;
+    first = last;
+    if(callback && !callback(double(done) / double(n_points)))
+      break;  // cancelled: the points not reached keep the NOT_COMPUTED status
+  }
+  return results;
+}
+
+} // namespace internal
+} // namespace Point_set_curvatures
+} // namespace CGAL
+
+#endif

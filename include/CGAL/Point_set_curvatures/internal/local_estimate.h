@@ -1,0 +1,127 @@
+// Copyright (c) 2026 The Point_set_curvatures authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// What every per-point estimator receives (a neighbourhood in the query's scaled,
+// centred frame) and returns (a double-precision estimate), plus the last step they
+// share: principal curvatures and directions of a symmetric tensor restricted to the
+// tangent plane.
+
+#ifndef CGAL_POINT_SET_CURVATURES_INTERNAL_LOCAL_ESTIMATE_H
+#define CGAL_POINT_SET_CURVATURES_INTERNAL_LOCAL_ESTIMATE_H
+
+#include <CGAL/Curvature_estimate.h>
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+namespace CGAL {
+namespace Point_set_curvatures {
+namespace internal {
+
+// The neighbours of one query point. Coordinates are centred at the query point and
+// divided by the radius (q = (p - x) / r, so |q| < 1), which keeps every sum of the
+// fits of order one whatever the units and the distance to the origin (LiDAR data sits
+// near 1e6). Arrays are structure-of-arrays so the accumulation loops stream through them.
+struct Neighborhood
+{
+  std::size_t size = 0;
+  const double* qx = nullptr;
+  const double* qy = nullptr;
+  const double* qz = nullptr;
+  const double* nx = nullptr;
+  const double* ny = nullptr;
+  const double* nz = nullptr;
+  double radius = 1;               // r, to convert curvatures back to input units
+  double center[3] = {0, 0, 0};    // x, absolute coordinates of the evaluation point
+  double query_normal[3] = {0, 0, 0};
+};
+
+// One estimate in double precision, before conversion to the kernel's types.
+struct Local_estimate
+{
+  static constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+  double normal[3] = {nan, nan, nan};
+  double mean = nan, gaussian = nan, k_min = nan, k_max = nan;
+  double d_min[3] = {nan, nan, nan};
+  double d_max[3] = {nan, nan, nan};
+  Curvature_estimate_status status = Curvature_estimate_status::NOT_COMPUTED;
+
+  static Local_estimate invalid(Curvature_estimate_status s)
+  {
+    Local_estimate e;
+    e.status = s;
+    return e;
+  }
+};
+
+// An orthonormal basis (t1, t2) of the plane orthogonal to the unit vector n
+// (Duff et al. 2017, "Building an orthonormal basis, revisited"): branch-free but
+// for the sign of n_z, continuous elsewhere, and exact for axis-aligned normals.
+inline void tangent_basis(const double n[3], double t1[3], double t2[3])
+{
+  const double sign = std::copysign(1.0, n[2]);
+  const double a = -1.0 / (sign + n[2]);
+  const double b = n[0] * n[1] * a;
+  t1[0] = 1.0 + sign * n[0] * n[0] * a; t1[1] = sign * b;               t1[2] = -sign * n[0];
+  t2[0] = b;                            t2[1] = sign + n[1] * n[1] * a; t2[2] = -n[1];
+}
+
+// Principal curvatures and directions of the 2x2 symmetric tensor [[a, b], [b, c]]
+// written in the tangent basis (t1, t2). Fills k_min <= k_max, mean, gaussian and unit,
+// orthogonal, tangent directions.
+inline void set_principal_curvatures(double a, double b, double c,
+                                     const double t1[3], const double t2[3],
+                                     Local_estimate& e)
+{
+  const double half_sum = 0.5 * (a + c);
+  const double half_diff = 0.5 * (a - c);
+  const double radius = std::hypot(half_diff, b);
+  e.k_min = half_sum - radius;
+  e.k_max = half_sum + radius;
+  e.mean = half_sum;
+  e.gaussian = e.k_min * e.k_max;
+  // The eigenvector of the larger eigenvalue makes the angle theta = atan2(2b, a - c) / 2
+  // with t1; atan2 stays well defined at umbilics (any direction is then principal).
+  const double theta = 0.5 * std::atan2(2.0 * b, a - c);
+  const double ct = std::cos(theta), st = std::sin(theta);
+  for(int i = 0; i < 3; ++i)
+  {
+    e.d_max[i] = ct * t1[i] + st * t2[i];
+    e.d_min[i] = -st * t1[i] + ct * t2[i];
+  }
+}
+
+// Shape operator of a scalar field from its gradient and Hessian (Equation 27 of
+// Lejemble et al. 2021): W = P Hess P / |grad|, with P the projection on the plane
+// orthogonal to grad. `hessian` is packed xx xy xz yy yz zz. Returns false when the
+// gradient vanishes (no normal, no tensor).
+inline bool set_shape_operator(const double gradient[3], const double hessian[6],
+                               double inverse_length_unit, Local_estimate& e)
+{
+  const double norm = std::sqrt(gradient[0] * gradient[0] + gradient[1] * gradient[1] +
+                                gradient[2] * gradient[2]);
+  if(!(norm > 1e-12) || !std::isfinite(norm))
+    return false;
+  for(int i = 0; i < 3; ++i)
+    e.normal[i] = gradient[i] / norm;
+  double t1[3], t2[3];
+  tangent_basis(e.normal, t1, t2);
+  auto quadratic_form = [&](const double u[3], const double v[3]) {
+    const double* h = hessian;
+    return u[0] * (h[0] * v[0] + h[1] * v[1] + h[2] * v[2]) +
+           u[1] * (h[1] * v[0] + h[3] * v[1] + h[4] * v[2]) +
+           u[2] * (h[2] * v[0] + h[4] * v[1] + h[5] * v[2]);
+  };
+  const double s = inverse_length_unit / norm;
+  set_principal_curvatures(s * quadratic_form(t1, t1), s * quadratic_form(t1, t2),
+                           s * quadratic_form(t2, t2), t1, t2, e);
+  return std::isfinite(e.k_min) && std::isfinite(e.k_max);
+}
+
+} // namespace internal
+} // namespace Point_set_curvatures
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,108 @@
+// Copyright (c) 2026 The Point_set_curvatures authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_ESTIMATE_APSS_CURVATURES_H
+#define CGAL_ESTIMATE_APSS_CURVATURES_H
+
+#include <CGAL/Curvature_estimate.h>
+#include <CGAL/Algebraic_sphere_fit.h>
+#include <CGAL/Point_set_curvatures/internal/algebraic_sphere.h>
+#include <CGAL/Point_set_curvatures/internal/estimation_driver.h>
+
+#include <vector>
+
+namespace CGAL {
+namespace Point_set_curvatures {
+namespace internal {
+
+// Per-point APSS: the five sums of the sphere fit, then Equations 6-8.
+struct Apss_estimator : Estimator_base
+{
+  Local_estimate operator()(const Neighborhood& nb) const
+  {
+    Algebraic_sphere_sums<Smooth_kernel> sums;
+    sums.add(nb);
+    return algebraic_sphere_estimate(sums, nb.radius);
+  }
+};
+
+} // namespace internal
+} // namespace Point_set_curvatures
+
+/// \ingroup PkgPointSetCurvaturesRef
+///
+/// Estimates, at every point of an oriented point cloud, the corrected normal and the
+/// signed mean curvature of the APSS algebraic sphere fit (Guennebaud and Gross 2007), as
+/// analysed by Lejemble et al. 2021 (Section 3, Equations 2-8): the fitted sphere's
+/// normalised gradient and inverse radius `2 û_q`, which converges to the mean curvature.
+///
+/// Same neighbourhoods, kernel `(1 - d²/radius²)²`, named parameters, statuses and sign
+/// convention as `CGAL::estimate_aso_curvatures()`. Valid estimates fill `normal`,
+/// `mean_curvature` and `neighbor_count`; the principal curvatures and directions and the
+/// Gaussian curvature are NaN (a sphere cannot measure them).
+///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag` (needs TBB).
+/// \tparam PointRange a model of `ConstRange`; its iterator value type is the key type of
+///         the point and normal maps.
+///
+/// \param points input oriented point cloud
+/// \param radius radius `r` of the neighbourhoods and of the weight kernel, in the unit of
+///        the coordinates
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{point_map}
+///     \cgalParamDescription{a property map associating points to the elements of `points`}
+///     \cgalParamType{a model of `ReadablePropertyMap` whose value type is `geom_traits::Point_3`}
+///     \cgalParamDefault{`CGAL::Identity_property_map<geom_traits::Point_3>`; for
+///       `CGAL::Point_set_3`, its point map}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{normal_map}
+///     \cgalParamDescription{a property map associating oriented normals to the elements of
+///       `points` (required, except for `CGAL::Point_set_3`); normalised on input}
+///     \cgalParamType{a model of `ReadablePropertyMap` whose value type is `geom_traits::Vector_3`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{an instance of a geometric traits class}
+///     \cgalParamType{a model of `Kernel` with a floating-point `FT`}
+///     \cgalParamDefault{the kernel deduced from the point type, using `CGAL::Kernel_traits`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{callback}
+///     \cgalParamDescription{called with the fraction of points processed so far (in `[0,1]`)
+///       from the calling thread; returning `false` cancels, the points not processed keep
+///       the status `NOT_COMPUTED`}
+///     \cgalParamType{an instance of `std::function<bool(double)>`}
+///     \cgalParamDefault{no callback}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \throws std::invalid_argument if `radius` is not positive and finite.
+///
+/// \sa `CGAL::Algebraic_sphere_fit` for a single evaluation point.
+template <typename ConcurrencyTag, typename PointRange,
+          typename NamedParameters = parameters::Default_named_parameters>
+std::vector<Curvature_estimate<
+  typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
+estimate_apss_curvatures(const PointRange& points, double radius,
+                         const NamedParameters& np = parameters::default_values())
+{
+  return Point_set_curvatures::internal::estimate_at_every_point<ConcurrencyTag>(
+    points, radius, np, Point_set_curvatures::internal::Apss_estimator(),
+    "estimate_apss_curvatures");
+}
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// Same as above with the point and normal maps given explicitly.
+template <typename ConcurrencyTag, typename PointRange, typename PointMap, typename NormalMap>
+std::vector<Curvature_estimate<typename Kernel_traits<
+  typename boost::property_traits<PointMap>::value_type>::Kernel> >
+estimate_apss_curvatures(const PointRange& points, PointMap point_map, NormalMap normal_map,
+                         double radius)
+{
+  return estimate_apss_curvatures<ConcurrencyTag>(
+    points, radius, parameters::point_map(point_map).normal_map(normal_map));
+}
+
+} // namespace CGAL
+
+#endif
