@@ -1,16 +1,17 @@
 // Copyright (c) 2026 The Point_set_curvatures authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// The driver shared by every per-point estimator of the package:
-//   1. read the named parameters and check the radius,
+// The driver shared by every per-point computation of the package:
+//   1. check the radius,
 //   2. read points and normals through the property maps, flag unusable points
 //      (non-finite coordinates, zero or non-finite normal), which are nobody's neighbour,
 //   3. sort the usable points into a Neighbor_grid (copies in sorted order, so the
 //      neighbour loops read contiguous memory),
 //   4. for every point, gather the points at distance < r into a small reusable buffer
-//      in the point's scaled centred frame and hand it to the estimator,
-//      sequentially or with TBB, reporting progress through `callback` between batches,
-//   5. return one Curvature_estimate per input point, in input order.
+//      in the point's scaled centred frame and hand it to a visitor (for_each_neighborhood),
+//      sequentially or with TBB, reporting progress through `callback` between batches.
+// estimate_at_every_point() builds the curvature functions on it: one Curvature_estimate
+// per input point, in input order.
 //
 // An estimator is a copyable callable `Local_estimate operator()(const Neighborhood&)
 // const` with a member `bool normalize_normals` (Estimator_base); it must not keep state
@@ -146,16 +147,16 @@ struct Sorted_cloud
   std::vector<double> normal;              // normal per point (unit if asked), grid order
 };
 
-// Reads the range through the maps, fills the statuses of unusable points in `results`
+// Reads the range through the maps, sets the status of unusable points
 // and returns the usable points sorted in a grid of cell size >= radius, with unit normals
 // if `normalize_normals`.
-template <class ConcurrencyTag, class PointRange, class PointMap, class NormalMap, class GeomTraits>
+template <class ConcurrencyTag, class PointRange, class PointMap, class NormalMap>
 void read_and_sort(const PointRange& points, PointMap point_map, NormalMap normal_map,
                    double radius, bool normalize_normals,
-                   std::vector<Curvature_estimate<GeomTraits> >& results, Sorted_cloud& cloud)
+                   std::vector<Curvature_estimate_status>& status, Sorted_cloud& cloud)
 {
   typedef typename PointRange::const_iterator Iterator;
-  const std::size_t n = results.size();
+  const std::size_t n = status.size();
   if(n >= std::numeric_limits<std::uint32_t>::max())
     throw std::length_error("Point_set_curvatures: more than 2^32 - 1 points are not supported");
 
@@ -171,7 +172,7 @@ void read_and_sort(const PointRange& points, PointMap point_map, NormalMap norma
     const double x[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
     if(!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
     {
-      results[i].status = Curvature_estimate_status::NON_FINITE_POINT;
+      status[i] = Curvature_estimate_status::NON_FINITE_POINT;
       continue;
     }
     const auto& v = get(normal_map, *it);
@@ -179,7 +180,7 @@ void read_and_sort(const PointRange& points, PointMap point_map, NormalMap norma
     const double nn = nv[0] * nv[0] + nv[1] * nv[1] + nv[2] * nv[2];
     if(!(nn > 0) || !std::isfinite(nn))
     {
-      results[i].status = Curvature_estimate_status::INVALID_NORMAL;
+      status[i] = Curvature_estimate_status::INVALID_NORMAL;
       continue;
     }
     usable[i] = 1;
@@ -252,12 +253,11 @@ void read_and_sort(const PointRange& points, PointMap point_map, NormalMap norma
   }
 }
 
-// Runs `estimator` on the neighbourhood of every point of the cells [first, last) and
-// writes the results at the points' input positions.
-template <class GeomTraits, class Estimator>
-void estimate_cells(const Sorted_cloud& cloud, double radius, const Estimator& estimator,
-                    std::size_t first_cell, std::size_t last_cell, Neighbor_buffer& buffer,
-                    std::vector<Curvature_estimate<GeomTraits> >& results)
+// Visits the neighbourhood of every point of the cells [first, last): gathers the points
+// at distance < r into `buffer` (scaled centred frame) and calls visit(input_index, nb).
+template <class Visitor>
+void visit_cells(const Sorted_cloud& cloud, double radius, std::size_t first_cell,
+                 std::size_t last_cell, Neighbor_buffer& buffer, Visitor& visit)
 {
   const double r2 = radius * radius, inv_r = 1.0 / radius;
   const double* position = cloud.position.data();
@@ -294,48 +294,47 @@ void estimate_cells(const Sorted_cloud& cloud, double radius, const Estimator& e
         nb.center[a] = x[a];
         nb.query_normal[a] = normal[3 * query + a];
       }
-      results[cloud.input_index[query]] = to_curvature_estimate<GeomTraits>(estimator(nb), k);
+      visit(std::size_t(cloud.input_index[query]), static_cast<const Neighborhood&>(nb));
     }
   });
 }
 
-// The driver. Returns one estimate per element of `points`, in order.
-template <class ConcurrencyTag, class PointRange, class NamedParameters, class Estimator>
-std::vector<Curvature_estimate<
-  typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
-estimate_at_every_point(const PointRange& points, double radius, const NamedParameters& np,
-                        const Estimator& estimator, const char* function_name)
+// Options of for_each_neighborhood().
+struct Neighborhood_options
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
-  typedef typename NP_helper::Geom_traits Geom_traits;
-  static_assert(NP_helper::has_normal_map(),
-                "Error: no normal map. Pass CGAL::parameters::normal_map(...): the estimators "
-                "of this package need oriented normals.");
+  bool normalize_normals = true;             // hand unit normals to the visitor
+  std::function<bool(double)> callback;      // progress in [0,1]; false cancels
+  const char* function_name = "Point_set_curvatures";  // for error messages
+};
+
+// The driver. Calls `visit(input_index, nb)` for every usable point of `points` with the
+// points at distance < radius (itself included) in its scaled centred frame; with
+// Parallel_tag, from several threads at once (distinct indices). Returns, per input point,
+// VALID if it was visited, NON_FINITE_POINT or INVALID_NORMAL if it is unusable (then it is
+// nobody's neighbour), NOT_COMPUTED if the callback cancelled the run first.
+// Throws std::invalid_argument for a radius that is not positive and finite.
+template <class ConcurrencyTag, class PointRange, class PointMap, class NormalMap, class Visitor>
+std::vector<Curvature_estimate_status>
+for_each_neighborhood(const PointRange& points, PointMap point_map, NormalMap normal_map,
+                      double radius, const Neighborhood_options& options, Visitor visit)
+{
   check_concurrency_tag<ConcurrencyTag>();
-  check_radius(radius, function_name);
-
-  const auto point_map = NP_helper::get_const_point_map(points, np);
-  const auto normal_map = NP_helper::get_normal_map(points, np);
-  const std::function<bool(double)> callback =
-    choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
-
-  std::vector<Curvature_estimate<Geom_traits> > results(
-    static_cast<std::size_t>(std::distance(points.begin(), points.end())));
-  if(results.empty())
-    return results;
+  check_radius(radius, options.function_name);
+  const std::size_t n = static_cast<std::size_t>(std::distance(points.begin(), points.end()));
+  std::vector<Curvature_estimate_status> status(n, Curvature_estimate_status::NOT_COMPUTED);
+  if(n == 0)
+    return status;
 
   Sorted_cloud cloud;
-  read_and_sort<ConcurrencyTag>(points, point_map, normal_map, radius,
-                                estimator.normalize_normals, results, cloud);
+  read_and_sort<ConcurrencyTag>(points, point_map, normal_map, radius, options.normalize_normals,
+                                status, cloud);
   const std::size_t n_cells = cloud.grid.number_of_cells();
   const std::size_t n_points = cloud.grid.number_of_points();
 
   // Batches of cells between two progress reports: one batch without a callback,
   // otherwise about 1% of the points (at least 16384) per batch.
   const std::size_t batch_points =
-    callback ? std::max<std::size_t>(16384, n_points / 100) : n_points + 1;
+    options.callback ? std::max<std::size_t>(16384, n_points / 100) : n_points + 1;
 
 #ifdef CGAL_LINKED_WITH_TBB
   tbb::enumerable_thread_specific<Neighbor_buffer> buffers;
@@ -354,18 +353,63 @@ estimate_at_every_point(const PointRange& points, double radius, const NamedPara
     if(is_parallel<ConcurrencyTag>())
       tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last, 64),
                         [&](const tbb::blocked_range<std::size_t>& range) {
-                          estimate_cells(cloud, radius, estimator, range.begin(), range.end(),
-                                         buffers.local(), results);
+                          Visitor local = visit;
+                          visit_cells(cloud, radius, range.begin(), range.end(), buffers.local(), local);
                         });
     else
 #endif
-      estimate_cells(cloud, radius, estimator, first, last, sequential_buffer, results);
+      visit_cells(cloud, radius, first, last, sequential_buffer, visit);
 
+    for(std::size_t c = first; c < last; ++c)
+    {
+      const Index_range cell = cloud.grid.points_of_cell(c);
+      for(std::uint32_t k = cell.begin; k < cell.end; ++k)
+        status[cloud.input_index[k]] = Curvature_estimate_status::VALID;
+    }
     done = batch_end;
     first = last;
-    if(callback && !callback(double(done) / double(n_points)))
+    if(options.callback && !options.callback(double(done) / double(n_points)))
       break;  // cancelled: the points not reached keep the NOT_COMPUTED status
   }
+  return status;
+}
+
+// Per-point curvature estimation: one Curvature_estimate per element of `points`, in order,
+// from `estimator` (a copyable, stateless Local_estimate(const Neighborhood&) functor with a
+// `normalize_normals` member, see Estimator_base), reading the usual named parameters
+// (point_map, normal_map, geom_traits, callback).
+template <class ConcurrencyTag, class PointRange, class NamedParameters, class Estimator>
+std::vector<Curvature_estimate<
+  typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
+estimate_at_every_point(const PointRange& points, double radius, const NamedParameters& np,
+                        const Estimator& estimator, const char* function_name)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
+  typedef typename NP_helper::Geom_traits Geom_traits;
+  static_assert(NP_helper::has_normal_map(),
+                "Error: no normal map. Pass CGAL::parameters::normal_map(...): the estimators "
+                "of this package need oriented normals.");
+
+  Neighborhood_options options;
+  options.normalize_normals = estimator.normalize_normals;
+  options.callback =
+    choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
+  options.function_name = function_name;
+
+  // Check the radius before allocating the result.
+  check_radius(radius, function_name);
+  std::vector<Curvature_estimate<Geom_traits> > results(
+    static_cast<std::size_t>(std::distance(points.begin(), points.end())));
+  const std::vector<Curvature_estimate_status> status = for_each_neighborhood<ConcurrencyTag>(
+    points, NP_helper::get_const_point_map(points, np), NP_helper::get_normal_map(points, np),
+    radius, options, [&results, &estimator](std::size_t i, const Neighborhood& nb) {
+      results[i] = to_curvature_estimate<Geom_traits>(estimator(nb), nb.size);
+    });
+  for(std::size_t i = 0; i < results.size(); ++i)
+    if(status[i] != Curvature_estimate_status::VALID)
+      results[i].status = status[i];  // unusable or not reached: NaN fields, count 0
   return results;
 }
 
