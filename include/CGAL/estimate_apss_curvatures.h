@@ -7,7 +7,7 @@
 #include <CGAL/Curvature_estimate.h>
 #include <CGAL/Algebraic_sphere_fit.h>
 #include <CGAL/Point_set_curvatures/internal/algebraic_sphere.h>
-#include <CGAL/Point_set_curvatures/internal/estimation_driver.h>
+#include <CGAL/Point_set_curvatures/internal/estimate_at_every_point.h>
 
 #include <vector>
 
@@ -87,7 +87,21 @@ estimate_apss_curvatures(const PointRange& points, double radius,
                          const NamedParameters& np = parameters::default_values())
 {
   return Point_set_curvatures::internal::estimate_at_every_point<ConcurrencyTag>(
-    points, radius, np, Point_set_curvatures::internal::Apss_estimator(),
+    points, true, radius, np, Point_set_curvatures::internal::Apss_estimator(),
+    "estimate_apss_curvatures");
+}
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// Same as above with neighbourhoods by count: `np` must contain
+/// `CGAL::Point_set_curvatures::parameters::neighbor_count(k)`; each point's radius is the
+/// distance to its `k`-th nearest neighbour (itself counted).
+/// \throws std::invalid_argument if `neighbor_count` is missing or 0.
+template <typename ConcurrencyTag, typename PointRange, typename NamedParameters>
+typename Point_set_curvatures::internal::Estimates_without_radius<PointRange, NamedParameters>::type
+estimate_apss_curvatures(const PointRange& points, const NamedParameters& np)
+{
+  return Point_set_curvatures::internal::estimate_at_every_point<ConcurrencyTag>(
+    points, false, 0.0, np, Point_set_curvatures::internal::Apss_estimator(),
     "estimate_apss_curvatures");
 }
 

@@ -8,7 +8,7 @@
 #include <CGAL/Algebraic_shape_operator_fit.h>
 #include <CGAL/Point_set_curvatures/parameters.h>
 #include <CGAL/Point_set_curvatures/internal/algebraic_shape_operator.h>
-#include <CGAL/Point_set_curvatures/internal/estimation_driver.h>
+#include <CGAL/Point_set_curvatures/internal/estimate_at_every_point.h>
 
 #include <vector>
 
@@ -128,7 +128,26 @@ estimate_aso_curvatures(const PointRange& points, double radius,
     choose_parameter(get_parameter(np, Point_set_curvatures::internal_np::aso_projection),
                      Aso_projection::CORRECTED_NORMAL);
   return Point_set_curvatures::internal::estimate_at_every_point<ConcurrencyTag>(
-    points, radius, np, Point_set_curvatures::internal::Aso_estimator(projection),
+    points, true, radius, np, Point_set_curvatures::internal::Aso_estimator(projection),
+    "estimate_aso_curvatures");
+}
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// Same as above with neighbourhoods by count: `np` must contain
+/// `CGAL::Point_set_curvatures::parameters::neighbor_count(k)`; each point's radius is the
+/// distance to its `k`-th nearest neighbour (itself counted).
+/// \throws std::invalid_argument if `neighbor_count` is missing or 0.
+template <typename ConcurrencyTag, typename PointRange, typename NamedParameters>
+typename Point_set_curvatures::internal::Estimates_without_radius<PointRange, NamedParameters>::type
+estimate_aso_curvatures(const PointRange& points, const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const Aso_projection projection =
+    choose_parameter(get_parameter(np, Point_set_curvatures::internal_np::aso_projection),
+                     Aso_projection::CORRECTED_NORMAL);
+  return Point_set_curvatures::internal::estimate_at_every_point<ConcurrencyTag>(
+    points, false, 0.0, np, Point_set_curvatures::internal::Aso_estimator(projection),
     "estimate_aso_curvatures");
 }
 

@@ -14,6 +14,8 @@
 
 #include <CGAL/Named_function_parameters.h>
 
+#include <cstddef>
+
 namespace CGAL {
 
 /// \ingroup PkgPointSetCurvaturesRef
@@ -36,6 +38,7 @@ namespace Point_set_curvatures {
 namespace internal_np {
 
 enum aso_projection_t { aso_projection };
+enum neighbor_count_t { neighbor_count };
 
 } // namespace internal_np
 
@@ -52,6 +55,19 @@ aso_projection(Aso_projection projection,
 {
   return CGAL::Named_function_parameters<Aso_projection, internal_np::aso_projection_t,
                                          NamedParameters>(projection, np);
+}
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// Named parameter selecting neighbourhoods by count: each point's kernel radius is the
+/// distance to its `k`-th nearest neighbour (the point itself counted as the first), so
+/// that the scale follows the sampling density (LiDAR). Use it with the overloads of the
+/// estimation functions that take no radius.
+template <class NamedParameters = CGAL::parameters::Default_named_parameters>
+CGAL::Named_function_parameters<std::size_t, internal_np::neighbor_count_t, NamedParameters>
+neighbor_count(std::size_t k, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return CGAL::Named_function_parameters<std::size_t, internal_np::neighbor_count_t,
+                                         NamedParameters>(k, np);
 }
 
 } // namespace parameters

@@ -10,8 +10,8 @@
 //   4. for every point, gather the points at distance < r into a small reusable buffer
 //      in the point's scaled centred frame and hand it to a visitor (for_each_neighborhood),
 //      sequentially or with TBB, reporting progress through `callback` between batches.
-// estimate_at_every_point() builds the curvature functions on it: one Curvature_estimate
-// per input point, in input order.
+// estimate_at_every_point() (estimate_at_every_point.h) builds the curvature functions on
+// it, with knn_neighborhoods.h for neighbourhoods by count.
 //
 // An estimator is a copyable callable `Local_estimate operator()(const Neighborhood&)
 // const` with a member `bool normalize_normals` (Estimator_base); it must not keep state
@@ -24,6 +24,7 @@
 #include <CGAL/Curvature_estimate.h>
 #include <CGAL/Point_set_curvatures/internal/local_estimate.h>
 #include <CGAL/Point_set_curvatures/internal/neighbor_grid.h>
+#include <CGAL/Point_set_curvatures/parameters.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Named_function_parameters.h>
@@ -88,6 +89,26 @@ inline void check_radius(double radius, const char* function_name)
     msg << function_name << ": parameter 'radius' must be positive and finite, got " << radius;
     throw std::invalid_argument(msg.str());
   }
+}
+
+// Neighbourhood scale: a radius (overloads with a radius; neighbor_count must then be
+// absent) or a neighbour count (overloads without a radius, `by_count`).
+inline void check_scale(double radius, std::size_t k, bool by_count, const char* function_name)
+{
+  std::ostringstream msg;
+  msg << function_name << ": ";
+  if(by_count && k == 0)
+    msg << "without a radius, give the neighbour count with "
+           "CGAL::Point_set_curvatures::parameters::neighbor_count(k), k >= 1";
+  else if(!by_count && k != 0)
+    msg << "give either a radius or neighbor_count, not both";
+  else
+  {
+    if(!by_count)
+      check_radius(radius, function_name);
+    return;
+  }
+  throw std::invalid_argument(msg.str());
 }
 
 // Converts a Local_estimate to the user's kernel.
@@ -372,45 +393,6 @@ for_each_neighborhood(const PointRange& points, PointMap point_map, NormalMap no
       break;  // cancelled: the points not reached keep the NOT_COMPUTED status
   }
   return status;
-}
-
-// Per-point curvature estimation: one Curvature_estimate per element of `points`, in order,
-// from `estimator` (a copyable, stateless Local_estimate(const Neighborhood&) functor with a
-// `normalize_normals` member, see Estimator_base), reading the usual named parameters
-// (point_map, normal_map, geom_traits, callback).
-template <class ConcurrencyTag, class PointRange, class NamedParameters, class Estimator>
-std::vector<Curvature_estimate<
-  typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
-estimate_at_every_point(const PointRange& points, double radius, const NamedParameters& np,
-                        const Estimator& estimator, const char* function_name)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
-  typedef typename NP_helper::Geom_traits Geom_traits;
-  static_assert(NP_helper::has_normal_map(),
-                "Error: no normal map. Pass CGAL::parameters::normal_map(...): the estimators "
-                "of this package need oriented normals.");
-
-  Neighborhood_options options;
-  options.normalize_normals = estimator.normalize_normals;
-  options.callback =
-    choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
-  options.function_name = function_name;
-
-  // Check the radius before allocating the result.
-  check_radius(radius, function_name);
-  std::vector<Curvature_estimate<Geom_traits> > results(
-    static_cast<std::size_t>(std::distance(points.begin(), points.end())));
-  const std::vector<Curvature_estimate_status> status = for_each_neighborhood<ConcurrencyTag>(
-    points, NP_helper::get_const_point_map(points, np), NP_helper::get_normal_map(points, np),
-    radius, options, [&results, &estimator](std::size_t i, const Neighborhood& nb) {
-      results[i] = to_curvature_estimate<Geom_traits>(estimator(nb), nb.size);
-    });
-  for(std::size_t i = 0; i < results.size(); ++i)
-    if(status[i] != Curvature_estimate_status::VALID)
-      results[i].status = status[i];  // unusable or not reached: NaN fields, count 0
-  return results;
 }
 
 } // namespace internal
