@@ -10,6 +10,8 @@
 
 #include <CGAL/property_map.h>
 
+#include <vector>
+
 namespace CGAL {
 
 /// \ingroup PkgPointSetCurvaturesRef
@@ -19,9 +21,11 @@ namespace CGAL {
 /// input points, or with your own neighbourhoods. `estimate_aso_curvatures()` runs the
 /// same computation at every point of a cloud.
 ///
-/// Neighbours are added one at a time (no allocation, constant memory); those at distance
-/// `>= radius` from the evaluation point, or with a non-finite position or a zero normal,
-/// are ignored. Add the evaluation point itself if it is a sample of the cloud.
+/// Neighbours are added one at a time; those at distance `>= radius` from the evaluation
+/// point, or with a non-finite position or a zero normal, are ignored. Add the evaluation
+/// point itself if it is a sample of the cloud. The fit keeps the accepted neighbours (48
+/// bytes each, the ASO makes two passes over them); `reset()` starts a new fit reusing that
+/// storage, so a loop over many evaluation points allocates only while neighbourhoods grow.
 ///
 /// \tparam GeomTraits a model of `Kernel` with a floating-point `FT`.
 template <class GeomTraits>
@@ -51,8 +55,22 @@ public:
     double q[3], nn[3];
     if(!m_frame.to_frame(p, n, q, nn))
       return false;
-    m_moments.add(q[0], q[1], q[2], nn[0], nn[1], nn[2]);
+    for(int i = 0; i < 3; ++i)
+    {
+      m_columns[i].push_back(q[i]);
+      m_columns[3 + i].push_back(nn[i]);
+    }
     return true;
+  }
+
+  /// Starts a new fit at `evaluation_point` with `radius`, keeping the projection and the
+  /// storage. \throws std::invalid_argument as the constructor.
+  void reset(const Point_3& evaluation_point, FT radius)
+  {
+    m_frame = Frame(evaluation_point, CGAL::to_double(radius), "Algebraic_shape_operator_fit",
+                    m_projection == Aso_projection::CORRECTED_NORMAL);
+    for(auto& c : m_columns)
+      c.clear();
   }
 
   /// Adds every element of `range`, read through `point_map` and `normal_map`.
@@ -64,23 +82,27 @@ public:
   }
 
   /// number of neighbours used so far
-  std::size_t neighbor_count() const { return m_moments.count; }
+  std::size_t neighbor_count() const { return m_columns[0].size(); }
 
   /// Normal, principal curvatures and directions, mean and Gaussian curvature of the
   /// neighbours added so far (invalid with `TOO_FEW_NEIGHBORS` below 3 neighbours, or
   /// `DEGENERATE_FIT`).
   Curvature_estimate<GeomTraits> estimate() const
   {
+    Point_set_curvatures::internal::Neighborhood nb;
+    nb.size = neighbor_count();
+    nb.qx = m_columns[0].data(); nb.qy = m_columns[1].data(); nb.qz = m_columns[2].data();
+    nb.nx = m_columns[3].data(); nb.ny = m_columns[4].data(); nb.nz = m_columns[5].data();
+    nb.radius = m_frame.radius();
     return Point_set_curvatures::internal::to_curvature_estimate<GeomTraits>(
-      Point_set_curvatures::internal::algebraic_shape_operator(m_moments, m_frame.radius(),
-                                                               m_projection),
-      m_moments.count);
+      Point_set_curvatures::internal::algebraic_shape_operator(nb, m_projection), nb.size);
   }
 
 private:
-  Point_set_curvatures::internal::Local_frame<GeomTraits> m_frame;
-  Point_set_curvatures::internal::Aso_moments m_moments;
+  typedef Point_set_curvatures::internal::Local_frame<GeomTraits> Frame;
+  Frame m_frame;
   Aso_projection m_projection;
+  std::vector<double> m_columns[6];  // q (scaled centred frame) and n of the neighbours
 };
 
 } // namespace CGAL

@@ -16,7 +16,7 @@ namespace CGAL {
 namespace Point_set_curvatures {
 namespace internal {
 
-// Per-point ASO: one pass over the neighbours, then the closed-form shape operator.
+// Per-point ASO: two passes over the neighbours, then the closed-form shape operator.
 struct Aso_estimator : Estimator_base
 {
   Aso_projection projection = Aso_projection::CORRECTED_NORMAL;
@@ -29,9 +29,7 @@ struct Aso_estimator : Estimator_base
 
   Local_estimate operator()(const Neighborhood& nb) const
   {
-    Aso_moments moments;
-    moments.add(nb);
-    return algebraic_shape_operator(moments, nb.radius, projection);
+    return algebraic_shape_operator(nb, projection);
   }
 };
 

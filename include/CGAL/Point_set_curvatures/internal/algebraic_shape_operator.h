@@ -26,11 +26,18 @@
 //
 // Each sum S = sum w g (g fixed per neighbour) has, with the kernel derivatives,
 //
-//   grad S = 4 sum t g q,   Hess S = 8 sum g q q^T - 4 I sum t g      (t = 1 - |q|^2, w = t^2),
+//   grad S = 4 sum t g q,   Hess S = sum g (8 q q^T - 4 t I)      (t = 1 - |q|^2, w = t^2).
 //
-// so one pass over the neighbours accumulates 75 moments (Aso_moments), from which the
-// value, gradient and Hessian of A..E are assembled as second-order jets and pushed
-// through the three formulas above. E needs no moments of its own: q.q = 1 - t.
+// Two passes over the neighbours, constant memory:
+//   1. the sums and their gradients (30 numbers, Aso_first_order_sums), pushed through the
+//      three formulas as second-order jets whose Hessians start at zero. This gives u_q, u_l,
+//      grad u_l, grad u_c and the part of Hess u_c made of products of first derivatives,
+//      sum_kl d2u_c/dS_k dS_l grad S_k grad S_l^T.
+//   2. the remaining part of Hess u_c, sum_k du_c/dS_k Hess S_k, which is linear in the
+//      per-neighbour Hessians: with the adjoints F_k = du_c/dS_k (reverse mode, u_c_adjoint),
+//      it is sum_i gamma_i (8 q_i q_i^T - 4 t_i I) with gamma_i = sum_k F_k g_k(i): 7 numbers.
+// This is the same field and the same derivatives as a single pass over all second-order
+// moments (75 numbers per neighbour), at half the arithmetic.
 //
 // Tangent plane of Equation 27. By default P spans the plane orthogonal to grad f, the
 // corrected normal that is returned, and W = P^T Hess f P / |grad f| is the shape operator
@@ -58,93 +65,151 @@ namespace CGAL {
 namespace Point_set_curvatures {
 namespace internal {
 
-// Packed index of the symmetric third-order entry (a, b, c), a <= b <= c:
-// xxx xxy xxz xyy xyz xzz yyy yyz yzz zzz.
-inline int sym3_index(int a, int b, int c)
-{
-  // sort the three indices
-  if(a > b) { int s = a; a = b; b = s; }
-  if(b > c) { int s = b; b = c; c = s; }
-  if(a > b) { int s = a; a = b; b = s; }
-  static const int first[3] = {0, 6, 9};  // start of the block with smallest index a
-  return first[a] + sym_index(b, c) - sym_index(a, a);
-}
-
-// Weighted moments of one neighbourhood, in the scaled centred frame (Smooth_kernel).
-// Symmetric 3x3 blocks are packed xx xy xz yy yz zz.
-struct Aso_moments
+// Pass 1: the five sums of the sphere fit and the moments giving their gradients, in the
+// scaled centred frame. grad A = 4 tq, grad B_a = 4 tqq[a, .], grad C_a = 4 tnq[a, .],
+// grad D = 4 tqnq, grad E = 4 (tq - B) (since q.q = 1 - t).
+struct Aso_first_order_sums
 {
   std::size_t count = 0;
-  double t = 0, t2 = 0, t3 = 0;     // sum t, sum t^2 (= sum w), sum t^3
-  double tq[3] = {}, t2q[3] = {};   // sum t q, sum t^2 q
-  double qq[6] = {}, tqq[6] = {};   // sum q q^T, sum t q q^T
-  double qqq[10] = {};              // sum q (x) q (x) q
-  double tn[3] = {}, t2n[3] = {};   // sum t n, sum t^2 n
-  double tnq[9] = {};               // sum t n q^T, row a = n_a
-  double nqq[18] = {};              // sum n_a q q^T, block a
-  double t_qn = 0, t2_qn = 0;       // sum t (q.n), sum t^2 (q.n)
-  double t_qn_q[3] = {};            // sum t (q.n) q
-  double qn_qq[6] = {};             // sum (q.n) q q^T
-
-  // One neighbour at q (|q| < 1, scaled frame) with unit normal n.
-  void add(double qx, double qy, double qz, double nx, double ny, double nz)
-  {
-    const double tt = Smooth_kernel::t_of(qx * qx + qy * qy + qz * qz);
-    const double tt2 = tt * tt;
-    ++count;
-    t += tt; t2 += tt2; t3 += tt2 * tt;
-    const double q[3] = {qx, qy, qz};
-    const double n[3] = {nx, ny, nz};
-    const double m[6] = {qx * qx, qx * qy, qx * qz, qy * qy, qy * qz, qz * qz};
-    const double qn = qx * nx + qy * ny + qz * nz;
-    for(int i = 0; i < 3; ++i)
-    {
-      tq[i] += tt * q[i];
-      t2q[i] += tt2 * q[i];
-      tn[i] += tt * n[i];
-      t2n[i] += tt2 * n[i];
-      t_qn_q[i] += tt * qn * q[i];
-      const double tni = tt * n[i];
-      for(int j = 0; j < 3; ++j)
-        tnq[3 * i + j] += tni * q[j];
-    }
-    for(int k = 0; k < 6; ++k)
-    {
-      qq[k] += m[k];
-      tqq[k] += tt * m[k];
-      qn_qq[k] += qn * m[k];
-      nqq[k] += nx * m[k];
-      nqq[6 + k] += ny * m[k];
-      nqq[12 + k] += nz * m[k];
-    }
-    qqq[0] += m[0] * qx; qqq[1] += m[0] * qy; qqq[2] += m[0] * qz;
-    qqq[3] += m[1] * qy; qqq[4] += m[1] * qz; qqq[5] += m[2] * qz;
-    qqq[6] += m[3] * qy; qqq[7] += m[3] * qz; qqq[8] += m[4] * qz;
-    qqq[9] += m[5] * qz;
-    t_qn += tt * qn;
-    t2_qn += tt2 * qn;
-  }
-
-  void add(const Neighborhood& nb)
-  {
-    for(std::size_t i = 0; i < nb.size; ++i)
-      add(nb.qx[i], nb.qy[i], nb.qz[i], nb.nx[i], nb.ny[i], nb.nz[i]);
-  }
+  double A = 0, B[3] = {}, C[3] = {}, D = 0, E = 0;
+  double tq[3] = {};    // sum t q
+  double tqq[6] = {};   // sum t q q^T, packed xx xy xz yy yz zz
+  double tnq[9] = {};   // sum t n_a q_b, row a
+  double tqnq[3] = {};  // sum t (q.n) q
 };
 
-// Jet of sum w g from the three moments sum t^2 g, sum t g q and sum g q q^T, sum t g.
-inline Second_order_jet weighted_sum_jet(double sum_t2_g, const double sum_t_g_q[3],
-                                         const double sum_g_qq[6], double sum_t_g)
+// Pass 1 as one rank-1 update per neighbour, M += a g^T with a = (w, t q) and
+// g = (1, q, n, q.n): row 0 of M holds A, B, C, D, rows 1-3 the gradient moments. The
+// 4-row columns are contiguous, so the update vectorises (SSE2: 2 lanes, AVX: 4).
+inline Aso_first_order_sums aso_first_pass(const Neighborhood& nb)
+{
+  double M[8][4] = {};  // M[j][r] = sum a_r g_j
+  double E = 0;         // sum w q.q
+  for(std::size_t i = 0; i < nb.size; ++i)
+  {
+    const double qx = nb.qx[i], qy = nb.qy[i], qz = nb.qz[i];
+    const double s = qx * qx + qy * qy + qz * qz;
+    const double t = Smooth_kernel::t_of(s);
+    const double w = Smooth_kernel::weight(t);
+    const double a[4] = {w, t * qx, t * qy, t * qz};
+    const double g[8] = {1.0, qx, qy, qz, nb.nx[i], nb.ny[i], nb.nz[i],
+                         qx * nb.nx[i] + qy * nb.ny[i] + qz * nb.nz[i]};
+    for(int j = 0; j < 8; ++j)
+      for(int r = 0; r < 4; ++r)
+        M[j][r] += a[r] * g[j];
+    E += w * s;
+  }
+  Aso_first_order_sums m;
+  m.count = nb.size;
+  m.A = M[0][0];
+  m.D = M[7][0];
+  m.E = E;
+  for(int c = 0; c < 3; ++c)
+  {
+    m.B[c] = M[1 + c][0];
+    m.C[c] = M[4 + c][0];
+    m.tq[c] = M[0][1 + c];
+    m.tqnq[c] = M[7][1 + c];
+    for(int d = 0; d < 3; ++d)
+    {
+      m.tnq[3 * c + d] = M[4 + c][1 + d];  // sum t n_c q_d
+      if(d >= c)
+        m.tqq[sym_index(c, d)] = M[1 + c][1 + d];
+    }
+  }
+  return m;
+}
+
+// Jet of a sum with its value and gradient gradient_factor * moment; its Hessian is left
+// to pass 2.
+inline Second_order_jet first_order_jet(double value, const double moment[3])
 {
   Second_order_jet s;
-  s.v = sum_t2_g;
+  s.v = value;
   for(int i = 0; i < 3; ++i)
-    s.g[i] = Smooth_kernel::gradient_factor * sum_t_g_q[i];
-  for(int k = 0; k < 6; ++k)
-    s.h[k] = Smooth_kernel::hessian_qq_factor * sum_g_qq[k];
-  for(int k : {0, 3, 5})
-    s.h[k] += Smooth_kernel::hessian_identity_factor * sum_t_g;
+    s.g[i] = Smooth_kernel::gradient_factor * moment[i];
   return s;
+}
+
+// du_c/dS for S = (A, B, C, D, E), by reverse differentiation of Equations 2-4 at the sums'
+// values (every quantity below is a value, not a jet).
+struct Sums_adjoint
+{
+  double A = 0, B[3] = {0, 0, 0}, C[3] = {0, 0, 0}, D = 0, E = 0;
+};
+
+inline Sums_adjoint u_c_adjoint(const Aso_first_order_sums& m)
+{
+  const double* B = m.B;
+  const double* C = m.C;
+  const double BB = B[0] * B[0] + B[1] * B[1] + B[2] * B[2];
+  const double BC = B[0] * C[0] + B[1] * C[1] + B[2] * C[2];
+  const double num = m.A * m.D - BC, den = m.A * m.E - BB;
+  const double u_q = num / (2 * den), inv_A = 1 / m.A;
+  double u_l[3];
+  for(int i = 0; i < 3; ++i)
+    u_l[i] = (C[i] - 2 * u_q * B[i]) * inv_A;
+  const double P = u_l[0] * B[0] + u_l[1] * B[1] + u_l[2] * B[2] + u_q * m.E;  // u_c = -P / A
+
+  Sums_adjoint F;
+  const double P_bar = -inv_A;
+  F.A = P * inv_A * inv_A;
+  double u_l_bar[3];
+  for(int i = 0; i < 3; ++i)
+  {
+    u_l_bar[i] = P_bar * B[i];
+    F.B[i] = P_bar * u_l[i];
+  }
+  double u_q_bar = P_bar * m.E;
+  F.E = P_bar * u_q;
+  // through u_l = (C - 2 u_q B) / A
+  double ulb_B = 0, ulb_ul = 0;
+  for(int i = 0; i < 3; ++i)
+  {
+    F.C[i] = u_l_bar[i] * inv_A;
+    F.B[i] -= 2 * u_q * inv_A * u_l_bar[i];
+    ulb_B += u_l_bar[i] * B[i];
+    ulb_ul += u_l_bar[i] * u_l[i];
+  }
+  u_q_bar -= 2 * inv_A * ulb_B;
+  F.A -= inv_A * ulb_ul;
+  // through u_q = num / (2 den), num = A D - B.C, den = A E - B.B
+  const double num_bar = u_q_bar / (2 * den);
+  const double den_bar = -u_q_bar * u_q / den;
+  F.A += num_bar * m.D + den_bar * m.E;
+  F.D = num_bar * m.A;
+  F.E += den_bar * m.A;
+  for(int i = 0; i < 3; ++i)
+  {
+    F.B[i] -= num_bar * C[i] + 2 * den_bar * B[i];
+    F.C[i] -= num_bar * B[i];
+  }
+  return F;
+}
+
+// Pass 2: sum_k F_k Hess S_k = sum_i gamma_i (8 q q^T - 4 t I), packed xx xy xz yy yz zz.
+inline void aso_second_pass(const Neighborhood& nb, const Sums_adjoint& F, double hessian[6])
+{
+  double gxx = 0, gxy = 0, gxz = 0, gyy = 0, gyz = 0, gzz = 0, gt = 0;
+  for(std::size_t i = 0; i < nb.size; ++i)
+  {
+    const double qx = nb.qx[i], qy = nb.qy[i], qz = nb.qz[i];
+    const double nx = nb.nx[i], ny = nb.ny[i], nz = nb.nz[i];
+    const double s = qx * qx + qy * qy + qz * qz;
+    const double t = Smooth_kernel::t_of(s);
+    const double gamma = F.A + F.B[0] * qx + F.B[1] * qy + F.B[2] * qz + F.C[0] * nx +
+                         F.C[1] * ny + F.C[2] * nz + F.D * (qx * nx + qy * ny + qz * nz) +
+                         F.E * s;
+    const double gx = gamma * qx, gy = gamma * qy, gz = gamma * qz;
+    gxx += gx * qx; gxy += gx * qy; gxz += gx * qz;
+    gyy += gy * qy; gyz += gy * qz; gzz += gz * qz;
+    gt += gamma * t;
+  }
+  const double g[6] = {gxx, gxy, gxz, gyy, gyz, gzz};
+  for(int k = 0; k < 6; ++k)
+    hessian[k] = Smooth_kernel::hessian_qq_factor * g[k];
+  for(int k : {0, 3, 5})
+    hessian[k] += Smooth_kernel::hessian_identity_factor * gt;
 }
 
 // Minimal number of neighbours (query included) for the sphere fit and the ASO.
@@ -190,49 +255,45 @@ inline bool set_authors_shape_operator(const double gradient[3], const double he
   return std::isfinite(e.k_min) && std::isfinite(e.k_max);
 }
 
-// ASO estimate (Equations 27-35) from the moments of a neighbourhood of radius r.
-inline Local_estimate algebraic_shape_operator(const Aso_moments& m, double radius,
+// ASO estimate (Equations 27-35) of a neighbourhood.
+inline Local_estimate algebraic_shape_operator(const Neighborhood& nb,
                                                Aso_projection projection = Aso_projection::CORRECTED_NORMAL)
 {
-  if(m.count < aso_min_neighbors)
+  if(nb.size < aso_min_neighbors)
     return Local_estimate::invalid(Curvature_estimate_status::TOO_FEW_NEIGHBORS);
 
+  const Aso_first_order_sums m = aso_first_pass(nb);
+  // Degenerate fit: the weighted variance of the positions, (A E - B.B) / A^2, vanishes
+  // when the neighbours coincide (relative to r^2, as q is scaled by 1/r).
+  const double BB = m.B[0] * m.B[0] + m.B[1] * m.B[1] + m.B[2] * m.B[2];
+  if(!(m.A > 0) || !(m.A * m.E - BB > 1e-12 * m.A * m.A))
+    return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
+
   typedef Second_order_jet Jet;
-  // The five sums of the sphere fit, with their derivatives in x.
-  const Jet A = weighted_sum_jet(m.t2, m.tq, m.qq, m.t);
+  const Jet A = first_order_jet(m.A, m.tq);
   Jet B[3], C[3];
   for(int a = 0; a < 3; ++a)
   {
-    double tqa_q[3], qa_qq[6];
-    for(int b = 0; b < 3; ++b)
-      tqa_q[b] = m.tqq[sym_index(a, b)];
-    for(int b = 0; b < 3; ++b)
-      for(int c = b; c < 3; ++c)
-        qa_qq[sym_index(b, c)] = m.qqq[sym3_index(a, b, c)];
-    B[a] = weighted_sum_jet(m.t2q[a], tqa_q, qa_qq, m.tq[a]);
-    C[a] = weighted_sum_jet(m.t2n[a], m.tnq + 3 * a, m.nqq + 6 * a, m.tn[a]);
+    const double tqa_q[3] = {m.tqq[sym_index(a, 0)], m.tqq[sym_index(a, 1)], m.tqq[sym_index(a, 2)]};
+    B[a] = first_order_jet(m.B[a], tqa_q);
+    C[a] = first_order_jet(m.C[a], m.tnq + 3 * a);
   }
-  const Jet D = weighted_sum_jet(m.t2_qn, m.t_qn_q, m.qn_qq, m.t_qn);
-  double ts_q[3], s_qq[6];  // sum t (q.q) q and sum (q.q) q q^T, with q.q = 1 - t
-  for(int i = 0; i < 3; ++i) ts_q[i] = m.tq[i] - m.t2q[i];
-  for(int k = 0; k < 6; ++k) s_qq[k] = m.qq[k] - m.tqq[k];
-  const Jet E = weighted_sum_jet(m.t2 - m.t3, ts_q, s_qq, m.t - m.t2);
+  const Jet D = first_order_jet(m.D, m.tqnq);
+  const double ts_q[3] = {m.tq[0] - m.B[0], m.tq[1] - m.B[1], m.tq[2] - m.B[2]};  // sum t (q.q) q
+  const Jet E = first_order_jet(m.E, ts_q);
 
-  // Degenerate fit: the weighted variance of the positions, (A E - B.B) / A^2, vanishes
-  // when the neighbours coincide (relative to r^2, as q is scaled by 1/r).
-  const Jet BB = B[0] * B[0] + B[1] * B[1] + B[2] * B[2];
-  const Jet BC = B[0] * C[0] + B[1] * C[1] + B[2] * C[2];
-  const Jet den = A * E - BB;
-  if(!(A.v > 0) || !(den.v > 1e-12 * A.v * A.v))
-    return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
-
-  // Equations 2-4.
-  const Jet u_q = 0.5 * ((A * D - BC) * reciprocal(den));
+  // Equations 2-4 (pass 1: the Hessians hold only products of first derivatives).
+  const Jet u_q = 0.5 * ((A * D - (B[0] * C[0] + B[1] * C[1] + B[2] * C[2])) *
+                         reciprocal(A * E - (B[0] * B[0] + B[1] * B[1] + B[2] * B[2])));
   const Jet inv_A = reciprocal(A);
   Jet u_l[3];
   for(int a = 0; a < 3; ++a)
     u_l[a] = (C[a] - 2.0 * (u_q * B[a])) * inv_A;
   const Jet u_c = -1.0 * ((u_l[0] * B[0] + u_l[1] * B[1] + u_l[2] * B[2] + u_q * E) * inv_A);
+
+  // Pass 2: the part of Hess u_c linear in the sums' Hessians.
+  double linear_part[6];
+  aso_second_pass(nb, u_c_adjoint(m), linear_part);
 
   // Equations 28-29 at the evaluation point (the origin of the frame).
   double gradient[3], hessian[6];
@@ -242,15 +303,16 @@ inline Local_estimate algebraic_shape_operator(const Aso_moments& m, double radi
     for(int j = i; j < 3; ++j)
     {
       const int k = sym_index(i, j);
-      hessian[k] = u_c.h[k] + u_l[i].g[j] + u_l[j].g[i] + (i == j ? 2.0 * u_q.v : 0.0);
+      hessian[k] = u_c.h[k] + linear_part[k] + u_l[i].g[j] + u_l[j].g[i] +
+                   (i == j ? 2.0 * u_q.v : 0.0);
     }
 
   Local_estimate e;
   // Equations 27 and 31-35; derivatives are per unit of the scaled frame, hence 1/r.
   const double u_l_value[3] = {u_l[0].v, u_l[1].v, u_l[2].v};
   const bool ok = (projection == Aso_projection::CORRECTED_NORMAL)
-                    ? set_shape_operator(gradient, hessian, 1.0 / radius, e)
-                    : set_authors_shape_operator(gradient, hessian, u_l_value, 1.0 / radius, e);
+                    ? set_shape_operator(gradient, hessian, 1.0 / nb.radius, e)
+                    : set_authors_shape_operator(gradient, hessian, u_l_value, 1.0 / nb.radius, e);
   if(!ok)
     return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
   e.status = Curvature_estimate_status::VALID;

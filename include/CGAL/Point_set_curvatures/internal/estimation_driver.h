@@ -132,11 +132,13 @@ Curvature_estimate<GeomTraits> to_curvature_estimate(const Local_estimate& e, st
   return r;
 }
 
-// Reusable neighbourhood storage of one thread: grows, never shrinks, so the hot loop
-// allocates only when a neighbourhood is larger than every previous one.
+// Reusable neighbourhood storage of one thread: the candidate indices and the accepted
+// neighbours' columns. It grows, never shrinks, so the hot loop allocates only when a
+// neighbourhood is larger than every previous one.
 class Neighbor_buffer
 {
 public:
+  // Room for n candidates and n neighbours; the first size() neighbours are kept.
   void reserve(std::size_t n)
   {
     if(n <= m_capacity)
@@ -144,19 +146,28 @@ public:
     std::size_t cap = std::max<std::size_t>(64, m_capacity);
     while(cap < n)
       cap *= 2;
-    std::vector<double> grown(6 * cap);
+    // Columns are padded by 8 doubles so that they are not a power of two apart: the
+    // gather stores and the estimators' loads would otherwise alias modulo 4 KiB and stall.
+    const std::size_t stride = cap + 8;
+    std::vector<double> grown(6 * stride);
     for(int a = 0; a < 6; ++a)
-      std::copy(m_data.begin() + a * m_capacity, m_data.begin() + a * m_capacity + m_size,
-                grown.begin() + a * cap);
+      std::copy(m_data.begin() + a * m_stride, m_data.begin() + a * m_stride + m_size,
+                grown.begin() + a * stride);
     m_data.swap(grown);
+    m_index.resize(cap);
     m_capacity = cap;
+    m_stride = stride;
   }
-  double* column(int a) { return m_data.data() + a * m_capacity; }
+  std::uint32_t* candidates() { return m_index.data(); }
+  double* column(int a) { return m_data.data() + a * m_stride; }
+  // number of neighbours stored in the columns (kept by reserve())
   void set_size(std::size_t n) { m_size = n; }
+  std::size_t size() const { return m_size; }
 
 private:
+  std::vector<std::uint32_t> m_index;
   std::vector<double> m_data;
-  std::size_t m_capacity = 0, m_size = 0;
+  std::size_t m_capacity = 0, m_stride = 0, m_size = 0;
 };
 
 // Usable points in grid order with their input positions.
@@ -274,8 +285,9 @@ void read_and_sort(const PointRange& points, PointMap point_map, NormalMap norma
   }
 }
 
-// Visits the neighbourhood of every point of the cells [first, last): gathers the points
-// at distance < r into `buffer` (scaled centred frame) and calls visit(input_index, nb).
+// Visits the neighbourhood of every point of the cells [first, last): selects the points
+// at distance < r among the candidates of the 27 surrounding cells, copies them into
+// `buffer` (scaled centred frame) and calls visit(input_index, nb).
 template <class Visitor>
 void visit_cells(const Sorted_cloud& cloud, double radius, std::size_t first_cell,
                  std::size_t last_cell, Neighbor_buffer& buffer, Visitor& visit)
@@ -284,37 +296,46 @@ void visit_cells(const Sorted_cloud& cloud, double radius, std::size_t first_cel
   const double* position = cloud.position.data();
   const double* normal = cloud.normal.data();
   cloud.grid.for_each_cell(first_cell, last_cell, [&](Index_range cell, const Index_range* rows) {
+    std::size_t n_candidates = 0;
+    for(int r = 0; r < 9; ++r)
+      n_candidates += rows[r].end - rows[r].begin;
+    buffer.set_size(0);
+    buffer.reserve(n_candidates);
+    std::uint32_t* selected = buffer.candidates();
     for(std::uint32_t query = cell.begin; query < cell.end; ++query)
     {
-      const double* x = position + 3 * query;
+      const double x0 = position[3 * query], x1 = position[3 * query + 1],
+                   x2 = position[3 * query + 2];
+      // 1. select: branch-free, the index is always written and kept if inside the ball
       std::size_t k = 0;
       for(int r = 0; r < 9; ++r)
-      {
-        buffer.reserve(k + (rows[r].end - rows[r].begin));
-        double *qx = buffer.column(0), *qy = buffer.column(1), *qz = buffer.column(2);
-        double *nx = buffer.column(3), *ny = buffer.column(4), *nz = buffer.column(5);
         for(std::uint32_t j = rows[r].begin; j < rows[r].end; ++j)
         {
-          // branch-free append: written always, kept if inside the open ball
-          const double dx = position[3 * j] - x[0];
-          const double dy = position[3 * j + 1] - x[1];
-          const double dz = position[3 * j + 2] - x[2];
-          qx[k] = dx * inv_r; qy[k] = dy * inv_r; qz[k] = dz * inv_r;
-          nx[k] = normal[3 * j]; ny[k] = normal[3 * j + 1]; nz[k] = normal[3 * j + 2];
+          const double dx = position[3 * j] - x0;
+          const double dy = position[3 * j + 1] - x1;
+          const double dz = position[3 * j + 2] - x2;
+          selected[k] = j;
           k += (dx * dx + dy * dy + dz * dz < r2) ? 1 : 0;
         }
-        buffer.set_size(k);
+      // 2. gather the k neighbours into the scaled centred frame
+      double *qx = buffer.column(0), *qy = buffer.column(1), *qz = buffer.column(2);
+      double *nx = buffer.column(3), *ny = buffer.column(4), *nz = buffer.column(5);
+      for(std::size_t i = 0; i < k; ++i)
+      {
+        const double* p = position + 3 * selected[i];
+        const double* n = normal + 3 * selected[i];
+        qx[i] = (p[0] - x0) * inv_r; qy[i] = (p[1] - x1) * inv_r; qz[i] = (p[2] - x2) * inv_r;
+        nx[i] = n[0]; ny[i] = n[1]; nz[i] = n[2];
       }
+      buffer.set_size(k);
       Neighborhood nb;
       nb.size = k;
-      nb.qx = buffer.column(0); nb.qy = buffer.column(1); nb.qz = buffer.column(2);
-      nb.nx = buffer.column(3); nb.ny = buffer.column(4); nb.nz = buffer.column(5);
+      nb.qx = qx; nb.qy = qy; nb.qz = qz;
+      nb.nx = nx; nb.ny = ny; nb.nz = nz;
       nb.radius = radius;
+      nb.center[0] = x0; nb.center[1] = x1; nb.center[2] = x2;
       for(int a = 0; a < 3; ++a)
-      {
-        nb.center[a] = x[a];
         nb.query_normal[a] = normal[3 * query + a];
-      }
       visit(std::size_t(cloud.input_index[query]), static_cast<const Neighborhood&>(nb));
     }
   });
