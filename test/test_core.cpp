@@ -1,22 +1,1312 @@
-// Core package tests (placeholder; the full suite replaces it).
-#include "test_support.h"
+// Copyright (c) 2026 The Point_set_curvatures authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Tests of the core package: estimate_aso_curvatures(), estimate_apss_curvatures() and the
+// per-query classes Algebraic_shape_operator_fit and Algebraic_sphere_fit, through the
+// public API only. Each TEST_CASE states one property (most are claims of Lejemble et al.
+// 2021 or requirements of the package's issue); every tolerance says what was measured
+// (Release build, x86-64, GCC) and why the bound is what it is. Run the tests with
+// PSC_TEST_PRINT=1 in the environment to print the measured values again.
 
-#include <CGAL/estimate_aso_curvatures.h>
+#include "test_core_support.h"
+
+#include <CGAL/Algebraic_shape_operator_fit.h>
+#include <CGAL/Algebraic_sphere_fit.h>
 #include <CGAL/estimate_apss_curvatures.h>
+#include <CGAL/estimate_aso_curvatures.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Point_set_3.h>
 
 #include <catch2/catch.hpp>
 
-using namespace psc_test;
+#include <functional>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <tuple>
+#include <vector>
 
-TEST_CASE("ASO on a sphere of radius 2 with outward normals gives 1/R")
+using namespace psc_test;
+using namespace psc_core_test;
+namespace PSC = CGAL::Point_set_curvatures;
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
+const double nan_value = std::numeric_limits<double>::quiet_NaN();
+const double inf_value = std::numeric_limits<double>::infinity();
+
+auto maps() { return CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()); }
+auto authors_maps()
 {
-  const auto pts = sphere(20000, 2.0);
-  const auto est = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, Point_map(), Normal_map(), 0.2);
-  REQUIRE(est.size() == pts.size());
-  for(const auto& e : est)
+  return PSC::parameters::aso_projection(CGAL::Aso_projection::AUTHORS_IMPLEMENTATION, maps());
+}
+
+template <class Tag = CGAL::Sequential_tag>
+std::vector<Estimate> aso(const std::vector<Oriented_point>& pts, double r)
+{
+  return CGAL::estimate_aso_curvatures<Tag>(pts, r, maps());
+}
+
+template <class Tag = CGAL::Sequential_tag>
+std::vector<Estimate> apss(const std::vector<Oriented_point>& pts, double r)
+{
+  return CGAL::estimate_apss_curvatures<Tag>(pts, r, maps());
+}
+
+std::vector<Estimate> aso_authors(const std::vector<Oriented_point>& pts, double r)
+{
+  return CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, r, authors_maps());
+}
+
+// The shared clouds are read once per test program.
+const std::vector<Oriented_point>& goursat_10k()
+{
+  static const std::vector<Oriented_point> c = read_xyz(shared_data("goursat_010000.xyz"));
+  return c;
+}
+const std::vector<Oriented_point>& goursat_50k()
+{
+  static const std::vector<Oriented_point> c = read_xyz(shared_data("goursat_050000.xyz"));
+  return c;
+}
+const std::vector<Oriented_point>& bunny()
+{
+  static const std::vector<Oriented_point> c = read_ascii_ply_xyz_normals(shared_data("bunny.ply"));
+  return c;
+}
+
+std::size_t count_invalid(const std::vector<Estimate>& est)
+{
+  std::size_t n = 0;
+  for(const Estimate& e : est)
+    n += e.is_valid() ? 0 : 1;
+  return n;
+}
+
+// what() of the std::invalid_argument that f() throws, or a note saying it threw none.
+template <class F>
+std::string invalid_argument_message(F f)
+{
+  try
   {
-    REQUIRE(e.is_valid());
-    CHECK(e.min_curvature == Approx(0.5).epsilon(1e-9));
-    CHECK(e.max_curvature == Approx(0.5).epsilon(1e-9));
+    f();
   }
+  catch(const std::invalid_argument& e)
+  {
+    return e.what();
+  }
+  catch(...)
+  {
+    return "<an exception other than std::invalid_argument>";
+  }
+  return "<no exception>";
+}
+
+std::string printed(double x)
+{
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
+} // namespace
+
+// ---------------------------------------------------------------------------------------
+// Analytic surfaces
+// ---------------------------------------------------------------------------------------
+
+// Section 5 of the paper: the ASO is the shape operator of the APSS field. Points sampled
+// on a sphere with exact normals are fitted exactly by the algebraic sphere whatever the
+// weights, so the field does not depend on the evaluation point, its shape operator is
+// exactly I/R, and only rounding is left.
+TEST_CASE("ASO on a sphere with outward normals: k_min = k_max = H = 1/R and K = 1/R^2", "[aso][sphere]")
+{
+  struct Case { double R; Point c; };
+  // small, unit and large radii; centres at the origin and far off it
+  const Case cases[] = {{2, Point(0, 0, 0)}, {0.01, Point(0, 0, 0)}, {500, Point(0, 0, 0)},
+                        {2, Point(3, -7, 11)}, {0.5, Point(-1000, 250, 40)}};
+  for(const Case& c : cases)
+  {
+    const auto pts = sphere(20000, c.R, c.c);
+    const double r = 0.1 * c.R;  // about 50 neighbours
+    const auto est = aso(pts, r);
+    REQUIRE(est.size() == pts.size());
+    REQUIRE(count_invalid(est) == 0);
+    Stat k_err, n_err, d_err;
+    for(std::size_t i = 0; i < pts.size(); ++i)
+    {
+      const Estimate& e = est[i];
+      const double inv_R = 1 / c.R;
+      k_err.add(std::abs(e.min_curvature - inv_R) / inv_R);
+      k_err.add(std::abs(e.max_curvature - inv_R) / inv_R);
+      k_err.add(std::abs(e.mean_curvature - inv_R) / inv_R);
+      k_err.add(std::abs(e.gaussian_curvature - inv_R * inv_R) / (inv_R * inv_R));
+      n_err.add(length(e.normal - pts[i].second));
+      // principal directions: unit, orthogonal to each other and to the normal
+      d_err.add(std::abs(length(e.min_direction) - 1));
+      d_err.add(std::abs(length(e.max_direction) - 1));
+      d_err.add(std::abs(e.min_direction * e.max_direction));
+      d_err.add(std::abs(e.min_direction * e.normal));
+      d_err.add(std::abs(e.max_direction * e.normal));
+      REQUIRE(e.min_curvature <= e.max_curvature);
+    }
+    const std::string tag = "sphere R=" + printed(c.R) + " c=(" + printed(c.c.x()) + ")";
+    measured("ASO " + tag + ": max relative curvature error", k_err.max);
+    measured("ASO " + tag + ": max |normal - radial|", n_err.max);
+    measured("ASO " + tag + ": max frame defect of directions", d_err.max);
+    // Measured: 4.9e-11 for R = 0.5 centred at (-1000, 250, 40) (coordinates 2000 R away
+    // from the origin: their rounding, relative to R, is 2000 times larger), at most 1.7e-13
+    // elsewhere. The issue's bound, 1e-9, holds with a margin of 20.
+    CHECK(k_err.max < 1e-9);
+    // Measured 8.1e-13 for the far centre, at most 4e-15 elsewhere (same factor 2000).
+    CHECK(n_err.max < 1e-10);
+    // Measured at most 5.5e-16: the directions are an orthonormal tangent frame.
+    CHECK(d_err.max < 1e-12);
+  }
+}
+
+// The sign convention: curvature is positive where the surface bends away from the normal,
+// so flipping every normal flips k_min, k_max, H (and the normal), and keeps K.
+TEST_CASE("ASO on a sphere with inward normals gives -1/R, K = 1/R^2 and the inward normal", "[aso][sphere]")
+{
+  const double R = 2;
+  const Point centre(3, -7, 11);
+  const auto pts = sphere(20000, R, centre, /*inward=*/true);
+  const auto est = aso(pts, 0.2);
+  REQUIRE(count_invalid(est) == 0);
+  Stat k_err, n_err;
+  for(std::size_t i = 0; i < pts.size(); ++i)
+  {
+    k_err.add(std::abs(est[i].min_curvature + 1 / R) * R);
+    k_err.add(std::abs(est[i].max_curvature + 1 / R) * R);
+    k_err.add(std::abs(est[i].mean_curvature + 1 / R) * R);
+    k_err.add(std::abs(est[i].gaussian_curvature - 1 / (R * R)) * R * R);
+    n_err.add(length(est[i].normal - pts[i].second));  // pts[i].second is inward
+  }
+  measured("ASO inward sphere: max relative curvature error", k_err.max);
+  measured("ASO inward sphere: max |normal - inward radial|", n_err.max);
+  // Same rounding as with outward normals (measured 1.7e-13 and 4e-15).
+  CHECK(k_err.max < 1e-9);
+  CHECK(n_err.max < 1e-12);
+}
+
+// Section 3, Equations 7-8: the APSS normal is the gradient of the fitted sphere and its
+// mean curvature the Pratt-normalised 2 u_q, exactly 1/R on a sphere (signed by the
+// normals); APSS cannot measure principal curvatures, so those fields stay NaN.
+TEST_CASE("APSS on a sphere gives H = 1/R with radial normals, -1/R with inward normals", "[apss][sphere]")
+{
+  const double R = 2;
+  const Point centre(3, -7, 11);
+  for(bool inward : {false, true})
+  {
+    const auto pts = sphere(20000, R, centre, inward);
+    const auto est = apss(pts, 0.2);
+    REQUIRE(count_invalid(est) == 0);
+    const double expected = inward ? -1 / R : 1 / R;
+    Stat h_err, n_err;
+    bool principal_nan = true;
+    for(std::size_t i = 0; i < pts.size(); ++i)
+    {
+      h_err.add(std::abs(est[i].mean_curvature - expected) * R);
+      n_err.add(length(est[i].normal - pts[i].second));
+      principal_nan = principal_nan && principal_fields_nan(est[i]);
+    }
+    measured(std::string("APSS sphere ") + (inward ? "inward" : "outward") + ": max relative H error", h_err.max);
+    measured(std::string("APSS sphere ") + (inward ? "inward" : "outward") + ": max normal error", n_err.max);
+    // Measured 3.3e-15 (H) and 1.0e-15 (normal): rounding only.
+    CHECK(h_err.max < 1e-9);
+    CHECK(n_err.max < 1e-12);
+    CHECK(principal_nan);
+  }
+}
+
+// A cylinder is not a sphere, yet the ASO (a derivative of sphere fits) must find k_min ~ 0
+// along the axis and k_max ~ 1/R around it. The cylinder is sampled on a jittered grid
+// (spacing 0.031): the error measured is the sampling's, not a bias of the estimator. Its
+// mean over the cylinder (k_min R: -4e-5 at r = 0.15, -9e-6 at r = 0.3) is 20 to 100 times
+// smaller than its maximum, and the maximum shrinks 13 times when r doubles (4 times more
+// neighbours average out the jitter).
+TEST_CASE("ASO on a cylinder: k_min ~ 0 along the axis, k_max ~ 1/R", "[aso][cylinder]")
+{
+  const double R = 1, height = 2;
+  const auto pts = cylinder(200, 64, R, height);
+  struct Bounds { double r, k_min, k_max, degrees, normal; };
+  // Measured maxima, r = 0.15 (about 70 neighbours): |k_min| R 1.04e-2, |k_max - 1/R| R
+  // 1.01e-2, angle(d_min, axis) 0.16 degrees, |n - n*| 1.0e-4; r = 0.3 (about 290
+  // neighbours): 8.1e-4, 7.4e-4, 0.024 degrees, 1.0e-5. Bounds: 1.5 times those.
+  const Bounds bounds[] = {{0.15, 1.5e-2, 1.5e-2, 0.25, 1.5e-4}, {0.3, 1.2e-3, 1.2e-3, 0.036, 1.5e-5}};
+  for(const Bounds& b : bounds)
+  {
+    const auto est = aso(pts, b.r);
+    REQUIRE(count_invalid(est) == 0);
+    Stat k_min_err, k_max_err, angle, n_err;
+    for(std::size_t i = 0; i < pts.size(); ++i)
+    {
+      if(std::abs(pts[i].first.z()) > height / 2 - b.r)
+        continue;  // the open ends bias the fit; only complete neighbourhoods are judged
+      const Estimate& e = est[i];
+      k_min_err.add(std::abs(e.min_curvature) * R);
+      k_max_err.add(std::abs(e.max_curvature - 1 / R) * R);
+      angle.add(line_angle_degrees(e.min_direction, Vector(0, 0, 1)));
+      n_err.add(length(e.normal - pts[i].second));
+    }
+    REQUIRE(k_min_err.n > 7000);
+    const std::string t = "ASO cylinder R=1 r=" + printed(b.r);
+    measured(t + ": max |k_min| R", k_min_err.max);
+    measured(t + ": max |k_max - 1/R| R", k_max_err.max);
+    measured(t + ": max angle(d_min, axis) degrees", angle.max);
+    measured(t + ": max normal error", n_err.max);
+    CHECK(k_min_err.max < b.k_min);
+    CHECK(k_max_err.max < b.k_max);
+    CHECK(angle.max < b.degrees);
+    CHECK(n_err.max < b.normal);
+  }
+}
+
+// A planar neighbourhood is not degenerate: it is valid with zero curvatures. The tilted
+// plane checks that rounding in a generic frame stays far below any real curvature.
+TEST_CASE("ASO and APSS on a plane: valid, zero curvatures, the plane's normal", "[aso][apss][plane]")
+{
+  const double h = 0.01, r = 0.04;  // about 50 neighbours
+  const auto flat = plane(60, h);
+  const Rotation tilt(Vector(1, 2, 3), 0.7);
+  const auto tilted = rotated(flat, tilt);
+  for(int t = 0; t < 2; ++t)
+  {
+    const auto& pts = t == 0 ? flat : tilted;
+    const Vector expected_normal = t == 0 ? Vector(0, 0, 1) : tilt(Vector(0, 0, 1));
+    const auto est = aso(pts, r);
+    const auto est_apss = apss(pts, r);
+    REQUIRE(count_invalid(est) == 0);
+    REQUIRE(count_invalid(est_apss) == 0);
+    Stat k, n_err;
+    for(std::size_t i = 0; i < pts.size(); ++i)
+    {
+      // curvatures times r: the rounding error relative to the scale the fit can see
+      k.add(std::abs(est[i].min_curvature) * r);
+      k.add(std::abs(est[i].max_curvature) * r);
+      k.add(std::abs(est[i].mean_curvature) * r);
+      k.add(std::abs(est[i].gaussian_curvature) * r * r);
+      k.add(std::abs(est_apss[i].mean_curvature) * r);
+      n_err.add(length(est[i].normal - expected_normal));
+      n_err.add(length(est_apss[i].normal - expected_normal));
+    }
+    const std::string name = t == 0 ? "plane z=0" : "tilted plane";
+    measured(name + ": max |k| r (ASO, APSS)", k.max);
+    measured(name + ": max normal error", n_err.max);
+    // Measured: 0 exactly on z = 0 (every term of the fit is exactly planar), 2.2e-15 on
+    // the tilted plane (5.4e-16 for the normal); 1e-12 leaves room for rounding only.
+    CHECK(k.max < 1e-12);
+    CHECK(n_err.max < 1e-12);
+  }
+}
+
+// "Normals need not be unit; they are normalised": scaling every input normal by its own
+// positive factor changes nothing but rounding, for APSS and the default ASO. (The
+// authors' projection uses the normals as given, by design, and is not tested here.)
+TEST_CASE("ASO and APSS do not depend on the length of the input normals", "[aso][apss]")
+{
+  const auto& pts = goursat_10k();
+  const double r = 1.5;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> factor(0.01, 100.0);
+  std::vector<Oriented_point> scaled = pts, unit = pts;
+  for(std::size_t i = 0; i < pts.size(); ++i)
+  {
+    unit[i].second = pts[i].second / length(pts[i].second);
+    scaled[i].second = unit[i].second * factor(rng);
+  }
+  const auto a = aso(unit, r), b = aso(scaled, r), c = aso(pts, r);
+  const auto a_apss = apss(unit, r), b_apss = apss(scaled, r);
+  Stat k, n;
+  for(std::size_t i = 0; i < pts.size(); ++i)
+  {
+    REQUIRE(b[i].is_valid());
+    const double scale = curvature_scale(a[i]);
+    for(const Estimate* e : {&b[i], &c[i]})
+    {
+      k.add(scaled_difference(e->min_curvature, a[i].min_curvature, scale));
+      k.add(scaled_difference(e->max_curvature, a[i].max_curvature, scale));
+      n.add(length(e->normal - a[i].normal));
+    }
+    k.add(scaled_difference(b_apss[i].mean_curvature, a_apss[i].mean_curvature, scale));
+    n.add(length(b_apss[i].normal - a_apss[i].normal));
+  }
+  measured("Goursat 10K normals scaled by [0.01, 100]: max scaled curvature change", k.max);
+  measured("Goursat 10K normals scaled by [0.01, 100]: max normal change", n.max);
+  // Measured 4.1e-15 and 3.5e-16: the normalisation's rounding (one ulp per component).
+  CHECK(k.max < 1e-12);
+  CHECK(n.max < 1e-12);
+}
+
+// The neighbourhood of a point is every input point at distance < r, itself included.
+TEST_CASE("neighbor_count is the number of input points at distance < r, the query included", "[aso][apss][count]")
+{
+  const auto& pts = bunny();
+  const double r = 0.005;
+  const auto est = aso(pts, r);
+  const auto est_apss = apss(pts, r);
+  std::size_t checked = 0;
+  for(std::size_t i = 0; i < pts.size(); i += 97)
+  {
+    const std::size_t n = brute_force_count(pts, pts[i].first, r);
+    CHECK(est[i].neighbor_count == n);
+    CHECK(est_apss[i].neighbor_count == n);
+    ++checked;
+  }
+  CHECK(checked > 300);
+}
+
+// ---------------------------------------------------------------------------------------
+// Reference values of the authors' implementation
+// ---------------------------------------------------------------------------------------
+
+namespace {
+
+// Compares the estimates with ../shared/data/reference/<file>. The reference was made with
+// the authors' implementation (tangent plane orthogonal to u_l, raw input normals), hence
+// Aso_projection::AUTHORS_IMPLEMENTATION. Curvatures: relative error with a floor at 1e-3
+// of the row's max(|k_min|, |k_max|) (its square for K), since a near-zero curvature
+// between two large ones carries the absolute rounding error of the large ones. (Measured:
+// without the floor the worst relative difference is 5.6e-12, with it 4.9e-12: the CSV's
+// own rounding to 12 significant digits, up to 5e-12.)
+void check_reference(const std::vector<Oriented_point>& pts, double r, const std::string& file)
+{
+  const auto rows = read_reference(shared_data("reference/" + file));
+  REQUIRE(rows.size() > 1000);
+  const auto est = aso_authors(pts, r);
+  REQUIRE(est.size() == pts.size());
+  Stat k_err, n_err, d_err;
+  std::size_t count_mismatch = 0, skipped_directions = 0;
+  for(const Reference_row& row : rows)
+  {
+    REQUIRE(row.index < est.size());
+    const Estimate& e = est[row.index];
+    REQUIRE(e.is_valid());
+    count_mismatch += (e.neighbor_count == row.neighbors) ? 0 : 1;
+    const double scale = std::max(std::abs(row.k_min), std::abs(row.k_max));
+    const double floor = 1e-3 * scale;
+    k_err.add(scaled_difference(e.min_curvature, row.k_min, floor));
+    k_err.add(scaled_difference(e.max_curvature, row.k_max, floor));
+    k_err.add(scaled_difference(e.mean_curvature, row.mean, floor));
+    k_err.add(scaled_difference(e.gaussian_curvature, row.gaussian, floor * scale));
+    n_err.add(length(e.normal - Vector(row.n[0], row.n[1], row.n[2])));
+    // A principal direction is defined up to sign, and only where k_min != k_max: its
+    // rounding error is about (curvature rounding) / (k_max - k_min). Directions are
+    // compared where the gap is at least 1e-3 of the curvature scale.
+    if(row.k_max - row.k_min < 1e-3 * scale)
+    {
+      ++skipped_directions;
+      continue;
+    }
+    d_err.add(line_distance(e.min_direction, Vector(row.d_min[0], row.d_min[1], row.d_min[2])));
+    d_err.add(line_distance(e.max_direction, Vector(row.d_max[0], row.d_max[1], row.d_max[2])));
+  }
+  measured(file + ": max scaled curvature difference", k_err.max);
+  measured(file + ": max normal difference", n_err.max);
+  measured(file + ": max direction difference (up to sign)", d_err.max);
+  measured(file + ": rows with near-umbilic directions skipped", double(skipped_directions));
+  CHECK(count_mismatch == 0);
+  // The issue's bound, 1e-9 (the CSV holds 12 significant digits). Measured: see the
+  // TEST_CASEs below.
+  CHECK(k_err.max < 1e-9);
+  CHECK(n_err.max < 1e-9);
+  CHECK(d_err.max < 1e-9);
+  CHECK(skipped_directions < rows.size() / 100);
+}
+
+} // namespace
+
+TEST_CASE("ASO agrees with the authors' values on the bunny at r = 0.005", "[aso][reference]")
+{
+  // Measured: curvatures 4.9e-12 (relative, floored), normals 8.4e-13, directions 8.5e-13,
+  // 0 of 3595 rows skipped for near-umbilic directions.
+  check_reference(bunny(), 0.005, "bunny_aso_r0.005.csv");
+}
+
+TEST_CASE("ASO agrees with the authors' values on Goursat 10K at r = 1.5", "[aso][reference]")
+{
+  // Measured: curvatures 4.9e-12 (relative, floored), normals 8.3e-13, directions 8.6e-13,
+  // 0 of 2000 rows skipped.
+  check_reference(goursat_10k(), 1.5, "goursat_010000_aso_r1.5.csv");
+}
+
+// The default projects on the plane orthogonal to the returned (corrected) normal; the
+// authors project on the plane orthogonal to u_l with raw normals. Both are the ASO of
+// the same field: they must differ only slightly, and only the default gives directions
+// that are exactly tangent to the normal it returns.
+TEST_CASE("Default ASO projection differs slightly from the authors' and keeps directions tangent", "[aso][projection]")
+{
+  const auto& pts = goursat_10k();
+  const double r = 1.5;
+  const auto def = aso(pts, r);
+  const auto aut = aso_authors(pts, r);
+  REQUIRE(count_invalid(def) == 0);
+  REQUIRE(count_invalid(aut) == 0);
+  Stat k_diff, n_diff, def_tangent, aut_tangent;
+  for(std::size_t i = 0; i < pts.size(); ++i)
+  {
+    const double scale = curvature_scale(aut[i]);
+    k_diff.add(scaled_difference(def[i].min_curvature, aut[i].min_curvature, scale));
+    k_diff.add(scaled_difference(def[i].max_curvature, aut[i].max_curvature, scale));
+    k_diff.add(scaled_difference(def[i].mean_curvature, aut[i].mean_curvature, scale));
+    n_diff.add(length(def[i].normal - aut[i].normal));
+    def_tangent.add(std::max(std::abs(def[i].min_direction * def[i].normal),
+                             std::abs(def[i].max_direction * def[i].normal)));
+    aut_tangent.add(std::max(std::abs(aut[i].min_direction * aut[i].normal),
+                             std::abs(aut[i].max_direction * aut[i].normal)));
+  }
+  measured("Goursat 10K r=1.5 default vs authors: max scaled curvature difference", k_diff.max);
+  measured("Goursat 10K r=1.5 default vs authors: mean scaled curvature difference", k_diff.mean());
+  measured("Goursat 10K r=1.5 default vs authors: max normal difference", n_diff.max);
+  measured("Goursat 10K r=1.5 default: max |d . n|", def_tangent.max);
+  measured("Goursat 10K r=1.5 authors: max |d . n|", aut_tangent.max);
+  measured("Goursat 10K r=1.5 authors: mean |d . n|", aut_tangent.mean());
+  // Measured: curvatures differ by 1.1e-3 of the curvature scale at most, 4.6e-5 on
+  // average, two orders of magnitude below the estimator's own error on this cloud (mean
+  // |H - H*| = 3.1e-3 for curvatures up to 0.5, see the Goursat tests). Bounds: 1.5 times.
+  CHECK(k_diff.max < 1.6e-3);
+  CHECK(k_diff.mean() < 7e-5);
+  // Both normals are grad f / |grad f|, but the authors' fit uses the input normals as
+  // given, unit to 6 digits in the file (max ||n| - 1| = 7.4e-7): measured 2.2e-8.
+  CHECK(n_diff.max < 1e-6);
+  // Measured 5.1e-16 for the default; the authors' directions are off the normal's plane
+  // by 1.1e-2 on average, 3.8e-2 at most (0.6 and 2.2 degrees).
+  CHECK(def_tangent.max < 1e-12);
+  CHECK(aut_tangent.mean() > 5e-3);
+}
+
+// ---------------------------------------------------------------------------------------
+// Accuracy on the Goursat surface (Section 6.1 of the paper)
+// ---------------------------------------------------------------------------------------
+
+namespace {
+
+struct Goursat_errors
+{
+  Stat H, k_min, k_max, normal_degrees, apss_H, apss_normal_degrees;
+  Stat consistency;  // of H, K and the frame with k_min, k_max and the normal
+  std::size_t unordered = 0;  // estimates with k_min > k_max
+};
+
+Goursat_errors goursat_errors(const std::vector<Oriented_point>& pts, double r)
+{
+  const auto est = aso(pts, r);
+  const auto est_apss = apss(pts, r);
+  REQUIRE(count_invalid(est) == 0);
+  REQUIRE(count_invalid(est_apss) == 0);
+  Goursat_errors err;
+  for(std::size_t i = 0; i < pts.size(); ++i)
+  {
+    const Truth t = goursat_truth(pts[i].first);
+    err.H.add(std::abs(est[i].mean_curvature - t.mean));
+    err.k_min.add(std::abs(est[i].min_curvature - t.k_min));
+    err.k_max.add(std::abs(est[i].max_curvature - t.k_max));
+    err.normal_degrees.add(line_angle_degrees(est[i].normal, t.normal));
+    const Estimate& e = est[i];
+    const double scale = curvature_scale(e);
+    err.unordered += (e.min_curvature <= e.max_curvature) ? 0 : 1;
+    err.consistency.add(std::abs(e.mean_curvature - 0.5 * (e.min_curvature + e.max_curvature)) / scale);
+    err.consistency.add(std::abs(e.gaussian_curvature - e.min_curvature * e.max_curvature) / (scale * scale));
+    err.consistency.add(std::abs(length(e.normal) - 1));
+    err.consistency.add(std::abs(length(e.min_direction) - 1));
+    err.consistency.add(std::abs(length(e.max_direction) - 1));
+    err.consistency.add(std::abs(e.min_direction * e.max_direction));
+    err.consistency.add(std::abs(e.min_direction * e.normal));
+    err.consistency.add(std::abs(e.max_direction * e.normal));
+    err.consistency.add(std::abs(length(est_apss[i].normal) - 1));
+    // oriented like the input: a flipped normal would be a gross error, not an angle
+    REQUIRE(est[i].normal * t.normal > 0);
+    err.apss_H.add(std::abs(est_apss[i].mean_curvature - t.mean));
+    err.apss_normal_degrees.add(line_angle_degrees(est_apss[i].normal, t.normal));
+  }
+  return err;
+}
+
+void print(const std::string& name, const Goursat_errors& e)
+{
+  measured(name + ": ASO mean |H - H*|", e.H.mean());
+  measured(name + ": ASO mean |k_min - k_min*|", e.k_min.mean());
+  measured(name + ": ASO mean |k_max - k_max*|", e.k_max.mean());
+  measured(name + ": ASO mean normal angle (degrees)", e.normal_degrees.mean());
+  measured(name + ": ASO max normal angle (degrees)", e.normal_degrees.max);
+  measured(name + ": APSS mean |H - H*|", e.apss_H.mean());
+  measured(name + ": APSS mean normal angle (degrees)", e.apss_normal_degrees.mean());
+  measured(name + ": max defect of H = (k1+k2)/2, K = k1 k2, unit orthogonal frame", e.consistency.max);
+}
+
+} // namespace
+
+// Bounds on the mean absolute errors (curvatures of the Goursat surface range over about
+// [-0.4, 0.5]); each is about 1.5 times the value measured, quoted beside it: they catch
+// any real regression of the estimator while leaving room for rounding differences between
+// compilers. The paper's claim (Section 6.1): ASO curvatures converge with the sampling,
+// and its normal is more accurate than the APSS one.
+namespace {
+
+struct Goursat_bounds
+{
+  double H, k_min, k_max, normal_degrees, apss_H, apss_normal_degrees;
+};
+
+void check_goursat(const Goursat_errors& e, const Goursat_bounds& b)
+{
+  CHECK(e.H.mean() < b.H);
+  CHECK(e.k_min.mean() < b.k_min);
+  CHECK(e.k_max.mean() < b.k_max);
+  CHECK(e.normal_degrees.mean() < b.normal_degrees);
+  CHECK(e.apss_H.mean() < b.apss_H);
+  CHECK(e.apss_normal_degrees.mean() < b.apss_normal_degrees);
+  CHECK(e.normal_degrees.mean() < e.apss_normal_degrees.mean());
+  // H = (k_min + k_max) / 2, K = k_min k_max, k_min <= k_max, unit normal and orthonormal
+  // tangent directions: exact up to rounding (measured at most 5.1e-16).
+  CHECK(e.unordered == 0);
+  CHECK(e.consistency.max < 1e-12);
+}
+
+} // namespace
+
+TEST_CASE("ASO and APSS on Goursat 10K at r = 1.5: mean errors of H, k_min, k_max, normals", "[aso][apss][goursat]")
+{
+  const Goursat_errors e = goursat_errors(goursat_10k(), 1.5);
+  print("Goursat 10K r=1.5", e);
+  // Measured: H 3.08e-3, k_min 2.86e-3, k_max 4.64e-3, normal 0.052 degrees; APSS H
+  // 3.52e-3, APSS normal 0.69 degrees.
+  check_goursat(e, {4.6e-3, 4.3e-3, 7.0e-3, 0.078, 5.3e-3, 1.03});
+}
+
+TEST_CASE("ASO and APSS on Goursat 50K at r = 1.0: mean errors of H, k_min, k_max, normals", "[aso][apss][goursat]")
+{
+  const Goursat_errors e = goursat_errors(goursat_50k(), 1.0);
+  print("Goursat 50K r=1.0", e);
+  // Measured: H 1.28e-3, k_min 1.25e-3, k_max 1.90e-3, normal 0.018 degrees; APSS H
+  // 2.50e-3, APSS normal 0.32 degrees: 2.4 times smaller curvature errors than on 10K.
+  check_goursat(e, {1.9e-3, 1.9e-3, 2.85e-3, 0.027, 3.7e-3, 0.48});
+}
+
+// The repository ships its own copy of the 10K cloud (the same file as ../shared/data's).
+TEST_CASE("ASO and APSS on the repository's Goursat 10K copy at r = 1.5: same mean errors", "[aso][apss][goursat]")
+{
+  const auto pts = read_xyz(repo_data("goursat_010000.xyz"));
+  REQUIRE(pts.size() == 10000);
+  const Goursat_errors e = goursat_errors(pts, 1.5);
+  print("repository Goursat 10K r=1.5", e);
+  // Measured: the same values as for ../shared/data/goursat_010000.xyz.
+  check_goursat(e, {4.6e-3, 4.3e-3, 7.0e-3, 0.078, 5.3e-3, 1.03});
+}
+
+// ---------------------------------------------------------------------------------------
+// Invariances
+// ---------------------------------------------------------------------------------------
+
+TEST_CASE("Sequential and Parallel runs give bitwise identical results", "[aso][apss][parallel]")
+{
+  // Goursat 50K plus one point of each invalid kind, so that statuses are compared too.
+  auto pts = goursat_50k();
+  const double r = 1.0;
+  pts.emplace_back(Point(nan_value, 0, 0), Vector(0, 0, 1));
+  pts.emplace_back(pts[10].first, Vector(0, 0, 0));
+  pts.emplace_back(Point(100, 0, 0), Vector(1, 0, 0));
+  pts.insert(pts.begin() + 20000, 4, Oriented_point(Point(0, 100, 0), Vector(0, 1, 0)));
+  const auto s = aso<CGAL::Sequential_tag>(pts, r);
+  const auto p = aso<CGAL::Parallel_tag>(pts, r);
+  const auto sa = apss<CGAL::Sequential_tag>(pts, r);
+  const auto pa = apss<CGAL::Parallel_tag>(pts, r);
+  const auto s_aut = aso_authors(pts, r);
+  const auto p_aut = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, r, authors_maps());
+  REQUIRE(s.size() == pts.size());
+  REQUIRE(p.size() == pts.size());
+  std::size_t differ = 0, differ_apss = 0, differ_authors = 0;
+  for(std::size_t i = 0; i < pts.size(); ++i)
+  {
+    differ += same_estimate(s[i], p[i]) ? 0 : 1;
+    differ_apss += same_estimate(sa[i], pa[i]) ? 0 : 1;
+    differ_authors += same_estimate(s_aut[i], p_aut[i]) ? 0 : 1;
+  }
+  CHECK(differ == 0);
+  CHECK(differ_apss == 0);
+  CHECK(differ_authors == 0);
+  CHECK(count_invalid(s) == 7);
+  CHECK(count_invalid(pa) == 7);
+}
+
+// Coordinates are centred at the query point before anything is summed, so a translation
+// far from the origin costs only the rounding of the translated input itself.
+TEST_CASE("A translation by (1e6, -2e6, 5e5) changes curvatures by less than 1e-6 relative", "[aso][apss][invariance]")
+{
+  const auto& pts = goursat_10k();
+  const double r = 1.5;
+  const auto far = translated(pts, Vector(1e6, -2e6, 5e5));
+  const auto a = aso(pts, r), b = aso(far, r);
+  const auto a_apss = apss(pts, r), b_apss = apss(far, r);
+  Stat k, n, apss_h;
+  for(std::size_t i = 0; i < pts.size(); ++i)
+  {
+    REQUIRE(b[i].is_valid());
+    REQUIRE(b_apss[i].is_valid());
+    // relative to the curvature scale of the point (its largest |k|)
+    const double scale = curvature_scale(a[i]);
+    k.add(scaled_difference(b[i].min_curvature, a[i].min_curvature, scale));
+    k.add(scaled_difference(b[i].max_curvature, a[i].max_curvature, scale));
+    k.add(scaled_difference(b[i].mean_curvature, a[i].mean_curvature, scale));
+    k.add(scaled_difference(b[i].gaussian_curvature, a[i].gaussian_curvature, scale * scale));
+    n.add(length(b[i].normal - a[i].normal));
+    apss_h.add(scaled_difference(b_apss[i].mean_curvature, a_apss[i].mean_curvature, scale));
+  }
+  measured("Goursat 10K translated: max scaled curvature change (ASO)", k.max);
+  measured("Goursat 10K translated: max normal change (ASO)", n.max);
+  measured("Goursat 10K translated: max scaled H change (APSS)", apss_h.max);
+  // Measured: 5.8e-9 (ASO curvatures, scaled), 7.5e-11 (normals), 1.8e-10 (APSS H): the
+  // translated coordinates (up to 2e6) are rounded to 4.7e-10, 3e-10 of r, and second
+  // derivatives amplify that. The issue's bound, 1e-6, holds with a margin of 170.
+  CHECK(k.max < 1e-6);
+  CHECK(n.max < 1e-6);
+  CHECK(apss_h.max < 1e-6);
+}
+
+// The estimators are geometric: a rotation of the cloud rotates normals and principal
+// directions and leaves every curvature unchanged.
+TEST_CASE("A rotation rotates normals and directions and leaves curvatures unchanged", "[aso][apss][invariance]")
+{
+  const auto& pts = goursat_10k();
+  const double r = 1.5;
+  const Rotation rot(Vector(1, -2, 0.5), 1.1);
+  const auto turned = rotated(pts, rot);
+  const auto a = aso(pts, r), b = aso(turned, r);
+  const auto a_apss = apss(pts, r), b_apss = apss(turned, r);
+  Stat k, n, d;
+  std::size_t near_umbilic = 0;
+  for(std::size_t i = 0; i < pts.size(); ++i)
+  {
+    REQUIRE(b[i].is_valid());
+    const double scale = curvature_scale(a[i]);
+    k.add(scaled_difference(b[i].min_curvature, a[i].min_curvature, scale));
+    k.add(scaled_difference(b[i].max_curvature, a[i].max_curvature, scale));
+    k.add(scaled_difference(b[i].mean_curvature, a[i].mean_curvature, scale));
+    k.add(scaled_difference(b[i].gaussian_curvature, a[i].gaussian_curvature, scale * scale));
+    k.add(scaled_difference(b_apss[i].mean_curvature, a_apss[i].mean_curvature, scale));
+    n.add(length(b[i].normal - rot(a[i].normal)));
+    n.add(length(b_apss[i].normal - rot(a_apss[i].normal)));
+    // directions are defined up to sign and only away from umbilics (see the reference test)
+    if(a[i].max_curvature - a[i].min_curvature < 1e-3 * scale)
+    {
+      ++near_umbilic;
+      continue;
+    }
+    d.add(line_distance(b[i].min_direction, rot(a[i].min_direction)));
+    d.add(line_distance(b[i].max_direction, rot(a[i].max_direction)));
+  }
+  measured("Goursat 10K rotated: max scaled curvature change", k.max);
+  measured("Goursat 10K rotated: max normal error", n.max);
+  measured("Goursat 10K rotated: max direction error (up to sign)", d.max);
+  measured("Goursat 10K rotated: near-umbilic points skipped", double(near_umbilic));
+  // Measured: curvatures 5.8e-14 (scaled), normals 1.2e-15, directions 1.7e-13, no point
+  // skipped: the sums are the same up to rounding and summation order (the grid sorts
+  // the rotated points differently). Bounds: 1e-10 (directions amplify curvature rounding
+  // by up to k_scale / (k_max - k_min) <= 1e3) and 1e-12 for normals.
+  CHECK(k.max < 1e-10);
+  CHECK(n.max < 1e-12);
+  CHECK(d.max < 1e-10);
+  CHECK(near_umbilic < pts.size() / 100);
+}
+
+// ---------------------------------------------------------------------------------------
+// Bad input
+// ---------------------------------------------------------------------------------------
+
+TEST_CASE("A radius that is zero, negative, NaN or infinite throws std::invalid_argument naming it", "[bad_input]")
+{
+  using Catch::Matchers::Contains;
+  const auto pts = sphere(100, 1);
+  const std::vector<Oriented_point> none;
+  for(double r : {0.0, -2.5, nan_value, inf_value, -inf_value})
+  {
+    INFO("radius " << r);
+    const std::string value = printed(r);
+    CHECK_THAT(invalid_argument_message([&] { aso(pts, r); }), Contains("radius") && Contains(value));
+    CHECK_THAT(invalid_argument_message([&] { aso<CGAL::Parallel_tag>(pts, r); }),
+               Contains("radius") && Contains(value));
+    CHECK_THAT(invalid_argument_message([&] { aso_authors(pts, r); }), Contains("radius") && Contains(value));
+    CHECK_THAT(invalid_argument_message([&] { apss(pts, r); }), Contains("radius") && Contains(value));
+    CHECK_THAT(invalid_argument_message([&] { apss<CGAL::Parallel_tag>(pts, r); }),
+               Contains("radius") && Contains(value));
+    CHECK_THAT(invalid_argument_message([&] {
+                 CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, Point_map(), Normal_map(), r);
+               }),
+               Contains("radius") && Contains(value));
+    CHECK_THAT(invalid_argument_message([&] {
+                 CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(pts, Point_map(), Normal_map(), r);
+               }),
+               Contains("radius") && Contains(value));
+    // the argument is checked whatever the data, an empty range included
+    CHECK_THAT(invalid_argument_message([&] { aso(none, r); }), Contains("radius"));
+    CHECK_THAT(invalid_argument_message([&] { apss(none, r); }), Contains("radius"));
+  }
+}
+
+TEST_CASE("Without a radius neighbor_count is required, and a radius with neighbor_count throws", "[bad_input]")
+{
+  using Catch::Matchers::Contains;
+  const auto pts = sphere(100, 1);
+  typedef CGAL::Sequential_tag Seq;
+  // the overloads without a radius need neighbor_count(k), k >= 1
+  CHECK_THAT(invalid_argument_message([&] { CGAL::estimate_aso_curvatures<Seq>(pts, maps()); }),
+             Contains("neighbor_count"));
+  CHECK_THAT(invalid_argument_message([&] { CGAL::estimate_apss_curvatures<Seq>(pts, maps()); }),
+             Contains("neighbor_count"));
+  CHECK_THAT(invalid_argument_message([&] {
+               CGAL::estimate_aso_curvatures<Seq>(pts, PSC::parameters::neighbor_count(0, maps()));
+             }),
+             Contains("neighbor_count"));
+  // the overloads with a radius refuse neighbor_count too (which scale would apply?)
+  CHECK_THAT(invalid_argument_message([&] {
+               CGAL::estimate_aso_curvatures<Seq>(pts, 0.3, PSC::parameters::neighbor_count(10, maps()));
+             }),
+             Contains("neighbor_count") && Contains("radius"));
+  CHECK_THAT(invalid_argument_message([&] {
+               CGAL::estimate_apss_curvatures<Seq>(pts, 0.3, PSC::parameters::neighbor_count(10, maps()));
+             }),
+             Contains("neighbor_count") && Contains("radius"));
+}
+
+TEST_CASE("An empty range gives an empty result", "[bad_input]")
+{
+  const std::vector<Oriented_point> none;
+  CHECK(aso(none, 1.0).empty());
+  CHECK(aso<CGAL::Parallel_tag>(none, 1.0).empty());
+  CHECK(apss(none, 1.0).empty());
+  CHECK(apss<CGAL::Parallel_tag>(none, 1.0).empty());
+  CHECK(aso_authors(none, 1.0).empty());
+}
+
+namespace {
+
+// Inserts `bad` points into a clean cloud at the given positions and checks that each bad
+// point gets `expected` with NaN everywhere and count 0, and that every other point's
+// estimate is bitwise the one it has in the clean cloud: the bad points are nobody's
+// neighbour (same neighbour counts, same sums).
+void check_unusable_points(const std::vector<Oriented_point>& clean, double r,
+                           const std::vector<std::pair<std::size_t, Oriented_point> >& bad,
+                           Status expected)
+{
+  std::vector<Oriented_point> dirty;
+  std::vector<int> origin;  // index in `clean`, or -1 for a bad point
+  std::size_t next_bad = 0;
+  for(std::size_t i = 0; i <= clean.size(); ++i)
+  {
+    while(next_bad < bad.size() && bad[next_bad].first == i)
+    {
+      dirty.push_back(bad[next_bad++].second);
+      origin.push_back(-1);
+    }
+    if(i < clean.size())
+    {
+      dirty.push_back(clean[i]);
+      origin.push_back(int(i));
+    }
+  }
+  REQUIRE(dirty.size() == clean.size() + bad.size());
+  typedef std::function<std::vector<Estimate>(const std::vector<Oriented_point>&)> Run;
+  const std::vector<std::pair<std::string, Run> > runs = {
+    {"ASO", [r](const std::vector<Oriented_point>& p) { return aso(p, r); }},
+    {"ASO parallel", [r](const std::vector<Oriented_point>& p) { return aso<CGAL::Parallel_tag>(p, r); }},
+    {"ASO authors", [r](const std::vector<Oriented_point>& p) { return aso_authors(p, r); }},
+    {"APSS", [r](const std::vector<Oriented_point>& p) { return apss(p, r); }}};
+  for(const auto& run : runs)
+  {
+    INFO(run.first);
+    const auto ref = run.second(clean);
+    const auto est = run.second(dirty);
+    REQUIRE(est.size() == dirty.size());
+    std::size_t wrong_bad = 0, changed = 0;
+    for(std::size_t i = 0; i < dirty.size(); ++i)
+    {
+      if(origin[i] < 0)
+        wrong_bad += (est[i].status == expected && est[i].neighbor_count == 0 &&
+                      every_numeric_field_nan(est[i]) && !est[i].is_valid()) ? 0 : 1;
+      else
+        changed += same_estimate(est[i], ref[std::size_t(origin[i])]) ? 0 : 1;
+    }
+    CHECK(wrong_bad == 0);
+    CHECK(changed == 0);
+  }
+}
+
+} // namespace
+
+TEST_CASE("A point with a NaN or infinite coordinate is NON_FINITE_POINT and nobody's neighbour", "[bad_input]")
+{
+  const auto clean = sphere(3000, 1);
+  const double r = 0.15;
+  const Point p = clean[1000].first;
+  const Vector n = clean[1000].second;
+  check_unusable_points(clean, r,
+                        {{0, {Point(nan_value, p.y(), p.z()), n}},
+                         {500, {Point(p.x(), p.y(), inf_value), n}},
+                         {1000, {Point(-inf_value, 0, 0), n}},
+                         {2000, {Point(nan_value, nan_value, nan_value), n}},
+                         {3000, {Point(p.x(), nan_value, p.z()), Vector(nan_value, 0, 0)}}},
+                        Status::NON_FINITE_POINT);
+}
+
+TEST_CASE("A point with a zero, NaN or infinite normal is INVALID_NORMAL and nobody's neighbour", "[bad_input]")
+{
+  const auto clean = sphere(3000, 1);
+  const double r = 0.15;
+  // bad points placed exactly on good ones, so that they would be neighbours if used
+  check_unusable_points(clean, r,
+                        {{0, {clean[0].first, Vector(0, 0, 0)}},
+                         {700, {clean[700].first, Vector(nan_value, 1, 0)}},
+                         {1500, {clean[1500].first, Vector(0, inf_value, 0)}},
+                         {1500, {clean[1499].first, Vector(nan_value, nan_value, nan_value)}},
+                         {3000, {clean[2999].first, Vector(1e-300, 0, 0) * 1e-300}}},
+                        Status::INVALID_NORMAL);
+}
+
+TEST_CASE("A cloud whose points are all unusable gives only invalid estimates", "[bad_input]")
+{
+  std::vector<Oriented_point> pts(5, Oriented_point(Point(0, 0, 0), Vector(0, 0, 0)));
+  pts.emplace_back(Point(nan_value, 0, 0), Vector(0, 0, 1));
+  for(const auto& est : {aso(pts, 1.0), apss(pts, 1.0), aso<CGAL::Parallel_tag>(pts, 1.0)})
+  {
+    REQUIRE(est.size() == 6);
+    for(std::size_t i = 0; i < 5; ++i)
+      CHECK(est[i].status == Status::INVALID_NORMAL);
+    CHECK(est[5].status == Status::NON_FINITE_POINT);
+    for(const Estimate& e : est)
+      CHECK(every_numeric_field_nan(e));
+  }
+}
+
+TEST_CASE("Fewer than 3 neighbours is TOO_FEW_NEIGHBORS with the right neighbor_count", "[bad_input]")
+{
+  auto pts = sphere(3000, 1);
+  const double r = 0.15;
+  const std::size_t lonely = pts.size();
+  pts.emplace_back(Point(10, 0, 0), Vector(1, 0, 0));             // alone: 1 neighbour
+  pts.emplace_back(Point(0, 10, 0), Vector(0, 1, 0));             // a pair: 2 neighbours each
+  pts.emplace_back(Point(0, 10 + 0.5 * r, 0), Vector(0, 1, 0));
+  pts.emplace_back(Point(0, 0, 10), Vector(0, 0, 1));             // three: the minimum
+  pts.emplace_back(Point(0.05, 0, 10), Vector(0, 0, 1));
+  pts.emplace_back(Point(0, 0.05, 10), Vector(0, 0, 1));
+  for(const auto& est : {aso(pts, r), apss(pts, r), aso_authors(pts, r)})
+  {
+    REQUIRE(est.size() == pts.size());
+    CHECK(est[lonely].status == Status::TOO_FEW_NEIGHBORS);
+    CHECK(est[lonely].neighbor_count == 1);
+    for(std::size_t i : {lonely + 1, lonely + 2})
+    {
+      CHECK(est[i].status == Status::TOO_FEW_NEIGHBORS);
+      CHECK(est[i].neighbor_count == 2);
+    }
+    for(std::size_t i = lonely; i < lonely + 3; ++i)
+      CHECK(every_numeric_field_nan(est[i]));
+    for(std::size_t i = lonely + 3; i < lonely + 6; ++i)
+    {
+      CHECK(est[i].status != Status::TOO_FEW_NEIGHBORS);
+      CHECK(est[i].neighbor_count == 3);
+    }
+  }
+}
+
+// Three flat neighbours with equal normals are a plane, the smallest valid neighbourhood.
+TEST_CASE("Three neighbours on a plane are enough for a valid, flat estimate", "[aso][apss][plane]")
+{
+  const std::vector<Oriented_point> pts = {{Point(0, 0, 1), Vector(0, 0, 2)},
+                                           {Point(0.3, 0, 1), Vector(0, 0, 2)},
+                                           {Point(0, 0.4, 1), Vector(0, 0, 2)}};
+  for(const auto& est : {aso(pts, 1.0), apss(pts, 1.0)})
+    for(const Estimate& e : est)
+    {
+      REQUIRE(e.is_valid());
+      CHECK(e.neighbor_count == 3);
+      measured("three flat neighbours: |H|", std::abs(e.mean_curvature));
+      CHECK(std::abs(e.mean_curvature) < 1e-12);  // measured 0
+      CHECK(length(e.normal - Vector(0, 0, 1)) < 1e-12);
+    }
+}
+
+TEST_CASE("Neighbours that all coincide are DEGENERATE_FIT with NaN fields", "[bad_input]")
+{
+  auto pts = sphere(3000, 1);
+  const double r = 0.15;
+  const std::size_t first = pts.size();
+  for(int i = 0; i < 5; ++i)
+    pts.emplace_back(Point(5, 5, 5), Vector(0, 0, 1));
+  for(const auto& est : {aso(pts, r), apss(pts, r), aso_authors(pts, r), aso<CGAL::Parallel_tag>(pts, r)})
+  {
+    REQUIRE(est.size() == pts.size());
+    for(std::size_t i = first; i < pts.size(); ++i)
+    {
+      CHECK(est[i].status == Status::DEGENERATE_FIT);
+      CHECK(!est[i].is_valid());
+      // the neighbours are counted (points at distance < r, the query included)
+      CHECK(est[i].neighbor_count == 5);
+      CHECK(every_numeric_field_nan(est[i]));
+    }
+    CHECK(count_invalid(est) == 5);
+  }
+}
+
+// ---------------------------------------------------------------------------------------
+// Containers, kernels and overloads
+// ---------------------------------------------------------------------------------------
+
+TEST_CASE("Pairs, tuples, Point_set_3, Simple_cartesian and Epick give identical results", "[aso][apss][api]")
+{
+  const auto& pts = goursat_10k();
+  const double r = 1.5;
+  const auto ref = aso(pts, r);
+  const auto ref_apss = apss(pts, r);
+  auto all_identical = [](const auto& a, const auto& b) {
+    if(a.size() != b.size())
+      return false;
+    for(std::size_t i = 0; i < a.size(); ++i)
+      if(!same_estimate(a[i], b[i]))
+        return false;
+    return true;
+  };
+
+  SECTION("explicit maps overload")
+  {
+    CHECK(all_identical(
+      ref, CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, Point_map(), Normal_map(), r)));
+    CHECK(all_identical(
+      ref_apss, CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(pts, Point_map(), Normal_map(), r)));
+  }
+  SECTION("geom_traits named parameter")
+  {
+    CHECK(all_identical(ref, CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
+                               pts, r, maps().geom_traits(Kernel()))));
+  }
+  SECTION("std::tuple with Nth_of_tuple_property_map")
+  {
+    typedef std::tuple<Point, Vector, int> Tuple;
+    std::vector<Tuple> tuples;
+    for(const auto& p : pts)
+      tuples.emplace_back(p.first, p.second, 7);
+    const CGAL::Nth_of_tuple_property_map<0, Tuple> pm;
+    const CGAL::Nth_of_tuple_property_map<1, Tuple> nm;
+    CHECK(all_identical(ref, CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
+                               tuples, r, CGAL::parameters::point_map(pm).normal_map(nm))));
+    CHECK(all_identical(ref_apss, CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(tuples, pm, nm, r)));
+  }
+  SECTION("CGAL::Point_set_3 with and without explicit maps")
+  {
+    CGAL::Point_set_3<Point, Vector> ps;
+    ps.add_normal_map();
+    for(const auto& p : pts)
+      ps.insert(p.first, p.second);
+    CHECK(all_identical(ref, CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(ps, r)));
+    CHECK(all_identical(ref, CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(ps, r, ps.parameters())));
+    CHECK(all_identical(ref_apss, CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(ps, r)));
+    CHECK(all_identical(ref, CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
+                               ps, r, CGAL::parameters::point_map(ps.point_map()).normal_map(ps.normal_map()))));
+  }
+  SECTION("Epick points in pairs and in a Point_set_3")
+  {
+    typedef std::pair<Epick::Point_3, Epick::Vector_3> Epick_point;
+    std::vector<Epick_point> epts;
+    CGAL::Point_set_3<Epick::Point_3, Epick::Vector_3> eps;
+    eps.add_normal_map();
+    for(const auto& p : pts)
+    {
+      const Epick::Point_3 q(p.first.x(), p.first.y(), p.first.z());
+      const Epick::Vector_3 n(p.second.x(), p.second.y(), p.second.z());
+      epts.emplace_back(q, n);
+      eps.insert(q, n);
+    }
+    const std::vector<CGAL::Curvature_estimate<Epick> > e = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
+      epts, r,
+      CGAL::parameters::point_map(CGAL::First_of_pair_property_map<Epick_point>())
+        .normal_map(CGAL::Second_of_pair_property_map<Epick_point>()));
+    CHECK(all_identical(ref, e));
+    CHECK(all_identical(ref, CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(eps, r)));
+    CHECK(all_identical(ref_apss, CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(eps, r)));
+  }
+}
+
+// ---------------------------------------------------------------------------------------
+// Progress and cancellation
+// ---------------------------------------------------------------------------------------
+
+// 200K points: progress is reported about every 1% of the points and at least every 16384,
+// so the run has a dozen batches and can be cancelled in the middle.
+TEST_CASE("callback reports non-decreasing progress in [0,1] ending at 1, and returning false cancels", "[aso][apss][callback]")
+{
+  const auto pts = sphere(200000, 1);
+  const double r = 0.025;  // about 30 neighbours
+  const auto full = aso(pts, r);
+  REQUIRE(count_invalid(full) == 0);
+
+  SECTION("full run")
+  {
+    std::vector<double> progress;
+    const std::function<bool(double)> cb = [&progress](double x) {
+      progress.push_back(x);
+      return true;
+    };
+    const auto est = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, r, maps().callback(cb));
+    REQUIRE(progress.size() >= 5);
+    bool in_range = true, monotone = true;
+    for(std::size_t i = 0; i < progress.size(); ++i)
+    {
+      in_range = in_range && progress[i] >= 0 && progress[i] <= 1;
+      monotone = monotone && (i == 0 || progress[i] >= progress[i - 1]);
+    }
+    CHECK(in_range);
+    CHECK(monotone);
+    CHECK(progress.back() == 1.0);
+    std::size_t differ = 0;
+    for(std::size_t i = 0; i < pts.size(); ++i)
+      differ += same_estimate(est[i], full[i]) ? 0 : 1;
+    CHECK(differ == 0);
+  }
+
+  SECTION("cancelled runs, sequential and parallel, ASO and APSS")
+  {
+    const auto full_apss = apss(pts, r);
+    for(int run = 0; run < 4; ++run)
+    {
+      INFO("run " << run);
+      int calls = 0;
+      double last = -1;
+      const std::function<bool(double)> cb = [&calls, &last](double x) {
+        last = x;
+        return ++calls < 3;  // cancel at the third report
+      };
+      const auto np = maps().callback(cb);
+      const std::vector<Estimate> est =
+        run == 0 ? CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, r, np)
+        : run == 1 ? CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, r, np)
+        : run == 2 ? CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(pts, r, np)
+                   : CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(pts, r, np);
+      const auto& reference = run < 2 ? full : full_apss;
+      REQUIRE(est.size() == pts.size());
+      CHECK(calls == 3);
+      std::size_t computed = 0, not_computed = 0, bad = 0;
+      for(std::size_t i = 0; i < pts.size(); ++i)
+      {
+        if(est[i].status == Status::NOT_COMPUTED)
+        {
+          ++not_computed;
+          bad += (every_numeric_field_nan(est[i]) && est[i].neighbor_count == 0 && !est[i].is_valid()) ? 0 : 1;
+        }
+        else
+        {
+          ++computed;
+          bad += same_estimate(est[i], reference[i]) ? 0 : 1;
+        }
+      }
+      CHECK(bad == 0);
+      CHECK(computed > 0);
+      CHECK(not_computed > 0);
+      // the last progress value reported is the fraction of points actually computed
+      CHECK(std::abs(double(computed) - last * double(pts.size())) < 0.5);
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------
+// Per-query classes
+// ---------------------------------------------------------------------------------------
+
+namespace {
+
+// A patch of an ellipsoid whose bounding box is smaller than r in every direction: the
+// cloud functions then see every neighbourhood in input order (one grid cell), the order
+// in which the per-query classes below receive them, so results must be bitwise equal.
+std::vector<Oriented_point> small_patch(double half_side)
+{
+  std::vector<Oriented_point> patch;
+  for(const auto& p : ellipsoid(20000, 1, 0.8, 0.6))
+    if(p.first.x() > 0 && std::abs(p.first.y()) < half_side && std::abs(p.first.z()) < half_side)
+      patch.push_back(p);
+  return patch;
+}
+
+} // namespace
+
+TEST_CASE("The per-query classes reproduce the cloud functions exactly at an input point", "[aso][apss][per_query]")
+{
+  const double r = 0.3;
+  const auto patch = small_patch(0.14);  // extent 0.28 < r, in x too (x > 0.95 there)
+  REQUIRE(patch.size() > 50);
+  const auto est = aso(patch, r);
+  const auto est_authors = aso_authors(patch, r);
+  const auto est_apss = apss(patch, r);
+  std::size_t differ = 0, differ_authors = 0, differ_apss = 0, wrong_return = 0, valid = 0;
+  for(std::size_t i = 0; i < patch.size(); ++i)
+  {
+    const Point& x = patch[i].first;
+    CGAL::Algebraic_shape_operator_fit<Kernel> fit(x, r);
+    CGAL::Algebraic_shape_operator_fit<Kernel> fit_authors(x, r, CGAL::Aso_projection::AUTHORS_IMPLEMENTATION);
+    CGAL::Algebraic_sphere_fit<Kernel> sphere_fit(x, r);
+    for(const auto& p : patch)
+    {
+      const bool inside = CGAL::squared_distance(p.first, x) < r * r;
+      wrong_return += (fit.add_neighbor(p.first, p.second) == inside) ? 0 : 1;
+      fit_authors.add_neighbor(p.first, p.second);
+      wrong_return += (sphere_fit.add_neighbor(p.first, p.second) == inside) ? 0 : 1;
+    }
+    CHECK(fit.neighbor_count() == est[i].neighbor_count);
+    CHECK(sphere_fit.neighbor_count() == est_apss[i].neighbor_count);
+    differ += same_estimate(fit.estimate(), est[i]) ? 0 : 1;
+    differ_authors += same_estimate(fit_authors.estimate(), est_authors[i]) ? 0 : 1;
+    differ_apss += same_estimate(sphere_fit.estimate(), est_apss[i]) ? 0 : 1;
+    valid += est[i].is_valid() ? 1 : 0;
+  }
+  // the same with Epick, whose FT is double too
+  {
+    const Point& x = patch[0].first;
+    CGAL::Algebraic_shape_operator_fit<Epick> fit(Epick::Point_3(x.x(), x.y(), x.z()), r);
+    for(const auto& p : patch)
+      fit.add_neighbor(Epick::Point_3(p.first.x(), p.first.y(), p.first.z()),
+                       Epick::Vector_3(p.second.x(), p.second.y(), p.second.z()));
+    CHECK(same_estimate(fit.estimate(), est[0]));
+  }
+  CHECK(valid == patch.size());
+  CHECK(wrong_return == 0);
+  CHECK(differ == 0);
+  CHECK(differ_authors == 0);
+  CHECK(differ_apss == 0);
+}
+
+// On a real cloud the neighbours reach the classes in another order than in the cloud
+// functions (which sort points in a grid): the same sums in another order.
+TEST_CASE("The per-query classes agree with the cloud functions on Goursat 10K and ignore points beyond r", "[aso][apss][per_query]")
+{
+  const auto& pts = goursat_10k();
+  const double r = 1.5;
+  const auto est = aso(pts, r);
+  const auto est_apss = apss(pts, r);
+  Stat k, n, h;
+  std::size_t count_mismatch = 0;
+  for(std::size_t i = 0; i < pts.size(); i += 50)
+  {
+    CGAL::Algebraic_shape_operator_fit<Kernel> fit(pts[i].first, r);
+    CGAL::Algebraic_sphere_fit<Kernel> sphere_fit(pts[i].first, r);
+    fit.add_neighbors(pts, Point_map(), Normal_map());  // the whole cloud: most are beyond r
+    sphere_fit.add_neighbors(pts, Point_map(), Normal_map());
+    count_mismatch += (fit.neighbor_count() == est[i].neighbor_count &&
+                       sphere_fit.neighbor_count() == est[i].neighbor_count) ? 0 : 1;
+    const Estimate e = fit.estimate(), ea = sphere_fit.estimate();
+    REQUIRE(e.is_valid());
+    const double scale = curvature_scale(est[i]);
+    k.add(scaled_difference(e.min_curvature, est[i].min_curvature, scale));
+    k.add(scaled_difference(e.max_curvature, est[i].max_curvature, scale));
+    k.add(scaled_difference(e.gaussian_curvature, est[i].gaussian_curvature, scale * scale));
+    n.add(length(e.normal - est[i].normal));
+    n.add(length(ea.normal - est_apss[i].normal));
+    h.add(scaled_difference(ea.mean_curvature, est_apss[i].mean_curvature, scale));
+  }
+  measured("per-query vs cloud on Goursat 10K: max scaled curvature difference (ASO)", k.max);
+  measured("per-query vs cloud on Goursat 10K: max normal difference", n.max);
+  measured("per-query vs cloud on Goursat 10K: max scaled H difference (APSS)", h.max);
+  CHECK(count_mismatch == 0);
+  // Measured: 1.8e-15 (ASO curvatures, scaled), 3.2e-16 (normals), 2.5e-15 (APSS H):
+  // summation order only.
+  CHECK(k.max < 1e-12);
+  CHECK(n.max < 1e-12);
+  CHECK(h.max < 1e-12);
+}
+
+// Off the surface the ASO measures the level set of the fitted field through the
+// evaluation point: for a sphere of radius R that is the concentric sphere through x, of
+// curvature 1/|x - c|. APSS returns the curvature of the fitted sphere itself, 1/R.
+TEST_CASE("The per-query classes evaluate off the cloud: ASO gives the level set's curvature, APSS the fitted sphere's", "[aso][apss][per_query]")
+{
+  const double R = 2, r = 0.4;
+  const Point c(1, 2, 3);
+  const auto pts = sphere(20000, R, c);
+  Stat aso_err, apss_err, n_err;
+  for(double offset : {-0.05, 0.02, 0.1})
+    for(const Vector u : {Vector(0.6, 0, 0.8), Vector(-1, 0, 0), Vector(1, 1, 1) / std::sqrt(3.0)})
+    {
+      const Point x = c + (R + offset) * u;
+      CGAL::Algebraic_shape_operator_fit<Kernel> fit(x, r);
+      CGAL::Algebraic_sphere_fit<Kernel> sphere_fit(x, r);
+      fit.add_neighbors(pts, Point_map(), Normal_map());
+      sphere_fit.add_neighbors(pts, Point_map(), Normal_map());
+      REQUIRE(fit.neighbor_count() > 50);
+      REQUIRE(fit.neighbor_count() == brute_force_count(pts, x, r));
+      const Estimate e = fit.estimate(), ea = sphere_fit.estimate();
+      REQUIRE(e.is_valid());
+      REQUIRE(ea.is_valid());
+      const double level = 1 / (R + offset);
+      aso_err.add(std::abs(e.min_curvature - level) / level);
+      aso_err.add(std::abs(e.max_curvature - level) / level);
+      aso_err.add(std::abs(e.gaussian_curvature - level * level) / (level * level));
+      apss_err.add(std::abs(ea.mean_curvature - 1 / R) * R);
+      n_err.add(length(e.normal - u));
+      n_err.add(length(ea.normal - u));
+    }
+  measured("off-surface ASO: max relative error to 1/|x-c|", aso_err.max);
+  measured("off-surface APSS: max relative error to 1/R", apss_err.max);
+  measured("off-surface: max normal error", n_err.max);
+  // Measured: 3.7e-15 (ASO), 8.0e-15 (APSS), 7.9e-16 (normals): the fit is exact, only
+  // rounding is left.
+  CHECK(aso_err.max < 1e-12);
+  CHECK(apss_err.max < 1e-12);
+  CHECK(n_err.max < 1e-12);
+}
+
+TEST_CASE("The per-query classes reject bad radii, non-finite positions and unusable neighbours", "[bad_input][per_query]")
+{
+  const Point x(0, 0, 1);
+  using Catch::Matchers::Contains;
+  for(double r : {0.0, -1.0, nan_value, inf_value})
+  {
+    INFO("radius " << r);
+    const std::string value = printed(r);
+    CHECK_THAT(invalid_argument_message([&] { CGAL::Algebraic_shape_operator_fit<Kernel> fit(x, r); }),
+               Contains("radius") && Contains(value));
+    CHECK_THAT(invalid_argument_message([&] {
+                 CGAL::Algebraic_shape_operator_fit<Kernel> fit(x, r, CGAL::Aso_projection::AUTHORS_IMPLEMENTATION);
+               }),
+               Contains("radius") && Contains(value));
+    CHECK_THAT(invalid_argument_message([&] { CGAL::Algebraic_sphere_fit<Kernel> fit(x, r); }),
+               Contains("radius") && Contains(value));
+  }
+  CHECK_THROWS_AS(CGAL::Algebraic_shape_operator_fit<Kernel>(Point(nan_value, 0, 0), 1.0), std::invalid_argument);
+  CHECK_THROWS_AS(CGAL::Algebraic_sphere_fit<Kernel>(Point(0, inf_value, 0), 1.0), std::invalid_argument);
+
+  CGAL::Algebraic_shape_operator_fit<Kernel> fit(x, 0.5);
+  CGAL::Algebraic_sphere_fit<Kernel> sphere_fit(x, 0.5);
+  // an empty fit is TOO_FEW_NEIGHBORS with count 0 and NaN everywhere
+  CHECK(fit.estimate().status == Status::TOO_FEW_NEIGHBORS);
+  CHECK(every_numeric_field_nan(fit.estimate()));
+  CHECK(sphere_fit.estimate().status == Status::TOO_FEW_NEIGHBORS);
+  CHECK(fit.estimate().neighbor_count == 0);
+  const std::vector<Oriented_point> unusable = {{Point(0, 0, 1.5), Vector(0, 0, 1)},  // at distance r
+                                                {Point(0, 0, 1), Vector(0, 0, 0)},
+                                                {Point(0, 0, 1), Vector(nan_value, 0, 1)},
+                                                {Point(nan_value, 0, 1), Vector(0, 0, 1)},
+                                                {Point(0, inf_value, 1), Vector(0, 0, 1)}};
+  for(const auto& p : unusable)
+  {
+    CHECK_FALSE(fit.add_neighbor(p.first, p.second));
+    CHECK_FALSE(sphere_fit.add_neighbor(p.first, p.second));
+  }
+  CHECK(fit.neighbor_count() == 0);
+  CHECK(sphere_fit.neighbor_count() == 0);
+  // two usable neighbours: still too few, counted
+  CHECK(fit.add_neighbor(Point(0, 0, 1), Vector(0, 0, 1)));
+  CHECK(fit.add_neighbor(Point(0.1, 0, 1), Vector(0, 0, 1)));
+  CHECK(fit.estimate().status == Status::TOO_FEW_NEIGHBORS);
+  CHECK(fit.estimate().neighbor_count == 2);
+  // coincident neighbours: degenerate
+  CGAL::Algebraic_shape_operator_fit<Kernel> same(x, 0.5);
+  CGAL::Algebraic_sphere_fit<Kernel> same_sphere(x, 0.5);
+  for(int i = 0; i < 4; ++i)
+  {
+    same.add_neighbor(Point(0, 0.1, 1), Vector(0, 0, 1));
+    same_sphere.add_neighbor(Point(0, 0.1, 1), Vector(0, 0, 1));
+  }
+  CHECK(same.estimate().status == Status::DEGENERATE_FIT);
+  CHECK(same_sphere.estimate().status == Status::DEGENERATE_FIT);
+  CHECK(every_numeric_field_nan(same.estimate()));
+  CHECK(every_numeric_field_nan(same_sphere.estimate()));
 }

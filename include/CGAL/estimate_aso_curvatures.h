@@ -60,7 +60,8 @@ struct Aso_estimator : Estimator_base
 /// (`INVALID_NORMAL`; such points are nobody's neighbour either), fewer than 3 neighbours
 /// (`TOO_FEW_NEIGHBORS`), coincident neighbours or cancelling normals (`DEGENERATE_FIT`),
 /// cancellation through `callback` (`NOT_COMPUTED`). A planar neighbourhood is valid with
-/// zero curvatures. For invalid points `neighbor_count` is 0 except for `TOO_FEW_NEIGHBORS`.
+/// zero curvatures. For invalid points `neighbor_count` is 0 except for `TOO_FEW_NEIGHBORS`
+/// and `DEGENERATE_FIT`, which report the neighbours found.
 ///
 /// Sequential and parallel runs return identical results.
 ///

@@ -46,6 +46,7 @@
 #include <functional>
 #include <iterator>
 #include <limits>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -179,110 +180,145 @@ struct Sorted_cloud
   std::vector<double> normal;              // normal per point (unit if asked), grid order
 };
 
-// Reads the range through the maps, sets the status of unusable points
-// and returns the usable points sorted in a grid of cell size >= radius, with unit normals
-// if `normalize_normals`.
+// Runs f(first, last) over [0, n): in one piece, or in chunks on TBB's threads.
+template <class ConcurrencyTag, class Function>
+void for_index_chunks(std::size_t n, const Function& f)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(is_parallel<ConcurrencyTag>())
+  {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096),
+                      [&](const tbb::blocked_range<std::size_t>& r) { f(r.begin(), r.end()); });
+    return;
+  }
+#endif
+  f(std::size_t(0), n);
+}
+
+// Reads the range through the maps, sets the status of unusable points and returns the
+// usable points sorted in a grid of cell size >= radius, with unit normals if
+// `normalize_normals`. Every pass is parallel with Parallel_tag; the result does not
+// depend on the tag (ties in the sort are broken by input position).
 template <class ConcurrencyTag, class PointRange, class PointMap, class NormalMap>
 void read_and_sort(const PointRange& points, PointMap point_map, NormalMap normal_map,
                    double radius, bool normalize_normals,
                    std::vector<Curvature_estimate_status>& status, Sorted_cloud& cloud)
 {
   typedef typename PointRange::const_iterator Iterator;
+  typedef typename std::iterator_traits<Iterator>::iterator_category Category;
+  constexpr bool random_access = std::is_convertible<Category, std::random_access_iterator_tag>::value;
   const std::size_t n = status.size();
   if(n >= std::numeric_limits<std::uint32_t>::max())
     throw std::length_error("Point_set_curvatures: more than 2^32 - 1 points are not supported");
 
-  // Pass 1: usable points and their bounding box.
-  std::vector<unsigned char> usable(n, 0);
-  double lo[3] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-                  std::numeric_limits<double>::infinity()};
-  double hi[3] = {-lo[0], -lo[1], -lo[2]};
-  std::size_t n_usable = 0, i = 0;
-  for(Iterator it = points.begin(); it != points.end(); ++it, ++i)
+  // Element i of the range: direct for random access ranges, through a table otherwise.
+  std::vector<Iterator> iterators;
+  if(!random_access)
   {
-    const auto& p = get(point_map, *it);
-    const double x[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
-    if(!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+    iterators.reserve(n);
+    for(Iterator it = points.begin(); it != points.end(); ++it)
+      iterators.push_back(it);
+  }
+  auto item = [&](std::size_t i) -> decltype(*points.begin()) {
+    return random_access ? *std::next(points.begin(), i) : *iterators[i];
+  };
+  auto coordinates = [&](std::size_t i, double x[3]) {
+    const auto& p = get(point_map, item(i));
+    x[0] = CGAL::to_double(p.x()); x[1] = CGAL::to_double(p.y()); x[2] = CGAL::to_double(p.z());
+  };
+
+  // Pass 1: usable points and their bounding box.
+  const double inf = std::numeric_limits<double>::infinity();
+  double lo[3] = {inf, inf, inf}, hi[3] = {-inf, -inf, -inf};
+  std::size_t n_usable = 0;
+  std::mutex merge;
+  for_index_chunks<ConcurrencyTag>(n, [&](std::size_t first, std::size_t last) {
+    double clo[3] = {inf, inf, inf}, chi[3] = {-inf, -inf, -inf};
+    std::size_t count = 0;
+    for(std::size_t i = first; i < last; ++i)
     {
-      status[i] = Curvature_estimate_status::NON_FINITE_POINT;
-      continue;
+      double x[3];
+      coordinates(i, x);
+      if(!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+      {
+        status[i] = Curvature_estimate_status::NON_FINITE_POINT;
+        continue;
+      }
+      const auto& v = get(normal_map, item(i));
+      const double nv[3] = {CGAL::to_double(v.x()), CGAL::to_double(v.y()), CGAL::to_double(v.z())};
+      const double nn = nv[0] * nv[0] + nv[1] * nv[1] + nv[2] * nv[2];
+      if(!(nn > 0) || !std::isfinite(nn))
+      {
+        status[i] = Curvature_estimate_status::INVALID_NORMAL;
+        continue;
+      }
+      ++count;
+      for(int a = 0; a < 3; ++a)
+      {
+        clo[a] = std::min(clo[a], x[a]);
+        chi[a] = std::max(chi[a], x[a]);
+      }
     }
-    const auto& v = get(normal_map, *it);
-    const double nv[3] = {CGAL::to_double(v.x()), CGAL::to_double(v.y()), CGAL::to_double(v.z())};
-    const double nn = nv[0] * nv[0] + nv[1] * nv[1] + nv[2] * nv[2];
-    if(!(nn > 0) || !std::isfinite(nn))
-    {
-      status[i] = Curvature_estimate_status::INVALID_NORMAL;
-      continue;
-    }
-    usable[i] = 1;
-    ++n_usable;
+    std::lock_guard<std::mutex> lock(merge);
+    n_usable += count;
     for(int a = 0; a < 3; ++a)
     {
-      lo[a] = std::min(lo[a], x[a]);
-      hi[a] = std::max(hi[a], x[a]);
+      lo[a] = std::min(lo[a], clo[a]);
+      hi[a] = std::max(hi[a], chi[a]);
     }
-  }
+  });
   if(n_usable == 0)
     return;
 
-  // Pass 2: cell keys, sorted.
+  // Pass 2: cell keys, sorted; unusable points get the largest key and are dropped.
   cloud.grid.set_geometry(lo, hi, radius);
-  std::vector<Neighbor_grid::Keyed_index> keyed;
-  keyed.reserve(n_usable);
-  i = 0;
-  for(Iterator it = points.begin(); it != points.end(); ++it, ++i)
-    if(usable[i])
+  std::vector<Neighbor_grid::Keyed_index> keyed(n);
+  for_index_chunks<ConcurrencyTag>(n, [&](std::size_t first, std::size_t last) {
+    for(std::size_t i = first; i < last; ++i)
     {
-      const auto& p = get(point_map, *it);
-      keyed.emplace_back(cloud.grid.key(CGAL::to_double(p.x()), CGAL::to_double(p.y()),
-                                        CGAL::to_double(p.z())),
-                         static_cast<std::uint32_t>(i));
+      Neighbor_grid::Key key = std::numeric_limits<Neighbor_grid::Key>::max();
+      if(status[i] == Curvature_estimate_status::NOT_COMPUTED)  // usable
+      {
+        double x[3];
+        coordinates(i, x);
+        key = cloud.grid.key(x[0], x[1], x[2]);
+      }
+      keyed[i] = Neighbor_grid::Keyed_index(key, static_cast<std::uint32_t>(i));
     }
-  std::vector<unsigned char>().swap(usable);
+  });
 #ifdef CGAL_LINKED_WITH_TBB
   if(is_parallel<ConcurrencyTag>())
     tbb::parallel_sort(keyed.begin(), keyed.end());
   else
 #endif
     std::sort(keyed.begin(), keyed.end());
+  keyed.resize(n_usable);
   cloud.grid.set_cells(keyed);
   cloud.input_index.resize(n_usable);
-  for(std::size_t k = 0; k < n_usable; ++k)
-    cloud.input_index[k] = keyed[k].second;
+  for_index_chunks<ConcurrencyTag>(n_usable, [&](std::size_t first, std::size_t last) {
+    for(std::size_t k = first; k < last; ++k)
+      cloud.input_index[k] = keyed[k].second;
+  });
   std::vector<Neighbor_grid::Keyed_index>().swap(keyed);
 
-  // Pass 3: coordinates and unit normals in grid order.
+  // Pass 3: coordinates and normals in grid order.
   cloud.position.resize(3 * n_usable);
   cloud.normal.resize(3 * n_usable);
-  auto store = [&](std::size_t k, const typename PointRange::const_iterator::value_type& item) {
-    const auto& p = get(point_map, item);
-    const auto& v = get(normal_map, item);
-    double* x = &cloud.position[3 * k];
-    double* nv = &cloud.normal[3 * k];
-    x[0] = CGAL::to_double(p.x()); x[1] = CGAL::to_double(p.y()); x[2] = CGAL::to_double(p.z());
-    nv[0] = CGAL::to_double(v.x()); nv[1] = CGAL::to_double(v.y()); nv[2] = CGAL::to_double(v.z());
-    if(normalize_normals)
+  for_index_chunks<ConcurrencyTag>(n_usable, [&](std::size_t first, std::size_t last) {
+    for(std::size_t k = first; k < last; ++k)
     {
-      const double inv = 1.0 / std::sqrt(nv[0] * nv[0] + nv[1] * nv[1] + nv[2] * nv[2]);
-      nv[0] *= inv; nv[1] *= inv; nv[2] *= inv;
+      const std::size_t i = cloud.input_index[k];
+      coordinates(i, &cloud.position[3 * k]);
+      const auto& v = get(normal_map, item(i));
+      double* nv = &cloud.normal[3 * k];
+      nv[0] = CGAL::to_double(v.x()); nv[1] = CGAL::to_double(v.y()); nv[2] = CGAL::to_double(v.z());
+      if(normalize_normals)
+      {
+        const double inv = 1.0 / std::sqrt(nv[0] * nv[0] + nv[1] * nv[1] + nv[2] * nv[2]);
+        nv[0] *= inv; nv[1] *= inv; nv[2] *= inv;
+      }
     }
-  };
-  typedef typename std::iterator_traits<Iterator>::iterator_category Category;
-  if(std::is_convertible<Category, std::random_access_iterator_tag>::value)
-  {
-    for(std::size_t k = 0; k < n_usable; ++k)
-      store(k, *std::next(points.begin(), cloud.input_index[k]));
-  }
-  else
-  {
-    std::vector<Iterator> iterators;
-    iterators.reserve(n);
-    for(Iterator it = points.begin(); it != points.end(); ++it)
-      iterators.push_back(it);
-    for(std::size_t k = 0; k < n_usable; ++k)
-      store(k, *iterators[cloud.input_index[k]]);
-  }
+  });
 }
 
 // Visits the neighbourhood of every point of the cells [first, last): selects the points
