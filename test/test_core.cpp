@@ -25,6 +25,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <tuple>
+#include <list>
 #include <vector>
 
 using namespace psc_test;
@@ -1034,6 +1035,24 @@ TEST_CASE("Pairs, tuples, Point_set_3, Simple_cartesian and Epick give identical
 
 // 200K points: progress is reported about every 1% of the points and at least every 16384,
 // so the run has a dozen batches and can be cancelled in the middle.
+TEST_CASE("A std::list (not random access) gives the same results as a std::vector", "[aso][apss][api]")
+{
+  // The driver reads non-random-access ranges through a table of iterators; the values and
+  // the order of the results must not change, sequentially or in parallel.
+  const std::vector<Oriented_point> pts = read_xyz(repo_data("goursat_010000.xyz"));
+  const std::list<Oriented_point> listed(pts.begin(), pts.end());
+  const auto np = CGAL::parameters::point_map(Point_map()).normal_map(Normal_map());
+  const auto from_vector = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, 1.5, np);
+  const auto from_list = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(listed, 1.5, np);
+  const auto from_list_parallel = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(listed, 1.5, np);
+  REQUIRE(from_list.size() == pts.size());
+  for(std::size_t i = 0; i < pts.size(); ++i)
+  {
+    REQUIRE(same_estimate(from_vector[i], from_list[i]));
+    REQUIRE(same_estimate(from_vector[i], from_list_parallel[i]));
+  }
+}
+
 TEST_CASE("callback reports non-decreasing progress in [0,1] ending at 1, and returning false cancels", "[aso][apss][callback]")
 {
   const auto pts = sphere(200000, 1);
