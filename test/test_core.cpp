@@ -955,6 +955,40 @@ TEST_CASE("Neighbours that all coincide are DEGENERATE_FIT with NaN fields", "[b
 // Containers, kernels and overloads
 // ---------------------------------------------------------------------------------------
 
+TEST_CASE("ASO: neighbours on a line or on a planar curve are DEGENERATE_FIT", "[bad_input][aso]")
+{
+  // One scan line at a small radius: the curvature across the line is not measured, so no
+  // tensor can be given (the sphere fit would silently supply its own curvature there).
+  // Cases: a straight line with constant normals, a straight line with normals twisting
+  // around it, a parabola z = x^2/2 in the plane y = 0 with its normals (a planar curve).
+  const auto np = CGAL::parameters::point_map(Point_map()).normal_map(Normal_map());
+  for(int variant = 0; variant < 3; ++variant)
+  {
+    std::vector<Oriented_point> pts;
+    for(int i = -20; i <= 20; ++i)
+    {
+      const double x = 0.01 * i;
+      const Vector n = variant == 0 ? Vector(0, 0, 1)
+                     : variant == 1 ? Vector(0, std::sin(x), std::cos(x))
+                                    : Vector(-x, 0, 1);
+      pts.emplace_back(Point(x, 0, variant == 2 ? 0.5 * x * x : 0), n);
+    }
+    const auto e = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, 0.1, np);
+    INFO("variant " << variant);
+    CHECK(e[20].status == CGAL::Curvature_estimate_status::DEGENERATE_FIT);
+    CHECK(e[20].neighbor_count == 19);
+    CHECK(std::isnan(e[20].min_curvature));
+  }
+  // A second scan line 0.02 away (within r) restores a tangent spread: valid again.
+  std::vector<Oriented_point> two_lines;
+  for(int i = -20; i <= 20; ++i)
+    for(double y : {0.0, 0.02})
+      two_lines.emplace_back(Point(0.01 * i, y, 0), Vector(0, 0, 1));
+  const auto e = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(two_lines, 0.1, np);
+  CHECK(e[40].is_valid());
+  CHECK(std::abs(e[40].max_curvature) < 1e-12);
+}
+
 TEST_CASE("Pairs, tuples, Point_set_3, Simple_cartesian and Epick give identical results", "[aso][apss][api]")
 {
   const auto& pts = goursat_10k();

@@ -58,7 +58,8 @@ struct Aso_estimator : Estimator_base
 /// cannot be estimated have a status saying why and NaN in every numeric field:
 /// non-finite coordinates (`NON_FINITE_POINT`), zero or non-finite normal
 /// (`INVALID_NORMAL`; such points are nobody's neighbour either), fewer than 3 neighbours
-/// (`TOO_FEW_NEIGHBORS`), coincident neighbours or cancelling normals (`DEGENERATE_FIT`),
+/// (`TOO_FEW_NEIGHBORS`), coincident neighbours, cancelling normals, or neighbours without
+/// spread in two tangent directions such as a single scan line (`DEGENERATE_FIT`),
 /// cancellation through `callback` (`NOT_COMPUTED`). A planar neighbourhood is valid with
 /// zero curvatures. For invalid points `neighbor_count` is 0 except for `TOO_FEW_NEIGHBORS`
 /// and `DEGENERATE_FIT`, which report the neighbours found.

@@ -212,6 +212,29 @@ inline void aso_second_pass(const Neighborhood& nb, const Sums_adjoint& F, doubl
     hessian[k] += Smooth_kernel::hessian_identity_factor * gt;
 }
 
+// True if the neighbours do not spread in two tangent directions: M = sum t q q^T
+// (packed xx xy xz yy yz zz) restricted to the plane orthogonal to `normal` has rank at most
+// 1 up to rounding (determinant negligible against trace^2). This is the case of points on
+// a line, or on a curve in a plane containing the normal (one scan line of a LiDAR at a
+// small radius): the curvature across is then not measured and the fit would silently
+// report the sphere's.
+inline bool lacks_tangent_spread(const double M[6], const double normal[3])
+{
+  const double l = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+  if(!(l > 0))
+    return true;
+  const double n[3] = {normal[0] / l, normal[1] / l, normal[2] / l};
+  double t1[3], t2[3];
+  tangent_basis(n, t1, t2);
+  auto form = [&](const double u[3], const double v[3]) {
+    return u[0] * (M[0] * v[0] + M[1] * v[1] + M[2] * v[2]) +
+           u[1] * (M[1] * v[0] + M[3] * v[1] + M[4] * v[2]) +
+           u[2] * (M[2] * v[0] + M[4] * v[1] + M[5] * v[2]);
+  };
+  const double a = form(t1, t1), b = form(t1, t2), c = form(t2, t2);
+  return !(a * c - b * b > 1e-12 * (a + c) * (a + c));
+}
+
 // Minimal number of neighbours (query included) for the sphere fit and the ASO.
 constexpr std::size_t aso_min_neighbors = 3;
 
@@ -264,9 +287,10 @@ inline Local_estimate algebraic_shape_operator(const Neighborhood& nb,
 
   const Aso_first_order_sums m = aso_first_pass(nb);
   // Degenerate fit: the weighted variance of the positions, (A E - B.B) / A^2, vanishes
-  // when the neighbours coincide (relative to r^2, as q is scaled by 1/r).
+  // when the neighbours coincide (relative to r^2, as q is scaled by 1/r); neighbours
+  // without tangent spread (a line, a planar curve) leave a curvature unmeasured.
   const double BB = m.B[0] * m.B[0] + m.B[1] * m.B[1] + m.B[2] * m.B[2];
-  if(!(m.A > 0) || !(m.A * m.E - BB > 1e-12 * m.A * m.A))
+  if(!(m.A > 0) || !(m.A * m.E - BB > 1e-12 * m.A * m.A) || lacks_tangent_spread(m.tqq, m.C))
     return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
 
   typedef Second_order_jet Jet;
