@@ -955,7 +955,7 @@ TEST_CASE("Neighbours that all coincide are DEGENERATE_FIT with NaN fields", "[b
 // Containers, kernels and overloads
 // ---------------------------------------------------------------------------------------
 
-TEST_CASE("ASO: neighbours on a line or on a planar curve are DEGENERATE_FIT", "[bad_input][aso]")
+TEST_CASE("ASO and APSS: neighbours on a line or on a planar curve are DEGENERATE_FIT", "[bad_input][aso][apss]")
 {
   // One scan line at a small radius: the curvature across the line is not measured, so no
   // tensor can be given (the sphere fit would silently supply its own curvature there).
@@ -974,10 +974,14 @@ TEST_CASE("ASO: neighbours on a line or on a planar curve are DEGENERATE_FIT", "
       pts.emplace_back(Point(x, 0, variant == 2 ? 0.5 * x * x : 0), n);
     }
     const auto e = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, 0.1, np);
+    const auto a = CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(pts, 0.1, np);
     INFO("variant " << variant);
     CHECK(e[20].status == CGAL::Curvature_estimate_status::DEGENERATE_FIT);
     CHECK(e[20].neighbor_count == 19);
     CHECK(std::isnan(e[20].min_curvature));
+    // APSS too: its sphere would give the curvature along the line as a mean curvature.
+    CHECK(a[20].status == CGAL::Curvature_estimate_status::DEGENERATE_FIT);
+    CHECK(std::isnan(a[20].mean_curvature));
   }
   // A second scan line 0.02 away (within r) restores a tangent spread: valid again.
   std::vector<Oriented_point> two_lines;
@@ -987,6 +991,26 @@ TEST_CASE("ASO: neighbours on a line or on a planar curve are DEGENERATE_FIT", "
   const auto e = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(two_lines, 0.1, np);
   CHECK(e[40].is_valid());
   CHECK(std::abs(e[40].max_curvature) < 1e-12);
+  const auto a = CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(two_lines, 0.1, np);
+  CHECK(a[40].is_valid());
+  CHECK(std::abs(a[40].mean_curvature) < 1e-12);
+}
+
+TEST_CASE("ASO refuses the constant kernel, which has no usable derivative", "[bad_input][aso]")
+{
+  const auto pts = sphere(2000, 1.0);
+  namespace PSC = CGAL::Point_set_curvatures;
+  const auto np = PSC::parameters::weight_kernel(
+    CGAL::Apss_weight_kernel::CONSTANT, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()));
+  CHECK_THROWS_WITH(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, 0.2, np),
+                    Catch::Contains("weight_kernel"));
+  CHECK_THROWS_AS(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
+                    pts, PSC::parameters::neighbor_count(20, np)),
+                  std::invalid_argument);
+  // The smooth kernel, given explicitly, is the default.
+  const auto smooth = PSC::parameters::weight_kernel(
+    CGAL::Apss_weight_kernel::SMOOTH, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()));
+  CHECK(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, 0.2, smooth)[0].is_valid());
 }
 
 TEST_CASE("Pairs, tuples, Point_set_3, Simple_cartesian and Epick give identical results", "[aso][apss][api]")

@@ -18,8 +18,25 @@ namespace internal {
 // Per-point APSS: the five sums of the sphere fit, then Equations 6-8.
 struct Apss_estimator : Estimator_base
 {
+  // weight kernel (named parameter weight_kernel, issue 6)
+  Apss_weight_kernel kernel = Apss_weight_kernel::SMOOTH;
+
+  Apss_estimator() = default;
+  template <class NamedParameters>
+  explicit Apss_estimator(const NamedParameters& np)
+    : kernel(CGAL::parameters::choose_parameter(
+        CGAL::parameters::get_parameter(np, Point_set_curvatures::internal_np::weight_kernel),
+        Apss_weight_kernel::SMOOTH))
+  {}
+
   Local_estimate operator()(const Neighborhood& nb) const
   {
+    if(kernel == Apss_weight_kernel::CONSTANT)
+    {
+      Algebraic_sphere_sums<Constant_kernel> sums;
+      sums.add(nb);
+      return algebraic_sphere_estimate(sums, nb.radius);
+    }
     Algebraic_sphere_sums<Smooth_kernel> sums;
     sums.add(nb);
     return algebraic_sphere_estimate(sums, nb.radius);
@@ -74,6 +91,12 @@ struct Apss_estimator : Estimator_base
 ///     \cgalParamType{an instance of `std::function<bool(double)>`}
 ///     \cgalParamDefault{no callback}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{Point_set_curvatures::parameters::weight_kernel}
+///     \cgalParamDescription{the weight kernel of the fit: `SMOOTH` `(1 - d²/radius²)²` or
+///       `CONSTANT` (1 inside the ball, the weight of the paper's asymptotic analysis)}
+///     \cgalParamType{`CGAL::Apss_weight_kernel`}
+///     \cgalParamDefault{`CGAL::Apss_weight_kernel::SMOOTH`}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \throws std::invalid_argument if `radius` is not positive and finite.
@@ -87,7 +110,7 @@ estimate_apss_curvatures(const PointRange& points, double radius,
                          const NamedParameters& np = parameters::default_values())
 {
   return Point_set_curvatures::internal::estimate_at_every_point<ConcurrencyTag>(
-    points, true, radius, np, Point_set_curvatures::internal::Apss_estimator(),
+    points, true, radius, np, Point_set_curvatures::internal::Apss_estimator(np),
     "estimate_apss_curvatures");
 }
 
@@ -101,7 +124,7 @@ typename Point_set_curvatures::internal::Estimates_without_radius<PointRange, Na
 estimate_apss_curvatures(const PointRange& points, const NamedParameters& np)
 {
   return Point_set_curvatures::internal::estimate_at_every_point<ConcurrencyTag>(
-    points, false, 0.0, np, Point_set_curvatures::internal::Apss_estimator(),
+    points, false, 0.0, np, Point_set_curvatures::internal::Apss_estimator(np),
     "estimate_apss_curvatures");
 }
 

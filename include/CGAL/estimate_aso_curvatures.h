@@ -10,6 +10,7 @@
 #include <CGAL/Point_set_curvatures/internal/algebraic_shape_operator.h>
 #include <CGAL/Point_set_curvatures/internal/estimate_at_every_point.h>
 
+#include <stdexcept>
 #include <vector>
 
 namespace CGAL {
@@ -32,6 +33,22 @@ struct Aso_estimator : Estimator_base
     return algebraic_shape_operator(nb, projection);
   }
 };
+
+// The ASO from the named parameters: its projection, and a refusal of the constant kernel
+// (the ASO differentiates the weights; the constant kernel has no usable derivative).
+template <class NamedParameters>
+Aso_estimator aso_estimator_from(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  if(choose_parameter(get_parameter(np, internal_np::weight_kernel), Apss_weight_kernel::SMOOTH) !=
+     Apss_weight_kernel::SMOOTH)
+    throw std::invalid_argument("estimate_aso_curvatures: parameter 'weight_kernel': the ASO "
+                                "differentiates the kernel, only Apss_weight_kernel::SMOOTH is "
+                                "supported");
+  return Aso_estimator(choose_parameter(get_parameter(np, internal_np::aso_projection),
+                                        Aso_projection::CORRECTED_NORMAL));
+}
 
 } // namespace internal
 } // namespace Point_set_curvatures
@@ -108,9 +125,16 @@ struct Aso_estimator : Estimator_base
 ///     \cgalParamType{`CGAL::Aso_projection`}
 ///     \cgalParamDefault{`CGAL::Aso_projection::CORRECTED_NORMAL`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{Point_set_curvatures::parameters::weight_kernel}
+///     \cgalParamDescription{only `CGAL::Apss_weight_kernel::SMOOTH` is accepted: the ASO
+///       differentiates the weights, the constant kernel has no usable derivative}
+///     \cgalParamType{`CGAL::Apss_weight_kernel`}
+///     \cgalParamDefault{`CGAL::Apss_weight_kernel::SMOOTH`}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
-/// \throws std::invalid_argument if `radius` is not positive and finite.
+/// \throws std::invalid_argument if `radius` is not positive and finite, or if
+/// `weight_kernel` is not `SMOOTH`.
 /// \throws std::length_error with 2^32 points or more.
 ///
 /// \sa `CGAL::Algebraic_shape_operator_fit` to evaluate at other positions or with your own
@@ -122,13 +146,8 @@ std::vector<Curvature_estimate<
 estimate_aso_curvatures(const PointRange& points, double radius,
                         const NamedParameters& np = parameters::default_values())
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  const Aso_projection projection =
-    choose_parameter(get_parameter(np, Point_set_curvatures::internal_np::aso_projection),
-                     Aso_projection::CORRECTED_NORMAL);
   return Point_set_curvatures::internal::estimate_at_every_point<ConcurrencyTag>(
-    points, true, radius, np, Point_set_curvatures::internal::Aso_estimator(projection),
+    points, true, radius, np, Point_set_curvatures::internal::aso_estimator_from(np),
     "estimate_aso_curvatures");
 }
 
@@ -141,13 +160,8 @@ template <typename ConcurrencyTag, typename PointRange, typename NamedParameters
 typename Point_set_curvatures::internal::Estimates_without_radius<PointRange, NamedParameters>::type
 estimate_aso_curvatures(const PointRange& points, const NamedParameters& np)
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  const Aso_projection projection =
-    choose_parameter(get_parameter(np, Point_set_curvatures::internal_np::aso_projection),
-                     Aso_projection::CORRECTED_NORMAL);
   return Point_set_curvatures::internal::estimate_at_every_point<ConcurrencyTag>(
-    points, false, 0.0, np, Point_set_curvatures::internal::Aso_estimator(projection),
+    points, false, 0.0, np, Point_set_curvatures::internal::aso_estimator_from(np),
     "estimate_aso_curvatures");
 }
 

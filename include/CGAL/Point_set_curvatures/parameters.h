@@ -72,6 +72,91 @@ neighbor_count(std::size_t k, const NamedParameters& np = CGAL::parameters::defa
 
 } // namespace parameters
 } // namespace Point_set_curvatures
+
+// ---- Baseline estimators (issue 4): options of estimate_vcm_curvatures() ----
+namespace Point_set_curvatures {
+namespace internal_np {
+
+enum vcm_offset_radius_t { vcm_offset_radius };
+
+} // namespace internal_np
+
+namespace parameters {
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// Named parameter of `estimate_vcm_curvatures()`: the offset radius `R` of the Voronoi
+/// Covariance Measure (each Voronoi cell is cut by a ball of radius `R` around its point), in
+/// the unit of the coordinates, positive and finite. Default: the neighbourhood radius `r`
+/// (with neighbourhoods by count, the median of the per-point radii). Lejemble et al. 2021
+/// use `R = 0.5 r`. Chains with CGAL named parameters passed as `np`.
+template <class NamedParameters = CGAL::parameters::Default_named_parameters>
+CGAL::Named_function_parameters<double, internal_np::vcm_offset_radius_t, NamedParameters>
+vcm_offset_radius(double offset_radius,
+                  const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return CGAL::Named_function_parameters<double, internal_np::vcm_offset_radius_t,
+                                         NamedParameters>(offset_radius, np);
+}
+
+} // namespace parameters
+} // namespace Point_set_curvatures
+// ---- end of the baseline estimators' options ----
+
+// ---- Algebraic sphere features, projection and flow (issue 6): weight kernel, normals ----
+/// \ingroup PkgPointSetCurvaturesRef
+/// Weight kernel of the APSS algebraic sphere fit (Equation 5 of Lejemble et al. 2021), for
+/// a neighbour at distance `d` from the evaluation point and a radius `r`.
+enum class Apss_weight_kernel
+{
+  /// `(1 - d²/r²)²` for `d < r`: the kernel used in practice, differentiable (the Algebraic
+  /// Shape Operator and the scale derivatives need it). Default.
+  SMOOTH,
+  /// `1` for `d < r`: the constant weight of the paper's asymptotic analysis (Section 4.1),
+  /// under which its asymptotic constants hold as printed. It has no derivative: the
+  /// Algebraic Shape Operator rejects it and the scale derivatives are not available.
+  CONSTANT
+};
+
+namespace Point_set_curvatures {
+namespace internal_np {
+
+enum weight_kernel_t { weight_kernel };
+enum update_normals_t { update_normals };
+
+} // namespace internal_np
+
+namespace parameters {
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// Named parameter selecting the weight kernel of `estimate_apss_curvatures()`,
+/// `estimate_algebraic_sphere_features()`, `CGAL::Algebraic_point_set_surface` and
+/// `apss_smooth_point_set()` (default `CGAL::Apss_weight_kernel::SMOOTH`). Chains with CGAL
+/// named parameters passed as `np`.
+template <class NamedParameters = CGAL::parameters::Default_named_parameters>
+CGAL::Named_function_parameters<Apss_weight_kernel, internal_np::weight_kernel_t, NamedParameters>
+weight_kernel(Apss_weight_kernel kernel,
+              const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return CGAL::Named_function_parameters<Apss_weight_kernel, internal_np::weight_kernel_t,
+                                         NamedParameters>(kernel, np);
+}
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// Named parameter of `apss_smooth_point_set()`: if `true`, each iteration replaces the normals
+/// by those of the fitted spheres at the moved points (used by the next iteration, and written
+/// through the normal map at the end, which must then be writable); if `false` (default), the
+/// input normals are used throughout and left untouched. Chains with CGAL named parameters.
+template <class NamedParameters = CGAL::parameters::Default_named_parameters>
+CGAL::Named_function_parameters<bool, internal_np::update_normals_t, NamedParameters>
+update_normals(bool update, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return CGAL::Named_function_parameters<bool, internal_np::update_normals_t, NamedParameters>(
+    update, np);
+}
+
+} // namespace parameters
+} // namespace Point_set_curvatures
+// ---- end of the algebraic sphere features' options ----
 } // namespace CGAL
 
 #endif

@@ -28,6 +28,9 @@ struct Algebraic_sphere_sums
 {
   std::size_t count = 0;
   double A = 0, B[3] = {}, C[3] = {}, D = 0, E = 0;
+  // sum w q q^T (packed xx xy xz yy yz zz): not part of the fit, it tells whether the
+  // neighbours spread in two tangent directions (lacks_tangent_spread)
+  double qq[6] = {};
 
   void add(double qx, double qy, double qz, double nx, double ny, double nz)
   {
@@ -39,6 +42,9 @@ struct Algebraic_sphere_sums
     C[0] += w * nx; C[1] += w * ny; C[2] += w * nz;
     D += w * (qx * nx + qy * ny + qz * nz);
     E += w * s;
+    const double wx = w * qx, wy = w * qy, wz = w * qz;
+    qq[0] += wx * qx; qq[1] += wx * qy; qq[2] += wx * qz;
+    qq[3] += wy * qy; qq[4] += wy * qz; qq[5] += wz * qz;
   }
 
   // Whole neighbourhood at once; local accumulators so that the compiler keeps them in
@@ -46,6 +52,7 @@ struct Algebraic_sphere_sums
   void add(const Neighborhood& nb)
   {
     double a = 0, b0 = 0, b1 = 0, b2 = 0, c0 = 0, c1 = 0, c2 = 0, d = 0, e = 0;
+    double xx = 0, xy = 0, xz = 0, yy = 0, yz = 0, zz = 0;
     for(std::size_t i = 0; i < nb.size; ++i)
     {
       const double qx = nb.qx[i], qy = nb.qy[i], qz = nb.qz[i];
@@ -57,6 +64,8 @@ struct Algebraic_sphere_sums
       c0 += w * nx; c1 += w * ny; c2 += w * nz;
       d += w * (qx * nx + qy * ny + qz * nz);
       e += w * s;
+      const double wx = w * qx, wy = w * qy, wz = w * qz;
+      xx += wx * qx; xy += wx * qy; xz += wx * qz; yy += wy * qy; yz += wy * qz; zz += wz * qz;
     }
     count += nb.size;
     A += a;
@@ -64,6 +73,7 @@ struct Algebraic_sphere_sums
     C[0] += c0; C[1] += c1; C[2] += c2;
     D += d;
     E += e;
+    qq[0] += xx; qq[1] += xy; qq[2] += xz; qq[3] += yy; qq[4] += yz; qq[5] += zz;
   }
 };
 
@@ -112,7 +122,9 @@ Local_estimate algebraic_sphere_estimate(const Algebraic_sphere_sums<WeightKerne
   if(s.count < apss_min_neighbors)
     return Local_estimate::invalid(Curvature_estimate_status::TOO_FEW_NEIGHBORS);
   const Algebraic_sphere sphere = fit_algebraic_sphere(s);
-  if(!sphere.valid)
+  // As for the ASO: without spread in two tangent directions (one scan line) the sphere's
+  // curvature is the curvature along the line, not a mean curvature.
+  if(!sphere.valid || lacks_tangent_spread(s.qq, s.C))
     return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
   Local_estimate e;
   const double ul = std::sqrt(sphere.u_l[0] * sphere.u_l[0] + sphere.u_l[1] * sphere.u_l[1] +

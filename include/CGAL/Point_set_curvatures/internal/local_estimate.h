@@ -68,6 +68,29 @@ inline void tangent_basis(const double n[3], double t1[3], double t2[3])
   t2[0] = b;                            t2[1] = sign + n[1] * n[1] * a; t2[2] = -n[1];
 }
 
+// True if the neighbours do not spread in two tangent directions: a second moment M of
+// their positions (sum weight q q^T, packed xx xy xz yy yz zz) restricted to the plane orthogonal to `normal` has rank at most
+// 1 up to rounding (determinant negligible against trace^2). This is the case of points on
+// a line, or on a curve in a plane containing the normal (one scan line of a LiDAR at a
+// small radius): the curvature across is then not measured and the fit would silently
+// report the sphere's.
+inline bool lacks_tangent_spread(const double M[6], const double normal[3])
+{
+  const double l = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+  if(!(l > 0))
+    return true;
+  const double n[3] = {normal[0] / l, normal[1] / l, normal[2] / l};
+  double t1[3], t2[3];
+  tangent_basis(n, t1, t2);
+  auto form = [&](const double u[3], const double v[3]) {
+    return u[0] * (M[0] * v[0] + M[1] * v[1] + M[2] * v[2]) +
+           u[1] * (M[1] * v[0] + M[3] * v[1] + M[4] * v[2]) +
+           u[2] * (M[2] * v[0] + M[4] * v[1] + M[5] * v[2]);
+  };
+  const double a = form(t1, t1), b = form(t1, t2), c = form(t2, t2);
+  return !(a * c - b * b > 1e-12 * (a + c) * (a + c));
+}
+
 // Principal curvatures and directions of the 2x2 symmetric tensor [[a, b], [b, c]]
 // written in the tangent basis (t1, t2). Fills k_min <= k_max, mean, gaussian and unit,
 // orthogonal, tangent directions.

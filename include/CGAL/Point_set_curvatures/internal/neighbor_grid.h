@@ -49,6 +49,21 @@ public:
   void set_geometry(const double lo[3], const double hi[3], double radius)
   {
     m_cell = radius;
+    // Extents that overflow (coordinates near +-1e308) or a radius larger than any double
+    // extent: one cell holds everything, every point is a candidate of every other.
+    m_single_cell = !(std::isfinite(hi[0] - lo[0]) && std::isfinite(hi[1] - lo[1]) &&
+                      std::isfinite(hi[2] - lo[2]) && std::isfinite(radius));
+    if(m_single_cell)
+    {
+      for(int i = 0; i < 3; ++i)
+      {
+        m_origin[i] = 0;
+        m_dim[i] = 3;
+      }
+      m_stride_y = 3;
+      m_stride_z = 9;
+      return;
+    }
     for(;;)
     {
       double cells = 1;
@@ -72,6 +87,8 @@ public:
 
   Key key(double x, double y, double z) const
   {
+    if(m_single_cell)
+      return 1 + m_stride_y + m_stride_z;  // cell (1, 1, 1)
     const Key ix = static_cast<Key>((x - m_origin[0]) / m_cell) + 1;
     const Key iy = static_cast<Key>((y - m_origin[1]) / m_cell) + 1;
     const Key iz = static_cast<Key>((z - m_origin[2]) / m_cell) + 1;
@@ -146,6 +163,7 @@ private:
   double m_origin[3] = {0, 0, 0};
   double m_dim[3] = {0, 0, 0};
   double m_cell = 1;
+  bool m_single_cell = false;
   Key m_stride_y = 0, m_stride_z = 0;
   std::vector<Key> m_keys;             // sorted keys of the non-empty cells
   std::vector<std::uint32_t> m_start;  // first point of each cell, plus the total

@@ -1,0 +1,380 @@
+// Copyright (c) 2026 The Point_set_curvatures authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// What the algebraic sphere of the APSS fit measures besides a normal and a mean curvature
+// (Sections 4.2, 4.4 and 4.5 of Lejemble et al. 2021): Pratt-normalised coefficients
+// (Equation 6), the anisotropy 1 - p (Proposition 1), the algebraic distance u_c (Theorem 1),
+// the GLS geometric variation v (Equation 18, Mellado et al. 2012) with its derivatives with
+// respect to the scale r taken analytically through the kernel, the projection onto the
+// fitted sphere (Equation 20), and the multi-scale form of all of it.
+//
+// Frames and units. Everything here is computed in the scaled centred frame of weight_kernel.h
+// (q = (p - x) / r, |q| < 1); the conversion to input units is done by the caller:
+//   u_c(input) = r u_c,  u_l(input) = u_l,  u_q(input) = u_q / r,
+// and the Pratt norm p = sqrt(|u_l|^2 - 4 u_c u_q) is the same in both frames.
+//
+// Scale derivatives. Write delta = r d/dr, at fixed neighbours and fixed evaluation point.
+// The input-unit sums Sbar_j = r^k_j s_j (k = 0, 1, 0, 1, 2 for A, B, C, D, E) have
+// delta Sbar_j = r^k_j ds_j with ds_j the same sums in the scaled frame with the weight w
+// replaced by r dw/dr (for the smooth kernel w = (1-s)^2, s = |q|^2: r dw/dr = 4 s (1 - s)).
+// Every fitted quantity X(input) = r^k X(scaled) is a homogeneous function of the sums, so
+// delta X(input) = r^k dX, with dX the directional derivative of the scaled formulas along
+// (ds_j). Hence the three terms of Equation 18 are scale-free and computed in the scaled
+// frame:  d u_c / dr = d(u_c/p),  r d n/dr = d(u_l/|u_l|),  r^2 dH/dr = d(2 u_q / p).
+// The constant kernel has no such derivative (its r-derivative is a Dirac on the sphere of
+// radius r, invisible to samples): with it the derivatives and v are not available (NaN).
+//
+// Asymptotic laws (surface in its principal frame at the evaluation point, normal n,
+// height h(x, y) along n with derivatives a_ij; curvatures with this package's sign,
+// positive where the surface bends away from n: k1 = -a_20, k2 = -a_02, H = (k1 + k2)/2,
+// K = k1 k2, grad H = -((a_30 + a_12)/2, (a_03 + a_21)/2), "Delta H" = -(a_40 + 2 a_22 +
+// a_04)/2, half the bilaplacian of the height as in the paper). Derived for a sampling of
+// uniform density per unit area, with the weight of the true 3-D distance over the ball
+// (the paper's Section 4.1 framework); the integrals over the disc use the moments of
+// (1 - rho^2)^m, the derivation (exact rational arithmetic) gave:
+//
+//                                     constant kernel (paper)      smooth kernel (1-rho^2)^2
+//   1 - p        (Proposition 1)      (k1 - k2)^2 r^2 / 16         (k1 - k2)^2 r^2 / 32
+//   n_tilde - n  (Equation 15)        -grad H r^2 / 4 (*)          -grad H r^2 / 8 (*)
+//   v            (Proposition 2)      |grad H|^2 r^4 / 4           |grad H|^2 r^4 / 16
+//   u_c (input)  (Theorem 1)          (9H^3 - 5KH - Delta H) r^4/96   (19H^3 - 11KH - 2 Delta H) r^4/640
+//   H_tilde = 2 u_q                   H + O(r^2)                   H + O(r^2)
+//   (*) tangential part, up to the sign convention of grad H (the paper's is the opposite).
+//
+// Theorem 1 of the paper reads -(9H^3 - 5KH - Delta H) r^4 / 96 with its opposite curvature
+// sign (H > 0 where the surface bends towards n); both laws vanish on a sphere, where Delta H as
+// defined above is 4 H^3 (it is not the Laplace-Beltrami of H). The smooth-kernel law of v
+// follows from its normal law exactly as Proposition 2 does: v = |r dn/dr|^2 + O(r^6).
+//
+// The derivation expands the sums of Equations 2-4 in powers of r to order 5 (height field to
+// order 4, area element, normals, weight of the 3-D distance over the ball; for the constant
+// kernel the boundary of the ball to first order in z^2/r^2), with the exact moments
+// int_disc x^2i y^2j (1 - rho^2)^m, then Equations 2-4, 6 as truncated series. The area element
+// does not change any leading term above: sampling uniformly in the tangent plane is enough.
+// The tests measure every law on sampled surfaces.
+
+#ifndef CGAL_POINT_SET_CURVATURES_INTERNAL_ALGEBRAIC_SPHERE_FEATURES_H
+#define CGAL_POINT_SET_CURVATURES_INTERNAL_ALGEBRAIC_SPHERE_FEATURES_H
+
+#include <CGAL/Curvature_estimate.h>
+#include <CGAL/Point_set_curvatures/internal/algebraic_sphere.h>
+#include <CGAL/Point_set_curvatures/internal/local_estimate.h>
+#include <CGAL/Point_set_curvatures/internal/weight_kernel.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Point_set_curvatures {
+namespace internal {
+
+// The kernels as polynomials of s = |q|^2 (scaled frame), w = sum_j c_j s^j, with their scale
+// derivative r dw/dr = sum_j dc_j s^j: what the multi-scale moments need.
+template <class WeightKernel>
+struct Kernel_polynomial;
+
+template <>
+struct Kernel_polynomial<Smooth_kernel>
+{
+  static constexpr bool has_scale_derivative = true;
+  // w = (1 - s)^2 = 1 - 2 s + s^2;  r dw/dr = -2 s dw/ds = 4 s (1 - s)
+  static constexpr double weight[3] = {1.0, -2.0, 1.0};
+  static constexpr double scale_derivative[3] = {0.0, 4.0, -4.0};
+  static double r_dw_dr(double s) { return 4.0 * s * (1.0 - s); }
+};
+
+template <>
+struct Kernel_polynomial<Constant_kernel>
+{
+  static constexpr bool has_scale_derivative = false;
+  static constexpr double weight[3] = {1.0, 0.0, 0.0};
+  static constexpr double scale_derivative[3] = {0.0, 0.0, 0.0};
+  static double r_dw_dr(double) { return 0.0; }
+};
+
+// The five sums of Equations 2-4 without the weight type (for their scale derivatives).
+struct Sphere_sums
+{
+  double A = 0, B[3] = {0, 0, 0}, C[3] = {0, 0, 0}, D = 0, E = 0;
+};
+
+// Scale derivative sums of a neighbourhood: the sums of Equations 2-4 with w replaced by
+// r dw/dr (same scaled frame).
+template <class WeightKernel>
+Sphere_sums scale_derivative_sums(const Neighborhood& nb)
+{
+  double a = 0, b0 = 0, b1 = 0, b2 = 0, c0 = 0, c1 = 0, c2 = 0, d = 0, e = 0;
+  for(std::size_t i = 0; i < nb.size; ++i)
+  {
+    const double qx = nb.qx[i], qy = nb.qy[i], qz = nb.qz[i];
+    const double nx = nb.nx[i], ny = nb.ny[i], nz = nb.nz[i];
+    const double s = qx * qx + qy * qy + qz * qz;
+    const double w = Kernel_polynomial<WeightKernel>::r_dw_dr(s);
+    a += w;
+    b0 += w * qx; b1 += w * qy; b2 += w * qz;
+    c0 += w * nx; c1 += w * ny; c2 += w * nz;
+    d += w * (qx * nx + qy * ny + qz * nz);
+    e += w * s;
+  }
+  Sphere_sums ds;
+  ds.A = a;
+  ds.B[0] = b0; ds.B[1] = b1; ds.B[2] = b2;
+  ds.C[0] = c0; ds.C[1] = c1; ds.C[2] = c2;
+  ds.D = d;
+  ds.E = e;
+  return ds;
+}
+
+// Everything the features need, in the scaled frame of one evaluation point.
+struct Local_sphere_features
+{
+  static constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+  Curvature_estimate_status status = Curvature_estimate_status::NOT_COMPUTED;
+  std::size_t neighbor_count = 0;
+  double radius = nan;      // r, input units
+  Algebraic_sphere sphere;  // unnormalised coefficients and Pratt norm, scaled frame
+  // delta = r d/dr of the Pratt-normalised u_c, of the unit normal and of 2 u_q / p, all in
+  // the scaled frame (see the header comment); NaN without scale derivative.
+  double d_u_c = nan, d_normal[3] = {nan, nan, nan}, d_mean = nan;
+  double geometric_variation = nan;  // Equation 18, dimensionless
+
+  bool is_valid() const { return status == Curvature_estimate_status::VALID; }
+};
+
+// Features of the sphere fitted to sums `s`, with scale derivative sums `ds` (nullptr: none).
+// `count` is the number of neighbours behind the sums.
+template <class WeightKernel>
+Local_sphere_features sphere_features(const Algebraic_sphere_sums<WeightKernel>& s,
+                                      const Sphere_sums* ds, double radius)
+{
+  Local_sphere_features f;
+  f.neighbor_count = s.count;
+  f.radius = radius;
+  if(s.count < apss_min_neighbors)
+  {
+    f.status = Curvature_estimate_status::TOO_FEW_NEIGHBORS;
+    return f;
+  }
+  f.sphere = fit_algebraic_sphere(s);
+  if(!f.sphere.valid)
+  {
+    f.status = Curvature_estimate_status::DEGENERATE_FIT;
+    return f;
+  }
+  f.status = Curvature_estimate_status::VALID;
+  if(ds == nullptr)
+    return f;
+
+  // Directional derivative of Equations 2-4 and of the Pratt norm along ds.
+  const Algebraic_sphere& sp = f.sphere;
+  const double uq = sp.u_q, uc = sp.u_c, p = sp.pratt_norm;
+  const double* ul = sp.u_l;
+  auto dot = [](const double* u, const double* v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; };
+  const double den = s.A * s.E - dot(s.B, s.B);
+  const double d_den = ds->A * s.E + s.A * ds->E - 2.0 * dot(s.B, ds->B);
+  const double d_num = ds->A * s.D + s.A * ds->D - dot(ds->B, s.C) - dot(s.B, ds->C);
+  const double d_uq = (d_num - 2.0 * uq * d_den) / (2.0 * den);
+  double d_ul[3];
+  for(int i = 0; i < 3; ++i)
+    d_ul[i] = (ds->C[i] - 2.0 * (d_uq * s.B[i] + uq * ds->B[i]) - ul[i] * ds->A) / s.A;
+  const double d_uc = -(dot(d_ul, s.B) + dot(ul, ds->B) + d_uq * s.E + uq * ds->E + uc * ds->A) / s.A;
+  const double d_p = (dot(ul, d_ul) - 2.0 * (d_uc * uq + uc * d_uq)) / p;
+
+  f.d_u_c = (d_uc - uc * d_p / p) / p;
+  f.d_mean = 2.0 * (d_uq - uq * d_p / p) / p;
+  const double l = std::sqrt(dot(ul, ul));
+  const double n[3] = {ul[0] / l, ul[1] / l, ul[2] / l};
+  const double n_dul = dot(n, d_ul);
+  for(int i = 0; i < 3; ++i)
+    f.d_normal[i] = (d_ul[i] - n[i] * n_dul) / l;
+  f.geometric_variation = f.d_u_c * f.d_u_c + dot(f.d_normal, f.d_normal) + f.d_mean * f.d_mean;
+  return f;
+}
+
+// Single scale: the whole neighbourhood at its radius. The sums are those of the APSS
+// estimator (same code), so normal and mean curvature agree with it exactly.
+template <class WeightKernel>
+Local_sphere_features sphere_features(const Neighborhood& nb)
+{
+  Algebraic_sphere_sums<WeightKernel> sums;
+  sums.add(nb);
+  if(!Kernel_polynomial<WeightKernel>::has_scale_derivative)
+    return sphere_features(sums, nullptr, nb.radius);
+  const Sphere_sums ds = scale_derivative_sums<WeightKernel>(nb);
+  return sphere_features(sums, &ds, nb.radius);
+}
+
+// Projection of the point x (scaled frame) onto the fitted sphere, Equation 20. With
+// g = grad f(x) = u_l + 2 u_q x, the identity |g|^2 - p^2 = 4 u_q f(x) turns
+//   x - (|g| - p) / (2 u_q |g|) g          (u_q != 0)
+// into x - 2 f(x) / (|g| (|g| + p)) g, which needs no division by u_q, is exact for the plane
+// u_q = 0 (where |g| = p and it is x - f g / |g|^2) and continuous in between. `normal` gets
+// the unit normal of the sphere at the projection, g / |g| (same ray from the centre).
+// Returns false if x is the centre of the sphere (every point of it is then closest).
+inline bool project_on_sphere(const Algebraic_sphere& s, const double x[3], double projected[3],
+                              double normal[3])
+{
+  const double f = s.u_c + s.u_l[0] * x[0] + s.u_l[1] * x[1] + s.u_l[2] * x[2] +
+                   s.u_q * (x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+  double g[3];
+  for(int i = 0; i < 3; ++i)
+    g[i] = s.u_l[i] + 2.0 * s.u_q * x[i];
+  const double gn = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+  if(!(gn > 1e-12 * s.pratt_norm) || !std::isfinite(gn))
+    return false;
+  const double k = 2.0 * f / (gn * (gn + s.pratt_norm));
+  for(int i = 0; i < 3; ++i)
+  {
+    projected[i] = x[i] - k * g[i];
+    normal[i] = g[i] / gn;
+  }
+  return true;
+}
+
+// Multi-scale features: one neighbourhood gathered at the largest radius R, the features at
+// every radius r_k <= R of a list. With lambda = R / r_k and sigma = |q|^2 in the frame of R,
+// the kernel is a polynomial of lambda^2 sigma, so every sum at r_k is a combination of the
+// moments sum sigma^j g (j <= 3) over the neighbours at distance < r_k. The neighbours are
+// bucketed once by distance into the intervals between consecutive radii (a bucket sort:
+// all the prefix sums need), the moments accumulated per bucket and summed over the prefix:
+// one pass over the neighbourhood, O(n + number of radii), whatever the number of radii.
+// Numerically the combination costs about one digit against the direct sums of the
+// single-scale path (measured in the tests).
+class Multiscale_sphere_features
+{
+public:
+  // Sets the radii (positive, finite, any order, duplicates allowed) and returns the largest.
+  double set_radii(const std::vector<double>& radii)
+  {
+    m_order.resize(radii.size());
+    for(std::size_t k = 0; k < radii.size(); ++k)
+      m_order[k] = k;
+    std::stable_sort(m_order.begin(), m_order.end(),
+                     [&](std::size_t a, std::size_t b) { return radii[a] < radii[b]; });
+    m_radii = radii;
+    m_max_radius = radii.empty() ? 0.0 : radii[m_order.back()];
+    m_bound.resize(radii.size());
+    for(std::size_t j = 0; j < radii.size(); ++j)
+    {
+      // neighbours with sigma < bound_j are inside radius r_(j)
+      const double t = radii[m_order[j]] / m_max_radius;
+      m_bound[j] = t * t;
+    }
+    return m_max_radius;
+  }
+
+  std::size_t number_of_radii() const { return m_radii.size(); }
+
+  // Features at every radius of one neighbourhood gathered at the largest radius
+  // (nb.radius == the value returned by set_radii); out[k] for radii[k]. Not thread-safe
+  // (scratch buckets): one object per thread.
+  template <class WeightKernel>
+  void compute(const Neighborhood& nb, Local_sphere_features* out)
+  {
+    const std::size_t n_radii = m_radii.size();
+    m_buckets.assign(n_radii, Moments());
+    for(std::size_t i = 0; i < nb.size; ++i)
+    {
+      const double qx = nb.qx[i], qy = nb.qy[i], qz = nb.qz[i];
+      const double nx = nb.nx[i], ny = nb.ny[i], nz = nb.nz[i];
+      const double s1 = qx * qx + qy * qy + qz * qz;
+      // first radius whose ball holds the neighbour
+      const std::size_t j = std::upper_bound(m_bound.begin(), m_bound.end(), s1) - m_bound.begin();
+      if(j == n_radii)
+        continue;  // at distance >= R up to rounding: outside every ball
+      const double s[4] = {1.0, s1, s1 * s1, s1 * s1 * s1};
+      const double qn = qx * nx + qy * ny + qz * nz;
+      Moments& m = m_buckets[j];
+      ++m.count;
+      for(int k = 0; k < 3; ++k)
+      {
+        m.P[k] += s[k];
+        m.Q[0][k] += s[k] * qx; m.Q[1][k] += s[k] * qy; m.Q[2][k] += s[k] * qz;
+        m.N[0][k] += s[k] * nx; m.N[1][k] += s[k] * ny; m.N[2][k] += s[k] * nz;
+        m.QN[k] += s[k] * qn;
+      }
+      m.P[3] += s[3];
+    }
+
+    Moments prefix;
+    for(std::size_t j = 0; j < n_radii; ++j)
+    {
+      prefix += m_buckets[j];
+      const std::size_t k = m_order[j];
+      const double radius = m_radii[k];
+      const double lambda = m_max_radius / radius;
+      typedef Kernel_polynomial<WeightKernel> Poly;
+      Algebraic_sphere_sums<WeightKernel> sums;
+      sums.count = prefix.count;
+      Sphere_sums ds;
+      combine(prefix, lambda, Poly::weight, sums.A, sums.B, sums.C, sums.D, sums.E);
+      if(Poly::has_scale_derivative)
+      {
+        combine(prefix, lambda, Poly::scale_derivative, ds.A, ds.B, ds.C, ds.D, ds.E);
+        out[k] = sphere_features(sums, &ds, radius);
+      }
+      else
+        out[k] = sphere_features(sums, nullptr, radius);
+    }
+  }
+
+private:
+  // sum over a set of neighbours of sigma^j times 1, q, n, q.n
+  struct Moments
+  {
+    std::size_t count = 0;
+    double P[4] = {0, 0, 0, 0};
+    double Q[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+    double N[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+    double QN[3] = {0, 0, 0};
+
+    Moments& operator+=(const Moments& o)
+    {
+      count += o.count;
+      for(int k = 0; k < 4; ++k)
+        P[k] += o.P[k];
+      for(int a = 0; a < 3; ++a)
+        for(int k = 0; k < 3; ++k)
+        {
+          Q[a][k] += o.Q[a][k];
+          N[a][k] += o.N[a][k];
+        }
+      for(int k = 0; k < 3; ++k)
+        QN[k] += o.QN[k];
+      return *this;
+    }
+  };
+
+  // Sums of Equations 2-4 at the radius R / lambda for the weight sum_j c_j s^j with
+  // s = lambda^2 sigma, in the frame of that radius (q_k = lambda q).
+  static void combine(const Moments& m, double lambda, const double c[3], double& A, double B[3],
+                      double C[3], double& D, double& E)
+  {
+    const double l2 = lambda * lambda;
+    const double w[3] = {c[0], c[1] * l2, c[2] * l2 * l2};
+    A = w[0] * m.P[0] + w[1] * m.P[1] + w[2] * m.P[2];
+    E = l2 * (w[0] * m.P[1] + w[1] * m.P[2] + w[2] * m.P[3]);
+    for(int a = 0; a < 3; ++a)
+    {
+      B[a] = lambda * (w[0] * m.Q[a][0] + w[1] * m.Q[a][1] + w[2] * m.Q[a][2]);
+      C[a] = w[0] * m.N[a][0] + w[1] * m.N[a][1] + w[2] * m.N[a][2];
+    }
+    D = lambda * (w[0] * m.QN[0] + w[1] * m.QN[1] + w[2] * m.QN[2]);
+  }
+
+  std::vector<double> m_radii;
+  std::vector<std::size_t> m_order;  // radii indices by increasing radius
+  std::vector<double> m_bound;       // (r_(j) / R)^2 in that order
+  double m_max_radius = 0;
+  std::vector<Moments> m_buckets;
+};
+
+} // namespace internal
+} // namespace Point_set_curvatures
+} // namespace CGAL
+
+#endif

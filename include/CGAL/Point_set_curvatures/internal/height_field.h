@@ -1,0 +1,123 @@
+// Copyright (c) 2026 The Point_set_curvatures authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// What the height-field baselines (Point Set Surfaces, Wavejets) share: a weighted
+// least-squares fit of a quadratic height field over a reference plane, and the
+// curvatures of the fitted graph at the plane's origin.
+//
+// In an orthonormal frame (t1, t2, n) the surface is the graph w = h(u, v),
+//
+//   h(u, v) = a0 + a1 u + a2 v + a3 u² + a4 u v + a5 v²,
+//
+// and it is the zero set of F(y) = n.y - h(t1.y, t2.y), whose gradient points along n:
+//
+//   grad F = n - a1 t1 - a2 t2,
+//   Hess F = -(2 a3 t1 t1ᵀ + a4 (t1 t2ᵀ + t2 t1ᵀ) + 2 a5 t2 t2ᵀ).
+//
+// The shape operator P Hess F P / |grad F| (set_shape_operator, local_estimate.h) then has
+// the package's sign convention when n is oriented like the input normals: the cap
+// h = -(u² + v²) / (2R) of a sphere of radius R seen from its outward normal gives 1/R.
+
+#ifndef CGAL_POINT_SET_CURVATURES_INTERNAL_HEIGHT_FIELD_H
+#define CGAL_POINT_SET_CURVATURES_INTERNAL_HEIGHT_FIELD_H
+
+#include <CGAL/Point_set_curvatures/internal/local_estimate.h>
+#include <CGAL/Point_set_curvatures/internal/second_order_jet.h>
+
+#include <cmath>
+#include <cstddef>
+
+namespace CGAL {
+namespace Point_set_curvatures {
+namespace internal {
+
+// Number of coefficients of the quadratic height field, hence the minimal number of
+// neighbours (query included) of the fits built on it.
+constexpr std::size_t quadratic_height_coefficients = 6;
+
+// Normal equations of the weighted fit, accumulated one sample at a time (constant memory).
+struct Quadratic_height_fit
+{
+  double ata[6][6] = {};  // sum w m mᵀ (upper triangle), m = (1, u, v, u², uv, v²)
+  double atb[6] = {};     // sum w m h
+
+  void add(double u, double v, double h, double w)
+  {
+    const double m[6] = {1.0, u, v, u * u, u * v, v * v};
+    for(int i = 0; i < 6; ++i)
+    {
+      const double wm = w * m[i];
+      atb[i] += wm * h;
+      for(int j = i; j < 6; ++j)
+        ata[i][j] += wm * m[j];
+    }
+  }
+
+  // Cholesky solve. Returns false when a monomial is numerically a combination of the
+  // previous ones over the samples (collinear or too few weighted samples): the relative
+  // pivot, 1 minus the squared multiple correlation of that column with the previous
+  // ones, falls below 1e-10 (its rounding error is about 1e-16 times the condition number).
+  bool solve(double a[6]) const
+  {
+    double L[6][6] = {};
+    for(int j = 0; j < 6; ++j)
+    {
+      double d = ata[j][j];
+      for(int k = 0; k < j; ++k)
+        d -= L[j][k] * L[j][k];
+      if(!(ata[j][j] > 0) || !(d > 1e-10 * ata[j][j]) || !std::isfinite(d))
+        return false;
+      L[j][j] = std::sqrt(d);
+      for(int i = j + 1; i < 6; ++i)
+      {
+        double s = ata[j][i];
+        for(int k = 0; k < j; ++k)
+          s -= L[i][k] * L[j][k];
+        L[i][j] = s / L[j][j];
+      }
+    }
+    double y[6];
+    for(int i = 0; i < 6; ++i)
+    {
+      double s = atb[i];
+      for(int k = 0; k < i; ++k)
+        s -= L[i][k] * y[k];
+      y[i] = s / L[i][i];
+    }
+    for(int i = 5; i >= 0; --i)
+    {
+      double s = y[i];
+      for(int k = i + 1; k < 6; ++k)
+        s -= L[k][i] * a[k];
+      a[i] = s / L[i][i];
+    }
+    for(int i = 0; i < 6; ++i)
+      if(!std::isfinite(a[i]))
+        return false;
+    return true;
+  }
+};
+
+// Normal, principal curvatures and directions of the graph of h (coefficients `a`) over
+// the frame (t1, t2, n) at u = v = 0, in 1/length with `inverse_length_unit` = 1/r for
+// coefficients fitted in the scaled frame. Returns false if the result is not finite.
+inline bool set_height_field_curvatures(const double a[6], const double t1[3],
+                                        const double t2[3], const double n[3],
+                                        double inverse_length_unit, Local_estimate& e)
+{
+  double gradient[3], hessian[6];
+  for(int i = 0; i < 3; ++i)
+    gradient[i] = n[i] - a[1] * t1[i] - a[2] * t2[i];
+  for(int i = 0; i < 3; ++i)
+    for(int j = i; j < 3; ++j)
+      hessian[sym_index(i, j)] = -(2.0 * a[3] * t1[i] * t1[j] +
+                                   a[4] * (t1[i] * t2[j] + t2[i] * t1[j]) +
+                                   2.0 * a[5] * t2[i] * t2[j]);
+  return set_shape_operator(gradient, hessian, inverse_length_unit, e);
+}
+
+} // namespace internal
+} // namespace Point_set_curvatures
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,313 @@
+// Copyright (c) 2026 The Point_set_curvatures authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Curvature magnitudes from the Voronoi Covariance Measure (Mérigot, Ovsjanikov, Guibas,
+// "Voronoi-based curvature and feature estimation from point clouds", IEEE TVCG 17(6),
+// 2011), with the covariance matrices of CGAL::compute_vcm().
+//
+// The VCM of a point p_i is the covariance matrix, about p_i, of its Voronoi cell cut by the
+// ball of radius R (the offset radius). Summed over the points of the ball B(x, r) (the
+// convolution), it approximates for a smooth surface the integral over the patch
+// P = S ∩ B(x, r) of the normal segments of length 2R:
+//
+//   V = ∫_P ∫_{-R}^{R} t² n(p) n(p)ᵀ (1 - t k1)(1 - t k2) dt dA
+//     = (2R³/3) ∫_P n nᵀ dA + O(R⁵).
+//
+// In the principal frame at x, n(p) = n - k1 u e1 - k2 v e2 + O(ρ²) up to sign, and
+// ∫ u² dA = ∫ v² dA = π r⁴/4 over the disc, so
+//
+//   V ≈ (2π R³ r²/3) [ n nᵀ + (r²/4)(k1² e1 e1ᵀ + k2² e2 e2ᵀ) ]:
+//
+// the eigenvector of the largest eigenvalue λ_n is the normal, the two others are the
+// principal directions, and |k_i| = (2/r) sqrt(λ_i / λ_n). Only magnitudes are available
+// (the k_i enter squared), and the pairing of a direction with a signed curvature is lost.
+//
+// Discretisation bias: each Voronoi cell also spreads tangentially over the sampling
+// spacing h, which adds about h²/(4 R²) to every λ_i / λ_n (an isotropic upward bias of
+// the magnitudes, sizeable at 40 neighbours: see estimate_vcm_curvatures.h), and CGAL
+// approximates the ball of radius R by a 20-face polytope.
+
+#ifndef CGAL_POINT_SET_CURVATURES_INTERNAL_VCM_H
+#define CGAL_POINT_SET_CURVATURES_INTERNAL_VCM_H
+
+#include <CGAL/Curvature_estimate.h>
+#include <CGAL/Point_set_curvatures/internal/estimate_at_every_point.h>
+#include <CGAL/Point_set_curvatures/internal/estimation_driver.h>
+#include <CGAL/Point_set_curvatures/internal/knn_neighborhoods.h>
+#include <CGAL/Point_set_curvatures/internal/local_estimate.h>
+#include <CGAL/Point_set_curvatures/internal/symmetric_eigen_3.h>
+#include <CGAL/Point_set_curvatures/parameters.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Fuzzy_sphere.h>
+#include <CGAL/Kd_tree.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/vcm_estimate_normals.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
+
+#include <boost/property_map/property_map.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <iterator>
+#include <limits>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+namespace CGAL {
+namespace Point_set_curvatures {
+namespace internal {
+
+// Below three points (query included) the convolved measure has no tangential spread to
+// read two curvatures from.
+constexpr std::size_t vcm_min_neighbors = 3;
+
+// |k_min| <= |k_max| (magnitudes), their directions and the normal (eigenvector of the
+// largest eigenvalue, oriented like `orientation`) from a convolved VCM `cov`
+// (xx xy xz yy yz zz) over a ball of radius `radius`. Mean and Gaussian curvature stay NaN.
+inline Local_estimate vcm_curvature_estimate(const std::array<double, 6>& cov, double radius,
+                                             const double orientation[3])
+{
+  double values[3], vectors[3][3];
+  if(!symmetric_eigen_3(cov.data(), values, vectors) || !(values[2] > 0))
+    return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
+  const double side = vectors[2][0] * orientation[0] + vectors[2][1] * orientation[1] +
+                      vectors[2][2] * orientation[2];
+  Local_estimate e;
+  for(int i = 0; i < 3; ++i)
+  {
+    e.normal[i] = side < 0 ? -vectors[2][i] : vectors[2][i];
+    e.d_min[i] = vectors[0][i];
+    e.d_max[i] = vectors[1][i];
+  }
+  // |k_i| = (2/r) sqrt(λ_i / λ_n); rounding can leave a tiny negative λ_i
+  e.k_min = 2.0 / radius * std::sqrt(std::max(values[0], 0.0) / values[2]);
+  e.k_max = 2.0 / radius * std::sqrt(std::max(values[1], 0.0) / values[2]);
+  if(!std::isfinite(e.k_min) || !std::isfinite(e.k_max))
+    return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
+  e.status = Curvature_estimate_status::VALID;
+  return e;
+}
+
+// True if the points span at least a plane (orientation predicates of Epick are exact):
+// the Voronoi cells of collinear or coincident points give no surface normal.
+template <class Point>
+bool spans_a_plane(const std::vector<Point>& points)
+{
+  const std::size_t n = points.size();
+  std::size_t second = 1;
+  while(second < n && points[second] == points[0])
+    ++second;
+  if(second >= n)
+    return false;
+  for(std::size_t i = second + 1; i < n; ++i)
+    if(!CGAL::collinear(points[0], points[second], points[i]))
+      return true;
+  return false;
+}
+
+// The whole estimate_vcm_curvatures(): the neighbourhood driver (statuses, counts, per-point
+// radii), CGAL's VCM on the usable points, then one diagonalisation per point.
+template <class ConcurrencyTag, class PointRange, class NamedParameters>
+std::vector<Curvature_estimate<
+  typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
+estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double radius,
+                            const NamedParameters& np, const char* function_name)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
+  typedef typename NP_helper::Geom_traits Geom_traits;
+  typedef CGAL::Epick::Point_3 Vcm_point;
+  static_assert(NP_helper::has_normal_map(),
+                "Error: no normal map. Pass CGAL::parameters::normal_map(...): the estimators "
+                "of this package need oriented normals.");
+  check_concurrency_tag<ConcurrencyTag>();
+
+  const std::size_t k = choose_parameter(
+    get_parameter(np, Point_set_curvatures::internal_np::neighbor_count), std::size_t(0));
+  const bool by_count = !radius_given;
+  check_scale(radius, k, by_count, function_name);
+  const bool offset_given = !CGAL::parameters::is_default_parameter<
+    NamedParameters, Point_set_curvatures::internal_np::vcm_offset_radius_t>::value;
+  const double offset_parameter = choose_parameter(
+    get_parameter(np, Point_set_curvatures::internal_np::vcm_offset_radius), 0.0);
+  if(offset_given && (!(offset_parameter > 0) || !std::isfinite(offset_parameter)))
+  {
+    std::ostringstream msg;
+    msg << function_name << ": parameter 'vcm_offset_radius' must be positive and finite, got "
+        << offset_parameter;
+    throw std::invalid_argument(msg.str());
+  }
+  const std::function<bool(double)> callback =
+    choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
+
+  // 1. The package's neighbourhoods: statuses of unusable points, counts, per-point radii.
+  const std::size_t n = static_cast<std::size_t>(std::distance(points.begin(), points.end()));
+  std::vector<Curvature_estimate<Geom_traits> > results(n);
+  std::vector<std::uint32_t> count(n, 0);
+  std::vector<double> point_radius(n, radius);
+  Neighborhood_options options;
+  options.normalize_normals = false;  // only the counts and radii are read
+  options.function_name = function_name;
+  auto record = [&count, &point_radius](std::size_t i, const Neighborhood& nb) {
+    count[i] = static_cast<std::uint32_t>(nb.size);
+    point_radius[i] = nb.radius;
+  };
+  const auto point_map = NP_helper::get_const_point_map(points, np);
+  const auto normal_map = NP_helper::get_normal_map(points, np);
+  const std::vector<Curvature_estimate_status> status =
+    by_count ? for_each_neighborhood_knn<ConcurrencyTag>(points, point_map, normal_map, k, options, record)
+             : for_each_neighborhood<ConcurrencyTag>(points, point_map, normal_map, radius, options, record);
+  for(std::size_t i = 0; i < n; ++i)
+    results[i].status = status[i];
+
+  // 2. Usable points only (non-finite points would break the Delaunay triangulation).
+  std::vector<std::size_t> input_index;
+  std::vector<Vcm_point> vcm_points;
+  std::vector<std::array<double, 3> > orientation;
+  {
+    std::size_t i = 0;
+    for(auto it = points.begin(); it != points.end(); ++it, ++i)
+      if(status[i] == Curvature_estimate_status::VALID)
+      {
+        const auto& p = get(point_map, *it);
+        const auto& v = get(normal_map, *it);
+        input_index.push_back(i);
+        vcm_points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+        orientation.push_back({CGAL::to_double(v.x()), CGAL::to_double(v.y()), CGAL::to_double(v.z())});
+      }
+  }
+  const std::size_t m = vcm_points.size();
+  if(m == 0)
+    return results;
+  auto set_all = [&](Curvature_estimate_status s) {
+    for(std::size_t j = 0; j < m; ++j)
+    {
+      Curvature_estimate<Geom_traits>& r = results[input_index[j]];
+      r.status = s;
+      r.neighbor_count = 0;
+      if(s == Curvature_estimate_status::DEGENERATE_FIT)
+      {
+        r.neighbor_count = count[input_index[j]];
+        if(count[input_index[j]] < vcm_min_neighbors)
+          r.status = Curvature_estimate_status::TOO_FEW_NEIGHBORS;
+      }
+    }
+  };
+  if(!spans_a_plane(vcm_points))
+  {
+    set_all(Curvature_estimate_status::DEGENERATE_FIT);
+    return results;
+  }
+
+  double offset_radius = offset_parameter;
+  if(!offset_given)
+  {
+    if(by_count)  // median of the per-point radii
+    {
+      std::vector<double> radii(m);
+      for(std::size_t j = 0; j < m; ++j)
+        radii[j] = point_radius[input_index[j]];
+      std::nth_element(radii.begin(), radii.begin() + m / 2, radii.end());
+      offset_radius = radii[m / 2];
+    }
+    else
+      offset_radius = radius;
+  }
+  set_all(Curvature_estimate_status::NOT_COMPUTED);
+  if(callback && !callback(0.0))
+    return results;
+
+  // 3. CGAL's VCM: Delaunay triangulation, Voronoi cells cut by the offset ball and, with a
+  // radius, CGAL's convolution over the balls of radius r (sequential).
+  std::vector<std::array<double, 6> > cov;
+  CGAL::compute_vcm(vcm_points, cov, offset_radius, by_count ? 0.0 : radius);
+
+  // By count: convolution over each point's own neighbourhood (the points at distance
+  // < its radius, as for the other estimators). CGAL's convolution by count
+  // (CGAL::internal::vcm_convolve, 5.5) does not initialise its sums, so it is not used.
+  typedef CGAL::Simple_cartesian<double>::Point_3 Search_point;
+  std::vector<Search_point> search_points;
+  typedef boost::iterator_property_map<const Search_point*,
+                                       boost::typed_identity_property_map<std::uint32_t> > Search_map;
+  typedef CGAL::Search_traits_adapter<std::uint32_t, Search_map,
+                                      CGAL::Search_traits_3<CGAL::Simple_cartesian<double> > > Search_traits;
+  typedef CGAL::Kd_tree<Search_traits> Tree;
+  typedef CGAL::Fuzzy_sphere<Search_traits> Ball;
+  std::unique_ptr<Tree> tree;
+  if(by_count)
+  {
+    search_points.reserve(m);
+    for(const Vcm_point& p : vcm_points)
+      search_points.emplace_back(p.x(), p.y(), p.z());
+    std::vector<std::uint32_t> ids(m);
+    for(std::size_t j = 0; j < m; ++j)
+      ids[j] = static_cast<std::uint32_t>(j);
+    const Search_map search_map(search_points.data());
+    tree.reset(new Tree(ids.begin(), ids.end(), typename Tree::Splitter(), Search_traits(search_map)));
+    tree->build();
+  }
+
+  // 4. One diagonalisation per point.
+  auto estimate = [&](std::size_t j) {
+    const std::size_t i = input_index[j];
+    Local_estimate e;
+    if(count[i] < vcm_min_neighbors)
+      e = Local_estimate::invalid(Curvature_estimate_status::TOO_FEW_NEIGHBORS);
+    else if(!by_count)
+      e = vcm_curvature_estimate(cov[j], radius, orientation[j].data());
+    else
+    {
+      const double r = point_radius[i];
+      const Search_point& x = search_points[j];
+      std::array<double, 6> sum = {0, 0, 0, 0, 0, 0};
+      std::vector<std::uint32_t> found;
+      tree->search(std::back_inserter(found),
+                   Ball(x, r, 0.0, tree->traits()));
+      std::sort(found.begin(), found.end());  // summation order independent of the tree
+      for(std::uint32_t f : found)
+        if(CGAL::squared_distance(search_points[f], x) < r * r)
+          for(int a = 0; a < 6; ++a)
+            sum[a] += cov[f][a];
+      e = vcm_curvature_estimate(sum, r, orientation[j].data());
+    }
+    results[i] = to_curvature_estimate<Geom_traits>(e, count[i]);
+  };
+  const std::size_t batch = callback ? std::max<std::size_t>(16384, m / 100) : m;
+  for(std::size_t first = 0; first < m; first += batch)
+  {
+    const std::size_t last = std::min(m, first + batch);
+#ifdef CGAL_LINKED_WITH_TBB
+    if(is_parallel<ConcurrencyTag>())
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last, 256),
+                        [&](const tbb::blocked_range<std::size_t>& range) {
+                          for(std::size_t j = range.begin(); j < range.end(); ++j)
+                            estimate(j);
+                        });
+    else
+#endif
+      for(std::size_t j = first; j < last; ++j)
+        estimate(j);
+    if(callback && !callback(double(last) / double(m)))
+      break;  // the points not reached keep NOT_COMPUTED
+  }
+  return results;
+}
+
+} // namespace internal
+} // namespace Point_set_curvatures
+} // namespace CGAL
+
+#endif

@@ -1,0 +1,1139 @@
+// Copyright (c) 2026 The Point_set_curvatures authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The baselines of Lejemble et al. 2021 (Table 1): distance to the barycenter, distance to
+// the PCA plane, Point Set Surfaces, osculating jets (CGAL), order-2 Wavejets, Voronoi
+// Covariance Measure (CGAL), against analytic curvatures, against each other and against
+// ASO; API, statuses and bad input of every function.
+//
+// Every cloud and every algorithm is deterministic (fixed seeds), so the measured errors
+// below are reproducible; tolerances are the measured values with a margin for other
+// compilers and libraries (x1.5 unless said otherwise). The measured errors are printed
+// (std::cout) by every accuracy test.
+
+#include "test_support.h"
+
+#include <CGAL/estimate_aso_curvatures.h>
+#include <CGAL/estimate_barycenter_curvatures.h>
+#include <CGAL/estimate_jet_curvatures.h>
+#include <CGAL/estimate_pca_plane_curvatures.h>
+#include <CGAL/estimate_pss_curvatures.h>
+#include <CGAL/estimate_vcm_curvatures.h>
+#include <CGAL/estimate_wavejet_curvatures.h>
+
+#include <CGAL/Monge_via_jet_fitting.h>
+#include <CGAL/Point_set_3.h>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace psc_test;
+namespace PSC = CGAL::Point_set_curvatures;
+typedef CGAL::Epick Epick;
+typedef std::vector<CGAL::Curvature_estimate<Kernel> > Estimates;
+
+namespace {
+
+// ---------------------------------------------------------------------------------------
+// Running the estimators
+// ---------------------------------------------------------------------------------------
+
+enum class Method { ASO, BARYCENTER, PCA_PLANE, PSS, JET, WAVEJET, VCM };
+const Method all_methods[] = {Method::ASO, Method::BARYCENTER, Method::PCA_PLANE, Method::PSS,
+                              Method::JET, Method::WAVEJET, Method::VCM};
+const Method baselines[] = {Method::BARYCENTER, Method::PCA_PLANE, Method::PSS,
+                            Method::JET, Method::WAVEJET, Method::VCM};
+
+const char* name(Method m)
+{
+  switch(m)
+  {
+    case Method::ASO: return "ASO";
+    case Method::BARYCENTER: return "barycenter";
+    case Method::PCA_PLANE: return "PCA plane";
+    case Method::PSS: return "PSS";
+    case Method::JET: return "jet (CGAL)";
+    case Method::WAVEJET: return "wavejet";
+    case Method::VCM: return "VCM (CGAL)";
+  }
+  return "?";
+}
+
+enum class Kind { SIGNED_TENSOR, UNSIGNED_MEAN, MAGNITUDES };
+Kind kind(Method m)
+{
+  if(m == Method::BARYCENTER || m == Method::PCA_PLANE)
+    return Kind::UNSIGNED_MEAN;
+  return m == Method::VCM ? Kind::MAGNITUDES : Kind::SIGNED_TENSOR;
+}
+
+// Minimal number of neighbours (query included) of each function with default parameters.
+std::size_t minimum_neighbors(Method m)
+{
+  switch(m)
+  {
+    case Method::ASO: case Method::BARYCENTER: case Method::PCA_PLANE: case Method::VCM: return 3;
+    default: return 6;
+  }
+}
+
+auto maps() { return CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()); }
+
+// Every function through its (points, radius, np) overload.
+template <class Tag, class Range, class NP>
+auto run(Method m, const Range& pts, double r, const NP& np)
+{
+  switch(m)
+  {
+    case Method::ASO: return CGAL::estimate_aso_curvatures<Tag>(pts, r, np);
+    case Method::BARYCENTER: return CGAL::estimate_barycenter_curvatures<Tag>(pts, r, np);
+    case Method::PCA_PLANE: return CGAL::estimate_pca_plane_curvatures<Tag>(pts, r, np);
+    case Method::PSS: return CGAL::estimate_pss_curvatures<Tag>(pts, r, np);
+    case Method::JET: return CGAL::estimate_jet_curvatures<Tag>(pts, r, np);
+    case Method::WAVEJET: return CGAL::estimate_wavejet_curvatures<Tag>(pts, r, np);
+    case Method::VCM: break;
+  }
+  return CGAL::estimate_vcm_curvatures<Tag>(pts, r, np);
+}
+
+template <class Tag = CGAL::Parallel_tag>
+Estimates run(Method m, const std::vector<Oriented_point>& pts, double r)
+{
+  return run<Tag>(m, pts, r, maps());
+}
+
+// Every function through its (points, np) overload, neighbourhoods by count.
+template <class Tag>
+Estimates run_by_count(Method m, const std::vector<Oriented_point>& pts, std::size_t k)
+{
+  const auto np = PSC::parameters::neighbor_count(k, maps());
+  switch(m)
+  {
+    case Method::ASO: return CGAL::estimate_aso_curvatures<Tag>(pts, np);
+    case Method::BARYCENTER: return CGAL::estimate_barycenter_curvatures<Tag>(pts, np);
+    case Method::PCA_PLANE: return CGAL::estimate_pca_plane_curvatures<Tag>(pts, np);
+    case Method::PSS: return CGAL::estimate_pss_curvatures<Tag>(pts, np);
+    case Method::JET: return CGAL::estimate_jet_curvatures<Tag>(pts, np);
+    case Method::WAVEJET: return CGAL::estimate_wavejet_curvatures<Tag>(pts, np);
+    case Method::VCM: break;
+  }
+  return CGAL::estimate_vcm_curvatures<Tag>(pts, np);
+}
+
+// Every function through its (points, point_map, normal_map, radius) overload.
+Estimates run_explicit_maps(Method m, const std::vector<Oriented_point>& pts, double r)
+{
+  typedef CGAL::Sequential_tag S;
+  switch(m)
+  {
+    case Method::ASO: return CGAL::estimate_aso_curvatures<S>(pts, Point_map(), Normal_map(), r);
+    case Method::BARYCENTER: return CGAL::estimate_barycenter_curvatures<S>(pts, Point_map(), Normal_map(), r);
+    case Method::PCA_PLANE: return CGAL::estimate_pca_plane_curvatures<S>(pts, Point_map(), Normal_map(), r);
+    case Method::PSS: return CGAL::estimate_pss_curvatures<S>(pts, Point_map(), Normal_map(), r);
+    case Method::JET: return CGAL::estimate_jet_curvatures<S>(pts, Point_map(), Normal_map(), r);
+    case Method::WAVEJET: return CGAL::estimate_wavejet_curvatures<S>(pts, Point_map(), Normal_map(), r);
+    case Method::VCM: break;
+  }
+  return CGAL::estimate_vcm_curvatures<S>(pts, Point_map(), Normal_map(), r);
+}
+
+// ---------------------------------------------------------------------------------------
+// Errors against the truth
+// ---------------------------------------------------------------------------------------
+
+struct Stat
+{
+  double sum = 0, max = 0;
+  std::size_t n = 0;
+  void add(double e)
+  {
+    sum += std::abs(e);
+    max = std::max(max, std::abs(e));
+    ++n;
+  }
+  double mean() const { return n ? sum / double(n) : std::numeric_limits<double>::quiet_NaN(); }
+};
+
+struct Errors
+{
+  std::size_t considered = 0, valid = 0;
+  Stat H;          // signed: |H - H_t|; unsigned: ||H| - |H_t||
+  Stat k_min, k_max;  // signed, or magnitudes sorted for VCM
+  Stat normal;     // degrees
+  Stat direction;  // degrees, direction of the larger (|)k(|), away from umbilics
+};
+
+double angle_degrees(const Vector& a, const Vector& b)
+{
+  const double c = (a * b) / std::sqrt(a.squared_length() * b.squared_length());
+  return std::acos(std::max(-1.0, std::min(1.0, c))) * 180.0 / M_PI;
+}
+
+Errors errors(Kind k, const Estimates& est, const std::vector<Oriented_point>& pts,
+              const std::function<Truth(const Point&)>& truth,
+              const std::function<bool(const Point&)>& keep = [](const Point&) { return true; })
+{
+  Errors e;
+  for(std::size_t i = 0; i < pts.size(); ++i)
+  {
+    if(!keep(pts[i].first))
+      continue;
+    ++e.considered;
+    const auto& x = est[i];
+    if(!x.is_valid())
+      continue;
+    ++e.valid;
+    const Truth t = truth(pts[i].first);
+    const double spread = std::max(std::abs(t.k_min), std::abs(t.k_max));
+    if(std::isfinite(x.normal.x()))
+      e.normal.add(angle_degrees(x.normal, t.normal));
+    if(k == Kind::UNSIGNED_MEAN)
+      e.H.add(x.mean_curvature - std::abs(t.mean));
+    else if(k == Kind::SIGNED_TENSOR)
+    {
+      e.H.add(x.mean_curvature - t.mean);
+      e.k_min.add(x.min_curvature - t.k_min);
+      e.k_max.add(x.max_curvature - t.k_max);
+      if(t.k_max - t.k_min > 0.2 * spread)
+        e.direction.add(line_angle_degrees(x.max_direction, t.d_max));
+    }
+    else
+    {
+      double a = std::abs(t.k_min), b = std::abs(t.k_max);
+      const Vector larger = a > b ? t.d_min : t.d_max;
+      if(a > b)
+        std::swap(a, b);
+      e.k_min.add(x.min_curvature - a);
+      e.k_max.add(x.max_curvature - b);
+      if(b - a > 0.2 * spread)
+        e.direction.add(line_angle_degrees(x.max_direction, larger));
+    }
+  }
+  return e;
+}
+
+void print_header(const std::string& title)
+{
+  std::cout << "\n" << title << "\n"
+            << "| estimator | valid | mean/max err H | mean/max err k_min | mean/max err k_max "
+               "| normal deg mean/max | direction deg mean |\n|---|---|---|---|---|---|---|\n";
+}
+
+void print_row(const std::string& label, const Errors& e)
+{
+  auto pair = [](const Stat& s) {
+    std::ostringstream o;
+    if(s.n == 0)
+      o << "-";
+    else
+      o << std::setprecision(3) << s.mean() << " / " << s.max;
+    return o.str();
+  };
+  std::ostringstream mean_direction;
+  if(e.direction.n)
+    mean_direction << std::setprecision(3) << e.direction.mean();
+  else
+    mean_direction << "-";
+  std::cout << "| " << label << " | " << e.valid << "/" << e.considered << " | " << pair(e.H)
+            << " | " << pair(e.k_min) << " | " << pair(e.k_max) << " | " << pair(e.normal)
+            << " | " << mean_direction.str() << " |" << std::endl;
+}
+
+// ---------------------------------------------------------------------------------------
+// Clouds
+// ---------------------------------------------------------------------------------------
+
+Truth sphere_truth(const Point& p, const Point& c, double R, bool inward = false)
+{
+  Truth t;
+  Vector n = p - c;
+  n = n / std::sqrt(n.squared_length());
+  t.normal = inward ? -n : n;
+  t.k_min = t.k_max = t.mean = (inward ? -1.0 : 1.0) / R;
+  t.gaussian = 1.0 / (R * R);
+  return t;
+}
+
+Truth cylinder_truth(const Point& p, double R)
+{
+  Truth t;
+  Vector n(p.x(), p.y(), 0);
+  n = n / std::sqrt(n.squared_length());
+  t.normal = n;
+  t.k_min = 0;
+  t.k_max = 1.0 / R;
+  t.mean = 0.5 / R;
+  t.gaussian = 0;
+  t.d_max = Vector(-n.y(), n.x(), 0);
+  t.d_min = Vector(0, 0, 1);
+  return t;
+}
+
+// The Fibonacci sphere mapped onto the ellipsoid: a density that varies smoothly, with the
+// local regularity of a blue-noise sampling (psc_test::ellipsoid is i.i.d. random).
+std::vector<Oriented_point> regular_ellipsoid(std::size_t n, double a, double b, double c)
+{
+  std::vector<Oriented_point> out;
+  for(const auto& p : sphere(n, 1.0))
+  {
+    const Point q(a * p.first.x(), b * p.first.y(), c * p.first.z());
+    const Vector g(q.x() / (a * a), q.y() / (b * b), q.z() / (c * c));
+    out.emplace_back(q, g / std::sqrt(g.squared_length()));
+  }
+  return out;
+}
+
+const std::vector<Oriented_point>& goursat_10k()
+{
+  static const std::vector<Oriented_point> pts = read_xyz(shared_data("goursat_010000.xyz"));
+  return pts;
+}
+
+bool same_number(double a, double b) { return (std::isnan(a) && std::isnan(b)) || a == b; }
+template <class V>
+bool same_vector(const V& a, const V& b)
+{
+  return same_number(a.x(), b.x()) && same_number(a.y(), b.y()) && same_number(a.z(), b.z());
+}
+template <class E1, class E2>
+bool same_estimate(const E1& a, const E2& b)
+{
+  return a.status == b.status && a.neighbor_count == b.neighbor_count &&
+         same_number(a.mean_curvature, b.mean_curvature) &&
+         same_number(a.gaussian_curvature, b.gaussian_curvature) &&
+         same_number(a.min_curvature, b.min_curvature) && same_number(a.max_curvature, b.max_curvature) &&
+         same_number(a.normal.x(), b.normal.x()) && same_number(a.normal.y(), b.normal.y()) &&
+         same_number(a.normal.z(), b.normal.z()) &&
+         same_number(a.min_direction.x(), b.min_direction.x()) &&
+         same_number(a.min_direction.y(), b.min_direction.y()) &&
+         same_number(a.min_direction.z(), b.min_direction.z()) &&
+         same_number(a.max_direction.x(), b.max_direction.x()) &&
+         same_number(a.max_direction.y(), b.max_direction.y()) &&
+         same_number(a.max_direction.z(), b.max_direction.z());
+}
+
+template <class E>
+bool all_nan(const E& e)
+{
+  return std::isnan(e.mean_curvature) && std::isnan(e.gaussian_curvature) &&
+         std::isnan(e.min_curvature) && std::isnan(e.max_curvature) && std::isnan(e.normal.x()) &&
+         std::isnan(e.min_direction.x()) && std::isnan(e.max_direction.x());
+}
+
+// VCM results are reproducible only up to rounding: CGAL's construction of the Voronoi cells
+// (compute_vcm, 5.5) is not bitwise reproducible from one call to the next (measured: the
+// covariance matrices of two identical calls differ by up to 7e-16 relative). The
+// magnitudes |k| = (2/r) sqrt(λ_i/λ_n) then move by at most (2/r) sqrt(1e-15) near k = 0,
+// 1e-12 relative elsewhere; the normal (a well separated eigenvalue) by 1e-12. Directions
+// are not compared: they are ill-conditioned where |k_min| ~ |k_max|.
+template <class E1, class E2>
+bool close_vcm_estimate(const E1& a, const E2& b, double r)
+{
+  if(a.status != b.status || a.neighbor_count != b.neighbor_count)
+    return false;
+  if(!a.is_valid())
+    return all_nan(a) && all_nan(b);
+  const double tolerance = 1e-6 / r;
+  return std::abs(a.min_curvature - b.min_curvature) < tolerance &&
+         std::abs(a.max_curvature - b.max_curvature) < tolerance &&
+         std::abs(a.normal.x() - b.normal.x()) < 1e-9 && std::abs(a.normal.y() - b.normal.y()) < 1e-9 &&
+         std::abs(a.normal.z() - b.normal.z()) < 1e-9 && std::isnan(a.mean_curvature) &&
+         std::isnan(b.mean_curvature);
+}
+
+// Identical estimates, or for VCM identical up to CGAL's rounding (see above).
+template <class E1, class E2>
+bool reproduced(Method m, const E1& a, const E2& b, double r)
+{
+  return m == Method::VCM ? close_vcm_estimate(a, b, r) : same_estimate(a, b);
+}
+
+// Which fields a valid estimate of each method fills (the others must be NaN).
+void check_fields(Method m, const CGAL::Curvature_estimate<Kernel>& e)
+{
+  INFO(name(m));
+  REQUIRE(e.is_valid());
+  const bool tensor = kind(m) == Kind::SIGNED_TENSOR;
+  CHECK(std::isfinite(e.mean_curvature) == (kind(m) != Kind::MAGNITUDES));
+  CHECK(std::isfinite(e.gaussian_curvature) == tensor);
+  CHECK(std::isfinite(e.min_curvature) == (kind(m) != Kind::UNSIGNED_MEAN));
+  CHECK(std::isfinite(e.max_curvature) == (kind(m) != Kind::UNSIGNED_MEAN));
+  CHECK(std::isfinite(e.min_direction.x()) == (kind(m) != Kind::UNSIGNED_MEAN));
+  CHECK(std::isfinite(e.max_direction.x()) == (kind(m) != Kind::UNSIGNED_MEAN));
+  CHECK(std::isfinite(e.normal.x()) == (m != Method::BARYCENTER));
+  if(kind(m) == Kind::UNSIGNED_MEAN)
+    CHECK(e.mean_curvature >= 0);
+  if(kind(m) == Kind::MAGNITUDES)
+    CHECK(e.min_curvature >= 0);
+  if(kind(m) != Kind::UNSIGNED_MEAN)
+  {
+    CHECK(e.min_curvature <= e.max_curvature);
+    CHECK(e.min_direction.squared_length() == Approx(1).epsilon(1e-12));
+    CHECK(e.max_direction.squared_length() == Approx(1).epsilon(1e-12));
+    CHECK(std::abs(e.min_direction * e.max_direction) < 1e-12);
+    CHECK(std::abs(e.min_direction * e.normal) < 1e-9);
+    CHECK(std::abs(e.max_direction * e.normal) < 1e-9);
+  }
+  if(m != Method::BARYCENTER)
+    CHECK(e.normal.squared_length() == Approx(1).epsilon(1e-12));
+  if(tensor)
+  {
+    CHECK(e.mean_curvature == Approx(0.5 * (e.min_curvature + e.max_curvature)).margin(1e-12));
+    CHECK(e.gaussian_curvature == Approx(e.min_curvature * e.max_curvature).margin(1e-12));
+  }
+}
+
+} // namespace
+
+// ---------------------------------------------------------------------------------------
+// Building blocks
+// ---------------------------------------------------------------------------------------
+
+TEST_CASE("Jacobi eigen-decomposition of symmetric 3x3 matrices", "[baselines][eigen]")
+{
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for(int trial = 0; trial < 2000; ++trial)
+  {
+    // random rotation times a spectrum with a wide range (as a flat covariance: 1, 1, 1e-8)
+    double m[6];
+    const double scale[3] = {1.0, trial % 2 ? 1.0 : 0.3, trial % 3 ? 1e-8 : 0.5};
+    double a[3][3] = {};
+    Vector q[3];
+    Vector v0(u(rng), u(rng), u(rng)), v1(u(rng), u(rng), u(rng));
+    q[0] = v0 / std::sqrt(v0.squared_length());
+    v1 = v1 - (v1 * q[0]) * q[0];
+    q[1] = v1 / std::sqrt(v1.squared_length());
+    q[2] = CGAL::cross_product(q[0], q[1]);
+    for(int i = 0; i < 3; ++i)
+      for(int j = 0; j < 3; ++j)
+        for(int k = 0; k < 3; ++k)
+          a[i][j] += scale[k] * q[k][i] * q[k][j];
+    m[0] = a[0][0]; m[1] = a[0][1]; m[2] = a[0][2]; m[3] = a[1][1]; m[4] = a[1][2]; m[5] = a[2][2];
+    double values[3], vectors[3][3];
+    REQUIRE(PSC::internal::symmetric_eigen_3(m, values, vectors));
+    CHECK(values[0] <= values[1]);
+    CHECK(values[1] <= values[2]);
+    for(int k = 0; k < 3; ++k)
+    {
+      const double* v = vectors[k];
+      CHECK(v[0] * v[0] + v[1] * v[1] + v[2] * v[2] == Approx(1).epsilon(1e-14));
+      // residual |A v - λ v| at the rounding level of the largest eigenvalue
+      for(int i = 0; i < 3; ++i)
+        CHECK(std::abs(a[i][0] * v[0] + a[i][1] * v[1] + a[i][2] * v[2] - values[k] * v[i]) < 1e-14);
+    }
+    // the small eigenvalue is recovered to its own relative accuracy, not the large ones'
+    if(trial % 3 != 0)
+      CHECK(values[0] == Approx(1e-8).epsilon(1e-6));
+  }
+}
+
+// ---------------------------------------------------------------------------------------
+// Analytic surfaces: every estimator within its measured tolerance
+// ---------------------------------------------------------------------------------------
+
+// Sphere of radius 2 centred away from the origin, Fibonacci sampling, r = 0.25 (about 39
+// neighbours); truth k = H = 0.5. Measured mean / max errors (tolerances x1.5):
+//   ASO: 3e-15 / 3e-14 (it fits spheres exactly);
+//   PSS 0.0013 / 0.0014, jets and wavejets 0.0019 / 0.0021 on k_min, k_max and H: the height
+//     ρ²/(2R) + ρ⁴/(8R³) + ... of a sphere is not quadratic, and the quartic term biases a
+//     quadratic fit by a fraction of (r/R)² = 1.6% (0.3 to 0.4% here);
+//   |H| from the barycenter 0.13 / 0.72: the tangential drift of the barycenter of ~39
+//     discrete points dominates the r²/(4R) = 0.008 offset it measures;
+//   |H| from the PCA plane 0.014 / 0.035 (the drift removed);
+//   VCM (R = r) 0.65 to 0.74 / 0.84: each Voronoi cell's spread over the spacing adds about
+//     0.02 to λ_i/λ_n against r²k²/4 = 0.004, so the magnitudes come out 2.3 times too large;
+//     with R = 2 (the feature size, as CGAL recommends) 0.020 to 0.056 / 0.082.
+// Normals (max, degrees): fits 0.0018 (jets), PCA plane 0.50, VCM 1.1.
+TEST_CASE("Sphere: every estimator within its measured tolerance", "[baselines][sphere]")
+{
+  const Point c(1, -2, 3);
+  const double R = 2, r = 0.25;
+  const auto pts = sphere(10000, R, c);
+  auto truth = [&](const Point& p) { return sphere_truth(p, c, R); };
+  print_header("Sphere R = 2, 10000 points, r = 0.25");
+  struct Tolerance { Method m; double mean_H, max_H, mean_k, max_k; };
+  const Tolerance tolerances[] = {
+    {Method::ASO, 1e-12, 1e-11, 1e-12, 1e-11},
+    {Method::BARYCENTER, 0.2, 1.1, 0, 0},
+    {Method::PCA_PLANE, 0.021, 0.053, 0, 0},
+    {Method::PSS, 0.002, 0.0021, 0.002, 0.0021},
+    {Method::JET, 0.003, 0.0032, 0.003, 0.0032},
+    {Method::WAVEJET, 0.003, 0.0032, 0.003, 0.0032},
+    {Method::VCM, 0, 0, 1.1, 1.26}};
+  for(const Tolerance& t : tolerances)
+  {
+    const Estimates est = run(t.m, pts, r);
+    const Errors e = errors(kind(t.m), est, pts, truth);
+    print_row(name(t.m), e);
+    INFO(name(t.m));
+    CHECK(e.valid == pts.size());
+    check_fields(t.m, est[123]);
+    if(kind(t.m) != Kind::MAGNITUDES)
+    {
+      CHECK(e.H.mean() < t.mean_H);
+      CHECK(e.H.max < t.max_H);
+    }
+    if(kind(t.m) != Kind::UNSIGNED_MEAN)
+    {
+      CHECK(e.k_min.mean() < t.mean_k);
+      CHECK(e.k_max.mean() < t.mean_k);
+      CHECK(e.k_min.max < t.max_k);
+      CHECK(e.k_max.max < t.max_k);
+    }
+    // normals: exact for ASO (acos resolves 1e-6 degree); the others x1.5
+    if(t.m == Method::ASO)
+      CHECK(e.normal.max < 1e-5);
+    else if(t.m == Method::PCA_PLANE)
+      CHECK(e.normal.max < 0.75);
+    else if(t.m == Method::VCM)
+      CHECK(e.normal.max < 1.6);
+    else if(t.m != Method::BARYCENTER)
+      CHECK(e.normal.max < 0.0027);
+  }
+  // VCM with the offset radius at the feature size: the cell-spread bias shrinks as 1/R²
+  const Estimates vcm = CGAL::estimate_vcm_curvatures<CGAL::Parallel_tag>(
+    pts, r, PSC::parameters::vcm_offset_radius(R, maps()));
+  const Errors e = errors(Kind::MAGNITUDES, vcm, pts, truth);
+  print_row("VCM (CGAL), R = 2 (feature size)", e);
+  CHECK(e.k_min.mean() < 0.03);
+  CHECK(e.k_max.mean() < 0.084);
+  CHECK(std::max(e.k_min.max, e.k_max.max) < 0.123);
+}
+
+TEST_CASE("Inward normals flip the signed curvatures and the normals, not the magnitudes", "[baselines][sphere]")
+{
+  const Point c(0, 0, 0);
+  const double R = 1, r = 0.2;
+  const auto out = sphere(3000, R, c);
+  const auto in = sphere(3000, R, c, true);
+  for(Method m : all_methods)
+  {
+    INFO(name(m));
+    const Estimates a = run(m, out, r), b = run(m, in, r);
+    for(std::size_t i = 0; i < out.size(); i += 7)
+    {
+      REQUIRE(a[i].is_valid());
+      REQUIRE(b[i].is_valid());
+      if(kind(m) == Kind::SIGNED_TENSOR)
+      {
+        CHECK(a[i].mean_curvature > 0.9);
+        CHECK(b[i].mean_curvature == Approx(-a[i].mean_curvature).epsilon(1e-9));
+        CHECK(b[i].min_curvature == Approx(-a[i].max_curvature).epsilon(1e-9));
+        CHECK(b[i].max_curvature == Approx(-a[i].min_curvature).epsilon(1e-9));
+        CHECK(b[i].gaussian_curvature == Approx(a[i].gaussian_curvature).epsilon(1e-9));
+      }
+      else if(m == Method::VCM)  // up to CGAL's rounding, see close_vcm_estimate
+      {
+        CHECK(b[i].min_curvature == Approx(a[i].min_curvature).margin(1e-6 / r));
+        CHECK(b[i].max_curvature == Approx(a[i].max_curvature).margin(1e-6 / r));
+      }
+      else
+        CHECK(b[i].mean_curvature == a[i].mean_curvature);
+      if(m != Method::BARYCENTER)
+      {
+        CHECK(a[i].normal * (out[i].second) > 0.999);
+        CHECK(b[i].normal * (in[i].second) > 0.999);
+      }
+    }
+  }
+}
+
+// Cylinder of radius 1 and height 3 (jittered grid, 6000 points), r = 0.2 (about 39
+// neighbours); points closer than r to the rims are excluded (one-sided neighbourhoods bias
+// every estimator, ASO up to 0.3 in H). Truth: k_min = 0 along the axis, k_max = 1, H = 0.5.
+// Measured mean / max errors (tolerances x1.5):
+//   H: ASO 0.0020 / 0.017, PSS 0.0024 / 0.0028, jets and wavejets 0.0039 / 0.0049,
+//      PCA plane 0.033 / 0.14, barycenter 0.52 / 2.0 (the grid's anisotropic spacing,
+//      0.063 x 0.05, drifts the barycenter);
+//   k_min, k_max (worse of the two): ASO 0.0028 / 0.022, PSS 0.0049 / 0.0056, jets and
+//      wavejets 0.0078 / 0.0094;
+//   direction of k_max (mean, degrees): ASO 0.071, PSS 0.004, jets 0.008, wavejets 0.007;
+//   VCM: at R = r no curvature is resolved (magnitude errors 1.28 in mean, 3.5 at most: the
+//      cell spread adds (2/r) sqrt(0.019) = 1.4 to the magnitudes), but its direction of the
+//      larger magnitude is the circumference within 2.7 degrees (mean).
+TEST_CASE("Cylinder: every estimator within its measured tolerance", "[baselines][cylinder]")
+{
+  const double R = 1, height = 3, r = 0.2;
+  const auto pts = cylinder(100, 60, R, height);
+  auto truth = [&](const Point& p) { return cylinder_truth(p, R); };
+  auto interior = [&](const Point& p) { return std::abs(p.z()) < 0.5 * height - r; };
+  print_header("Cylinder R = 1, 6000 points, r = 0.2, points farther than r from the rims");
+  struct Tolerance { Method m; double mean_H, max_H, mean_k, max_k, direction; };
+  const Tolerance tolerances[] = {
+    {Method::ASO, 0.003, 0.026, 0.0043, 0.034, 0.11},
+    {Method::BARYCENTER, 0.78, 3.0, 0, 0, 0},
+    {Method::PCA_PLANE, 0.05, 0.21, 0, 0, 0},
+    {Method::PSS, 0.0036, 0.0043, 0.0073, 0.0084, 0.006},
+    {Method::JET, 0.0058, 0.0073, 0.012, 0.014, 0.012},
+    {Method::WAVEJET, 0.0058, 0.0073, 0.012, 0.014, 0.011},
+    {Method::VCM, 0, 0, 1.9, 5.2, 4.0}};
+  for(const Tolerance& t : tolerances)
+  {
+    const Estimates est = run(t.m, pts, r);
+    const Errors e = errors(kind(t.m), est, pts, truth, interior);
+    print_row(name(t.m), e);
+    INFO(name(t.m));
+    CHECK(e.valid == e.considered);
+    check_fields(t.m, est[2000]);
+    if(kind(t.m) != Kind::MAGNITUDES)
+    {
+      CHECK(e.H.mean() < t.mean_H);
+      CHECK(e.H.max < t.max_H);
+    }
+    if(kind(t.m) != Kind::UNSIGNED_MEAN)
+    {
+      CHECK(std::max(e.k_min.mean(), e.k_max.mean()) < t.mean_k);
+      CHECK(std::max(e.k_min.max, e.k_max.max) < t.max_k);
+      CHECK(e.direction.mean() < t.direction);
+    }
+  }
+}
+
+// Ellipsoid with semi-axes 1, 0.7, 0.5 (curvatures 0.5 to 4), 10000 i.i.d. points
+// (psc_test::ellipsoid: normalised Gaussian directions), r = 0.09 (about 39 neighbours).
+// Random sampling is irregular at the scale of the neighbourhoods, which hurts the
+// estimators that differentiate the weights (ASO) or use the barycenter. Measured mean / max
+// errors (tolerances x1.5):
+//   H: ASO 0.038 / 0.73, PSS 0.0093 / 0.066, jets 0.013 / 0.10, wavejets 0.014 / 0.11,
+//      PCA plane 0.14 / 0.92, barycenter 3.3 / 17.5 (useless here);
+//   k_min, k_max (worse of the two): ASO 0.049 / 0.93, PSS 0.015 / 0.11, jets 0.021 / 0.17,
+//      wavejets 0.021 / 0.18; VCM magnitudes 3.3 / 5.6.
+TEST_CASE("Ellipsoid (random sampling): every estimator within its measured tolerance", "[baselines][ellipsoid]")
+{
+  const double a = 1, b = 0.7, c = 0.5, r = 0.09;
+  const auto pts = ellipsoid(10000, a, b, c);
+  auto truth = [&](const Point& p) { return ellipsoid_truth(p, a, b, c); };
+  print_header("Ellipsoid 1 x 0.7 x 0.5, 10000 random points, r = 0.09");
+  struct Tolerance { Method m; double mean_H, max_H, mean_k, max_k; };
+  const Tolerance tolerances[] = {
+    {Method::ASO, 0.057, 1.1, 0.074, 1.4},
+    {Method::BARYCENTER, 5.0, 26, 0, 0},
+    {Method::PCA_PLANE, 0.22, 1.4, 0, 0},
+    {Method::PSS, 0.014, 0.099, 0.023, 0.165},
+    {Method::JET, 0.02, 0.153, 0.032, 0.25},
+    {Method::WAVEJET, 0.02, 0.168, 0.032, 0.276},
+    {Method::VCM, 0, 0, 4.9, 8.3}};
+  for(const Tolerance& t : tolerances)
+  {
+    const Estimates est = run(t.m, pts, r);
+    const Errors e = errors(kind(t.m), est, pts, truth);
+    print_row(name(t.m), e);
+    INFO(name(t.m));
+    CHECK(e.valid == pts.size());
+    if(kind(t.m) != Kind::MAGNITUDES)
+    {
+      CHECK(e.H.mean() < t.mean_H);
+      CHECK(e.H.max < t.max_H);
+    }
+    if(kind(t.m) != Kind::UNSIGNED_MEAN)
+    {
+      CHECK(std::max(e.k_min.mean(), e.k_max.mean()) < t.mean_k);
+      CHECK(std::max(e.k_min.max, e.k_max.max) < t.max_k);
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------
+// Comparisons with CGAL and between full-tensor estimators
+// ---------------------------------------------------------------------------------------
+
+// estimate_jet_curvatures() is CGAL's Monge_via_jet_fitting on the package's neighbourhoods:
+// a direct call of CGAL's class, in absolute coordinates, with the neighbours found by brute
+// force and the query point first, gives the same curvatures to rounding (measured: 5e-14
+// relative at most; the fit is invariant to the scaled frame up to rounding; bound 1e-8).
+// With the query point NOT first, CGAL evaluates the jet at another neighbour: curvatures
+// then differ by up to 31% of their magnitude over these 271 points (bound: more than 10%),
+// the mistake this test would catch.
+TEST_CASE("estimate_jet_curvatures agrees with a direct call of CGAL::Monge_via_jet_fitting", "[baselines][jet][cgal]")
+{
+  const auto& pts = goursat_10k();
+  const double r = 1.5;
+  const Estimates jets = run(Method::JET, pts, r);
+  typedef CGAL::Monge_via_jet_fitting<Kernel> Fitter;
+  double worst = 0, worst_not_first = 0;
+  for(std::size_t i = 0; i < pts.size(); i += 37)
+  {
+    const Point& x = pts[i].first;
+    std::vector<Point> first, last;
+    first.push_back(x);
+    for(const auto& p : pts)
+      if(CGAL::squared_distance(p.first, x) < r * r && p.first != x)
+      {
+        first.push_back(p.first);
+        last.push_back(p.first);
+      }
+    last.push_back(x);
+    Fitter fitter;
+    Fitter::Monge_form monge = fitter(first.begin(), first.end(), 2, 2);
+    monge.comply_wrt_given_normal(pts[i].second);
+    Fitter::Monge_form other = fitter(last.begin(), last.end(), 2, 2);
+    other.comply_wrt_given_normal(pts[i].second);
+    const auto& e = jets[i];
+    REQUIRE(e.is_valid());
+    CHECK(e.neighbor_count == first.size());
+    const double scale = std::max(std::abs(e.min_curvature), std::abs(e.max_curvature));
+    worst = std::max({worst, std::abs(e.min_curvature + monge.principal_curvatures(0)) / scale,
+                      std::abs(e.max_curvature + monge.principal_curvatures(1)) / scale});
+    worst_not_first = std::max({worst_not_first,
+                                std::abs(e.min_curvature + other.principal_curvatures(0)) / scale,
+                                std::abs(e.max_curvature + other.principal_curvatures(1)) / scale});
+    CHECK(angle_degrees(e.normal, monge.normal_direction()) < 1e-5);  // acos resolves 1e-6 degree
+    if(e.max_curvature - e.min_curvature > 1e-3 * scale)  // directions defined away from umbilics
+      CHECK(line_angle_degrees(e.min_direction, monge.maximal_principal_direction()) < 1e-5);
+  }
+  std::cout << "\nJets vs direct CGAL call on Goursat 10K, r = 1.5: max relative difference "
+            << worst << " with the query first, " << worst_not_first << " with the query last"
+            << std::endl;
+  CHECK(worst < 1e-8);
+  CHECK(worst_not_first > 0.1);
+}
+
+namespace {
+
+// Mean over the points valid for both of |k_min - k_min'| + |k_max - k_max'| / 2.
+double mean_disagreement(const Estimates& a, const Estimates& b)
+{
+  double s = 0;
+  std::size_t n = 0;
+  for(std::size_t i = 0; i < a.size(); ++i)
+    if(a[i].is_valid() && b[i].is_valid())
+    {
+      s += 0.5 * (std::abs(a[i].min_curvature - b[i].min_curvature) +
+                  std::abs(a[i].max_curvature - b[i].max_curvature));
+      ++n;
+    }
+  return n ? s / double(n) : std::numeric_limits<double>::infinity();
+}
+
+// Mean over the points of |k_min - k_min_t| + |k_max - k_max_t| / 2 (magnitudes for VCM).
+double mean_tensor_error(Kind k, const Estimates& est, const std::vector<Oriented_point>& pts,
+                         const std::function<Truth(const Point&)>& truth)
+{
+  const Errors e = errors(k, est, pts, truth);
+  REQUIRE(e.valid == pts.size());
+  return 0.5 * (e.k_min.mean() + e.k_max.mean());
+}
+
+} // namespace
+
+// The full-tensor estimators agree with each other and with CGAL's jet fitting: mean of
+// (|Δk_min| + |Δk_max|)/2 between every pair, on Goursat 10K at r = 1.5 (39 neighbours;
+// curvatures up to 0.42) and on the random ellipsoid (curvatures 0.5 to 4). Measured
+// (bounds x1.5): Goursat: PSS-jets and PSS-wavejets 0.0030, ASO to the others 0.0043 to
+// 0.0066, jets-wavejets 9e-5 (the same quadratic over nearly the same plane); ellipsoid:
+// PSS-jets 0.0092, ASO to the others 0.050 to 0.054 (ASO is the outlier on random sampling,
+// see the ellipsoid test), jets-wavejets 0.0005.
+TEST_CASE("Full-tensor estimators agree with each other and with CGAL jet fitting", "[baselines][cgal][agreement]")
+{
+  const Method tensors[] = {Method::ASO, Method::PSS, Method::JET, Method::WAVEJET};
+  struct Cloud { const char* title; std::vector<Oriented_point> pts; double r; double bound, aso_bound; };
+  const Cloud clouds[] = {
+    {"Goursat 10K, r = 1.5", goursat_10k(), 1.5, 0.0045, 0.01},
+    {"ellipsoid 10K random, r = 0.09", ellipsoid(10000, 1, 0.7, 0.5), 0.09, 0.014, 0.081}};
+  for(const Cloud& cloud : clouds)
+  {
+    std::vector<Estimates> est;
+    for(Method m : tensors)
+      est.push_back(run(m, cloud.pts, cloud.r));
+    std::cout << "\nMean disagreement (|dk_min| + |dk_max|)/2, " << cloud.title << "\n|   | ASO | PSS | jet | wavejet |\n|---|---|---|---|---|\n";
+    for(std::size_t i = 0; i < 4; ++i)
+    {
+      std::cout << "| " << name(tensors[i]) << " |";
+      for(std::size_t j = 0; j < 4; ++j)
+        std::cout << " " << std::setprecision(3) << mean_disagreement(est[i], est[j]) << " |";
+      std::cout << "\n";
+    }
+    for(std::size_t i = 0; i < 4; ++i)
+      for(std::size_t j = i + 1; j < 4; ++j)
+      {
+        INFO(cloud.title << ": " << name(tensors[i]) << " vs " << name(tensors[j]));
+        CHECK(mean_disagreement(est[i], est[j]) < (i == 0 ? cloud.aso_bound : cloud.bound));
+      }
+    // jets and wavejets fit the same quadratic over nearly the same plane
+    CHECK(mean_disagreement(est[2], est[3]) < 0.06 * cloud.bound);
+  }
+}
+
+// The paper's claim (Section 6.1): ASO is at least as accurate as osculating jets and VCM
+// against the analytic values, on the same neighbourhoods, on the Goursat surface sampled
+// by Lloyd relaxation with r = 5% of the bounding box diagonal (1.67 here, 48 neighbours).
+// Measured mean (|Δk_min| + |Δk_max|)/2: ASO 0.0036, jets 0.0049 (PSS 0.0032); on the
+// magnitudes, VCM 0.099 (R = r) and 0.24 (R = 0.5 r, the paper's setting); mean |ΔH|:
+// ASO 0.0030, jets 0.0045 (PSS 0.0030). The assertions are the paper's inequalities.
+// Also printed, not asserted: ASO against jets at about 40 neighbours on Goursat 10K and on
+// the two ellipsoids (measured: Goursat 10K, r = 1.5: ASO 0.0038, jets 0.0043; regular
+// ellipsoid: ASO 0.0085, jets 0.013; random ellipsoid: ASO 0.048, jets 0.014). The claim
+// fails on random sampling, and also on Goursat 50K at r = 0.67, 39 neighbours (ASO 0.0019,
+// jets 0.0013, PSS 0.0007; not run here, 5 s): ASO needs a locally regular sampling, and at
+// a fixed neighbour count its error decreases more slowly than the jets' as r shrinks.
+TEST_CASE("ASO is at least as accurate as CGAL jets and VCM on Goursat (paper setting)", "[baselines][cgal][accuracy]")
+{
+  const auto& pts = goursat_10k();
+  const double r = 0.05 * 2 * std::sqrt(3.0) * 9.6608;  // 5% of the bounding box diagonal
+  auto truth = [](const Point& p) { return goursat_truth(p); };
+  const Estimates aso = run(Method::ASO, pts, r), jet = run(Method::JET, pts, r);
+  const Estimates vcm = run(Method::VCM, pts, r);
+  const Estimates vcm_half = CGAL::estimate_vcm_curvatures<CGAL::Parallel_tag>(
+    pts, r, PSC::parameters::vcm_offset_radius(0.5 * r, maps()));
+  print_header("Goursat 10K, r = 1.673 (5% of the diagonal, the paper's setting)");
+  const Errors e_aso = errors(Kind::SIGNED_TENSOR, aso, pts, truth);
+  const Errors e_jet = errors(Kind::SIGNED_TENSOR, jet, pts, truth);
+  print_row("ASO", e_aso);
+  print_row("jet (CGAL)", e_jet);
+  print_row("PSS", errors(Kind::SIGNED_TENSOR, run(Method::PSS, pts, r), pts, truth));
+  print_row("wavejet", errors(Kind::SIGNED_TENSOR, run(Method::WAVEJET, pts, r), pts, truth));
+  print_row("VCM (CGAL), R = r", errors(Kind::MAGNITUDES, vcm, pts, truth));
+  print_row("VCM (CGAL), R = 0.5 r", errors(Kind::MAGNITUDES, vcm_half, pts, truth));
+
+  const double aso_k = mean_tensor_error(Kind::SIGNED_TENSOR, aso, pts, truth);
+  const double jet_k = mean_tensor_error(Kind::SIGNED_TENSOR, jet, pts, truth);
+  // VCM only has magnitudes: compare ASO's magnitudes with VCM's, on the same terms
+  const double aso_abs = mean_tensor_error(Kind::MAGNITUDES, aso, pts, truth);
+  const double vcm_abs = mean_tensor_error(Kind::MAGNITUDES, vcm, pts, truth);
+  const double vcm_half_abs = mean_tensor_error(Kind::MAGNITUDES, vcm_half, pts, truth);
+  CHECK(aso_k <= jet_k);
+  CHECK(e_aso.H.mean() <= e_jet.H.mean());
+  CHECK(aso_abs <= vcm_abs);
+  CHECK(aso_abs <= vcm_half_abs);
+
+  // Where the claim does not hold: ASO needs a locally regular sampling.
+  std::cout << "\nASO vs CGAL jets, mean (|dk_min| + |dk_max|)/2 against the truth, about 40 neighbours:\n"
+            << "| cloud | r | ASO | jet | PSS |\n|---|---|---|---|---|\n";
+  struct Case { std::string title; std::vector<Oriented_point> pts; double r; std::function<Truth(const Point&)> truth; };
+  const double a = 1, b = 0.7, c = 0.5;
+  auto ell = [=](const Point& p) { return ellipsoid_truth(p, a, b, c); };
+  const Case cases[] = {
+    {"Goursat 10K (Lloyd)", goursat_10k(), 1.5, truth},
+    {"ellipsoid 10K regular (Fibonacci)", regular_ellipsoid(10000, a, b, c), 0.09, ell},
+    {"ellipsoid 10K random", ellipsoid(10000, a, b, c), 0.09, ell}};
+  for(const Case& k : cases)
+  {
+    const double e_a = mean_tensor_error(Kind::SIGNED_TENSOR, run(Method::ASO, k.pts, k.r), k.pts, k.truth);
+    const double e_j = mean_tensor_error(Kind::SIGNED_TENSOR, run(Method::JET, k.pts, k.r), k.pts, k.truth);
+    const double e_p = mean_tensor_error(Kind::SIGNED_TENSOR, run(Method::PSS, k.pts, k.r), k.pts, k.truth);
+    std::cout << "| " << k.title << " | " << k.r << " | " << e_a << " | " << e_j << " | " << e_p << " |\n";
+    if(e_a > e_j)
+      WARN(k.title << ": ASO less accurate than CGAL jets (" << e_a << " > " << e_j << ")");
+  }
+  std::cout << std::flush;
+}
+
+// ---------------------------------------------------------------------------------------
+// API: overloads, containers, kernels, concurrency
+// ---------------------------------------------------------------------------------------
+
+// Sequential and parallel runs are identical, bit for bit, on the simulated LiDAR scan
+// (anisotropic sampling and depth noise: a few points have too few neighbours); VCM up to
+// the rounding of CGAL's Voronoi cells, which differs between any two calls.
+TEST_CASE("Sequential and parallel runs give identical results", "[baselines][parallel]")
+{
+  const auto pts = read_xyz(shared_data("goursat-lidar.xyz"));
+  const double r = 2.0;
+  for(Method m : baselines)
+  {
+    INFO(name(m));
+    const Estimates s = run<CGAL::Sequential_tag>(m, pts, r);
+    const Estimates p = run<CGAL::Parallel_tag>(m, pts, r);
+    REQUIRE(s.size() == p.size());
+    std::size_t different = 0, valid = 0;
+    for(std::size_t i = 0; i < s.size(); ++i)
+    {
+      different += reproduced(m, s[i], p[i], r) ? 0 : 1;
+      valid += s[i].is_valid() ? 1 : 0;
+    }
+    CHECK(different == 0);
+    CHECK(valid > pts.size() * 9 / 10);
+  }
+}
+
+TEST_CASE("The three overloads, Point_set_3 and Epick give identical results", "[baselines][api]")
+{
+  const auto pts = sphere(2000, 1.0, Point(0.5, 0, 0));
+  const double r = 0.3;
+  CGAL::Point_set_3<Epick::Point_3, Epick::Vector_3> eps;
+  eps.add_normal_map();
+  for(const auto& p : pts)
+    eps.insert(Epick::Point_3(p.first.x(), p.first.y(), p.first.z()),
+               Epick::Vector_3(p.second.x(), p.second.y(), p.second.z()));
+  for(Method m : baselines)
+  {
+    INFO(name(m));
+    const Estimates ref = run<CGAL::Sequential_tag>(m, pts, r);
+    const Estimates explicit_maps = run_explicit_maps(m, pts, r);
+    const std::vector<CGAL::Curvature_estimate<Epick> > e = run<CGAL::Sequential_tag>(m, eps, r, eps.parameters());
+    std::size_t different = 0;
+    for(std::size_t i = 0; i < pts.size(); ++i)
+      different += (reproduced(m, ref[i], explicit_maps[i], r) && reproduced(m, ref[i], e[i], r)) ? 0 : 1;
+    CHECK(different == 0);
+  }
+}
+
+// Neighbourhoods by count: the (points, np) overloads with neighbor_count(k). On the
+// Fibonacci sphere the k-th neighbour distance is nearly uniform, so the accuracy is that
+// of the radius runs (measured mean errors by count, radius in parentheses: PSS 0.0013
+// (0.0013), jets and wavejets 0.0020 (0.0020), PCA plane 0.015 (0.014), barycenter 0.18
+// (0.13), VCM 0.75 (0.74)); tolerances x1.5. Sequential and parallel runs agree (on a
+// smaller sphere).
+TEST_CASE("Neighbourhoods by count: every function, same accuracy as by radius", "[baselines][count]")
+{
+  const double R = 2;
+  const auto pts = sphere(10000, R);
+  const std::size_t k = 40;
+  print_header("Sphere R = 2, 10000 points, 40 nearest neighbours");
+  for(Method m : baselines)
+  {
+    INFO(name(m));
+    const Estimates est = run_by_count<CGAL::Parallel_tag>(m, pts, k);
+    const Errors e = errors(kind(m), est, pts, [&](const Point& p) { return sphere_truth(p, Point(0, 0, 0), R); });
+    CHECK(e.valid == pts.size());
+    std::size_t fewer = 0;
+    for(const auto& x : est)
+      fewer += x.neighbor_count < k ? 1 : 0;
+    CHECK(fewer == 0);
+    print_row(name(m), e);
+    switch(m)
+    {
+      case Method::BARYCENTER: CHECK(e.H.mean() < 0.27); break;
+      case Method::PCA_PLANE: CHECK(e.H.mean() < 0.023); break;
+      case Method::VCM: CHECK(std::max(e.k_min.mean(), e.k_max.mean()) < 1.13); break;
+      case Method::PSS: CHECK(std::max(e.k_min.mean(), e.k_max.mean()) < 0.002); break;
+      default: CHECK(std::max(e.k_min.mean(), e.k_max.mean()) < 0.0031); break;
+    }
+    const auto small = sphere(2000, 1.0);
+    const Estimates s = run_by_count<CGAL::Sequential_tag>(m, small, 20);
+    const Estimates p = run_by_count<CGAL::Parallel_tag>(m, small, 20);
+    std::size_t different = 0;
+    for(std::size_t i = 0; i < small.size(); ++i)
+      different += reproduced(m, s[i], p[i], 0.1) ? 0 : 1;
+    CHECK(different == 0);
+  }
+}
+
+// Far from the origin (LiDAR coordinates near 1e6): the estimators see the scaled centred
+// frame, VCM goes through CGAL in absolute coordinates. The curvatures of the sphere move
+// by less than 1e-6 relative (measured 1e-9 for the fits, 4e-8 for VCM).
+TEST_CASE("Coordinates far from the origin change nothing", "[baselines][numerics]")
+{
+  const double R = 1, r = 0.2;
+  const auto near = sphere(3000, R);
+  const auto far = sphere(3000, R, Point(1e6, -2e6, 5e5));
+  for(Method m : baselines)
+  {
+    INFO(name(m));
+    const Estimates a = run(m, near, r), b = run(m, far, r);
+    double worst = 0;
+    for(std::size_t i = 0; i < near.size(); ++i)
+    {
+      REQUIRE(b[i].is_valid());
+      CHECK(a[i].neighbor_count == b[i].neighbor_count);
+      if(kind(m) != Kind::MAGNITUDES)
+        worst = std::max(worst, std::abs(a[i].mean_curvature - b[i].mean_curvature));
+      if(kind(m) != Kind::UNSIGNED_MEAN)
+        worst = std::max({worst, std::abs(a[i].min_curvature - b[i].min_curvature),
+                          std::abs(a[i].max_curvature - b[i].max_curvature)});
+    }
+    CHECK(worst < 1e-6);
+  }
+}
+
+// ---------------------------------------------------------------------------------------
+// Bad input
+// ---------------------------------------------------------------------------------------
+
+TEST_CASE("Invalid radius, scale or options throw std::invalid_argument naming the parameter", "[baselines][errors]")
+{
+  const auto pts = sphere(500, 1.0);
+  const double bad[] = {0.0, -1.0, std::numeric_limits<double>::quiet_NaN(),
+                        std::numeric_limits<double>::infinity()};
+  for(Method m : baselines)
+  {
+    INFO(name(m));
+    for(double r : bad)
+      CHECK_THROWS_WITH(run(m, pts, r), Catch::Contains("'radius'") && Catch::Contains("estimate_"));
+    // by count without neighbor_count, or with both a radius and neighbor_count
+    const auto np = maps();
+    const auto both = PSC::parameters::neighbor_count(10, maps());
+    switch(m)
+    {
+      case Method::BARYCENTER:
+        CHECK_THROWS_AS(CGAL::estimate_barycenter_curvatures<CGAL::Sequential_tag>(pts, np), std::invalid_argument);
+        CHECK_THROWS_AS(CGAL::estimate_barycenter_curvatures<CGAL::Sequential_tag>(pts, 0.2, both), std::invalid_argument);
+        break;
+      case Method::PCA_PLANE:
+        CHECK_THROWS_AS(CGAL::estimate_pca_plane_curvatures<CGAL::Sequential_tag>(pts, np), std::invalid_argument);
+        CHECK_THROWS_AS(CGAL::estimate_pca_plane_curvatures<CGAL::Sequential_tag>(pts, 0.2, both), std::invalid_argument);
+        break;
+      case Method::PSS:
+        CHECK_THROWS_AS(CGAL::estimate_pss_curvatures<CGAL::Sequential_tag>(pts, np), std::invalid_argument);
+        CHECK_THROWS_AS(CGAL::estimate_pss_curvatures<CGAL::Sequential_tag>(pts, 0.2, both), std::invalid_argument);
+        break;
+      case Method::JET:
+        CHECK_THROWS_AS(CGAL::estimate_jet_curvatures<CGAL::Sequential_tag>(pts, np), std::invalid_argument);
+        CHECK_THROWS_AS(CGAL::estimate_jet_curvatures<CGAL::Sequential_tag>(pts, 0.2, both), std::invalid_argument);
+        break;
+      case Method::WAVEJET:
+        CHECK_THROWS_AS(CGAL::estimate_wavejet_curvatures<CGAL::Sequential_tag>(pts, np), std::invalid_argument);
+        CHECK_THROWS_AS(CGAL::estimate_wavejet_curvatures<CGAL::Sequential_tag>(pts, 0.2, both), std::invalid_argument);
+        break;
+      case Method::VCM:
+        CHECK_THROWS_AS(CGAL::estimate_vcm_curvatures<CGAL::Sequential_tag>(pts, np), std::invalid_argument);
+        CHECK_THROWS_AS(CGAL::estimate_vcm_curvatures<CGAL::Sequential_tag>(pts, 0.2, both), std::invalid_argument);
+        break;
+      default: break;
+    }
+  }
+  SECTION("jet degrees")
+  {
+    auto jets = [&](int fitting, int monge) {
+      return CGAL::estimate_jet_curvatures<CGAL::Sequential_tag>(
+        pts, 0.2, CGAL::parameters::degree_fitting(fitting).degree_monge(monge).point_map(Point_map()).normal_map(Normal_map()));
+    };
+    CHECK_THROWS_WITH(jets(2, 1), Catch::Contains("'degree_monge'"));
+    CHECK_THROWS_WITH(jets(4, 5), Catch::Contains("'degree_monge'"));
+    CHECK_THROWS_WITH(jets(1, 2), Catch::Contains("'degree_fitting'"));
+    CHECK_THROWS_WITH(jets(2, 3), Catch::Contains("'degree_fitting'"));
+    CHECK_THROWS_WITH(jets(13, 2), Catch::Contains("'degree_fitting'"));
+    CHECK_THROWS_WITH(jets(-3, 2), Catch::Contains("'degree_fitting'"));
+    CHECK_NOTHROW(jets(4, 4));
+  }
+  SECTION("VCM offset radius")
+  {
+    for(double R : bad)
+      CHECK_THROWS_WITH(CGAL::estimate_vcm_curvatures<CGAL::Sequential_tag>(
+                          pts, 0.2, PSC::parameters::vcm_offset_radius(R, maps())),
+                        Catch::Contains("'vcm_offset_radius'"));
+  }
+}
+
+// Isolated clusters of m points on small spherical caps (irregular positions, so that no
+// fit is degenerate by symmetry), 100 r apart: every point has exactly m neighbours.
+// m = minimum - 1 gives TOO_FEW_NEIGHBORS with the count and NaN elsewhere, m = minimum
+// gives valid estimates.
+TEST_CASE("Too few neighbours: status, count and NaN at the threshold of each estimator", "[baselines][status]")
+{
+  const double r = 1.0;
+  auto clusters = [&](std::size_t m) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-0.3, 0.3);
+    std::vector<Oriented_point> pts;
+    for(int c = 0; c < 5; ++c)
+    {
+      const Point centre(100.0 * c, 0, 0);
+      for(std::size_t i = 0; i < m; ++i)
+      {
+        const double x = i == 0 ? 0 : u(rng), y = i == 0 ? 0 : u(rng);
+        const double z = -0.2 * (x * x + y * y) + 0.05 * x * y;  // curved, not a quadric of revolution
+        pts.emplace_back(centre + Vector(x, y, z), Vector(0, 0, 1));
+      }
+    }
+    return pts;
+  };
+  struct Threshold { Method m; std::size_t minimum; std::function<Estimates(const std::vector<Oriented_point>&)> run; };
+  std::vector<Threshold> thresholds;
+  for(Method m : all_methods)
+    thresholds.push_back({m, minimum_neighbors(m), [m, r](const std::vector<Oriented_point>& p) { return run(m, p, r); }});
+  thresholds.push_back({Method::JET, 10, [r](const std::vector<Oriented_point>& p) {
+                          return CGAL::estimate_jet_curvatures<CGAL::Parallel_tag>(
+                            p, r, CGAL::parameters::degree_fitting(3).point_map(Point_map()).normal_map(Normal_map()));
+                        }});
+  for(const Threshold& t : thresholds)
+  {
+    INFO(name(t.m) << ", minimum " << t.minimum);
+    const auto few = clusters(t.minimum - 1);
+    const Estimates a = t.run(few);
+    for(const auto& e : a)
+    {
+      CHECK(e.status == CGAL::Curvature_estimate_status::TOO_FEW_NEIGHBORS);
+      CHECK(e.neighbor_count == t.minimum - 1);
+      CHECK(all_nan(e));
+    }
+    const auto enough = clusters(t.minimum);
+    const Estimates b = t.run(enough);
+    for(const auto& e : b)
+    {
+      CHECK(e.status == CGAL::Curvature_estimate_status::VALID);
+      CHECK(e.neighbor_count == t.minimum);
+    }
+  }
+}
+
+TEST_CASE("Non-finite points and invalid normals get their status and NaN, and are nobody's neighbour", "[baselines][status]")
+{
+  auto pts = sphere(2000, 1.0);
+  const double r = 0.3;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const Estimates clean_vcm = run(Method::VCM, pts, r);
+  pts[10].first = Point(nan, 0, 0);
+  pts[20].second = Vector(0, 0, 0);
+  pts[30].first = Point(std::numeric_limits<double>::infinity(), 1, 2);
+  pts[40].second = Vector(nan, 1, 0);
+  for(Method m : baselines)
+  {
+    INFO(name(m));
+    const Estimates e = run(m, pts, r);
+    CHECK(e[10].status == CGAL::Curvature_estimate_status::NON_FINITE_POINT);
+    CHECK(e[30].status == CGAL::Curvature_estimate_status::NON_FINITE_POINT);
+    CHECK(e[20].status == CGAL::Curvature_estimate_status::INVALID_NORMAL);
+    CHECK(e[40].status == CGAL::Curvature_estimate_status::INVALID_NORMAL);
+    for(std::size_t i : {10, 20, 30, 40})
+    {
+      CHECK(all_nan(e[i]));
+      CHECK(e[i].neighbor_count == 0);
+    }
+    std::size_t valid = 0;
+    for(const auto& x : e)
+      valid += x.is_valid() ? 1 : 0;
+    CHECK(valid == pts.size() - 4);
+    // the neighbours of point 20 (its normal is zero) do not count it
+    std::size_t expected = 0;
+    for(std::size_t j = 0; j < pts.size(); ++j)
+      if(j != 10 && j != 20 && j != 30 && j != 40 && CGAL::squared_distance(pts[j].first, pts[21].first) < r * r)
+        ++expected;
+    CHECK(e[21].neighbor_count == expected);
+  }
+}
+
+TEST_CASE("VCM: a collinear cloud is degenerate, the callback can cancel", "[baselines][vcm]")
+{
+  std::vector<Oriented_point> line;
+  for(int i = 0; i < 50; ++i)
+    line.emplace_back(Point(0.01 * i, 0, 0), Vector(0, 0, 1));
+  for(const auto& e : run(Method::VCM, line, 0.1))
+  {
+    CHECK(e.status == CGAL::Curvature_estimate_status::DEGENERATE_FIT);
+    CHECK(all_nan(e));
+  }
+  const auto pts = sphere(2000, 1.0);
+  const double r = 0.3;
+  std::vector<double> progress;
+  const Estimates all = CGAL::estimate_vcm_curvatures<CGAL::Sequential_tag>(
+    pts, r, CGAL::parameters::callback([&](double f) { progress.push_back(f); return true; })
+              .point_map(Point_map()).normal_map(Normal_map()));
+  REQUIRE(!progress.empty());
+  CHECK(progress.front() == 0.0);
+  CHECK(progress.back() == 1.0);
+  CHECK(std::is_sorted(progress.begin(), progress.end()));
+  const Estimates ref = run<CGAL::Sequential_tag>(Method::VCM, pts, r);
+  std::size_t different = 0;
+  for(std::size_t i = 0; i < pts.size(); ++i)
+    different += close_vcm_estimate(all[i], ref[i], r) ? 0 : 1;
+  CHECK(different == 0);
+  const Estimates cancelled = CGAL::estimate_vcm_curvatures<CGAL::Sequential_tag>(
+    pts, r, CGAL::parameters::callback([](double) { return false; }).point_map(Point_map()).normal_map(Normal_map()));
+  for(const auto& e : cancelled)
+  {
+    CHECK(e.status == CGAL::Curvature_estimate_status::NOT_COMPUTED);
+    CHECK(all_nan(e));
+  }
+}
