@@ -117,7 +117,8 @@ estimate_pca_plane_curvatures(const PointRange& points, double radius,
 /// \ingroup PkgPointSetCurvaturesRef
 /// Same as above with neighbourhoods by count: `np` must contain
 /// `CGAL::Point_set_curvatures::parameters::neighbor_count(k)`; each point's radius is the
-/// distance to its `k`-th nearest neighbour (itself counted).
+/// distance to its `k`-th nearest neighbour (itself counted), enlarged by a factor
+/// `1 + 2^-20` so that the `k` nearest are inside (see `neighbor_count`).
 /// \throws std::invalid_argument if `neighbor_count` is missing or 0.
 template <typename ConcurrencyTag, typename PointRange, typename NamedParameters>
 typename Point_set_curvatures::internal::Estimates_without_radius<PointRange, NamedParameters>::type

@@ -131,7 +131,8 @@ estimate_vcm_curvatures(const PointRange& points, double radius,
 /// \ingroup PkgPointSetCurvaturesRef
 /// Same as above with neighbourhoods by count: `np` must contain
 /// `CGAL::Point_set_curvatures::parameters::neighbor_count(k)`; each point's radius is the
-/// distance to its `k`-th nearest neighbour (itself counted).
+/// distance to its `k`-th nearest neighbour (itself counted), enlarged by a factor
+/// `1 + 2^-20` so that the `k` nearest are inside (see `neighbor_count`).
 /// The convolution then sums each point's own neighbourhood (the points at distance `<`
 /// its radius).
 /// \throws std::invalid_argument if `neighbor_count` is missing or 0, or if

@@ -58,10 +58,12 @@ aso_projection(Aso_projection projection,
 }
 
 /// \ingroup PkgPointSetCurvaturesRef
-/// Named parameter selecting neighbourhoods by count: each point's kernel radius is the
-/// distance to its `k`-th nearest neighbour (the point itself counted as the first), so
-/// that the scale follows the sampling density (LiDAR). Use it with the overloads of the
-/// estimation functions that take no radius.
+/// Named parameter selecting neighbourhoods by count, so that the scale follows the sampling
+/// density (LiDAR). Each point's kernel radius is `(1 + 2^-20)` times the distance to its
+/// `k`-th nearest usable point (the point itself counted as the first): the neighbourhood
+/// holds the `k` nearest and any point tied with the `k`-th, so at least `k` points (all of
+/// them if the cloud has fewer), and the `k`-th point's weight is negligible (about 4e-12).
+/// Use it with the overloads of the estimation functions that take no radius.
 template <class NamedParameters = CGAL::parameters::Default_named_parameters>
 CGAL::Named_function_parameters<std::size_t, internal_np::neighbor_count_t, NamedParameters>
 neighbor_count(std::size_t k, const NamedParameters& np = CGAL::parameters::default_values())
