@@ -1137,3 +1137,83 @@ TEST_CASE("VCM: a collinear cloud is degenerate, the callback can cancel", "[bas
     CHECK(all_nan(e));
   }
 }
+
+// ---------------------------------------------------------------------------------------
+// Degenerate neighbourhoods that once produced garbage marked valid, or crashed.
+
+TEST_CASE("Baselines: one scan line is DEGENERATE_FIT, not a valid zero curvature", "[baselines][bad_input]")
+{
+  // The curve y = x^3 + x^2/2 in the plane z = 0 with in-plane normals: every neighbourhood
+  // is a planar curve, so the curvature across it is not measured. Before the tangent-spread
+  // check, PSS, jets, wavejets and the PCA plane returned VALID zero curvature with a normal
+  // orthogonal to the input normal, and VCM a VALID k_max on a circle.
+  std::vector<Oriented_point> curve;
+  for(int i = -100; i <= 100; ++i)
+  {
+    const double x = 0.005 * i, y = x * x * x + 0.5 * x * x;
+    const Vector tangent(1, 3 * x * x + x, 0);
+    curve.emplace_back(Point(x, y, 0), Vector(-tangent.y(), tangent.x(), 0) / std::sqrt(tangent.squared_length()));
+  }
+  const auto np = CGAL::parameters::point_map(Point_map()).normal_map(Normal_map());
+  const double r = 0.1;
+  auto all_degenerate = [](const std::vector<CGAL::Curvature_estimate<Kernel> >& e) {
+    for(const auto& x : e)
+      if(x.is_valid())
+        return false;
+    return true;
+  };
+  CHECK(all_degenerate(CGAL::estimate_barycenter_curvatures<CGAL::Sequential_tag>(curve, r, np)));
+  CHECK(all_degenerate(CGAL::estimate_pca_plane_curvatures<CGAL::Sequential_tag>(curve, r, np)));
+  CHECK(all_degenerate(CGAL::estimate_pss_curvatures<CGAL::Sequential_tag>(curve, r, np)));
+  CHECK(all_degenerate(CGAL::estimate_jet_curvatures<CGAL::Sequential_tag>(curve, r, np)));
+  CHECK(all_degenerate(CGAL::estimate_wavejet_curvatures<CGAL::Sequential_tag>(curve, r, np)));
+  CHECK(all_degenerate(CGAL::estimate_vcm_curvatures<CGAL::Sequential_tag>(curve, r, np)));
+  const auto e = CGAL::estimate_pss_curvatures<CGAL::Sequential_tag>(curve, r, np);
+  CHECK(e[100].status == CGAL::Curvature_estimate_status::DEGENERATE_FIT);
+  CHECK(e[100].neighbor_count > 30);
+}
+
+TEST_CASE("Jets by count on coincident points are DEGENERATE_FIT (CGAL's fitting is not called)", "[baselines][bad_input]")
+{
+  // CGAL's Monge_via_jet_fitting indexed Eigen blocks with negative sizes on coincident points
+  // (an assertion failure; undefined behaviour in Release).
+  std::vector<Oriented_point> same(10, Oriented_point(Point(1, 2, 3), Vector(0, 0, 1)));
+  const auto np = CGAL::Point_set_curvatures::parameters::neighbor_count(
+    1000, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()));
+  const auto e = CGAL::estimate_jet_curvatures<CGAL::Sequential_tag>(same, np);
+  for(const auto& x : e)
+  {
+    CHECK(x.status == CGAL::Curvature_estimate_status::DEGENERATE_FIT);
+    CHECK(x.neighbor_count == 10);
+  }
+}
+
+TEST_CASE("VCM refuses coordinates beyond 1e150 instead of crashing in CGAL", "[baselines][vcm][bad_input]")
+{
+  // CGAL's Voronoi constructions square coordinates; at 1.5e308 its exact fallback raised
+  // SIGFPE. The other estimators handle such clouds (far points are nobody's neighbour).
+  std::vector<Oriented_point> pts = sphere(500, 1.0);
+  pts.emplace_back(Point(-1.5e308, 0, 0), Vector(0, 0, 1));
+  const auto np = CGAL::parameters::point_map(Point_map()).normal_map(Normal_map());
+  CHECK_THROWS_AS(CGAL::estimate_vcm_curvatures<CGAL::Sequential_tag>(pts, 0.3, np), std::invalid_argument);
+  const auto aso = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, 0.3, np);
+  CHECK(aso[0].is_valid());
+  CHECK(aso[500].status == CGAL::Curvature_estimate_status::TOO_FEW_NEIGHBORS);
+}
+
+TEST_CASE("The 3x3 eigen-solver is scale invariant (VCM covariances scale as length^5)", "[baselines][internal]")
+{
+  // Eigenvalues 1, 3, 5 with a rotated basis, at scales where squares under- or overflow:
+  // the Jacobi convergence test used to stop before any rotation there.
+  for(double scale : {1.0, 1e-170, 1e-300, 1e160, 1e300})
+  {
+    const double m[6] = {2 * scale, -1 * scale, 0, 2 * scale, 0, 5 * scale};  // [[2,-1,0],[-1,2,0],[0,0,5]]
+    double values[3], vectors[3][3];
+    REQUIRE(CGAL::Point_set_curvatures::internal::symmetric_eigen_3(m, values, vectors));
+    INFO("scale " << scale);
+    CHECK(values[0] / scale == Approx(1).epsilon(1e-12));
+    CHECK(values[1] / scale == Approx(3).epsilon(1e-12));
+    CHECK(values[2] / scale == Approx(5).epsilon(1e-12));
+    CHECK(std::abs(std::abs(vectors[0][0]) - std::sqrt(0.5)) < 1e-12);
+  }
+}

@@ -986,3 +986,45 @@ TEST_CASE("callback: progress in [0,1], and returning false cancels features and
   CHECK(stopped > 0);
   CHECK(moved_in_place == stopped);
 }
+
+// ---------------------------------------------------------------------------------------
+// Degenerate inputs found in review.
+
+TEST_CASE("Features, multi-scale features and the APSS surface are DEGENERATE_FIT on a circle, like APSS", "[features][bad_input]")
+{
+  // A circle of radius 2 in z = 0 with in-plane normals: the sphere fitted to one curve takes
+  // the curvature along it for a mean curvature. The curvature function said so; the
+  // features (which reproduce its normal and mean curvature) now agree.
+  std::vector<Oriented_point> circle;
+  for(int i = 0; i < 400; ++i)
+  {
+    const double a = 2 * M_PI * i / 400.0;
+    circle.emplace_back(Point(2 * std::cos(a), 2 * std::sin(a), 0), Vector(std::cos(a), std::sin(a), 0));
+  }
+  const auto np = CGAL::parameters::point_map(Point_map()).normal_map(Normal_map());
+  const auto apss = CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(circle, 0.5, np);
+  const auto features = CGAL::estimate_algebraic_sphere_features<CGAL::Sequential_tag>(circle, 0.5, np);
+  const std::vector<double> radii = {0.3, 0.5};
+  const auto multi = CGAL::estimate_multiscale_algebraic_sphere_features<CGAL::Sequential_tag>(circle, radii, np);
+  for(std::size_t i = 0; i < circle.size(); i += 37)
+  {
+    CHECK(apss[i].status == CGAL::Curvature_estimate_status::DEGENERATE_FIT);
+    CHECK(features[i].status == CGAL::Curvature_estimate_status::DEGENERATE_FIT);
+    CHECK(std::isnan(features[i].mean_curvature));
+    for(const auto& scale : multi)
+      CHECK(scale[i].status == CGAL::Curvature_estimate_status::DEGENERATE_FIT);
+  }
+}
+
+TEST_CASE("Algebraic_point_set_surface builds on a cloud spanning +-1e308", "[projection][bad_input]")
+{
+  // The grid's cell size used to double to infinity and loop forever when the extent
+  // overflowed; the far points are now in one cell and nobody's neighbour.
+  std::vector<Oriented_point> pts = sphere(300, 1.0);
+  pts.emplace_back(Point(1e308, 0, 0), Vector(1, 0, 0));
+  pts.emplace_back(Point(-1e308, 0, 0), Vector(-1, 0, 0));
+  CGAL::Algebraic_point_set_surface<Kernel> surface(pts, 0.5, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()));
+  const auto projected = surface.project(Point(0, 0, 1.1));
+  REQUIRE(projected.is_valid());
+  CHECK(std::abs(std::sqrt(CGAL::squared_distance(projected.point, Point(0, 0, 0))) - 1) < 1e-6);
+}

@@ -175,15 +175,6 @@ Algebraic_sphere_features<GeomTraits> to_sphere_features(const Local_sphere_feat
   return out;
 }
 
-template <class NamedParameters>
-Apss_weight_kernel weight_kernel_parameter(const NamedParameters& np)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  return choose_parameter(get_parameter(np, Point_set_curvatures::internal_np::weight_kernel),
-                          Apss_weight_kernel::SMOOTH);
-}
-
 // The common body of the single-scale feature functions (with a radius or by count).
 template <class ConcurrencyTag, class PointRange, class NamedParameters>
 std::vector<Algebraic_sphere_features<

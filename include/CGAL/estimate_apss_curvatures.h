@@ -21,13 +21,13 @@ struct Apss_estimator : Estimator_base
   // weight kernel (named parameter weight_kernel, issue 6)
   Apss_weight_kernel kernel = Apss_weight_kernel::SMOOTH;
 
-  Apss_estimator() = default;
+  Apss_estimator() { check_tangent_spread = false; }  // tested by fit_algebraic_sphere
   template <class NamedParameters>
   explicit Apss_estimator(const NamedParameters& np)
-    : kernel(CGAL::parameters::choose_parameter(
-        CGAL::parameters::get_parameter(np, Point_set_curvatures::internal_np::weight_kernel),
-        Apss_weight_kernel::SMOOTH))
-  {}
+    : kernel(weight_kernel_parameter(np))
+  {
+    check_tangent_spread = false;  // tested by fit_algebraic_sphere
+  }
 
   Local_estimate operator()(const Neighborhood& nb) const
   {

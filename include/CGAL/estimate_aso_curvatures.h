@@ -26,6 +26,7 @@ struct Aso_estimator : Estimator_base
     : projection(p)
   {
     normalize_normals = (p == Aso_projection::CORRECTED_NORMAL);
+    check_tangent_spread = false;  // tested on the first pass's moments
   }
 
   Local_estimate operator()(const Neighborhood& nb) const
@@ -41,8 +42,7 @@ Aso_estimator aso_estimator_from(const NamedParameters& np)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  if(choose_parameter(get_parameter(np, internal_np::weight_kernel), Apss_weight_kernel::SMOOTH) !=
-     Apss_weight_kernel::SMOOTH)
+  if(weight_kernel_parameter(np) != Apss_weight_kernel::SMOOTH)
     throw std::invalid_argument("estimate_aso_curvatures: parameter 'weight_kernel': the ASO "
                                 "differentiates the kernel, only Apss_weight_kernel::SMOOTH is "
                                 "supported");
@@ -65,7 +65,8 @@ Aso_estimator aso_estimator_from(const NamedParameters& np)
 /// (the point itself included) with the weights `(1 - d²/radius²)²` (APSS, Equations 2-4);
 /// the fitted scalar field is differentiated twice with respect to `x`, through the
 /// weights, and its shape operator is projected on the tangent plane and diagonalised.
-/// One pass over the neighbours, constant memory per point.
+/// Two passes over the neighbours (first-order sums, then the Hessian term contracted with
+/// adjoints), constant memory per point.
 ///
 /// Results: one `Curvature_estimate` per element of `points`, in the same order.
 /// Curvatures are in 1/(unit of the coordinates), positive where the surface bends away

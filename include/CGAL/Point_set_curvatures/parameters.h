@@ -143,6 +143,22 @@ weight_kernel(Apss_weight_kernel kernel,
                                          NamedParameters>(kernel, np);
 }
 
+} // namespace parameters
+
+namespace internal {
+
+// The weight kernel of a named parameter pack (default SMOOTH).
+template <class NamedParameters>
+Apss_weight_kernel weight_kernel_parameter(const NamedParameters& np)
+{
+  return CGAL::parameters::choose_parameter(
+    CGAL::parameters::get_parameter(np, internal_np::weight_kernel), Apss_weight_kernel::SMOOTH);
+}
+
+} // namespace internal
+
+namespace parameters {
+
 /// \ingroup PkgPointSetCurvaturesRef
 /// Named parameter of `apss_smooth_point_set()`: if `true`, each iteration replaces the normals
 /// by those of the fitted spheres at the moved points (used by the next iteration, and written

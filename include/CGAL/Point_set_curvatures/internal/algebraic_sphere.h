@@ -29,7 +29,7 @@ struct Algebraic_sphere_sums
   std::size_t count = 0;
   double A = 0, B[3] = {}, C[3] = {}, D = 0, E = 0;
   // sum w q q^T (packed xx xy xz yy yz zz): not part of the fit, it tells whether the
-  // neighbours spread in two tangent directions (lacks_tangent_spread)
+  // neighbours spread in two tangent directions (any positive weights will do)
   double qq[6] = {};
 
   void add(double qx, double qy, double qz, double nx, double ny, double nz)
@@ -90,7 +90,8 @@ struct Algebraic_sphere
 constexpr std::size_t apss_min_neighbors = 3;
 
 // Equations 2-4 and the Pratt norm. `valid` is false for a degenerate fit (the
-// neighbours coincide, or the normals cancel out so that the field has no gradient).
+// neighbours coincide or lie on a curve, or the normals cancel out so that the field has
+// no gradient).
 template <class WeightKernel>
 Algebraic_sphere fit_algebraic_sphere(const Algebraic_sphere_sums<WeightKernel>& s)
 {
@@ -110,7 +111,11 @@ Algebraic_sphere fit_algebraic_sphere(const Algebraic_sphere_sums<WeightKernel>&
                     sphere.u_l[2] * sphere.u_l[2];
   const double pratt2 = ll - 4.0 * sphere.u_c * sphere.u_q;
   sphere.pratt_norm = std::sqrt(pratt2);
-  sphere.valid = (pratt2 > 1e-24) && (ll > 1e-24) && std::isfinite(pratt2);
+  // Neighbours without spread in two tangent directions (one scan line, a planar curve)
+  // fit a sphere whose curvature across them is not measured but assumed: not a fit of
+  // the surface (this also guards the features, the projection and the flow).
+  sphere.valid = (pratt2 > 1e-24) && (ll > 1e-24) && std::isfinite(pratt2) &&
+                 !lacks_tangent_spread(s.qq, s.C);
   return sphere;
 }
 
@@ -122,9 +127,7 @@ Local_estimate algebraic_sphere_estimate(const Algebraic_sphere_sums<WeightKerne
   if(s.count < apss_min_neighbors)
     return Local_estimate::invalid(Curvature_estimate_status::TOO_FEW_NEIGHBORS);
   const Algebraic_sphere sphere = fit_algebraic_sphere(s);
-  // As for the ASO: without spread in two tangent directions (one scan line) the sphere's
-  // curvature is the curvature along the line, not a mean curvature.
-  if(!sphere.valid || lacks_tangent_spread(s.qq, s.C))
+  if(!sphere.valid)
     return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
   Local_estimate e;
   const double ul = std::sqrt(sphere.u_l[0] * sphere.u_l[0] + sphere.u_l[1] * sphere.u_l[1] +

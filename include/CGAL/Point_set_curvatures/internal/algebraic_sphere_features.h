@@ -267,8 +267,6 @@ public:
     return m_max_radius;
   }
 
-  std::size_t number_of_radii() const { return m_radii.size(); }
-
   // Features at every radius of one neighbourhood gathered at the largest radius
   // (nb.radius == the value returned by set_radii); out[k] for radii[k]. Not thread-safe
   // (scratch buckets): one object per thread.
@@ -290,6 +288,8 @@ public:
       const double qn = qx * nx + qy * ny + qz * nz;
       Moments& m = m_buckets[j];
       ++m.count;
+      m.QQ[0] += qx * qx; m.QQ[1] += qx * qy; m.QQ[2] += qx * qz;
+      m.QQ[3] += qy * qy; m.QQ[4] += qy * qz; m.QQ[5] += qz * qz;
       for(int k = 0; k < 3; ++k)
       {
         m.P[k] += s[k];
@@ -310,6 +310,8 @@ public:
       typedef Kernel_polynomial<WeightKernel> Poly;
       Algebraic_sphere_sums<WeightKernel> sums;
       sums.count = prefix.count;
+      // unweighted: only its rank matters (fit_algebraic_sphere's tangent spread test)
+      std::copy(prefix.QQ, prefix.QQ + 6, sums.qq);
       Sphere_sums ds;
       combine(prefix, lambda, Poly::weight, sums.A, sums.B, sums.C, sums.D, sums.E);
       if(Poly::has_scale_derivative)
@@ -323,10 +325,11 @@ public:
   }
 
 private:
-  // sum over a set of neighbours of sigma^j times 1, q, n, q.n
+  // sum over a set of neighbours of sigma^j times 1, q, n, q.n; and of q q^T
   struct Moments
   {
     std::size_t count = 0;
+    double QQ[6] = {0, 0, 0, 0, 0, 0};
     double P[4] = {0, 0, 0, 0};
     double Q[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
     double N[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
@@ -335,6 +338,8 @@ private:
     Moments& operator+=(const Moments& o)
     {
       count += o.count;
+      for(int k = 0; k < 6; ++k)
+        QQ[k] += o.QQ[k];
       for(int k = 0; k < 4; ++k)
         P[k] += o.P[k];
       for(int a = 0; a < 3; ++a)

@@ -71,7 +71,11 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
   std::vector<Curvature_estimate<Geom_traits> > results(
     static_cast<std::size_t>(std::distance(points.begin(), points.end())));
   auto visit = [&results, &estimator](std::size_t i, const Neighborhood& nb) {
-    results[i] = to_curvature_estimate<Geom_traits>(estimator(nb), nb.size);
+    Local_estimate e = estimator(nb);
+    if(e.status == Curvature_estimate_status::VALID && estimator.check_tangent_spread &&
+       neighborhood_lacks_tangent_spread(nb))
+      e = Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
+    results[i] = to_curvature_estimate<Geom_traits>(e, nb.size);
   };
   const auto point_map = NP_helper::get_const_point_map(points, np);
   const auto normal_map = NP_helper::get_normal_map(points, np);

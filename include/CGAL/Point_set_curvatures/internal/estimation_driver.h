@@ -58,10 +58,14 @@ namespace Point_set_curvatures {
 namespace internal {
 
 // Common part of the per-point estimators: whether they want unit normals (the driver
-// normalises once per point) or the input normals as given.
+// normalises once per point) or the input normals as given; and whether the driver must
+// reject their valid estimates on neighbourhoods without spread in two tangent directions
+// (one scan line, a planar curve: one curvature is not measured), which estimators that
+// test it with their own moments (ASO, APSS) turn off.
 struct Estimator_base
 {
   bool normalize_normals = true;
+  bool check_tangent_spread = true;
 };
 
 template <class ConcurrencyTag>
@@ -121,7 +125,15 @@ Curvature_estimate<GeomTraits> to_curvature_estimate(const Local_estimate& e, st
   Curvature_estimate<GeomTraits> r;
   r.neighbor_count = count;
   r.status = e.status;
-  if(e.status != Curvature_estimate_status::VALID)
+  // NaN marks a quantity the estimator does not provide; an infinite value is an overflow
+  // (e.g. K = k_min k_max for curvatures near 1e160): never hand it out as valid.
+  const double fields[] = {e.normal[0], e.normal[1], e.normal[2], e.mean, e.gaussian, e.k_min,
+                           e.k_max, e.d_min[0], e.d_min[1], e.d_min[2], e.d_max[0], e.d_max[1],
+                           e.d_max[2]};
+  for(double f : fields)
+    if(std::isinf(f))
+      r.status = Curvature_estimate_status::DEGENERATE_FIT;
+  if(r.status != Curvature_estimate_status::VALID)
     return r;  // every numeric field stays NaN
   r.normal = Vector_3(FT(e.normal[0]), FT(e.normal[1]), FT(e.normal[2]));
   r.mean_curvature = FT(e.mean);

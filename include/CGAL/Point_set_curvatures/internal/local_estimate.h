@@ -56,6 +56,15 @@ struct Local_estimate
   }
 };
 
+// `out` = +v or -v, whichever makes a non-negative dot product with `reference` (an
+// eigenvector oriented like the input normals).
+inline void orient_like(const double v[3], const double reference[3], double out[3])
+{
+  const double side = v[0] * reference[0] + v[1] * reference[1] + v[2] * reference[2];
+  for(int i = 0; i < 3; ++i)
+    out[i] = side < 0 ? -v[i] : v[i];
+}
+
 // An orthonormal basis (t1, t2) of the plane orthogonal to the unit vector n
 // (Duff et al. 2017, "Building an orthonormal basis, revisited"): branch-free but
 // for the sign of n_z, continuous elsewhere, and exact for axis-aligned normals.
@@ -89,6 +98,21 @@ inline bool lacks_tangent_spread(const double M[6], const double normal[3])
   };
   const double a = form(t1, t1), b = form(t1, t2), c = form(t2, t2);
   return !(a * c - b * b > 1e-12 * (a + c) * (a + c));
+}
+
+// lacks_tangent_spread() for a whole neighbourhood: its unweighted second moment around the
+// query, and the mean of its normals as the normal. One pass; for the estimators that do
+// not accumulate such moments themselves.
+inline bool neighborhood_lacks_tangent_spread(const Neighborhood& nb)
+{
+  double M[6] = {0, 0, 0, 0, 0, 0}, n[3] = {0, 0, 0};
+  for(std::size_t i = 0; i < nb.size; ++i)
+  {
+    const double x = nb.qx[i], y = nb.qy[i], z = nb.qz[i];
+    M[0] += x * x; M[1] += x * y; M[2] += x * z; M[3] += y * y; M[4] += y * z; M[5] += z * z;
+    n[0] += nb.nx[i]; n[1] += nb.ny[i]; n[2] += nb.nz[i];
+  }
+  return lacks_tangent_spread(M, n);
 }
 
 // Principal curvatures and directions of the 2x2 symmetric tensor [[a, b], [b, c]]

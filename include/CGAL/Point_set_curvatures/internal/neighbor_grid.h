@@ -37,6 +37,37 @@ struct Index_range
   std::uint32_t begin = 0, end = 0;
 };
 
+// Side of the cubic cells of a uniform grid over [lo, hi] searched with radius `radius`:
+// `radius`, doubled while a grid of floor(extent / side) + 1 + extra_cells cells per axis
+// would not fit 62-bit keys (very sparse clouds); `dims` receives those counts. Extents that
+// overflow (coordinates near +-1e308) give an infinite side: one cell holds everything.
+inline double grid_cell_size(const double lo[3], const double hi[3], double radius,
+                             double extra_cells, double dims[3])
+{
+  double side = radius;
+  if(!(std::isfinite(hi[0] - lo[0]) && std::isfinite(hi[1] - lo[1]) &&
+       std::isfinite(hi[2] - lo[2]) && std::isfinite(radius)))
+    side = std::numeric_limits<double>::infinity();
+  for(;;)
+  {
+    double cells = 1;
+    for(int i = 0; i < 3; ++i)
+    {
+      dims[i] = std::isinf(side) ? 1 + extra_cells : std::floor((hi[i] - lo[i]) / side) + 1 + extra_cells;
+      cells *= dims[i];
+    }
+    if(cells < 4.0e18)
+      return side;
+    side *= 2;
+  }
+}
+
+// Cell coordinate (an integral double) of x along an axis of a grid starting at `origin`.
+inline double grid_cell_coordinate(double x, double origin, double side)
+{
+  return std::isinf(side) ? 0.0 : std::floor((x - origin) / side);
+}
+
 class Neighbor_grid
 {
 public:
@@ -48,50 +79,19 @@ public:
   // r, grown by powers of two if the grid would not fit 62-bit keys (very sparse clouds).
   void set_geometry(const double lo[3], const double hi[3], double radius)
   {
-    m_cell = radius;
-    // Extents that overflow (coordinates near +-1e308) or a radius larger than any double
-    // extent: one cell holds everything, every point is a candidate of every other.
-    m_single_cell = !(std::isfinite(hi[0] - lo[0]) && std::isfinite(hi[1] - lo[1]) &&
-                      std::isfinite(hi[2] - lo[2]) && std::isfinite(radius));
-    if(m_single_cell)
-    {
-      for(int i = 0; i < 3; ++i)
-      {
-        m_origin[i] = 0;
-        m_dim[i] = 3;
-      }
-      m_stride_y = 3;
-      m_stride_z = 9;
-      return;
-    }
-    for(;;)
-    {
-      double cells = 1;
-      for(int i = 0; i < 3; ++i)
-      {
-        // one empty cell on each side, so that cell +-1 never wraps around a row
-        m_dim[i] = std::floor((hi[i] - lo[i]) / m_cell) + 3;
-        cells *= m_dim[i];
-      }
-      if(cells < 4.0e18)
-        break;
-      m_cell *= 2;
-    }
+    // one empty cell on each side, so that cell +-1 never wraps around a row
+    m_cell = grid_cell_size(lo, hi, radius, 2, m_dim);
     for(int i = 0; i < 3; ++i)
       m_origin[i] = lo[i];
     m_stride_y = static_cast<Key>(m_dim[0]);
     m_stride_z = m_stride_y * static_cast<Key>(m_dim[1]);
   }
 
-  double cell_size() const { return m_cell; }
-
   Key key(double x, double y, double z) const
   {
-    if(m_single_cell)
-      return 1 + m_stride_y + m_stride_z;  // cell (1, 1, 1)
-    const Key ix = static_cast<Key>((x - m_origin[0]) / m_cell) + 1;
-    const Key iy = static_cast<Key>((y - m_origin[1]) / m_cell) + 1;
-    const Key iz = static_cast<Key>((z - m_origin[2]) / m_cell) + 1;
+    const Key ix = static_cast<Key>(grid_cell_coordinate(x, m_origin[0], m_cell)) + 1;
+    const Key iy = static_cast<Key>(grid_cell_coordinate(y, m_origin[1], m_cell)) + 1;
+    const Key iz = static_cast<Key>(grid_cell_coordinate(z, m_origin[2], m_cell)) + 1;
     return ix + m_stride_y * iy + m_stride_z * iz;
   }
 
@@ -163,7 +163,6 @@ private:
   double m_origin[3] = {0, 0, 0};
   double m_dim[3] = {0, 0, 0};
   double m_cell = 1;
-  bool m_single_cell = false;
   Key m_stride_y = 0, m_stride_z = 0;
   std::vector<Key> m_keys;             // sorted keys of the non-empty cells
   std::vector<std::uint32_t> m_start;  // first point of each cell, plus the total

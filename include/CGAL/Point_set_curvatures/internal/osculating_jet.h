@@ -65,6 +65,11 @@ inline Local_estimate osculating_jet_estimate(const Neighborhood& nb, const Jet_
 
   if(nb.size < jet_min_neighbors(degrees.fitting))
     return Local_estimate::invalid(Curvature_estimate_status::TOO_FEW_NEIGHBORS);
+  // CGAL's fitting builds its frame from the neighbours' PCA first: coincident or collinear
+  // neighbours make it index Eigen blocks with negative sizes (an assertion failure, undefined
+  // behaviour without assertions). Reject them before calling it.
+  if(neighborhood_lacks_tangent_spread(nb))
+    return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
 
   std::vector<K::Point_3> points;
   points.reserve(nb.size + 1);

@@ -78,14 +78,11 @@ inline Local_estimate pca_plane_mean_curvature(const Neighborhood& nb)
   if(!pca.compute(nb))
     return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
   const double* n = pca.vectors[0];
-  const double side = n[0] * nb.query_normal[0] + n[1] * nb.query_normal[1] + n[2] * nb.query_normal[2];
-  const double sign = side < 0 ? -1.0 : 1.0;
   // distance from the query (the origin) to the plane through the centroid, over r
   const double distance =
     std::abs(n[0] * pca.centroid[0] + n[1] * pca.centroid[1] + n[2] * pca.centroid[2]);
   Local_estimate e;
-  for(int i = 0; i < 3; ++i)
-    e.normal[i] = sign * n[i];
+  orient_like(n, nb.query_normal, e.normal);
   e.mean = 4.0 * distance / nb.radius;  // |H| = 4 d / r², d = distance * r
   e.status = Curvature_estimate_status::VALID;
   return e;

@@ -10,6 +10,8 @@
 #ifndef CGAL_POINT_SET_CURVATURES_INTERNAL_POSITION_INDEX_H
 #define CGAL_POINT_SET_CURVATURES_INTERNAL_POSITION_INDEX_H
 
+#include <CGAL/Point_set_curvatures/internal/neighbor_grid.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -47,20 +49,7 @@ public:
         lo[a] = std::min(lo[a], xyz[3 * i + a]);
         hi[a] = std::max(hi[a], xyz[3 * i + a]);
       }
-    // cells of side r, doubled while the grid would not fit 62-bit keys (very sparse clouds)
-    m_cell = radius;
-    for(;;)
-    {
-      double cells = 1;
-      for(int a = 0; a < 3; ++a)
-      {
-        m_dim[a] = std::floor((hi[a] - lo[a]) / m_cell) + 1;
-        cells *= m_dim[a];
-      }
-      if(cells < 4.0e18)
-        break;
-      m_cell *= 2;
-    }
+    m_cell = grid_cell_size(lo, hi, radius, 0, m_dim);
     for(int a = 0; a < 3; ++a)
       m_origin[a] = lo[a];
 
@@ -92,8 +81,6 @@ public:
     attribute.swap(sorted_attribute);
     ids.swap(sorted_ids);
   }
-
-  double radius() const { return m_radius; }
 
   // Calls f(k) for every indexed point k (position in the sorted order) at distance < r from
   // x, in increasing k. `xyz` is the array reordered by build().
@@ -135,7 +122,7 @@ private:
   {
     for(int a = 0; a < 3; ++a)
     {
-      c[a] = std::floor((x[a] - m_origin[a]) / m_cell);
+      c[a] = grid_cell_coordinate(x[a], m_origin[a], m_cell);
       if(!(c[a] > -2))
         c[a] = -2;  // far below (or NaN): no neighbour cell
       else if(c[a] > m_dim[a] + 1)

@@ -78,9 +78,7 @@ inline Local_estimate pss_estimate(const Neighborhood& nb)
     if(!(sum_w > 0) || !symmetric_eigen_3(cov, values, vectors) || !(values[2] > 0) ||
        !(values[1] > 1e-12 * values[2]))
       return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
-    const double side = vectors[0][0] * up[0] + vectors[0][1] * up[1] + vectors[0][2] * up[2];
-    for(int a = 0; a < 3; ++a)
-      n[a] = side < 0 ? -vectors[0][a] : vectors[0][a];
+    orient_like(vectors[0], up, n);
     // t: weighted mean height of the neighbours above x along n (same weights)
     double t = 0;
     for(std::size_t i = 0; i < nb.size; ++i)

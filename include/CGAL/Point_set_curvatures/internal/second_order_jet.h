@@ -27,8 +27,6 @@ struct Second_order_jet
   double v = 0;       // value
   double g[3] = {};   // gradient
   double h[6] = {};   // Hessian, packed xx xy xz yy yz zz
-
-  double hessian(int i, int j) const { return h[sym_index(i, j)]; }
 };
 
 inline Second_order_jet operator+(const Second_order_jet& a, const Second_order_jet& b)

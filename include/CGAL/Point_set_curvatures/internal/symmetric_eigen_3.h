@@ -10,6 +10,7 @@
 #ifndef CGAL_POINT_SET_CURVATURES_INTERNAL_SYMMETRIC_EIGEN_3_H
 #define CGAL_POINT_SET_CURVATURES_INTERNAL_SYMMETRIC_EIGEN_3_H
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -17,17 +18,47 @@ namespace CGAL {
 namespace Point_set_curvatures {
 namespace internal {
 
+inline bool symmetric_eigen_3(const double packed[6], double values[3], double vectors[3][3]);
+
+// Matrices whose largest entry is subnormal: multiply by 2^600 first (exact), divide the
+// eigenvalues back.
+inline bool symmetric_eigen_3_rescaled(const double packed[6], double scale, double values[3],
+                                       double vectors[3][3])
+{
+  const double up = std::ldexp(1.0, 600);
+  double scaled[6];
+  for(int i = 0; i < 6; ++i)
+    scaled[i] = packed[i] * up;
+  if(!(scale * up > 0))
+    return false;
+  if(!symmetric_eigen_3(scaled, values, vectors))
+    return false;
+  for(int k = 0; k < 3; ++k)
+    values[k] /= up;
+  return true;
+}
+
 // `packed` = xx xy xz yy yz zz. On return values[0] <= values[1] <= values[2] and
 // vectors[k] is a unit eigenvector of values[k]. Returns false on non-finite input.
 inline bool symmetric_eigen_3(const double packed[6], double values[3], double vectors[3][3])
 {
-  double a[3][3] = {{packed[0], packed[1], packed[2]},
-                    {packed[1], packed[3], packed[4]},
-                    {packed[2], packed[4], packed[5]}};
-  double v[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};  // columns: eigenvectors
+  // Work on the matrix divided by its largest entry: the convergence test squares entries,
+  // which would underflow below 1e-154 or overflow above 1e154 (VCM covariances scale as
+  // length^5) and stop the iteration before any rotation.
+  double scale = 0;
   for(int i = 0; i < 6; ++i)
+  {
     if(!std::isfinite(packed[i]))
       return false;
+    scale = std::max(scale, std::abs(packed[i]));
+  }
+  const double inv = scale > 0 ? 1.0 / scale : 1.0;
+  if(!std::isfinite(inv))  // scale below the smallest normal double: rescale in two steps
+    return symmetric_eigen_3_rescaled(packed, scale, values, vectors);
+  double a[3][3] = {{packed[0] * inv, packed[1] * inv, packed[2] * inv},
+                    {packed[1] * inv, packed[3] * inv, packed[4] * inv},
+                    {packed[2] * inv, packed[4] * inv, packed[5] * inv}};
+  double v[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};  // columns: eigenvectors
 
   static const int pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
   for(int sweep = 0; sweep < 32; ++sweep)
@@ -68,7 +99,7 @@ inline bool symmetric_eigen_3(const double packed[6], double values[3], double v
   if(a[order[0]][order[0]] > a[order[1]][order[1]]) std::swap(order[0], order[1]);
   for(int k = 0; k < 3; ++k)
   {
-    values[k] = a[order[k]][order[k]];
+    values[k] = a[order[k]][order[k]] * scale;
     for(int i = 0; i < 3; ++i)
       vectors[k][i] = v[i][order[k]];
   }

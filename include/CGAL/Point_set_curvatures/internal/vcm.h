@@ -82,12 +82,12 @@ inline Local_estimate vcm_curvature_estimate(const std::array<double, 6>& cov, d
   double values[3], vectors[3][3];
   if(!symmetric_eigen_3(cov.data(), values, vectors) || !(values[2] > 0))
     return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
-  const double side = vectors[2][0] * orientation[0] + vectors[2][1] * orientation[1] +
-                      vectors[2][2] * orientation[2];
+  double normal[3];
+  orient_like(vectors[2], orientation, normal);
   Local_estimate e;
   for(int i = 0; i < 3; ++i)
   {
-    e.normal[i] = side < 0 ? -vectors[2][i] : vectors[2][i];
+    e.normal[i] = normal[i];
     e.d_min[i] = vectors[0][i];
     e.d_max[i] = vectors[1][i];
   }
@@ -158,12 +158,15 @@ estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double 
   std::vector<Curvature_estimate<Geom_traits> > results(n);
   std::vector<std::uint32_t> count(n, 0);
   std::vector<double> point_radius(n, radius);
+  // neighbourhoods without spread in two tangent directions: one curvature is not measured
+  std::vector<unsigned char> no_spread(n, 0);
   Neighborhood_options options;
-  options.normalize_normals = false;  // only the counts and radii are read
+  options.normalize_normals = false;  // only the counts, radii and spread are read
   options.function_name = function_name;
-  auto record = [&count, &point_radius](std::size_t i, const Neighborhood& nb) {
+  auto record = [&count, &point_radius, &no_spread](std::size_t i, const Neighborhood& nb) {
     count[i] = static_cast<std::uint32_t>(nb.size);
     point_radius[i] = nb.radius;
+    no_spread[i] = neighborhood_lacks_tangent_spread(nb) ? 1 : 0;
   };
   const auto point_map = NP_helper::get_const_point_map(points, np);
   const auto normal_map = NP_helper::get_normal_map(points, np);
@@ -192,6 +195,16 @@ estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double 
   const std::size_t m = vcm_points.size();
   if(m == 0)
     return results;
+  // CGAL's Delaunay triangulation and Voronoi constructions square coordinates: beyond
+  // 1e150 they overflow (and crash CGAL's exact fallback), so such clouds are refused.
+  for(const Vcm_point& p : vcm_points)
+    if(std::abs(p.x()) > 1e150 || std::abs(p.y()) > 1e150 || std::abs(p.z()) > 1e150)
+    {
+      std::ostringstream msg;
+      msg << function_name << ": coordinates beyond 1e150 in absolute value (here " << p
+          << ") overflow CGAL's Voronoi covariance measure; translate or scale the cloud";
+      throw std::invalid_argument(msg.str());
+    }
   auto set_all = [&](Curvature_estimate_status s) {
     for(std::size_t j = 0; j < m; ++j)
     {
@@ -266,6 +279,8 @@ estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double 
     Local_estimate e;
     if(count[i] < vcm_min_neighbors)
       e = Local_estimate::invalid(Curvature_estimate_status::TOO_FEW_NEIGHBORS);
+    else if(no_spread[i])
+      e = Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
     else if(!by_count)
       e = vcm_curvature_estimate(cov[j], radius, orientation[j].data());
     else

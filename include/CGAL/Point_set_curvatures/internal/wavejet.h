@@ -73,10 +73,7 @@ inline Local_estimate wavejet_estimate(const Neighborhood& nb)
   if(!pca.compute(nb))
     return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
   double n[3], t1[3], t2[3];
-  const double side = pca.vectors[0][0] * nb.query_normal[0] + pca.vectors[0][1] * nb.query_normal[1] +
-                      pca.vectors[0][2] * nb.query_normal[2];
-  for(int i = 0; i < 3; ++i)
-    n[i] = side < 0 ? -pca.vectors[0][i] : pca.vectors[0][i];
+  orient_like(pca.vectors[0], nb.query_normal, n);
   tangent_basis(n, t1, t2);
 
   // 2. first fit
