@@ -1,9 +1,11 @@
 // Copyright (c) 2026 The Point_set_curvatures authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// CGAL::Point_set_3: read a cloud with normals, estimate the Algebraic Shape Operator with
-// the point set's own point and normal maps, store the results as property maps of the
-// point set and write everything (input properties included) as a binary PLY.
+// CGAL::Point_set_3: read a cloud with normals (.xyz, .ply, .off), estimate the Algebraic
+// Shape Operator with the point set's own point and normal maps, store the results as
+// property maps of the point set and write everything as a binary PLY: x y z, the corrected
+// normal nx ny nz (the input normal where the estimate is invalid), k_min k_max mean gaussian,
+// the principal directions dmin_x dmin_y dmin_z dmax_x dmax_y dmax_z, valid.
 //
 // usage: point_set_3_curvatures INPUT OUTPUT.ply RADIUS
 
@@ -48,6 +50,11 @@ int main(int argc, char** argv)
   Point_set::Property_map<double> mean = points.add_property_map<double>("mean", nan).first;
   Point_set::Property_map<double> gaussian = points.add_property_map<double>("gaussian", nan).first;
   Point_set::Property_map<std::uint8_t> valid = points.add_property_map<std::uint8_t>("valid", 0).first;
+  // principal directions, three doubles each (the PLY writer takes scalar properties)
+  const char* direction_names[6] = {"dmin_x", "dmin_y", "dmin_z", "dmax_x", "dmax_y", "dmax_z"};
+  Point_set::Property_map<double> direction[6];
+  for(int c = 0; c < 6; ++c)
+    direction[c] = points.add_property_map<double>(direction_names[c], nan).first;
   std::size_t i = 0, n_valid = 0;
   for(Point_set::Index p : points)
   {
@@ -57,6 +64,11 @@ int main(int argc, char** argv)
     mean[p] = e.mean_curvature;
     gaussian[p] = e.gaussian_curvature;
     valid[p] = e.is_valid() ? 1 : 0;
+    for(int c = 0; c < 3; ++c)
+    {
+      direction[c][p] = e.min_direction[c];
+      direction[3 + c][p] = e.max_direction[c];
+    }
     // the corrected normal replaces the input one where the estimate is valid
     if(e.is_valid())
     {

@@ -1,0 +1,299 @@
+// Copyright (c) 2026 The Point_set_curvatures authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Timings of every estimator of the package (issue: the paper's baselines), in the spirit of
+// Table 2 of Lejemble et al. 2021: sequential and parallel seconds, and ratios to ASO measured
+// in the same run, printed as Markdown tables, on
+//   1. an ellipsoid with semi-axes 1, 0.7, 0.5 (1M points by default, random order), radius
+//      chosen for about 40 neighbours;
+//   2. the Goursat 50K cloud of ../shared/data (Lloyd-relaxed sampling), every estimator at
+//      the same radius (0.67 by default, about 39 neighbours).
+// VCM builds a 3D Delaunay triangulation and one convex polytope per point (CGAL's
+// compute_vcm), sequentially whatever the tag, at a few hundred microseconds per point: on
+// clouds larger than --vcm-points it is timed on that many points of the cloud (a uniform
+// subsample of the random-order ellipsoid, at the radius that keeps the same neighbour
+// count), and its time for the whole cloud is extrapolated linearly and marked with "~".
+//
+// With --repetitions K every run is repeated K times and the best time kept (the machine
+// may be shared); default 1.
+//
+// usage: estimator_timings [--points N=1000000] [--vcm-points M=100000]
+//                          [--goursat-radius R=0.67] [--goursat FILE] [--repetitions K=1]
+//                          [--skip-ellipsoid] [--skip-goursat]
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/estimate_apss_curvatures.h>
+#include <CGAL/estimate_aso_curvatures.h>
+#include <CGAL/estimate_barycenter_curvatures.h>
+#include <CGAL/estimate_jet_curvatures.h>
+#include <CGAL/estimate_pca_plane_curvatures.h>
+#include <CGAL/estimate_pss_curvatures.h>
+#include <CGAL/estimate_vcm_curvatures.h>
+#include <CGAL/estimate_wavejet_curvatures.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <functional>
+#include <limits>
+#include <random>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#ifndef PSC_SHARED_DATA_DIR
+#define PSC_SHARED_DATA_DIR "../shared/data"
+#endif
+
+typedef CGAL::Simple_cartesian<double> Kernel;
+typedef Kernel::Point_3 Point;
+typedef Kernel::Vector_3 Vector;
+typedef std::pair<Point, Vector> Oriented_point;
+typedef CGAL::First_of_pair_property_map<Oriented_point> Point_map;
+typedef CGAL::Second_of_pair_property_map<Oriented_point> Normal_map;
+typedef std::vector<CGAL::Curvature_estimate<Kernel> > Estimates;
+
+namespace {
+
+// Ellipsoid sampled by normalising Gaussian vectors (random order), outward normals.
+std::vector<Oriented_point> ellipsoid(std::size_t n, double a, double b, double c, unsigned seed)
+{
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> g(0, 1);
+  std::vector<Oriented_point> pts;
+  pts.reserve(n);
+  while(pts.size() < n)
+  {
+    const double u[3] = {g(rng), g(rng), g(rng)};
+    const double l = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    if(l < 1e-12)
+      continue;
+    const Point p(a * u[0] / l, b * u[1] / l, c * u[2] / l);
+    const Vector nrm(p.x() / (a * a), p.y() / (b * b), p.z() / (c * c));
+    pts.emplace_back(p, nrm / std::sqrt(nrm.squared_length()));
+  }
+  return pts;
+}
+
+// Surface area of the ellipsoid (Knud Thomsen's formula, 1% accurate).
+double ellipsoid_area(double a, double b, double c)
+{
+  const double p = 1.6075;
+  return 4 * M_PI * std::pow((std::pow(a * b, p) + std::pow(a * c, p) + std::pow(b * c, p)) / 3, 1 / p);
+}
+
+std::vector<Oriented_point> read_xyz(const std::string& file)
+{
+  std::ifstream in(file);
+  std::vector<Oriented_point> pts;
+  std::string line;
+  while(std::getline(in, line))
+  {
+    if(line.empty() || line[0] == '#')
+      continue;
+    std::istringstream s(line);
+    double v[6];
+    if(s >> v[0] >> v[1] >> v[2] >> v[3] >> v[4] >> v[5])
+      pts.emplace_back(Point(v[0], v[1], v[2]), Vector(v[3], v[4], v[5]));
+  }
+  return pts;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t0)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+struct Estimator
+{
+  const char* name;
+  double paper_ratio;  // Table 2 of Lejemble et al. 2021, Dragon, sequential, time / ASO
+  std::function<Estimates(const std::vector<Oriented_point>&, double, bool parallel)> run;
+};
+
+template <class F>
+std::function<Estimates(const std::vector<Oriented_point>&, double, bool)> both_tags(F f)
+{
+  return [f](const std::vector<Oriented_point>& pts, double r, bool parallel) {
+    return parallel ? f(CGAL::Parallel_tag(), pts, r) : f(CGAL::Sequential_tag(), pts, r);
+  };
+}
+
+#define PSC_ESTIMATOR(function)                                                                \
+  both_tags([](auto tag, const std::vector<Oriented_point>& pts, double r) {                  \
+    return CGAL::function<decltype(tag)>(                                                      \
+      pts, r, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()));              \
+  })
+
+std::vector<Estimator> estimators()
+{
+  // Table 2, Dragon (127K points), sequential seconds: [PWY*07] 1.12, [DMSL11] 1.64,
+  // APSS 1.47, ASO 4.34, OJets 12.76, WJets 19.97, PSS 10.67, VCM 13.60.
+  return {{"ASO", 1.0, PSC_ESTIMATOR(estimate_aso_curvatures)},
+          {"APSS", 1.47 / 4.34, PSC_ESTIMATOR(estimate_apss_curvatures)},
+          {"distance to barycenter", 1.12 / 4.34, PSC_ESTIMATOR(estimate_barycenter_curvatures)},
+          {"distance to PCA plane", 1.64 / 4.34, PSC_ESTIMATOR(estimate_pca_plane_curvatures)},
+          {"PSS", 10.67 / 4.34, PSC_ESTIMATOR(estimate_pss_curvatures)},
+          {"osculating jets (CGAL)", 12.76 / 4.34, PSC_ESTIMATOR(estimate_jet_curvatures)},
+          {"wavejets (order 2)", 19.97 / 4.34, PSC_ESTIMATOR(estimate_wavejet_curvatures)},
+          {"VCM (CGAL, R = r)", 13.60 / 4.34, PSC_ESTIMATOR(estimate_vcm_curvatures)}};
+}
+
+struct Timing
+{
+  double sequential = 0, parallel = 0;
+  bool extrapolated = false;
+  std::size_t valid = 0;
+};
+
+std::string seconds(double s, bool extrapolated)
+{
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), "%s%.3f", extrapolated ? "~" : "", s);
+  return buffer;
+}
+
+// Times every estimator on `pts` at radius r, VCM on at most vcm_points points.
+void time_cloud(const std::string& title, const std::vector<Oriented_point>& pts, double r,
+                std::size_t vcm_points, int repetitions)
+{
+  std::vector<Estimator> list = estimators();
+  std::vector<Timing> timings(list.size());
+  double neighbours = 0;
+  std::size_t vcm_n = pts.size();
+  double vcm_r = r;
+  for(std::size_t e = 0; e < list.size(); ++e)
+  {
+    const bool vcm = std::strncmp(list[e].name, "VCM", 3) == 0;
+    std::vector<Oriented_point> subset;
+    const std::vector<Oriented_point>* cloud = &pts;
+    double radius = r;
+    if(vcm && pts.size() > vcm_points)
+    {
+      // the first points of a random-order cloud are a uniform subsample; the radius grows
+      // as 1/sqrt(density) to keep the neighbour count
+      subset.assign(pts.begin(), pts.begin() + vcm_points);
+      cloud = &subset;
+      radius = r * std::sqrt(double(pts.size()) / double(vcm_points));
+      vcm_n = vcm_points;
+      vcm_r = radius;
+      timings[e].extrapolated = true;
+    }
+    const double scale = double(pts.size()) / double(cloud->size());
+    for(bool parallel : {false, true})
+    {
+      Estimates out;
+      double t = std::numeric_limits<double>::infinity();
+      for(int k = 0; k < repetitions; ++k)
+      {
+        Estimates().swap(out);
+        const auto t0 = std::chrono::steady_clock::now();
+        out = list[e].run(*cloud, radius, parallel);
+        t = std::min(t, seconds_since(t0) * scale);
+      }
+      (parallel ? timings[e].parallel : timings[e].sequential) = t;
+      if(!parallel)
+      {
+        for(const auto& x : out)
+          timings[e].valid += x.is_valid() ? 1 : 0;
+        if(e == 0)
+        {
+          double sum = 0;
+          for(const auto& x : out)
+            sum += double(x.neighbor_count);
+          neighbours = sum / double(out.size());
+        }
+      }
+      std::fprintf(stderr, "  %s %s: %.3f s%s\n", list[e].name, parallel ? "parallel" : "sequential",
+                   t, timings[e].extrapolated ? " (extrapolated)" : "");
+    }
+  }
+
+  std::printf("\n### %s\n\n%zu points, radius %.6g, %.1f neighbours on average (query included); "
+              "%u hardware threads; best of %d run(s).\n",
+              title.c_str(), pts.size(), r, neighbours, std::thread::hardware_concurrency(),
+              repetitions);
+  if(vcm_n != pts.size())
+    std::printf("VCM timed on %zu of the points at radius %.6g (same neighbour count), "
+                "times scaled by %.1f (marked ~).\n",
+                vcm_n, vcm_r, double(pts.size()) / double(vcm_n));
+  std::printf("\n| estimator | sequential (s) | parallel (s) | sequential / ASO | parallel / ASO "
+              "| parallel speed-up | paper, sequential / ASO |\n|---|---|---|---|---|---|---|\n");
+  for(std::size_t e = 0; e < list.size(); ++e)
+    std::printf("| %s | %s | %s | %.2f | %.2f | %.2f | %.2f |\n", list[e].name,
+                seconds(timings[e].sequential, timings[e].extrapolated).c_str(),
+                seconds(timings[e].parallel, timings[e].extrapolated).c_str(),
+                timings[e].sequential / timings[0].sequential, timings[e].parallel / timings[0].parallel,
+                timings[e].sequential / timings[e].parallel, list[e].paper_ratio);
+  std::fflush(stdout);
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  std::size_t n = 1000000, vcm_points = 100000;
+  int repetitions = 1;
+  double goursat_radius = 0.67;
+  std::string goursat = std::string(PSC_SHARED_DATA_DIR) + "/goursat_050000.xyz";
+  bool do_ellipsoid = true, do_goursat = true;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    auto next = [&]() -> std::string {
+      if(i + 1 >= argc)
+      {
+        std::fprintf(stderr, "missing value after %s\n", a.c_str());
+        std::exit(2);
+      }
+      return argv[++i];
+    };
+    if(a == "--points")
+      n = std::stoul(next());
+    else if(a == "--vcm-points")
+      vcm_points = std::stoul(next());
+    else if(a == "--goursat-radius")
+      goursat_radius = std::stod(next());
+    else if(a == "--goursat")
+      goursat = next();
+    else if(a == "--repetitions")
+      repetitions = std::max(1, std::stoi(next()));
+    else if(a == "--skip-ellipsoid")
+      do_ellipsoid = false;
+    else if(a == "--skip-goursat")
+      do_goursat = false;
+    else
+    {
+      std::fprintf(stderr,
+                   "usage: %s [--points N] [--vcm-points M] [--goursat-radius R] [--goursat FILE] "
+                   "[--repetitions K] [--skip-ellipsoid] [--skip-goursat]\n",
+                   argv[0]);
+      return 2;
+    }
+  }
+
+  std::printf("## Estimator timings (seconds; ratios to ASO measured in the same run)\n");
+  if(do_ellipsoid)
+  {
+    const double a = 1.0, b = 0.7, c = 0.5;
+    const std::vector<Oriented_point> pts = ellipsoid(n, a, b, c, 42);
+    const double r = std::sqrt(40.0 * ellipsoid_area(a, b, c) / (M_PI * double(n)));
+    time_cloud("Ellipsoid 1 x 0.7 x 0.5, random order", pts, r, vcm_points, repetitions);
+  }
+  if(do_goursat)
+  {
+    const std::vector<Oriented_point> pts = read_xyz(goursat);
+    if(pts.empty())
+    {
+      std::fprintf(stderr, "cannot read %s\n", goursat.c_str());
+      return 1;
+    }
+    time_cloud("Goursat (" + goursat.substr(goursat.find_last_of('/') + 1) + ")", pts,
+               goursat_radius, std::max<std::size_t>(vcm_points, pts.size()), repetitions);
+  }
+  return 0;
+}
