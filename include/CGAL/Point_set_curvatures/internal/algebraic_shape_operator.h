@@ -70,7 +70,6 @@ namespace internal {
 // grad D = 4 tqnq, grad E = 4 (tq - B) (since q.q = 1 - t).
 struct Aso_first_order_sums
 {
-  std::size_t count = 0;
   double A = 0, B[3] = {}, C[3] = {}, D = 0, E = 0;
   double tq[3] = {};    // sum t q
   double tqq[6] = {};   // sum t q q^T, packed xx xy xz yy yz zz
@@ -100,7 +99,6 @@ inline Aso_first_order_sums aso_first_pass(const Neighborhood& nb)
     E += w * s;
   }
   Aso_first_order_sums m;
-  m.count = nb.size;
   m.A = M[0][0];
   m.D = M[7][0];
   m.E = E;
