@@ -182,52 +182,16 @@ std::vector<Algebraic_sphere_features<
 sphere_features_at_every_point(const PointRange& points, bool radius_given, double radius,
                                const NamedParameters& np, const char* function_name)
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
-  typedef typename NP_helper::Geom_traits Geom_traits;
-  static_assert(NP_helper::has_normal_map(),
-                "Error: no normal map. Pass CGAL::parameters::normal_map(...): the algebraic "
-                "sphere fit needs oriented normals.");
-
-  Neighborhood_options options;
-  options.callback =
-    choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
-  options.function_name = function_name;
-  const std::size_t k = choose_parameter(
-    get_parameter(np, Point_set_curvatures::internal_np::neighbor_count), std::size_t(0));
-  check_scale(radius, k, !radius_given, function_name);
+  typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits Geom_traits;
   const bool constant = weight_kernel_parameter(np) == Apss_weight_kernel::CONSTANT;
-
-  std::vector<Algebraic_sphere_features<Geom_traits> > results(
-    static_cast<std::size_t>(std::distance(points.begin(), points.end())));
-  auto visit = [&results, constant](std::size_t i, const Neighborhood& nb) {
-    const Local_sphere_features f = constant ? sphere_features<Constant_kernel>(nb)
-                                             : sphere_features<Smooth_kernel>(nb);
-    results[i] = to_sphere_features<Geom_traits>(f, nb.center);
-  };
-  const auto point_map = NP_helper::get_const_point_map(points, np);
-  const auto normal_map = NP_helper::get_normal_map(points, np);
-  const std::vector<Curvature_estimate_status> status =
-    radius_given
-      ? for_each_neighborhood<ConcurrencyTag>(points, point_map, normal_map, radius, options, visit)
-      : for_each_neighborhood_knn<ConcurrencyTag>(points, point_map, normal_map, k, options, visit);
-  for(std::size_t i = 0; i < results.size(); ++i)
-    if(status[i] != Curvature_estimate_status::VALID)
-      results[i].status = status[i];  // unusable or not reached: NaN fields, count 0
-  return results;
+  return evaluate_at_every_point<Algebraic_sphere_features<Geom_traits>, ConcurrencyTag>(
+    points, radius_given, radius, np, neighborhood_options(np, function_name, true),
+    [constant](const Neighborhood& nb) {
+      const Local_sphere_features f = constant ? sphere_features<Constant_kernel>(nb)
+                                               : sphere_features<Smooth_kernel>(nb);
+      return to_sphere_features<Geom_traits>(f, nb.center);
+    });
 }
-
-// Result type of the overload without radius; no `type` unless NamedParameters is a named
-// parameter pack, so that a call with a radius does not consider it (SFINAE).
-template <class PointRange, class NamedParameters, bool = is_named_parameters<NamedParameters>::value>
-struct Features_without_radius {};
-template <class PointRange, class NamedParameters>
-struct Features_without_radius<PointRange, NamedParameters, true>
-{
-  typedef std::vector<Algebraic_sphere_features<
-    typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> > type;
-};
 
 // The visitor of the multi-scale function: one Multiscale_sphere_features (scratch buckets)
 // per copy, i.e. per thread with Parallel_tag.
@@ -342,7 +306,8 @@ estimate_algebraic_sphere_features(const PointRange& points, double radius,
 /// `kernel_radius`.
 /// \throws std::invalid_argument if `neighbor_count` is missing or 0.
 template <typename ConcurrencyTag, typename PointRange, typename NamedParameters>
-typename Point_set_curvatures::internal::Features_without_radius<PointRange, NamedParameters>::type
+typename Point_set_curvatures::internal::Results_without_radius<Algebraic_sphere_features, PointRange,
+                                                                NamedParameters>::type
 estimate_algebraic_sphere_features(const PointRange& points, const NamedParameters& np)
 {
   return Point_set_curvatures::internal::sphere_features_at_every_point<ConcurrencyTag>(
@@ -415,10 +380,7 @@ estimate_multiscale_algebraic_sphere_features(const PointRange& points,
   if(k != 0)
     throw std::invalid_argument(std::string(name) + ": neighbor_count is not supported, give radii");
 
-  PSC::internal::Neighborhood_options options;
-  options.callback =
-    choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
-  options.function_name = name;
+  const PSC::internal::Neighborhood_options options = PSC::internal::neighborhood_options(np, name, true);
   const bool constant = PSC::internal::weight_kernel_parameter(np) == Apss_weight_kernel::CONSTANT;
 
   const std::size_t n = static_cast<std::size_t>(std::distance(points.begin(), points.end()));

@@ -130,15 +130,8 @@ estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double 
   typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
   typedef typename NP_helper::Geom_traits Geom_traits;
   typedef CGAL::Epick::Point_3 Vcm_point;
-  static_assert(NP_helper::has_normal_map(),
-                "Error: no normal map. Pass CGAL::parameters::normal_map(...): the estimators "
-                "of this package need oriented normals.");
-  check_concurrency_tag<ConcurrencyTag>();
 
-  const std::size_t k = choose_parameter(
-    get_parameter(np, Point_set_curvatures::internal_np::neighbor_count), std::size_t(0));
   const bool by_count = !radius_given;
-  check_scale(radius, k, by_count, function_name);
   const bool offset_given = !CGAL::parameters::is_default_parameter<
     NamedParameters, Point_set_curvatures::internal_np::vcm_offset_radius_t>::value;
   const double offset_parameter = choose_parameter(
@@ -153,28 +146,35 @@ estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double 
   const std::function<bool(double)> callback =
     choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
 
-  // 1. The package's neighbourhoods: statuses of unusable points, counts, per-point radii.
-  const std::size_t n = static_cast<std::size_t>(std::distance(points.begin(), points.end()));
-  std::vector<Curvature_estimate<Geom_traits> > results(n);
-  std::vector<std::uint32_t> count(n, 0);
-  std::vector<double> point_radius(n, radius);
-  // neighbourhoods without spread in two tangent directions: one curvature is not measured
-  std::vector<unsigned char> no_spread(n, 0);
-  Neighborhood_options options;
-  options.normalize_normals = false;  // only the counts, radii and spread are read
-  options.function_name = function_name;
-  auto record = [&count, &point_radius, &no_spread](std::size_t i, const Neighborhood& nb) {
-    count[i] = static_cast<std::uint32_t>(nb.size);
-    point_radius[i] = nb.radius;
-    no_spread[i] = neighborhood_lacks_tangent_spread(nb) ? 1 : 0;
+  // 1. The package's neighbourhoods (the same driver as every estimator): statuses of
+  // unusable points, counts, per-point radii, and whether they lack tangent spread (one
+  // scan line: a curvature is not measured).
+  struct Record
+  {
+    std::uint32_t count = 0;
+    double radius = 0;
+    bool no_spread = false;
+    Curvature_estimate_status status = Curvature_estimate_status::NOT_COMPUTED;
   };
+  Neighborhood_options options;  // the callback reports the VCM steps below, not this pass
+  options.normalize_normals = false;
+  options.function_name = function_name;
+  const std::vector<Record> records = evaluate_at_every_point<Record, ConcurrencyTag>(
+    points, radius_given, radius, np, options,
+    [](const Neighborhood& nb) {
+      Record r;
+      r.count = static_cast<std::uint32_t>(nb.size);
+      r.radius = nb.radius;
+      r.no_spread = neighborhood_lacks_tangent_spread(nb);
+      r.status = Curvature_estimate_status::VALID;
+      return r;
+    });
+  const std::size_t n = records.size();
+  std::vector<Curvature_estimate<Geom_traits> > results(n);
+  for(std::size_t i = 0; i < n; ++i)
+    results[i].status = records[i].status;
   const auto point_map = NP_helper::get_const_point_map(points, np);
   const auto normal_map = NP_helper::get_normal_map(points, np);
-  const std::vector<Curvature_estimate_status> status =
-    by_count ? for_each_neighborhood_knn<ConcurrencyTag>(points, point_map, normal_map, k, options, record)
-             : for_each_neighborhood<ConcurrencyTag>(points, point_map, normal_map, radius, options, record);
-  for(std::size_t i = 0; i < n; ++i)
-    results[i].status = status[i];
 
   // 2. Usable points only (non-finite points would break the Delaunay triangulation).
   std::vector<std::size_t> input_index;
@@ -183,7 +183,7 @@ estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double 
   {
     std::size_t i = 0;
     for(auto it = points.begin(); it != points.end(); ++it, ++i)
-      if(status[i] == Curvature_estimate_status::VALID)
+      if(records[i].status == Curvature_estimate_status::VALID)
       {
         const auto& p = get(point_map, *it);
         const auto& v = get(normal_map, *it);
@@ -213,8 +213,8 @@ estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double 
       r.neighbor_count = 0;
       if(s == Curvature_estimate_status::DEGENERATE_FIT)
       {
-        r.neighbor_count = count[input_index[j]];
-        if(count[input_index[j]] < vcm_min_neighbors)
+        r.neighbor_count = records[input_index[j]].count;
+        if(records[input_index[j]].count < vcm_min_neighbors)
           r.status = Curvature_estimate_status::TOO_FEW_NEIGHBORS;
       }
     }
@@ -232,7 +232,7 @@ estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double 
     {
       std::vector<double> radii(m);
       for(std::size_t j = 0; j < m; ++j)
-        radii[j] = point_radius[input_index[j]];
+        radii[j] = records[input_index[j]].radius;
       std::nth_element(radii.begin(), radii.begin() + m / 2, radii.end());
       offset_radius = radii[m / 2];
     }
@@ -277,15 +277,15 @@ estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double 
   auto estimate = [&](std::size_t j) {
     const std::size_t i = input_index[j];
     Local_estimate e;
-    if(count[i] < vcm_min_neighbors)
+    if(records[i].count < vcm_min_neighbors)
       e = Local_estimate::invalid(Curvature_estimate_status::TOO_FEW_NEIGHBORS);
-    else if(no_spread[i])
+    else if(records[i].no_spread)
       e = Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
     else if(!by_count)
       e = vcm_curvature_estimate(cov[j], radius, orientation[j].data());
     else
     {
-      const double r = point_radius[i];
+      const double r = records[i].radius;
       const Search_point& x = search_points[j];
       std::array<double, 6> sum = {0, 0, 0, 0, 0, 0};
       std::vector<std::uint32_t> found;
@@ -298,7 +298,7 @@ estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double 
             sum[a] += cov[f][a];
       e = vcm_curvature_estimate(sum, r, orientation[j].data());
     }
-    results[i] = to_curvature_estimate<Geom_traits>(e, count[i]);
+    results[i] = to_curvature_estimate<Geom_traits>(e, records[i].count);
   };
   const std::size_t batch = callback ? std::max<std::size_t>(16384, m / 100) : m;
   for(std::size_t first = 0; first < m; first += batch)
