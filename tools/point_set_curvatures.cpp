@@ -955,7 +955,6 @@ struct Record
   double value[16];
   std::int32_t neighbors;
   unsigned char valid;
-  std::array<unsigned char, 3> color;
 };
 
 const char* const field_names[16] = {"x", "y", "z", "nx", "ny", "nz", "k_min", "k_max", "mean",
@@ -972,7 +971,6 @@ Record make_record(const Point& p, const Estimate& e)
   std::copy(v, v + 16, r.value);
   r.neighbors = static_cast<std::int32_t>(std::min<std::size_t>(e.neighbor_count, INT32_MAX));
   r.valid = e.is_valid() ? 1 : 0;
-  r.color = {0, 0, 0};
   return r;
 }
 
@@ -982,6 +980,22 @@ void put_text_double(std::FILE* f, double v)
     std::fputs("nan", f);
   else
     std::fprintf(f, "%.17g", v);
+}
+
+// One row of text output (ASCII PLY, CSV): the 16 doubles, neighbors, valid and, if given,
+// the colour, separated by `separator`.
+void put_text_row(std::FILE* f, const Record& r, const unsigned char* color, char separator)
+{
+  for(int a = 0; a < 16; ++a)
+  {
+    put_text_double(f, r.value[a]);
+    std::fputc(separator, f);
+  }
+  std::fprintf(f, "%d%c%d", int(r.neighbors), separator, int(r.valid));
+  if(color)
+    std::fprintf(f, "%c%d%c%d%c%d", separator, int(color[0]), separator, int(color[1]), separator,
+                 int(color[2]));
+  std::fputc('\n', f);
 }
 
 bool little_endian_host()
@@ -1029,17 +1043,7 @@ void write_ply(std::FILE* f, bool ascii, const Point_set& ps, const Estimates& e
   {
     const Record r = make_record(ps.point(idx), estimates[i]);
     if(ascii)
-    {
-      for(int a = 0; a < 16; ++a)
-      {
-        put_text_double(f, r.value[a]);
-        std::fputc(' ', f);
-      }
-      std::fprintf(f, "%d %d", int(r.neighbors), int(r.valid));
-      if(d.color)
-        std::fprintf(f, " %d %d %d", int(colors[i][0]), int(colors[i][1]), int(colors[i][2]));
-      std::fputc('\n', f);
-    }
+      put_text_row(f, r, d.color ? colors[i].data() : nullptr, ' ');
     else
     {
       for(int a = 0; a < 16; ++a)
@@ -1073,16 +1077,7 @@ void write_csv(std::FILE* f, const Point_set& ps, const Estimates& estimates,
   std::size_t i = 0;
   for(Point_set::Index idx : ps)
   {
-    const Record r = make_record(ps.point(idx), estimates[i]);
-    for(int a = 0; a < 16; ++a)
-    {
-      put_text_double(f, r.value[a]);
-      std::fputc(',', f);
-    }
-    std::fprintf(f, "%d,%d", int(r.neighbors), int(r.valid));
-    if(d.color)
-      std::fprintf(f, ",%d,%d,%d", int(colors[i][0]), int(colors[i][1]), int(colors[i][2]));
-    std::fputc('\n', f);
+    put_text_row(f, make_record(ps.point(idx), estimates[i]), d.color ? colors[i].data() : nullptr, ',');
     ++i;
   }
 }
