@@ -86,15 +86,25 @@ struct Algebraic_sphere_features
   /// `estimate_apss_curvatures()` with the same kernel and radius.
   FT mean_curvature = nan();
   /// GLS geometric variation `v = (∂u_c/∂r)² + (r ∂n/∂r)² + (r² ∂H/∂r)²` (Equation 18,
-  /// Mellado et al. 2012), dimensionless; the derivatives with respect to the kernel radius
-  /// `r` (neighbours and evaluation point fixed) are exact, taken through the kernel. NaN
-  /// with the constant kernel, which has no derivative with respect to `r`.
+  /// Mellado et al. 2012), dimensionless. The derivatives with respect to the kernel radius
+  /// `r` (evaluation point fixed) are taken analytically through the kernel, in the same
+  /// pass as the fit, never by finite differences:
+  /// - smooth kernel: the exact derivative of the fit to the given samples (`r ∂w/∂r`
+  ///   replaces `w` in the sums);
+  /// - constant kernel: the sums only change when a neighbour enters the ball, so their
+  ///   derivative is the boundary term of the continuum sums (a Dirac on the sphere of
+  ///   radius `r`). It is estimated from the neighbours inside with the polynomial weight
+  ///   `2 (30 s² - 24 s + 3)`, `s = d²/r²`, which gives the boundary value of any integrand
+  ///   whose density in `s` is a polynomial of degree 2 or less: exact at the leading order
+  ///   of all three terms for a locally uniform (or smoothly varying) sampling density.
+  ///   Near a border of the cloud or a density jump inside the ball it is biased, and on
+  ///   irregular samples it is noisier than the smooth kernel's (see the user manual).
   FT geometric_variation = nan();
-  /// `∂u_c/∂r` (dimensionless); NaN with the constant kernel.
+  /// `∂u_c/∂r` (dimensionless).
   FT d_u_c_dr = nan();
-  /// `∂normal/∂r`, in `1/L`, orthogonal to `normal`; NaN with the constant kernel.
+  /// `∂normal/∂r`, in `1/L`, orthogonal to `normal`.
   Vector_3 d_normal_dr = nan_vector();
-  /// `∂mean_curvature/∂r`, in `1/L²`; NaN with the constant kernel.
+  /// `∂mean_curvature/∂r`, in `1/L²`.
   FT d_mean_curvature_dr = nan();
   /// `true` if the fitted sphere is a plane, numerically: `|u_q| r <= 1e-12` (sphere radius
   /// above `5e11 r`). The plane is the one through `projection` orthogonal to `normal`.
@@ -275,8 +285,8 @@ struct Multiscale_visitor
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Point_set_curvatures::parameters::weight_kernel}
 ///     \cgalParamDescription{the weight kernel of the fit: `SMOOTH` `(1 - d²/r²)²` or
-///       `CONSTANT` (the paper's asymptotic analysis; no scale derivatives, hence NaN
-///       `geometric_variation` and `d_*_dr`)}
+///       `CONSTANT` (the paper's asymptotic analysis; see `geometric_variation` for how
+///       its scale derivatives are obtained)}
 ///     \cgalParamType{`CGAL::Apss_weight_kernel`}
 ///     \cgalParamDefault{`CGAL::Apss_weight_kernel::SMOOTH`}
 ///   \cgalParamNEnd

@@ -111,11 +111,12 @@ vcm_offset_radius(double offset_radius,
 enum class Apss_weight_kernel
 {
   /// `(1 - d²/r²)²` for `d < r`: the kernel used in practice, differentiable (the Algebraic
-  /// Shape Operator and the scale derivatives need it). Default.
+  /// Shape Operator needs it; its scale derivatives are exact on the samples). Default.
   SMOOTH,
   /// `1` for `d < r`: the constant weight of the paper's asymptotic analysis (Section 4.1),
-  /// under which its asymptotic constants hold as printed. It has no derivative: the
-  /// Algebraic Shape Operator rejects it and the scale derivatives are not available.
+  /// under which its asymptotic constants hold as printed. It has no spatial derivative, so
+  /// the Algebraic Shape Operator rejects it; its derivative in the scale `r` is a boundary
+  /// term, estimated as documented in `Algebraic_sphere_features::geometric_variation`.
   CONSTANT
 };
 
