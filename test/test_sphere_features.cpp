@@ -424,7 +424,7 @@ TEST_CASE("Constant kernel: the scale derivatives are those of the continuum sum
   // In the continuum, r d/dr of a constant-kernel sum is a boundary integral. The true value:
   // the sums in input units (g = 1, p, n, p.n, |p|²) by quadrature at r (1 ± 1e-4), central
   // difference, converted to the scaled frame (divided by r^k, k = 0, 1, 0, 1, 2). The
-  // package's estimate: the same sums with the weight r dw/dr = 2 psi_2(s) of
+  // package's estimate: the same sums with the weight r dw/dr = 2 phi(s) of
   // Kernel_polynomial<Constant_kernel>. Both go through the package's sphere_features.
   namespace PSCI = PSC::internal;
   typedef PSCI::Kernel_polynomial<PSCI::Constant_kernel> Poly;
@@ -470,13 +470,14 @@ TEST_CASE("Constant kernel: the scale derivatives are those of the continuum sum
     const Vector dn_true(g.d_normal[0], g.d_normal[1], g.d_normal[2]);
     const double e_n = length(dn - dn_true) / length(dn_true);
     const double e_uc = std::abs(f.d_u_c / g.d_u_c - 1), e_H = std::abs(f.d_mean / g.d_mean - 1);
-    // Measured relative errors: normal 1.7e-5 / 1.1e-6, u_c 4.2e-3 / 1.2e-3, H 4.2e-3 / 1.1e-3
-    // (r = 0.1 / 0.05), O(r^4) and O(r²) as derived. With a weight exact for degree 1 only
-    // (6 s - 2) the normal's error is 5e-3 but u_c's and H's are 0.37 and 0.57 at both radii.
+    // Measured relative errors: normal 3.9e-5 / 2.4e-6, u_c 9.6e-3 / 2.7e-3, H 9.7e-3 / 2.6e-3
+    // (r = 0.1 / 0.05), O(r^4) and O(r²) as derived. With a weight exact for degree 1 only,
+    // 2 (6 s - 2), the normal's error is 5e-3 / 1.3e-3 and u_c's and H's 0.37 and 0.57 at
+    // both radii; with half the weight (phi instead of 2 phi) all three are 0.5.
     measured("constant kernel r dn/dr vs continuum, relative, r = " + std::to_string(r), e_n);
     measured("constant kernel du_c/dr vs continuum, relative, r = " + std::to_string(r), e_uc);
     measured("constant kernel r^2 dH/dr vs continuum, relative, r = " + std::to_string(r), e_H);
-    CHECK(e_n < 1e-3);
+    CHECK(e_n < 2e-4);
     CHECK(e_uc < 0.02);
     CHECK(e_H < 0.02);
     // and the continuum itself follows Proposition 2: measured v / law 0.969 and 0.992
@@ -602,15 +603,32 @@ TEST_CASE("Paraboloid with varying curvature: v = |grad H|^2 r^4/16 (smooth), /4
     measured("paraboloid smooth v/law, r = " + std::to_string(r), ratio);
     CHECK(std::abs(ratio - 1) < 0.2);
 
-    // Constant kernel: v with the boundary-term derivative (the paper's constant). Measured
-    // v / law: 0.970 (r = 0.1), 1.016 (r = 0.05). As a cross-check outside the package, the
-    // dominant term (r ∂n/∂r)² from central differences of the normal over r (0.8 r, 1.2 r),
-    // exact for the r² term of the normal's expansion: 0.955 and 0.960.
-    const Features c = patch_features(s, r, Weight::CONSTANT);
-    REQUIRE(c.is_valid());
-    const double c_ratio = c.geometric_variation / (s.grad_H_squared() * std::pow(r, 4) / 4);
-    measured("paraboloid constant v/law, r = " + std::to_string(r), c_ratio);
-    CHECK(std::abs(c_ratio - 1) < 0.2);
+    // Constant kernel: v with the boundary-term derivative (the paper's constant), at 20
+    // evaluation points between the lattice samples (the estimate moves with the points near
+    // the boundary of the ball). Measured v / law: mean 0.969 / 0.992, farthest from 1 0.960 /
+    // 0.975 (r = 0.1 / 0.05); the continuum value is 0.969 / 0.992 (test above). With the
+    // weight 2 psi_2 of least i.i.d. variance, which jumps at the boundary, the farthest of 40
+    // points is 0.83 at r = 0.05 and 1.39 at r = 0.025. This law only sees the normal's term
+    // of v; the test above checks all three.
+    const auto lattice = lattice_patch(s, 1.3 * r, r / 100);
+    const Surface surface(lattice, r, maps(Weight::CONSTANT));
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> offset(-r / 100, r / 100);
+    double mean = 0, farthest = 1;
+    for(int i = 0; i < 20; ++i)
+    {
+      const double x = offset(rng), y = offset(rng);
+      const Features c = surface.features(Point(x, y, s.h(x, y)));
+      REQUIRE(c.is_valid());
+      const double c_ratio = c.geometric_variation / (s.grad_H_squared() * std::pow(r, 4) / 4);
+      mean += c_ratio / 20;
+      if(std::abs(c_ratio - 1) > std::abs(farthest - 1))
+        farthest = c_ratio;
+    }
+    measured("paraboloid constant v/law, mean of 20 points, r = " + std::to_string(r), mean);
+    measured("paraboloid constant v/law, farthest from 1, r = " + std::to_string(r), farthest);
+    CHECK(std::abs(mean - 1) < 0.05);
+    CHECK(std::abs(farthest - 1) < 0.1);
     const Features cp = patch_features(s, r, Weight::CONSTANT, 1.2);
     const Features cm = patch_features(s, r, Weight::CONSTANT, 0.8);
     const double v = ((cp.normal - cm.normal) / 0.4).squared_length();

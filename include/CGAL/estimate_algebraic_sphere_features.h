@@ -94,11 +94,13 @@ struct Algebraic_sphere_features
   /// - constant kernel: the sums only change when a neighbour enters the ball, so their
   ///   derivative is the boundary term of the continuum sums (a Dirac on the sphere of
   ///   radius `r`). It is estimated from the neighbours inside with the polynomial weight
-  ///   `2 (30 s² - 24 s + 3)`, `s = d²/r²`, which gives the boundary value of any integrand
-  ///   whose density in `s` is a polynomial of degree 2 or less: exact at the leading order
-  ///   of all three terms for a locally uniform (or smoothly varying) sampling density.
-  ///   Near a border of the cloud or a density jump inside the ball it is biased, and on
-  ///   irregular samples it is noisier than the smooth kernel's (see the user manual).
+  ///   `2 (1 - s)(12 - 120 s + 180 s²)`, `s = d²/r²`, which gives the boundary value of any
+  ///   integrand whose density in `s` is a polynomial of degree 2 or less (the leading order
+  ///   of all three terms, in the continuum limit of a locally uniform or smoothly varying
+  ///   density) and, like the smooth kernel, gives no weight to the points at `d = r`.
+  ///   On samples it is noisier than the smooth kernel's derivative (it estimates a density
+  ///   at the boundary from the inside), and biased near a border of the cloud or a density
+  ///   jump inside the ball; see the user manual for measurements.
   FT geometric_variation = nan();
   /// `∂u_c/∂r` (dimensionless).
   FT d_u_c_dr = nan();
@@ -159,7 +161,7 @@ Algebraic_sphere_features<GeomTraits> to_sphere_features(const Local_sphere_feat
   const double l = std::sqrt(s.u_l[0] * s.u_l[0] + s.u_l[1] * s.u_l[1] + s.u_l[2] * s.u_l[2]);
   out.normal = Vector_3(FT(s.u_l[0] / l), FT(s.u_l[1] / l), FT(s.u_l[2] / l));
   out.mean_curvature = FT(2.0 * s.u_q / (p * r));
-  if(std::isfinite(f.geometric_variation))
+  if(std::isfinite(f.geometric_variation))  // otherwise a numerical failure: NaN, not garbage
   {
     out.geometric_variation = FT(f.geometric_variation);
     out.d_u_c_dr = FT(f.d_u_c);

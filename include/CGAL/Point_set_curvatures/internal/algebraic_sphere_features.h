@@ -13,7 +13,8 @@
 //   u_c(input) = r u_c,  u_l(input) = u_l,  u_q(input) = u_q / r,
 // and the Pratt norm p = sqrt(|u_l|^2 - 4 u_c u_q) is the same in both frames.
 //
-// Scale derivatives. Write delta = r d/dr, at fixed neighbours and fixed evaluation point.
+// Scale derivatives. Write delta = r d/dr, at fixed neighbours and fixed evaluation point
+// (the smooth kernel; the constant kernel's derivative is a boundary term, see below).
 // The input-unit sums Sbar_j = r^k_j s_j (k = 0, 1, 0, 1, 2 for A, B, C, D, E) have
 // delta Sbar_j = r^k_j ds_j with ds_j the same sums in the scaled frame with the weight w
 // replaced by r dw/dr (for the smooth kernel w = (1-s)^2, s = |q|^2: r dw/dr = 4 s (1 - s)).
@@ -22,29 +23,38 @@
 // (ds_j). Hence the three terms of Equation 18 are scale-free and computed in the scaled
 // frame:  d u_c / dr = d(u_c/p),  r d n/dr = d(u_l/|u_l|),  r^2 dH/dr = d(2 u_q / p).
 //
-// Scale derivative of the constant kernel. w = 1 for s < 1 (s = |q|^2) gives r dw/dr =
-// 2 delta(s - 1): in the continuum, the derivative of a constant-kernel sum is a boundary
-// integral over the sphere of radius r. On samples it does not exist (every sum is a step
-// function of r: zero derivative between the radii where neighbours enter). What it
-// estimates is the boundary value 2 Phi(1) of Phi(s), the density at s of the sampled
-// integrand (a neighbour's contribution g_j, summed over the points at squared scaled
-// distance s). Under a sampling of uniform density in the tangent plane, s is uniformly
-// distributed on [0, 1] and Phi is smooth, with a Taylor expansion in powers of s whose
-// k-th term is of order r^2k relative to the first. The weight psi_2(s) = 30 s^2 - 24 s + 3
-// (the reproducing kernel of the point evaluation at s = 1 for polynomials of degree <= 2,
-// uniform measure on [0, 1]: sum over k <= 2 of (2k + 1) P_k(2s - 1)) satisfies
-//   int_0^1 psi_2(s) s^k ds = 1 for k = 0, 1, 2,
-// so sum_i 2 psi_2(s_i) g_j(i) estimates 2 Phi(1) exactly for Phi of degree <= 2: the
-// constant kernel's r dw/dr = 2 delta(s - 1) is replaced by 2 psi_2(s) = 60 s^2 - 48 s + 6,
-// a polynomial weight like the smooth kernel's, in the same single pass. Degree 2 is the
-// least that reaches the leading term of all three derivatives of Equation 18 (u_c and H
-// need the s^2 part of Phi). Measured against the true derivative of the continuum sums
-// (2-D Gauss quadrature of the paraboloid of the tests over the 3-D ball, central difference
-// in r): relative error of r dn/dr 1.7e-5 / 1.1e-6 / 8e-8 at r = 0.1 / 0.05 / 0.025, of
-// du_c/dr and r^2 dH/dr 4e-3 / 1.2e-3 / 3e-4 (O(r^2)); with degree 1 the normal's is 5e-3
-// but du_c/dr and dH/dr converge to 0.63 and 0.43 of the truth. The same holds with a
-// density per unit surface area and with any density smooth at the scale r (it is part of
-// Phi). Irregular sampling makes every derivative noisy, for both kernels alike.
+// Scale derivative of the constant kernel. w = 1 for s < 1 gives r dw/dr = 2 delta(s - 1):
+// in the continuum, the derivative of a constant-kernel sum is a boundary integral over the
+// sphere of radius r. On samples it does not exist (every sum is a step function of r, with
+// zero derivative between the radii where neighbours enter). What it stands for is the
+// boundary value 2 Phi(1) of Phi(s), the density at s of the sampled integrand (the
+// contributions g_j of the points at squared scaled distance s). For a density uniform in
+// the tangent plane, s is uniform on [0, 1] up to a factor 1 + O(r^2 s) (the ball is 3-D),
+// and Phi is smooth, with a Taylor expansion whose s^k term is of order r^2k relative to the
+// first. A weight phi with
+//   int_0^1 phi(s) s^k ds = 1 for k = 0, 1, 2
+// turns sum_i 2 phi(s_i) g_j(i) into 2 Phi(1), exactly for Phi of degree <= 2; degree 2 is
+// the least that reaches the leading term of all three derivatives of Equation 18 (u_c and H
+// need the s^2 part of Phi). Among such weights, the package takes
+//   phi(s) = (1 - s)(12 - 120 s + 180 s^2),  r dw/dr := 2 phi(s) = 24 - 264 s + 600 s^2 - 360 s^3,
+// which vanishes at s = 1: a neighbour entering the ball enters with weight 0, as with the
+// smooth kernel. The weight of least variance under i.i.d. sampling, the reproducing kernel
+// psi_2(s) = 30 s^2 - 24 s + 3 (2 psi_2(1) = 18), jumps at s = 1, and the sums then move
+// with every point crossing the boundary: at 40 positions between the samples of a regular
+// lattice (paraboloid of the tests, r = 0.05, spacing r/100) v / law has a standard deviation
+// of 0.076 with psi_2 and 0.011 with phi; on goursat_050000.xyz at r = 1 its median is 3.2
+// with psi_2 and 1.9 with phi (1.3 with the smooth kernel); under i.i.d. sampling both are
+// equally noisy. Neighbourhoods by count, whose k-th neighbour sits at s = 1, give it no
+// weight either.
+// Accuracy of the continuum limit, against the true derivative of the continuum sums (2-D
+// Gauss quadrature of the paraboloid over the 3-D ball, central difference in r): relative
+// error of r dn/dr 3.9e-5 / 2.4e-6 at r = 0.1 / 0.05 (O(r^4)), of du_c/dr and r^2 dH/dr
+// 9.6e-3 / 2.6e-3 (O(r^2)); a weight exact for degree 1 only leaves du_c/dr and dH/dr at
+// about 0.6 and 0.4 of the truth. The same holds with a density per unit surface area and
+// with any density smooth at the scale r (it is part of Phi). On samples, the derivative of
+// either kernel carries the sampling noise of its sums; the boundary term is the more
+// exposed (it estimates a density at the boundary from the inside), so prefer the smooth
+// kernel for v on irregular scans.
 //
 // Asymptotic laws (surface in its principal frame at the evaluation point, normal n,
 // height h(x, y) along n with derivatives a_ij; curvatures with this package's sign,
@@ -94,7 +104,10 @@ namespace Point_set_curvatures {
 namespace internal {
 
 // The kernels as polynomials of s = |q|^2 (scaled frame), w = sum_j c_j s^j, with their scale
-// derivative r dw/dr = sum_j dc_j s^j: what the multi-scale moments need.
+// derivative r dw/dr = sum_j dc_j s^j (degree <= kernel_degree): what the multi-scale
+// moments need.
+constexpr int kernel_degree = 3;
+
 template <class WeightKernel>
 struct Kernel_polynomial;
 
@@ -102,18 +115,19 @@ template <>
 struct Kernel_polynomial<Smooth_kernel>
 {
   // w = (1 - s)^2 = 1 - 2 s + s^2;  r dw/dr = -2 s dw/ds = 4 s (1 - s)
-  static constexpr double weight[3] = {1.0, -2.0, 1.0};
-  static constexpr double scale_derivative[3] = {0.0, 4.0, -4.0};
+  static constexpr double weight[kernel_degree + 1] = {1.0, -2.0, 1.0, 0.0};
+  static constexpr double scale_derivative[kernel_degree + 1] = {0.0, 4.0, -4.0, 0.0};
   static double r_dw_dr(double s) { return 4.0 * s * (1.0 - s); }
 };
 
 template <>
 struct Kernel_polynomial<Constant_kernel>
 {
-  // w = 1;  r dw/dr = 2 delta(s - 1), estimated by 2 psi_2(s) = 6 - 48 s + 60 s^2 (see above)
-  static constexpr double weight[3] = {1.0, 0.0, 0.0};
-  static constexpr double scale_derivative[3] = {6.0, -48.0, 60.0};
-  static double r_dw_dr(double s) { return 6.0 + s * (-48.0 + 60.0 * s); }
+  // w = 1;  r dw/dr = 2 delta(s - 1), estimated by 2 phi(s) = 2 (1 - s)(12 - 120 s + 180 s^2)
+  // = 24 - 264 s + 600 s^2 - 360 s^3 (see the header comment)
+  static constexpr double weight[kernel_degree + 1] = {1.0, 0.0, 0.0, 0.0};
+  static constexpr double scale_derivative[kernel_degree + 1] = {24.0, -264.0, 600.0, -360.0};
+  static double r_dw_dr(double s) { return 24.0 + s * (-264.0 + s * (600.0 - 360.0 * s)); }
 };
 
 // The five sums of Equations 2-4 without the weight type (for their scale derivatives).
@@ -300,20 +314,22 @@ public:
       const std::size_t j = std::upper_bound(m_bound.begin(), m_bound.end(), s1) - m_bound.begin();
       if(j == n_radii)
         continue;  // at distance >= R up to rounding: outside every ball
-      const double s[4] = {1.0, s1, s1 * s1, s1 * s1 * s1};
+      double s[kernel_degree + 2] = {1.0};
+      for(int k = 1; k < kernel_degree + 2; ++k)
+        s[k] = s[k - 1] * s1;
       const double qn = qx * nx + qy * ny + qz * nz;
       Moments& m = m_buckets[j];
       ++m.count;
       m.QQ[0] += qx * qx; m.QQ[1] += qx * qy; m.QQ[2] += qx * qz;
       m.QQ[3] += qy * qy; m.QQ[4] += qy * qz; m.QQ[5] += qz * qz;
-      for(int k = 0; k < 3; ++k)
+      for(int k = 0; k <= kernel_degree; ++k)
       {
         m.P[k] += s[k];
         m.Q[0][k] += s[k] * qx; m.Q[1][k] += s[k] * qy; m.Q[2][k] += s[k] * qz;
         m.N[0][k] += s[k] * nx; m.N[1][k] += s[k] * ny; m.N[2][k] += s[k] * nz;
         m.QN[k] += s[k] * qn;
       }
-      m.P[3] += s[3];
+      m.P[kernel_degree + 1] += s[kernel_degree + 1];
     }
 
     Moments prefix;
@@ -336,50 +352,65 @@ public:
   }
 
 private:
-  // sum over a set of neighbours of sigma^j times 1, q, n, q.n; and of q q^T
+  // sum over a set of neighbours of sigma^j times 1 (j <= kernel_degree + 1, for E), q, n,
+  // q.n (j <= kernel_degree); and of q q^T
   struct Moments
   {
     std::size_t count = 0;
-    double QQ[6] = {0, 0, 0, 0, 0, 0};
-    double P[4] = {0, 0, 0, 0};
-    double Q[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-    double N[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-    double QN[3] = {0, 0, 0};
+    double QQ[6] = {};
+    double P[kernel_degree + 2] = {};
+    double Q[3][kernel_degree + 1] = {};
+    double N[3][kernel_degree + 1] = {};
+    double QN[kernel_degree + 1] = {};
 
     Moments& operator+=(const Moments& o)
     {
       count += o.count;
       for(int k = 0; k < 6; ++k)
         QQ[k] += o.QQ[k];
-      for(int k = 0; k < 4; ++k)
+      for(int k = 0; k < kernel_degree + 2; ++k)
         P[k] += o.P[k];
-      for(int a = 0; a < 3; ++a)
-        for(int k = 0; k < 3; ++k)
+      for(int k = 0; k <= kernel_degree; ++k)
+      {
+        for(int a = 0; a < 3; ++a)
         {
           Q[a][k] += o.Q[a][k];
           N[a][k] += o.N[a][k];
         }
-      for(int k = 0; k < 3; ++k)
         QN[k] += o.QN[k];
+      }
       return *this;
     }
   };
 
   // Sums of Equations 2-4 at the radius R / lambda for the weight sum_j c_j s^j with
   // s = lambda^2 sigma, in the frame of that radius (q_k = lambda q).
-  static void combine(const Moments& m, double lambda, const double c[3], double& A, double B[3],
-                      double C[3], double& D, double& E)
+  static void combine(const Moments& m, double lambda, const double c[kernel_degree + 1], double& A,
+                      double B[3], double C[3], double& D, double& E)
   {
     const double l2 = lambda * lambda;
-    const double w[3] = {c[0], c[1] * l2, c[2] * l2 * l2};
-    A = w[0] * m.P[0] + w[1] * m.P[1] + w[2] * m.P[2];
-    E = l2 * (w[0] * m.P[1] + w[1] * m.P[2] + w[2] * m.P[3]);
+    double w[kernel_degree + 1];
+    double power = 1;  // l2^j
+    for(int j = 0; j <= kernel_degree; ++j, power *= l2)
+      w[j] = c[j] * power;
+    A = E = D = 0;
     for(int a = 0; a < 3; ++a)
+      B[a] = C[a] = 0;
+    for(int j = 0; j <= kernel_degree; ++j)
     {
-      B[a] = lambda * (w[0] * m.Q[a][0] + w[1] * m.Q[a][1] + w[2] * m.Q[a][2]);
-      C[a] = w[0] * m.N[a][0] + w[1] * m.N[a][1] + w[2] * m.N[a][2];
+      A += w[j] * m.P[j];
+      E += w[j] * m.P[j + 1];
+      for(int a = 0; a < 3; ++a)
+      {
+        B[a] += w[j] * m.Q[a][j];
+        C[a] += w[j] * m.N[a][j];
+      }
+      D += w[j] * m.QN[j];
     }
-    D = lambda * (w[0] * m.QN[0] + w[1] * m.QN[1] + w[2] * m.QN[2]);
+    E *= l2;
+    for(int a = 0; a < 3; ++a)
+      B[a] *= lambda;
+    D *= lambda;
   }
 
   std::vector<double> m_radii;
