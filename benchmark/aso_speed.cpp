@@ -9,7 +9,9 @@
 //     positions) and visit every pair within r, adding one coordinate: the floor of any
 //     fixed-radius estimator,
 //   - CGAL Kd_tree + Fuzzy_sphere visiting the same pairs (why the package uses a grid),
-//   - APSS and ASO, sequential and parallel.
+//   - APSS and ASO, sequential and parallel,
+//   - ASO with neighbourhoods by count (neighbor_count = the mean number of neighbours of
+//     the radius runs, rounded), sequential and parallel: the cost of a per-point radius.
 // Prints a Markdown table with seconds, ns per (point, neighbour) pair and ratios to the
 // bare traversal, the parallel speed-up, and the peak heap used by ASO beyond its input
 // and its result vector.
@@ -196,7 +198,7 @@ int main(int argc, char** argv)
   const auto params = CGAL::parameters::point_map(Point_map()).normal_map(Normal_map());
 
   double t_bare = 1e300, t_kd = 1e300, t_apss_s = 1e300, t_apss_p = 1e300, t_aso_s = 1e300,
-         t_aso_p = 1e300;
+         t_aso_p = 1e300, t_knn_s = 1e300, t_knn_p = 1e300;
   std::size_t pairs = 0;
   long long aso_peak_extra = 0;
   double checksum = 0;
@@ -241,6 +243,19 @@ int main(int argc, char** argv)
     t0 = std::chrono::steady_clock::now();
     aso = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, r, params);
     t_aso_p = std::min(t_aso_p, seconds_since(t0));
+    decltype(aso)().swap(aso);
+
+    const std::size_t k = static_cast<std::size_t>(std::lround(double(pairs) / double(n)));
+    const auto by_count = CGAL::Point_set_curvatures::parameters::neighbor_count(k, params);
+    t0 = std::chrono::steady_clock::now();
+    aso = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, by_count);
+    t_knn_s = std::min(t_knn_s, seconds_since(t0));
+    checksum += aso[n / 5].min_curvature;
+    decltype(aso)().swap(aso);
+
+    t0 = std::chrono::steady_clock::now();
+    aso = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, by_count);
+    t_knn_p = std::min(t_knn_p, seconds_since(t0));
   }
 
   const double ns_pair = 1e9 / double(pairs);
@@ -257,8 +272,12 @@ int main(int argc, char** argv)
   row("APSS, Parallel_tag", t_apss_p);
   row("ASO, Sequential_tag", t_aso_s);
   row("ASO, Parallel_tag", t_aso_p);
+  row("ASO by count (neighbor_count), Sequential_tag", t_knn_s);
+  row("ASO by count (neighbor_count), Parallel_tag", t_knn_p);
   std::printf("\nASO parallel speed-up: %.2fx; APSS parallel speed-up: %.2fx\n", t_aso_s / t_aso_p,
               t_apss_s / t_apss_p);
+  std::printf("ASO by count / ASO by radius: %.2f sequential, %.2f parallel\n", t_knn_s / t_aso_s,
+              t_knn_p / t_aso_p);
   std::printf("ASO peak heap beyond input and result: %.1f bytes per point\n",
               double(aso_peak_extra) / double(n));
   std::printf("(checksum %.6g)\n", checksum);

@@ -333,6 +333,38 @@ void read_and_sort(const PointRange& points, PointMap point_map, NormalMap norma
   });
 }
 
+// Fills the buffer's columns with the points `index[0..size)` of `cloud` in the scaled
+// centred frame of point `query` and radius `radius`, and calls visit(input_index, nb).
+template <class Visitor>
+void visit_neighborhood(const Sorted_cloud& cloud, std::uint32_t query, double radius,
+                        const std::uint32_t* index, std::size_t size, Neighbor_buffer& buffer,
+                        Visitor& visit)
+{
+  const double* position = cloud.position.data();
+  const double* normal = cloud.normal.data();
+  const double* x = position + 3 * std::size_t(query);
+  double *qx = buffer.column(0), *qy = buffer.column(1), *qz = buffer.column(2);
+  double *nx = buffer.column(3), *ny = buffer.column(4), *nz = buffer.column(5);
+  const double inv_r = 1.0 / radius;
+  for(std::size_t s = 0; s < size; ++s)
+  {
+    const double* p = position + 3 * std::size_t(index[s]);
+    const double* n = normal + 3 * std::size_t(index[s]);
+    qx[s] = (p[0] - x[0]) * inv_r; qy[s] = (p[1] - x[1]) * inv_r; qz[s] = (p[2] - x[2]) * inv_r;
+    nx[s] = n[0]; ny[s] = n[1]; nz[s] = n[2];
+  }
+  buffer.set_size(size);
+  Neighborhood nb;
+  nb.size = size;
+  nb.qx = qx; nb.qy = qy; nb.qz = qz;
+  nb.nx = nx; nb.ny = ny; nb.nz = nz;
+  nb.radius = radius;
+  nb.center[0] = x[0]; nb.center[1] = x[1]; nb.center[2] = x[2];
+  for(int a = 0; a < 3; ++a)
+    nb.query_normal[a] = normal[3 * std::size_t(query) + a];
+  visit(std::size_t(cloud.input_index[query]), static_cast<const Neighborhood&>(nb));
+}
+
 // Visits the neighbourhood of every point of the cells [first, last): selects the points
 // at distance < r among the candidates of the 27 surrounding cells, copies them into
 // `buffer` (scaled centred frame) and calls visit(input_index, nb).
@@ -340,9 +372,8 @@ template <class Visitor>
 void visit_cells(const Sorted_cloud& cloud, double radius, std::size_t first_cell,
                  std::size_t last_cell, Neighbor_buffer& buffer, Visitor& visit)
 {
-  const double r2 = radius * radius, inv_r = 1.0 / radius;
+  const double r2 = radius * radius;
   const double* position = cloud.position.data();
-  const double* normal = cloud.normal.data();
   cloud.grid.for_each_cell(first_cell, last_cell, [&](Index_range cell, const Index_range* rows) {
     std::size_t n_candidates = 0;
     for(int r = 0; r < 9; ++r)
@@ -365,28 +396,52 @@ void visit_cells(const Sorted_cloud& cloud, double radius, std::size_t first_cel
           selected[k] = j;
           k += (dx * dx + dy * dy + dz * dz < r2) ? 1 : 0;
         }
-      // 2. gather the k neighbours into the scaled centred frame
-      double *qx = buffer.column(0), *qy = buffer.column(1), *qz = buffer.column(2);
-      double *nx = buffer.column(3), *ny = buffer.column(4), *nz = buffer.column(5);
-      for(std::size_t i = 0; i < k; ++i)
-      {
-        const double* p = position + 3 * selected[i];
-        const double* n = normal + 3 * selected[i];
-        qx[i] = (p[0] - x0) * inv_r; qy[i] = (p[1] - x1) * inv_r; qz[i] = (p[2] - x2) * inv_r;
-        nx[i] = n[0]; ny[i] = n[1]; nz[i] = n[2];
-      }
-      buffer.set_size(k);
-      Neighborhood nb;
-      nb.size = k;
-      nb.qx = qx; nb.qy = qy; nb.qz = qz;
-      nb.nx = nx; nb.ny = ny; nb.nz = nz;
-      nb.radius = radius;
-      nb.center[0] = x0; nb.center[1] = x1; nb.center[2] = x2;
-      for(int a = 0; a < 3; ++a)
-        nb.query_normal[a] = normal[3 * query + a];
-      visit(std::size_t(cloud.input_index[query]), static_cast<const Neighborhood&>(nb));
+      // 2. gather the k neighbours into the scaled centred frame, visit
+      visit_neighborhood(cloud, query, radius, selected, k, buffer, visit);
     }
   });
+}
+
+// The batch loop of the drivers. Runs `process(first_cell, last_cell)` over every cell of
+// cloud.grid, in batches of cells holding about 1% of the points (at least 16384; a single
+// batch without a callback); with Parallel_tag, a batch is split between TBB's threads, so
+// `process` is called concurrently on disjoint ranges. After each batch, `finish(first_point,
+// last_point)` is called from the calling thread with the batch's points (grid order), the
+// points are marked VALID and `callback` gets the fraction done; false cancels, leaving the
+// points not reached NOT_COMPUTED.
+template <class ConcurrencyTag, class Process, class Finish>
+void for_each_cell_batch(const Sorted_cloud& cloud, const std::function<bool(double)>& callback,
+                         std::vector<Curvature_estimate_status>& status, Process process,
+                         Finish finish)
+{
+  const std::size_t n_cells = cloud.grid.number_of_cells();
+  const std::size_t n_points = cloud.grid.number_of_points();
+  const std::size_t batch_points = callback ? std::max<std::size_t>(16384, n_points / 100) : n_points + 1;
+  std::size_t done = 0;
+  for(std::size_t first = 0; first < n_cells;)
+  {
+    std::size_t last = first;
+    const std::size_t stop = done + batch_points;
+    std::size_t batch_end = done;
+    while(last < n_cells && batch_end < stop)
+      batch_end = cloud.grid.points_of_cell(last++).end;
+
+#ifdef CGAL_LINKED_WITH_TBB
+    if(is_parallel<ConcurrencyTag>())
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last, 64),
+                        [&](const tbb::blocked_range<std::size_t>& range) { process(range.begin(), range.end()); });
+    else
+#endif
+      process(first, last);
+    finish(static_cast<std::uint32_t>(done), static_cast<std::uint32_t>(batch_end));
+
+    for(std::size_t k = done; k < batch_end; ++k)
+      status[cloud.input_index[k]] = Curvature_estimate_status::VALID;
+    done = batch_end;
+    first = last;
+    if(callback && !callback(double(done) / double(n_points)))
+      break;
+  }
 }
 
 // Options of for_each_neighborhood().
@@ -418,49 +473,22 @@ for_each_neighborhood(const PointRange& points, PointMap point_map, NormalMap no
   Sorted_cloud cloud;
   read_and_sort<ConcurrencyTag>(points, point_map, normal_map, radius, options.normalize_normals,
                                 status, cloud);
-  const std::size_t n_cells = cloud.grid.number_of_cells();
-  const std::size_t n_points = cloud.grid.number_of_points();
-
-  // Batches of cells between two progress reports: one batch without a callback,
-  // otherwise about 1% of the points (at least 16384) per batch.
-  const std::size_t batch_points =
-    options.callback ? std::max<std::size_t>(16384, n_points / 100) : n_points + 1;
-
 #ifdef CGAL_LINKED_WITH_TBB
   tbb::enumerable_thread_specific<Neighbor_buffer> buffers;
 #endif
   Neighbor_buffer sequential_buffer;
-  std::size_t done = 0;
-  for(std::size_t first = 0; first < n_cells;)
-  {
-    std::size_t last = first;
-    const std::size_t stop = done + batch_points;
-    std::size_t batch_end = done;
-    while(last < n_cells && batch_end < stop)
-      batch_end = cloud.grid.points_of_cell(last++).end;
-
+  for_each_cell_batch<ConcurrencyTag>(
+    cloud, options.callback, status,
+    [&](std::size_t first_cell, std::size_t last_cell) {
+      Visitor local = visit;
 #ifdef CGAL_LINKED_WITH_TBB
-    if(is_parallel<ConcurrencyTag>())
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last, 64),
-                        [&](const tbb::blocked_range<std::size_t>& range) {
-                          Visitor local = visit;
-                          visit_cells(cloud, radius, range.begin(), range.end(), buffers.local(), local);
-                        });
-    else
+      Neighbor_buffer& buffer = is_parallel<ConcurrencyTag>() ? buffers.local() : sequential_buffer;
+#else
+      Neighbor_buffer& buffer = sequential_buffer;
 #endif
-      visit_cells(cloud, radius, first, last, sequential_buffer, visit);
-
-    for(std::size_t c = first; c < last; ++c)
-    {
-      const Index_range cell = cloud.grid.points_of_cell(c);
-      for(std::uint32_t k = cell.begin; k < cell.end; ++k)
-        status[cloud.input_index[k]] = Curvature_estimate_status::VALID;
-    }
-    done = batch_end;
-    first = last;
-    if(options.callback && !options.callback(double(done) / double(n_points)))
-      break;  // cancelled: the points not reached keep the NOT_COMPUTED status
-  }
+      visit_cells(cloud, radius, first_cell, last_cell, buffer, local);
+    },
+    [](std::uint32_t, std::uint32_t) {});
   return status;
 }
 

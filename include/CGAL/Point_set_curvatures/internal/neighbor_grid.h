@@ -111,6 +111,8 @@ public:
     m_start.shrink_to_fit();
   }
 
+  // Side of the cells (>= the radius given to set_geometry()).
+  double cell_size() const { return m_cell; }
   std::size_t number_of_cells() const { return m_keys.size(); }
   std::size_t number_of_points() const { return m_start.empty() ? 0 : m_start.back(); }
   Index_range points_of_cell(std::size_t c) const { return {m_start[c], m_start[c + 1]}; }
