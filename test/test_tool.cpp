@@ -366,6 +366,43 @@ TEST_CASE("neighbor_count: ties, k above the number of points, coincident points
   }
 }
 
+TEST_CASE("neighbor_count: at scales down to 1e-158 and up to 1e8, at least k neighbours, d_k from brute force")
+{
+  // At a cell side below about 4e-154, 32 / side² overflows (the grid's histogram selection);
+  // at 1e-158 squared distances are subnormal and (1 + 2^-20)² is lost to rounding.
+  for(double scale : {1e8, 1e-8, 1e-153, 1e-155, 1e-158})
+  {
+    INFO("scale " << scale);
+    std::mt19937_64 rng(1);
+    std::uniform_real_distribution<double> u(0, 1);
+    std::vector<Oriented_point> pts;
+    for(int i = 0; i < 2000; ++i)
+      pts.emplace_back(Point(scale * u(rng), scale * u(rng), 0), Vector(0, 0, 1));
+    const std::size_t k = 12;
+    std::vector<double> radius(pts.size(), -1);
+    std::vector<std::size_t> size(pts.size(), 0);
+    auto visit = [&](std::size_t i, const PSC::internal::Neighborhood& nb) {
+      radius[i] = nb.radius;
+      size[i] = nb.size;
+    };
+    PSC::internal::for_each_neighborhood_knn<CGAL::Parallel_tag>(pts, Point_map(), Normal_map(), k,
+                                                                 PSC::internal::Neighborhood_options(), visit);
+    std::size_t too_small = 0, wrong_radius = 0;
+    for(std::size_t i = 0; i < pts.size(); i += 7)
+    {
+      too_small += size[i] < k;
+      std::vector<double> d2;
+      for(const Oriented_point& p : pts)
+        d2.push_back(CGAL::squared_distance(pts[i].first, p.first));
+      std::nth_element(d2.begin(), d2.begin() + (k - 1), d2.end());
+      const double expected = (1 + 1.0 / 1048576) * std::sqrt(d2[k - 1]);
+      wrong_radius += !(std::abs(radius[i] - expected) <= 4e-16 * expected);
+    }
+    CHECK(too_small == 0);
+    CHECK(wrong_radius == 0);
+  }
+}
+
 TEST_CASE("neighbor_count: density varying 1:10, at least k neighbours everywhere, exact "
           "sphere curvature, Sequential == Parallel, cancellation")
 {

@@ -30,12 +30,13 @@
 // increasing (distance, grid rank): either way the result depends on the input only, never
 // on the concurrency tag.
 //
-// Cost, ASO on 1M ellipsoid points with k = 42 (benchmark/aso_speed): 1.65 times the same
-// run by radius, sequential or parallel. The previous version, CGAL's Kd_tree with
-// Orthogonal_k_neighbor_search for every point, took 3.1 times (7.3 s against 3.1 s now, one
-// run). With a density varying 1:10 and 1:100 over the cloud, where more points go to the
-// tree, the gain is 1.4 and 1.5 times. Per query, the tree costs several times the grid: it
-// sorts its candidates, the grid scans contiguous memory.
+// Cost, ASO on 1M ellipsoid points with k = 42 (benchmark/aso_speed, one run): 1.66 times
+// the same run by radius sequentially, 1.64 times in parallel. The previous version, CGAL's
+// Kd_tree with Orthogonal_k_neighbor_search for every point, took 3.1 times (a scratch
+// program, ASO sequential: 7.3 s against 3.1 s now). With a density varying 1:10 and 1:100
+// over the cloud, where more points go to the tree, the gain is 1.4 and 1.5 times. Per
+// query, the tree costs several times the grid: it sorts its candidates, the grid scans
+// contiguous memory.
 
 #ifndef CGAL_POINT_SET_CURVATURES_INTERNAL_KNN_NEIGHBORHOODS_H
 #define CGAL_POINT_SET_CURVATURES_INTERNAL_KNN_NEIGHBORHOODS_H
@@ -149,13 +150,20 @@ struct Knn_scratch
 
 // The k-th smallest (1-based, k <= c) of the c values d2[i] in [0, s2): a histogram of 32
 // bins over [0, s2) finds the bin holding it, then a selection within that bin only (about
-// 16 times fewer values than a selection over all of them, for points on a surface).
+// 16 times fewer values than a selection over all of them, for points on a surface). At
+// scales where 32 / s2 overflows, a selection over all of them.
 inline double kth_smallest(const double* d2, std::size_t c, std::size_t k, double s2,
                            std::vector<double>& bin_values)
 {
   constexpr int bins = 32;
-  std::size_t count[bins] = {};
   const double scale = bins / s2;
+  if(!(scale <= std::numeric_limits<double>::max()))
+  {
+    bin_values.assign(d2, d2 + c);
+    std::nth_element(bin_values.begin(), bin_values.begin() + (k - 1), bin_values.end());
+    return bin_values[k - 1];
+  }
+  std::size_t count[bins] = {};
   for(std::size_t i = 0; i < c; ++i)
     ++count[std::min(bins - 1, static_cast<int>(d2[i] * scale))];
   int b = 0;
@@ -221,7 +229,9 @@ void visit_cells_knn(const Sorted_cloud& cloud, std::size_t k, std::size_t first
       }
       const double radius = knn_radius_factor * std::sqrt(d2_k);
       const double r2 = radius * radius;
-      if(!(r2 <= s2))  // the ball may reach beyond the 27 cells
+      // beyond the 27 cells, or (subnormal distances) a factor lost to rounding, which the
+      // tree's rule handles: the tree
+      if(!(r2 <= s2) || !(d2_k < r2))
       {
         deferred[query] = 1;
         continue;
@@ -238,50 +248,57 @@ void visit_cells_knn(const Sorted_cloud& cloud, std::size_t k, std::size_t first
 }
 
 // Side of the grid for neighbourhoods by count, from r_i = (1 + 2^-20) d_k at 4096 points
-// spread over the cloud (all of them if fewer), found with the tree. A point i is served by
-// a grid of side s if r_i <= s, at a cost growing with the points of its 27 cells, about
-// (9 k / pi) (s / r_i)^2 on a surface; otherwise by the tree, at a fixed cost. The side
-// minimises the sum of these costs over the samples (measured on this machine: 0.2 us per
-// grid query plus 3 ns per point scanned, 4 us per tree query), so that clouds of varying
-// density (scans) keep their dense parts on the grid and send the sparse ones to the tree.
-// Without any usable sample (copies everywhere), a side of one point per cell on a surface.
+// spread over the cloud (all of them if fewer), found with the tree (d_k = 0: the nearest
+// distance that is not 0, as for the neighbourhoods). The grid may have to use larger cells
+// than asked (grid_cell_size: huge extents, a far outlier), so each candidate side s is costed
+// at its effective cell side c(s): a point i is served by the grid if r_i <= c(s), at a cost
+// growing with the points of its 27 cells, about (9 k / pi) (c(s) / r_i)^2 on a surface;
+// otherwise by the tree, at a fixed cost. The side minimises the sum of these costs over the
+// samples (measured on this machine: 0.2 us per grid query plus 3 ns per point scanned, 4 us
+// per tree query), so that clouds of varying density (scans) keep their dense parts on the
+// grid and send the sparse ones to the tree. Returns 0 if the tree alone is cheaper.
 inline double knn_grid_side(const Point_kd_tree& tree, const double* xyz, std::size_t m, std::size_t k,
                             const double lo[3], const double hi[3])
 {
   const std::size_t samples = std::min<std::size_t>(m, 4096);
+  const std::size_t count = std::min(k + 1, m);
   std::vector<double> r;
   std::vector<Point_kd_tree::Candidate> nearest;
   r.reserve(samples);
   for(std::size_t s = 0; s < samples; ++s)
   {
     const std::size_t i = (2 * s + 1) * m / (2 * samples);
-    tree.nearest(xyz + 3 * i, std::min(k, m), nearest);
-    const double ri = knn_radius_factor * std::sqrt(nearest.back().first);
+    tree.nearest(xyz + 3 * i, count, nearest);
+    double d2 = nearest[std::min(k, m) - 1].first;
+    for(std::size_t j = 0; d2 == 0 && j < nearest.size(); ++j)
+      d2 = nearest[j].first;
+    const double ri = knn_radius_factor * std::sqrt(d2);
     if(ri > 0 && std::isfinite(ri))
       r.push_back(ri);
   }
   std::sort(r.begin(), r.end());
+  std::vector<double> inverse_r2(r.size() + 1, 0.0);  // prefix sums of 1 / r_i^2
+  for(std::size_t i = 0; i < r.size(); ++i)
+    inverse_r2[i + 1] = inverse_r2[i] + 1.0 / (r[i] * r[i]);
+
   const double grid_query = 0.2, per_point = 0.003, tree_query = 4.0;  // microseconds
   const double scanned = 9.0 * double(k) / 3.141592653589793;
-  double best_cost = std::numeric_limits<double>::infinity(), side = 0, sum_inverse_r2 = 0;
+  const double n_samples = double(std::max<std::size_t>(samples, 1));
+  double best_cost = n_samples * tree_query, side = 0;  // the tree alone
   for(std::size_t i = 0; i < r.size(); ++i)
   {
-    sum_inverse_r2 += 1.0 / (r[i] * r[i]);
-    const double s = r[i] * (1.0 + 1e-9);
-    const double cost = double(i + 1) * grid_query + per_point * scanned * s * s * sum_inverse_r2 +
-                        double(r.size() - i - 1) * tree_query;
+    double dims[3];
+    const double cell = grid_cell_size(lo, hi, r[i] * (1.0 + 1e-9), 2, dims);
+    if(!std::isfinite(cell))
+      break;
+    const std::size_t served = std::upper_bound(r.begin(), r.end(), cell) - r.begin();
+    const double cost = double(served) * grid_query + per_point * scanned * cell * cell * inverse_r2[served] +
+                        (n_samples - double(served)) * tree_query;
     if(cost < best_cost)
     {
       best_cost = cost;
-      side = s;
+      side = r[i] * (1.0 + 1e-9);
     }
-  }
-  if(!(side > 0) || !std::isfinite(side))
-  {
-    const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
-    side = extent / std::sqrt(double(m));
-    if(!(side > 0) || !std::isfinite(side))
-      side = 1.0;
   }
   return side;
 }
@@ -311,9 +328,11 @@ for_each_neighborhood_knn(const PointRange& points, PointMap point_map, NormalMa
     return status;
 
   // 1. The usable points (a radius larger than any extent: one cell, input order), the tree
-  //    on them with ids relabelled to input positions, and the grid side.
+  //    on them with ids relabelled to input positions, and the grid side (0: the tree
+  //    serves every point; the grid then only groups the points into batches).
   Point_kd_tree tree;
   double side = 1.0;
+  bool use_grid = true;
   {
     Sorted_cloud input;
     read_and_sort<ConcurrencyTag>(points, point_map, normal_map, std::numeric_limits<double>::max(),
@@ -331,6 +350,12 @@ for_each_neighborhood_knn(const PointRange& points, PointMap point_map, NormalMa
         hi[a] = std::max(hi[a], input.position[3 * i + a]);
       }
     side = knn_grid_side(tree, input.position.data(), m, k, lo, hi);
+    if(side == 0)
+    {
+      use_grid = false;
+      const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+      side = extent > 0 && std::isfinite(extent) ? extent / std::sqrt(double(m)) : 1.0;
+    }
     tree.relabel(input.input_index);
   }
 
@@ -379,6 +404,15 @@ for_each_neighborhood_knn(const PointRange& points, PointMap point_map, NormalMa
   for_each_cell_batch<ConcurrencyTag>(
     cloud, options.callback, status,
     [&](std::size_t first_cell, std::size_t last_cell) {
+      if(!use_grid)
+      {
+        for(std::size_t c = first_cell; c < last_cell; ++c)
+        {
+          const Index_range cell = cloud.grid.points_of_cell(c);
+          std::fill(deferred.begin() + cell.begin, deferred.begin() + cell.end, char(1));
+        }
+        return;
+      }
       Visitor local = visit;
       visit_cells_knn(cloud, k, first_cell, last_cell, scratch(), deferred, local);
     },

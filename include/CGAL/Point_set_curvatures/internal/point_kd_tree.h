@@ -182,7 +182,8 @@ private:
     return d2;
   }
 
-  // The same expression as Knn_search::squared_distance, so that both agree to the bit.
+  // The same expression as the grid's scan (visit_cells_knn in knn_neighborhoods.h): both
+  // paths see the same distances, to the bit.
   double squared_distance(std::uint32_t t, const double p[3]) const
   {
     const double dx = m_xyz[3 * std::size_t(t)] - p[0];
