@@ -180,23 +180,6 @@ double goursat_distance(const Point& p)
   return F / std::sqrt(g2);
 }
 
-std::string invalid_argument_message(const std::function<void()>& f)
-{
-  try
-  {
-    f();
-  }
-  catch(const std::invalid_argument& e)
-  {
-    return e.what();
-  }
-  catch(...)
-  {
-    return "<an exception other than std::invalid_argument>";
-  }
-  return "<no exception>";
-}
-
 } // namespace
 
 using Catch::Matchers::Contains;
@@ -397,14 +380,15 @@ void integrate_over_ball(const Height_field& s, double R, F f)
   }
 }
 
-// The sums of Equations 2-4 of the continuum (constant kernel), in the scaled frame of radius r,
-// each g_j weighted by omega(s) (s = |q|²): omega = 1 gives the sums, omega = r dw/dr their
-// scale derivative as the package estimates it.
+// The sums of Equations 2-4 of the continuum over the ball of radius r, in the frame
+// q = p / frame (frame = r: the scaled frame; frame = 1: input units), each g_j weighted by
+// omega(s) (s = |q|²): omega = 1 gives the constant-kernel sums, omega = r dw/dr their scale
+// derivative as the package estimates it.
 template <class Sums, class Omega>
-void continuum_sums(const Height_field& s, double r, Omega omega, Sums& out)
+void continuum_sums(const Height_field& s, double r, double frame, Omega omega, Sums& out)
 {
   integrate_over_ball(s, r, [&](const double* p, const double* n, double dA) {
-    const double q[3] = {p[0] / r, p[1] / r, p[2] / r};
+    const double q[3] = {p[0] / frame, p[1] / frame, p[2] / frame};
     const double ss = q[0] * q[0] + q[1] * q[1] + q[2] * q[2], w = omega(ss) * dA;
     out.A += w;
     for(int k = 0; k < 3; ++k)
@@ -427,34 +411,21 @@ TEST_CASE("Constant kernel: the scale derivatives are those of the continuum sum
   // package's estimate: the same sums with the weight r dw/dr = 2 phi(s) of
   // Kernel_polynomial<Constant_kernel>. Both go through the package's sphere_features.
   namespace PSCI = PSC::internal;
-  typedef PSCI::Kernel_polynomial<PSCI::Constant_kernel> Poly;
   const Height_field& s = varying_paraboloid;
   for(double r : {0.1, 0.05})
   {
     PSCI::Algebraic_sphere_sums<PSCI::Constant_kernel> sums;
-    continuum_sums(s, r, [](double) { return 1.0; }, sums);
+    const auto one = [](double) { return 1.0; };
+    continuum_sums(s, r, r, one, sums);
     sums.count = 1000;  // any count above the minimum
     std::fill(sums.qq, sums.qq + 6, 0.0);
     sums.qq[0] = sums.qq[3] = 1;  // spread in two tangent directions (tested elsewhere)
     PSCI::Sphere_sums estimated, truth;
-    continuum_sums(s, r, [](double ss) { return Poly::r_dw_dr(ss); }, estimated);
+    continuum_sums(s, r, r, [](double ss) { return PSCI::r_dw_dr<PSCI::Constant_kernel>(ss); }, estimated);
     const double h = 1e-4;
-    // the sums in input units (weight 1) at radius R
-    auto input_sums = [&](double R) {
-      PSCI::Sphere_sums o;
-      integrate_over_ball(s, R, [&](const double* p, const double* n, double dA) {
-        o.A += dA;
-        for(int k = 0; k < 3; ++k)
-        {
-          o.B[k] += dA * p[k];
-          o.C[k] += dA * n[k];
-        }
-        o.D += dA * (p[0] * n[0] + p[1] * n[1] + p[2] * n[2]);
-        o.E += dA * (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
-      });
-      return o;
-    };
-    const PSCI::Sphere_sums plus = input_sums(r * (1 + h)), minus = input_sums(r * (1 - h));
+    PSCI::Sphere_sums plus, minus;  // input units
+    continuum_sums(s, r * (1 + h), 1.0, one, plus);
+    continuum_sums(s, r * (1 - h), 1.0, one, minus);
     truth.A = (plus.A - minus.A) / (2 * h);
     for(int k = 0; k < 3; ++k)
     {

@@ -117,7 +117,6 @@ struct Kernel_polynomial<Smooth_kernel>
   // w = (1 - s)^2 = 1 - 2 s + s^2;  r dw/dr = -2 s dw/ds = 4 s (1 - s)
   static constexpr double weight[kernel_degree + 1] = {1.0, -2.0, 1.0, 0.0};
   static constexpr double scale_derivative[kernel_degree + 1] = {0.0, 4.0, -4.0, 0.0};
-  static double r_dw_dr(double s) { return 4.0 * s * (1.0 - s); }
 };
 
 template <>
@@ -127,8 +126,18 @@ struct Kernel_polynomial<Constant_kernel>
   // = 24 - 264 s + 600 s^2 - 360 s^3 (see the header comment)
   static constexpr double weight[kernel_degree + 1] = {1.0, 0.0, 0.0, 0.0};
   static constexpr double scale_derivative[kernel_degree + 1] = {24.0, -264.0, 600.0, -360.0};
-  static double r_dw_dr(double s) { return 24.0 + s * (-264.0 + s * (600.0 - 360.0 * s)); }
 };
+
+// r dw/dr of the kernel at s (Horner).
+template <class WeightKernel>
+double r_dw_dr(double s)
+{
+  const double* c = Kernel_polynomial<WeightKernel>::scale_derivative;
+  double value = c[kernel_degree];
+  for(int j = kernel_degree - 1; j >= 0; --j)
+    value = c[j] + s * value;
+  return value;
+}
 
 // The five sums of Equations 2-4 without the weight type (for their scale derivatives).
 struct Sphere_sums
@@ -147,7 +156,7 @@ Sphere_sums scale_derivative_sums(const Neighborhood& nb)
     const double qx = nb.qx[i], qy = nb.qy[i], qz = nb.qz[i];
     const double nx = nb.nx[i], ny = nb.ny[i], nz = nb.nz[i];
     const double s = qx * qx + qy * qy + qz * qz;
-    const double w = Kernel_polynomial<WeightKernel>::r_dw_dr(s);
+    const double w = r_dw_dr<WeightKernel>(s);
     a += w;
     b0 += w * qx; b1 += w * qy; b2 += w * qz;
     c0 += w * nx; c1 += w * ny; c2 += w * nz;

@@ -190,6 +190,7 @@ struct Sorted_cloud
   std::vector<std::uint32_t> input_index;  // grid order -> position in the input range
   std::vector<double> position;            // xyz per point, grid order
   std::vector<double> normal;              // normal per point (unit if asked), grid order
+  double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};  // bounding box of the usable points
 };
 
 // Runs f(first, last) over [0, n): in one piece, or in chunks on TBB's threads.
@@ -281,6 +282,8 @@ void read_and_sort(const PointRange& points, PointMap point_map, NormalMap norma
   });
   if(n_usable == 0)
     return;
+  std::copy(lo, lo + 3, cloud.lo);
+  std::copy(hi, hi + 3, cloud.hi);
 
   // Pass 2: cell keys, sorted; unusable points get the largest key and are dropped.
   cloud.grid.set_geometry(lo, hi, radius);

@@ -61,48 +61,19 @@ namespace CGAL {
 namespace Point_set_curvatures {
 namespace internal {
 
-// The usable points of a Sorted_cloud (in its order) with the searches the neighbourhoods
-// by count need, on a Point_kd_tree whose ids are the positions in that order.
-class Knn_search
-{
-public:
-  typedef Point_kd_tree::Candidate Candidate;  // (squared distance, index in cloud order)
-
-  // `xyz` (the cloud's positions) and `tree` must outlive the search.
-  Knn_search(const double* xyz, const Point_kd_tree& tree) : m_xyz(xyz), m_tree(&tree) {}
-
-  std::size_t size() const { return m_tree->size(); }
-  const double* point(std::uint32_t i) const { return m_xyz + 3 * std::size_t(i); }
-
-  // The `count` nearest points of point i (itself included), by increasing (d2, index).
-  void nearest(std::uint32_t i, std::size_t count, std::vector<Candidate>& out) const
-  {
-    m_tree->nearest(point(i), count, out);
-  }
-
-  // The points at squared distance < r2 from point i, by increasing (d2, index).
-  void ball(std::uint32_t i, double r2, std::vector<Candidate>& out) const
-  {
-    m_tree->ball(point(i), r2, out);
-  }
-
-private:
-  const double* m_xyz;
-  const Point_kd_tree* m_tree;
-};
-
 // Relative enlargement of d_k (see the header comment): large enough to absorb rounding
 // in the distances of equidistant points, small enough to leave the fit unchanged.
 constexpr double knn_radius_factor = 1.0 + 1.0 / 1048576.0;
 
-// The radius of point i and its neighbourhood (points at distance < radius) in
-// `neighbors`, following the semantics of the header comment.
-inline double knn_neighborhood(const Knn_search& search, std::uint32_t i, std::size_t k,
-                               std::vector<Knn_search::Candidate>& neighbors)
+// The radius of the tree's point at position x and its neighbourhood (points at distance
+// < radius, by increasing (d2, id)) in `neighbors`, following the semantics of the header
+// comment.
+inline double knn_neighborhood(const Point_kd_tree& tree, const double* x, std::size_t k,
+                               std::vector<Point_kd_tree::Candidate>& neighbors)
 {
-  const std::size_t n = search.size();
+  const std::size_t n = tree.size();
   std::size_t count = k < n ? k + 1 : n;
-  search.nearest(i, count, neighbors);
+  tree.nearest(x, count, neighbors);
   if(n <= k)
   {
     // every point: the radius reaches just beyond the farthest one
@@ -117,10 +88,10 @@ inline double knn_neighborhood(const Knn_search& search, std::uint32_t i, std::s
     while(neighbors.back().first == 0 && count < n)
     {
       count = std::min(2 * count, n);
-      search.nearest(i, count, neighbors);
+      tree.nearest(x, count, neighbors);
     }
     const auto elsewhere = std::find_if(neighbors.begin(), neighbors.end(),
-                                        [](const Knn_search::Candidate& c) { return c.first > 0; });
+                                        [](const Point_kd_tree::Candidate& c) { return c.first > 0; });
     if(elsewhere == neighbors.end())
       return 1.0;  // every usable point is at x
     d2_k = elsewhere->first;
@@ -135,7 +106,7 @@ inline double knn_neighborhood(const Knn_search& search, std::uint32_t i, std::s
       neighbors.resize(k);  // d2 <= d2_k < r2 for the k nearest, nobody else
   }
   if(ties_beyond)
-    search.ball(i, r2, neighbors);
+    tree.ball(x, r2, neighbors);
   return radius;
 }
 
@@ -144,7 +115,7 @@ struct Knn_scratch
 {
   Neighbor_buffer buffer;
   std::vector<double> d2, selection;
-  std::vector<Knn_search::Candidate> neighbors;
+  std::vector<Point_kd_tree::Candidate> neighbors;
   std::vector<std::uint32_t> index;
 };
 
@@ -341,14 +312,8 @@ for_each_neighborhood_knn(const PointRange& points, PointMap point_map, NormalMa
     if(m == 0)
       return status;
     tree.build<ConcurrencyTag>(input.position.data(), m);
-    const double inf = std::numeric_limits<double>::infinity();
-    double lo[3] = {inf, inf, inf}, hi[3] = {-inf, -inf, -inf};
-    for(std::size_t i = 0; i < m; ++i)
-      for(int a = 0; a < 3; ++a)
-      {
-        lo[a] = std::min(lo[a], input.position[3 * i + a]);
-        hi[a] = std::max(hi[a], input.position[3 * i + a]);
-      }
+    // the bounding box read_and_sort() will grid again, so that the cost model sees its cells
+    const double *lo = input.lo, *hi = input.hi;
     side = knn_grid_side(tree, input.position.data(), m, k, lo, hi);
     if(side == 0)
     {
@@ -370,7 +335,6 @@ for_each_neighborhood_knn(const PointRange& points, PointMap point_map, NormalMa
       grid_position[cloud.input_index[g]] = static_cast<std::uint32_t>(g);
     tree.relabel(grid_position);
   }
-  const Knn_search search(cloud.position.data(), tree);
 
   // 3. Batches of cells: the grid part, then the tree for the points it deferred.
   std::vector<char> deferred(m, 0);
@@ -392,7 +356,7 @@ for_each_neighborhood_knn(const PointRange& points, PointMap point_map, NormalMa
     for(std::size_t d = first; d < last; ++d)
     {
       const std::uint32_t query = batch_deferred[d];
-      const double radius = knn_neighborhood(search, query, k, s.neighbors);
+      const double radius = knn_neighborhood(tree, &cloud.position[3 * std::size_t(query)], k, s.neighbors);
       s.index.resize(s.neighbors.size());
       for(std::size_t j = 0; j < s.neighbors.size(); ++j)
         s.index[j] = s.neighbors[j].second;
