@@ -18,6 +18,7 @@
 //
 // usage: aso_speed [number_of_points=1000000] [repetitions=3] [--no-kdtree]
 
+#include "bench_support.h"
 #include "memory_counter.h"
 
 #include <CGAL/Simple_cartesian.h>
@@ -35,53 +36,14 @@
 #include <cstdio>
 #include <cstring>
 #include <functional>
-#include <random>
 #include <string>
 #include <vector>
 
-typedef CGAL::Simple_cartesian<double> Kernel;
-typedef Kernel::Point_3 Point;
-typedef Kernel::Vector_3 Vector;
-typedef std::pair<Point, Vector> Oriented_point;
-typedef CGAL::First_of_pair_property_map<Oriented_point> Point_map;
-typedef CGAL::Second_of_pair_property_map<Oriented_point> Normal_map;
+using namespace psc_test;
+using psc_bench::ellipsoid_area;
+using psc_bench::seconds_since;
 
 namespace PSCi = CGAL::Point_set_curvatures::internal;
-
-// Ellipsoid x^2/a^2 + y^2/b^2 + z^2/c^2 = 1 sampled by normalising Gaussian vectors (not
-// uniform in area, which is fine for timing), outward normals.
-std::vector<Oriented_point> ellipsoid(std::size_t n, double a, double b, double c, unsigned seed)
-{
-  std::mt19937_64 rng(seed);
-  std::normal_distribution<double> g(0, 1);
-  std::vector<Oriented_point> pts;
-  pts.reserve(n);
-  while(pts.size() < n)
-  {
-    double u[3] = {g(rng), g(rng), g(rng)};
-    const double l = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-    if(l < 1e-12)
-      continue;
-    const Point p(a * u[0] / l, b * u[1] / l, c * u[2] / l);
-    Vector nrm(p.x() / (a * a), p.y() / (b * b), p.z() / (c * c));
-    nrm = nrm / std::sqrt(nrm.squared_length());
-    pts.emplace_back(p, nrm);
-  }
-  return pts;
-}
-
-// Surface area of the ellipsoid (Knud Thomsen's formula, 1% accurate).
-double ellipsoid_area(double a, double b, double c)
-{
-  const double p = 1.6075;
-  return 4 * M_PI *
-         std::pow((std::pow(a * b, p) + std::pow(a * c, p) + std::pow(b * c, p)) / 3, 1 / p);
-}
-
-double seconds_since(std::chrono::steady_clock::time_point t0)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 // Bare traversal: sorted grid built as the estimators build it, then every pair within r.
 // Returns the sum of the x coordinates of all neighbours (so nothing is optimised away)

@@ -21,6 +21,8 @@
 //                          [--goursat-radius R=0.67] [--goursat FILE] [--repetitions K=1]
 //                          [--skip-ellipsoid] [--skip-goursat]
 
+#include "bench_support.h"
+
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/estimate_apss_curvatures.h>
 #include <CGAL/estimate_aso_curvatures.h>
@@ -36,77 +38,18 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <functional>
 #include <limits>
-#include <random>
-#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
-#ifndef PSC_SHARED_DATA_DIR
-#define PSC_SHARED_DATA_DIR "../shared/data"
-#endif
-
-typedef CGAL::Simple_cartesian<double> Kernel;
-typedef Kernel::Point_3 Point;
-typedef Kernel::Vector_3 Vector;
-typedef std::pair<Point, Vector> Oriented_point;
-typedef CGAL::First_of_pair_property_map<Oriented_point> Point_map;
-typedef CGAL::Second_of_pair_property_map<Oriented_point> Normal_map;
+using namespace psc_test;
+using psc_bench::ellipsoid_area;
+using psc_bench::seconds_since;
 typedef std::vector<CGAL::Curvature_estimate<Kernel> > Estimates;
 
 namespace {
-
-// Ellipsoid sampled by normalising Gaussian vectors (random order), outward normals.
-std::vector<Oriented_point> ellipsoid(std::size_t n, double a, double b, double c, unsigned seed)
-{
-  std::mt19937_64 rng(seed);
-  std::normal_distribution<double> g(0, 1);
-  std::vector<Oriented_point> pts;
-  pts.reserve(n);
-  while(pts.size() < n)
-  {
-    const double u[3] = {g(rng), g(rng), g(rng)};
-    const double l = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-    if(l < 1e-12)
-      continue;
-    const Point p(a * u[0] / l, b * u[1] / l, c * u[2] / l);
-    const Vector nrm(p.x() / (a * a), p.y() / (b * b), p.z() / (c * c));
-    pts.emplace_back(p, nrm / std::sqrt(nrm.squared_length()));
-  }
-  return pts;
-}
-
-// Surface area of the ellipsoid (Knud Thomsen's formula, 1% accurate).
-double ellipsoid_area(double a, double b, double c)
-{
-  const double p = 1.6075;
-  return 4 * M_PI * std::pow((std::pow(a * b, p) + std::pow(a * c, p) + std::pow(b * c, p)) / 3, 1 / p);
-}
-
-std::vector<Oriented_point> read_xyz(const std::string& file)
-{
-  std::ifstream in(file);
-  std::vector<Oriented_point> pts;
-  std::string line;
-  while(std::getline(in, line))
-  {
-    if(line.empty() || line[0] == '#')
-      continue;
-    std::istringstream s(line);
-    double v[6];
-    if(s >> v[0] >> v[1] >> v[2] >> v[3] >> v[4] >> v[5])
-      pts.emplace_back(Point(v[0], v[1], v[2]), Vector(v[3], v[4], v[5]));
-  }
-  return pts;
-}
-
-double seconds_since(std::chrono::steady_clock::time_point t0)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 struct Estimator
 {
@@ -286,7 +229,14 @@ int main(int argc, char** argv)
   }
   if(do_goursat)
   {
-    const std::vector<Oriented_point> pts = read_xyz(goursat);
+    std::vector<Oriented_point> pts;
+    try
+    {
+      pts = read_xyz(goursat);
+    }
+    catch(const std::runtime_error&)
+    {
+    }
     if(pts.empty())
     {
       std::fprintf(stderr, "cannot read %s\n", goursat.c_str());

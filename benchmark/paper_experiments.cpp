@@ -31,7 +31,7 @@
 
 #include "goursat_sampler.h"
 #include "render_points.h"
-#include "../test/test_support.h"
+#include "bench_support.h"
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/estimate_apss_curvatures.h>
@@ -96,10 +96,7 @@ typedef CGAL::Curvature_estimate<Kernel> Estimate;
 
 const double nan_value = std::numeric_limits<double>::quiet_NaN();
 
-double seconds_since(std::chrono::steady_clock::time_point t0)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
+using psc_bench::seconds_since;
 
 std::string format(double v, int digits = 3)
 {

@@ -112,11 +112,10 @@ Estimates run(Method m, const std::vector<Oriented_point>& pts, double r)
   return run<Tag>(m, pts, r, maps());
 }
 
-// Every function through its (points, np) overload, neighbourhoods by count.
-template <class Tag>
-Estimates run_by_count(Method m, const std::vector<Oriented_point>& pts, std::size_t k)
+// Every function through its (points, np) overload (neighbourhoods by count).
+template <class Tag, class NP>
+Estimates run_without_radius(Method m, const std::vector<Oriented_point>& pts, const NP& np)
 {
-  const auto np = PSC::parameters::neighbor_count(k, maps());
   switch(m)
   {
     case Method::ASO: return CGAL::estimate_aso_curvatures<Tag>(pts, np);
@@ -128,6 +127,12 @@ Estimates run_by_count(Method m, const std::vector<Oriented_point>& pts, std::si
     case Method::VCM: break;
   }
   return CGAL::estimate_vcm_curvatures<Tag>(pts, np);
+}
+
+template <class Tag>
+Estimates run_by_count(Method m, const std::vector<Oriented_point>& pts, std::size_t k)
+{
+  return run_without_radius<Tag>(m, pts, PSC::parameters::neighbor_count(k, maps()));
 }
 
 // Every function through its (points, point_map, normal_map, radius) overload.
@@ -964,34 +969,8 @@ TEST_CASE("Invalid radius, scale or options throw std::invalid_argument naming t
     // by count without neighbor_count, or with both a radius and neighbor_count
     const auto np = maps();
     const auto both = PSC::parameters::neighbor_count(10, maps());
-    switch(m)
-    {
-      case Method::BARYCENTER:
-        CHECK_THROWS_AS(CGAL::estimate_barycenter_curvatures<CGAL::Sequential_tag>(pts, np), std::invalid_argument);
-        CHECK_THROWS_AS(CGAL::estimate_barycenter_curvatures<CGAL::Sequential_tag>(pts, 0.2, both), std::invalid_argument);
-        break;
-      case Method::PCA_PLANE:
-        CHECK_THROWS_AS(CGAL::estimate_pca_plane_curvatures<CGAL::Sequential_tag>(pts, np), std::invalid_argument);
-        CHECK_THROWS_AS(CGAL::estimate_pca_plane_curvatures<CGAL::Sequential_tag>(pts, 0.2, both), std::invalid_argument);
-        break;
-      case Method::PSS:
-        CHECK_THROWS_AS(CGAL::estimate_pss_curvatures<CGAL::Sequential_tag>(pts, np), std::invalid_argument);
-        CHECK_THROWS_AS(CGAL::estimate_pss_curvatures<CGAL::Sequential_tag>(pts, 0.2, both), std::invalid_argument);
-        break;
-      case Method::JET:
-        CHECK_THROWS_AS(CGAL::estimate_jet_curvatures<CGAL::Sequential_tag>(pts, np), std::invalid_argument);
-        CHECK_THROWS_AS(CGAL::estimate_jet_curvatures<CGAL::Sequential_tag>(pts, 0.2, both), std::invalid_argument);
-        break;
-      case Method::WAVEJET:
-        CHECK_THROWS_AS(CGAL::estimate_wavejet_curvatures<CGAL::Sequential_tag>(pts, np), std::invalid_argument);
-        CHECK_THROWS_AS(CGAL::estimate_wavejet_curvatures<CGAL::Sequential_tag>(pts, 0.2, both), std::invalid_argument);
-        break;
-      case Method::VCM:
-        CHECK_THROWS_AS(CGAL::estimate_vcm_curvatures<CGAL::Sequential_tag>(pts, np), std::invalid_argument);
-        CHECK_THROWS_AS(CGAL::estimate_vcm_curvatures<CGAL::Sequential_tag>(pts, 0.2, both), std::invalid_argument);
-        break;
-      default: break;
-    }
+    CHECK_THROWS_AS(run_without_radius<CGAL::Sequential_tag>(m, pts, np), std::invalid_argument);
+    CHECK_THROWS_AS(run<CGAL::Sequential_tag>(m, pts, 0.2, both), std::invalid_argument);
   }
   SECTION("jet degrees")
   {

@@ -86,25 +86,6 @@ std::size_t count_invalid(const std::vector<Estimate>& est)
   return n;
 }
 
-// what() of the std::invalid_argument that f() throws, or a note saying it threw none.
-template <class F>
-std::string invalid_argument_message(F f)
-{
-  try
-  {
-    f();
-  }
-  catch(const std::invalid_argument& e)
-  {
-    return e.what();
-  }
-  catch(...)
-  {
-    return "<an exception other than std::invalid_argument>";
-  }
-  return "<no exception>";
-}
-
 std::string printed(double x)
 {
   std::ostringstream s;

@@ -239,6 +239,25 @@ inline Truth ellipsoid_truth(const Point& p, double a, double b, double c)
   return truth_from_implicit(g, h);
 }
 
+// what() of the std::invalid_argument that f() throws, or a note saying it threw none.
+template <class F>
+inline std::string invalid_argument_message(F f)
+{
+  try
+  {
+    f();
+  }
+  catch(const std::invalid_argument& e)
+  {
+    return e.what();
+  }
+  catch(...)
+  {
+    return "<an exception other than std::invalid_argument>";
+  }
+  return "<no exception>";
+}
+
 } // namespace psc_test
 
 #endif
