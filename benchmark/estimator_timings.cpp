@@ -6,7 +6,7 @@
 // in the same run, printed as Markdown tables, on
 //   1. an ellipsoid with semi-axes 1, 0.7, 0.5 (1M points by default, random order), radius
 //      chosen for about 40 neighbours;
-//   2. the Goursat 50K cloud of ../shared/data (Lloyd-relaxed sampling), every estimator at
+//   2. the Goursat 50K cloud of data/ (Lloyd-relaxed sampling), every estimator at
 //      the same radius (0.67 by default, about 39 neighbours).
 // VCM builds a 3D Delaunay triangulation and one convex polytope per point (CGAL's
 // compute_vcm), sequentially whatever the tag, at a few hundred microseconds per point: on
@@ -182,7 +182,7 @@ int main(int argc, char** argv)
   std::size_t n = 1000000, vcm_points = 100000;
   int repetitions = 1;
   double goursat_radius = 0.67;
-  std::string goursat = std::string(PSC_SHARED_DATA_DIR) + "/goursat_050000.xyz";
+  std::string goursat = std::string(PSC_DATA_DIR) + "/goursat_050000.xyz";
   bool do_ellipsoid = true, do_goursat = true;
   for(int i = 1; i < argc; ++i)
   {

@@ -132,7 +132,7 @@ struct Options
 {
   bool quick = false;
   std::string out = "benchmark/results";
-  std::string data = PSC_SHARED_DATA_DIR;
+  std::string data = PSC_DATA_DIR;
   std::uint64_t seed = 2021;
   std::set<std::string> only;
   double budget_scale = 1;

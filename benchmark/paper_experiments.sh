@@ -46,7 +46,7 @@ built=$(date +%s)
 
 program="$build/benchmark/paper_experiments"
 # Progress goes to stderr; the Markdown tables to stdout and summary.md.
-"$program" $quick --out "$out" --data "$repo/../shared/data" ${extra[@]+"${extra[@]}"}
+"$program" $quick --out "$out" --data "$repo/data" ${extra[@]+"${extra[@]}"}
 
 # Plots: every script is self-contained (data inline) and writes its PNG beside it.
 (

@@ -300,7 +300,7 @@ std::vector<Oriented_point> regular_ellipsoid(std::size_t n, double a, double b,
 
 const std::vector<Oriented_point>& goursat_10k()
 {
-  static const std::vector<Oriented_point> pts = read_xyz(shared_data("goursat_010000.xyz"));
+  static const std::vector<Oriented_point> pts = read_xyz(repo_data("goursat_010000.xyz"));
   return pts;
 }
 
@@ -843,7 +843,7 @@ TEST_CASE("ASO is at least as accurate as CGAL jets and VCM on Goursat (paper se
 // the rounding of CGAL's Voronoi cells, which differs between any two calls.
 TEST_CASE("Sequential and parallel runs give identical results", "[baselines][parallel]")
 {
-  const auto pts = read_xyz(shared_data("goursat-lidar.xyz"));
+  const auto pts = read_xyz(repo_data("goursat-lidar.xyz"));
   const double r = 2.0;
   for(Method m : baselines)
   {

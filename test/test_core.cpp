@@ -64,17 +64,17 @@ std::vector<Estimate> aso_authors(const std::vector<Oriented_point>& pts, double
 // The shared clouds are read once per test program.
 const std::vector<Oriented_point>& goursat_10k()
 {
-  static const std::vector<Oriented_point> c = read_xyz(shared_data("goursat_010000.xyz"));
+  static const std::vector<Oriented_point> c = read_xyz(repo_data("goursat_010000.xyz"));
   return c;
 }
 const std::vector<Oriented_point>& goursat_50k()
 {
-  static const std::vector<Oriented_point> c = read_xyz(shared_data("goursat_050000.xyz"));
+  static const std::vector<Oriented_point> c = read_xyz(repo_data("goursat_050000.xyz"));
   return c;
 }
 const std::vector<Oriented_point>& bunny()
 {
-  static const std::vector<Oriented_point> c = read_ascii_ply_xyz_normals(shared_data("bunny.ply"));
+  static const std::vector<Oriented_point> c = read_ascii_ply_xyz_normals(repo_data("bunny.ply"));
   return c;
 }
 
@@ -347,7 +347,7 @@ TEST_CASE("neighbor_count is the number of input points at distance < r, the que
 
 namespace {
 
-// Compares the estimates with ../shared/data/reference/<file>. The reference was made with
+// Compares the estimates with data/reference/<file>. The reference was made with
 // the authors' implementation (tangent plane orthogonal to u_l, raw input normals), hence
 // Aso_projection::AUTHORS_IMPLEMENTATION. Curvatures: relative error with a floor at 1e-3
 // of the row's max(|k_min|, |k_max|) (its square for K), since a near-zero curvature
@@ -356,7 +356,7 @@ namespace {
 // own rounding to 12 significant digits, up to 5e-12.)
 void check_reference(const std::vector<Oriented_point>& pts, double r, const std::string& file)
 {
-  const auto rows = read_reference(shared_data("reference/" + file));
+  const auto rows = read_reference(repo_data("reference/" + file));
   REQUIRE(rows.size() > 1000);
   const auto est = aso_authors(pts, r);
   REQUIRE(est.size() == pts.size());
@@ -568,14 +568,14 @@ TEST_CASE("ASO and APSS on Goursat 50K at r = 1.0: mean errors of H, k_min, k_ma
   check_goursat(e, {1.9e-3, 1.9e-3, 2.85e-3, 0.027, 3.7e-3, 0.48});
 }
 
-// The repository ships its own copy of the 10K cloud (the same file as ../shared/data's).
+// The 10K cloud read through the path the examples and the tool use.
 TEST_CASE("ASO and APSS on the repository's Goursat 10K copy at r = 1.5: same mean errors", "[aso][apss][goursat]")
 {
   const auto pts = read_xyz(repo_data("goursat_010000.xyz"));
   REQUIRE(pts.size() == 10000);
   const Goursat_errors e = goursat_errors(pts, 1.5);
   print("repository Goursat 10K r=1.5", e);
-  // Measured: the same values as for ../shared/data/goursat_010000.xyz.
+  // Measured: the same values as goursat_10k() (the same file).
   check_goursat(e, {4.6e-3, 4.3e-3, 7.0e-3, 0.078, 5.3e-3, 1.03});
 }
 

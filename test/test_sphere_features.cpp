@@ -1065,7 +1065,7 @@ TEST_CASE("Empty ranges, unusable points, too few neighbours and degenerate fits
 
 TEST_CASE("callback: progress in [0,1], and returning false cancels features and flow", "[callback]")
 {
-  const auto pts = read_xyz(shared_data("goursat_050000.xyz"));
+  const auto pts = read_xyz(repo_data("goursat_050000.xyz"));
   std::vector<double> seen;
   auto record = [&](double x) {
     seen.push_back(x);

@@ -31,7 +31,6 @@ typedef std::pair<Point, Vector> Oriented_point;
 typedef CGAL::First_of_pair_property_map<Oriented_point> Point_map;
 typedef CGAL::Second_of_pair_property_map<Oriented_point> Normal_map;
 
-inline std::string shared_data(const std::string& name) { return std::string(PSC_SHARED_DATA_DIR) + "/" + name; }
 inline std::string repo_data(const std::string& name) { return std::string(PSC_DATA_DIR) + "/" + name; }
 
 // "x y z nx ny nz" per line; lines starting with '#' are comments.
@@ -54,7 +53,7 @@ inline std::vector<Oriented_point> read_xyz(const std::string& file)
   return pts;
 }
 
-// ASCII PLY with vertices "x y z nx ny nz" (the bunny of ../shared/data).
+// ASCII PLY with vertices "x y z nx ny nz" (data/bunny.ply).
 inline std::vector<Oriented_point> read_ascii_ply_xyz_normals(const std::string& file)
 {
   std::ifstream in(file);
@@ -71,7 +70,7 @@ inline std::vector<Oriented_point> read_ascii_ply_xyz_normals(const std::string&
   return pts;
 }
 
-// One row of ../shared/data/reference/*.csv
+// One row of data/reference/*.csv
 struct Reference_row
 {
   std::size_t index, neighbors;

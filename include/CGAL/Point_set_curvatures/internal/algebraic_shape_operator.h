@@ -42,7 +42,7 @@
 // Tangent plane of Equation 27. By default P spans the plane orthogonal to grad f, the
 // corrected normal that is returned, and W = P^T Hess f P / |grad f| is the shape operator
 // of the level set of f through x: principal directions are exactly tangent. The authors'
-// implementation (STORM-IRIT/algebraic-shape-operator, used for ../shared/data/reference)
+// implementation (STORM-IRIT/algebraic-shape-operator, used for data/reference)
 // instead projects Hess f / |grad f| - N N^T Hess f on the plane orthogonal to u_l and uses
 // the input normals unnormalised; Aso_projection::AUTHORS_IMPLEMENTATION reproduces it to
 // about 1e-12. Both give the same curvature accuracy on the Goursat clouds; the default
