@@ -13,6 +13,8 @@
 //   experiment 5:   pictures of the bunny and of the Goursat LiDAR cloud coloured by the
 //                   estimated curvatures (curvatures_*.png), errors on the LiDAR cloud
 //                   (lidar.csv)
+//   experiment 6:   error against the neighbour count, which sets each estimator's least
+//                   neighbour count of a valid estimate (neighbors.csv, .png)
 //   summary.md:     every table, in Markdown.
 //
 // Plots are gnuplot scripts (*.gp, data inline) that the shell script runs.
@@ -27,7 +29,8 @@
 //
 // usage: paper_experiments [--quick] [--out DIR] [--data DIR] [--seed S]
 //                          [--only LIST] [--budget-scale X]
-//   LIST: comma-separated among sampler,convergence,noise_position,noise_normals,timings,pictures
+//   LIST: comma-separated among sampler,convergence,noise_position,noise_normals,timings,pictures,
+//         neighbors
 
 #include "goursat_sampler.h"
 #include "render_points.h"
@@ -186,6 +189,8 @@ struct Estimator
   // directions are then compared with the true ones sorted by magnitude.
   bool unsigned_curvatures;
   std::function<std::vector<Estimate>(const Cloud&, double, bool)> run;
+  // by count (parallel), with the validity threshold given (min_neighbors)
+  std::function<std::vector<Estimate>(const Cloud&, std::size_t, std::size_t)> run_by_count;
 };
 
 #define PSC_ESTIMATOR(NAME, FUNCTION, UNSIGNED)                                              \
@@ -194,6 +199,13 @@ struct Estimator
                                CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()); \
                              return parallel ? CGAL::FUNCTION<CGAL::Parallel_tag>(c, r, np)    \
                                              : CGAL::FUNCTION<CGAL::Sequential_tag>(c, r, np); \
+                           },                                                                 \
+                           [](const Cloud& c, std::size_t k, std::size_t minimum) {           \
+                             namespace P = CGAL::Point_set_curvatures::parameters;            \
+                             return CGAL::FUNCTION<CGAL::Parallel_tag>(                       \
+                               c, P::neighbor_count(k, P::min_neighbors(                      \
+                                    minimum, CGAL::parameters::point_map(Point_map())         \
+                                               .normal_map(Normal_map()))));                  \
                            }})
 
 // In the order of the paper's Table 2.
@@ -874,7 +886,7 @@ double shrinking_radius(double r5, std::size_t n) { return r5 * std::pow(double(
 void plot_errors_vs_x(Context& ctx, const std::string& file, const std::string& title,
                       const std::vector<std::pair<std::string, std::vector<Error_row> > >& rows_per_row,
                       const std::string& xlabel, std::function<double(const Error_row&)> x, bool logx,
-                      const std::vector<std::string>& xtics = {})
+                      const std::vector<std::string>& xtics = {}, const char* first_title = quantity_titles[0])
 {
   std::ofstream gp(ctx.path(file + ".gp"));
   const int columns = 5;
@@ -936,7 +948,7 @@ void plot_errors_vs_x(Context& ctx, const std::string& file, const std::string& 
       const double y1 = 1 - (75 + double(row) * 395) / height;
       gp << "set lmargin at screen " << x0 << "\nset rmargin at screen " << x0 + width << "\n";
       gp << "set tmargin at screen " << y1 << "\nset bmargin at screen " << y1 - 300 / height << "\n";
-      gp << "set title " << gp_quote(std::string(quantity_titles[q]) + " — " + rows_per_row[row].first) << "\n";
+      gp << "set title " << gp_quote(std::string(q == 0 ? first_title : quantity_titles[q]) + " — " + rows_per_row[row].first) << "\n";
       gp << "plot ";
       bool first = true;
       for(std::size_t i = 0; i < ctx.estimators.size(); ++i)
@@ -1392,6 +1404,187 @@ void experiment_timings(Context& ctx)
   gp << "unset multiplot\n";
 }
 
+// --- experiment 6: the least neighbour count of a valid estimate ---------------------------
+//
+// Not in the paper. Every estimator by count (neighbor_count(k): exactly k neighbours per
+// point on these random positions) with the validity threshold lowered to 1, so that every
+// estimate the fit can produce is scored. Primary error: mean |H - H*| (| |H| - |H*| | for the
+// unsigned barycenter and PCA-plane estimators; VCM, which gives no H, by its k_max error).
+// The minimum of an estimator is the smallest k from which its primary error stays within
+// `factor` times its error at k = 40 (the recommended neighbourhood) on every cloud; the
+// package's default is that, and never below 6.
+
+struct Count_cloud
+{
+  std::string name;
+  Test_cloud cloud;
+};
+
+Test_cloud scored_everywhere(const Cloud& points, bool project)
+{
+  Test_cloud t;
+  t.points = points;
+  t.sample_size = points.size();
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    double p[3] = {points[i].first.x(), points[i].first.y(), points[i].first.z()};
+    if(project)  // truth at the radial projection (positions of the LiDAR cloud are noisy)
+    {
+      const double v[3] = {p[0], p[1], p[2]};
+      goursat::project_radially(v, p);
+    }
+    t.scored.push_back(std::uint32_t(i));
+    t.truth.push_back(psc_test::goursat_truth(Point(p[0], p[1], p[2])));
+  }
+  return t;
+}
+
+std::size_t minimum_by_rule(const std::vector<std::vector<double> >& errors_per_cloud,
+                            const std::vector<std::size_t>& ks, double factor)
+{
+  std::size_t minimum = ks.back();
+  for(std::size_t i = ks.size(); i-- > 0;)
+  {
+    bool ok = true;
+    for(const std::vector<double>& e : errors_per_cloud)
+      ok = ok && std::isfinite(e[i]) && e[i] <= factor * e.back();
+    if(!ok)
+      break;
+    minimum = ks[i];
+  }
+  return minimum;
+}
+
+void experiment_neighbors(Context& ctx)
+{
+  ctx.report.section("Experiment 6: error against the neighbour count (the minimum of a valid estimate)");
+  const std::vector<std::size_t> ks = ctx.options.quick
+    ? std::vector<std::size_t>{3, 4, 6, 8, 12, 20, 40}
+    : std::vector<std::size_t>{3, 4, 5, 6, 7, 8, 10, 12, 15, 20, 25, 30, 40};
+  std::vector<Count_cloud> clouds;
+  clouds.push_back({"Goursat 10K, blue noise",
+                    scored_everywhere(psc_test::read_xyz(ctx.options.data + "/goursat_010000.xyz"), false)});
+  if(!ctx.options.quick)
+    clouds.push_back({"Goursat 50K, blue noise",
+                      scored_everywhere(psc_test::read_xyz(ctx.options.data + "/goursat_050000.xyz"), false)});
+  {
+    goursat::Random random(ctx.options.seed * 31 + 5);
+    const std::vector<double> xyz = goursat::uniform_random_points(10000, random);
+    Cloud iid;
+    for(std::size_t i = 0; i < 10000; ++i)
+    {
+      double n[3];
+      goursat::unit_normal(&xyz[3 * i], n);
+      iid.emplace_back(Point(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]), Vector(n[0], n[1], n[2]));
+    }
+    clouds.push_back({"Goursat 10K, i.i.d. random", scored_everywhere(iid, false)});
+  }
+  clouds.push_back({"Goursat, simulated LiDAR",
+                    scored_everywhere(psc_test::read_xyz(ctx.options.data + "/goursat-lidar.xyz"), true)});
+  ctx.report.text("Every estimator by count, `neighbor_count(k)` with `min_neighbors(1)` (every estimate the fit "
+                  "can produce is scored), exact normals, Goursat surface. Primary error: mean |H - H*| (mean "
+                  "| |H| - |H*| | for the unsigned barycenter and PCA-plane estimators, mean k_max error for VCM). "
+                  "Clouds: `goursat_010000.xyz` and `goursat_050000.xyz` (the authors' blue-noise samples), 10K "
+                  "area-uniform i.i.d. points of the same surface, `goursat-lidar.xyz` (simulated scan lines, "
+                  "truth at the radial projection). The minimum of an estimator is the smallest k from which "
+                  "its primary error stays within a factor (2 or 3) of its error at k = 40 on every cloud.\n");
+
+  auto primary = [](const Estimator& e, const Test_cloud& t, const std::vector<Estimate>& est) {
+    const bool unsigned_h = e.name == "Barycenter" || e.name == "PCA-plane";
+    double sum = 0;
+    std::size_t count = 0;
+    for(std::size_t s = 0; s < t.scored.size(); ++s)
+    {
+      const Estimate& x = est[t.scored[s]];
+      if(!x.is_valid())
+        continue;
+      double err;
+      if(e.name == "VCM")
+        err = std::abs(std::max(std::abs(x.min_curvature), std::abs(x.max_curvature)) -
+                       std::max(std::abs(t.truth[s].k_min), std::abs(t.truth[s].k_max)));
+      else if(unsigned_h)
+        err = std::abs(std::abs(x.mean_curvature) - std::abs(t.truth[s].mean));
+      else
+        err = std::abs(x.mean_curvature - t.truth[s].mean);
+      if(!std::isfinite(err))
+        continue;
+      sum += err;
+      ++count;
+    }
+    return count ? sum / double(count) : nan_value;
+  };
+
+  Budget budget("neighbors", ctx.budget(200, 8));
+  std::vector<std::pair<std::string, std::vector<Error_row> > > plot_rows;
+  std::vector<Error_row> all_rows;
+  // errors[estimator][cloud][k]
+  std::map<std::string, std::vector<std::vector<double> > > errors;
+  for(const Count_cloud& c : clouds)
+  {
+    std::vector<Error_row> rows;
+    for(const Estimator& e : ctx.estimators)
+    {
+      std::vector<double>& curve = (errors[e.name].emplace_back(), errors[e.name].back());
+      for(std::size_t k : ks)
+      {
+        const double work = Budget::work(double(c.cloud.points.size()), double(k));
+        const std::string setting = c.name + " k=" + std::to_string(k);
+        if(!budget.allow(e.name, work, setting, ctx.skipped))
+        {
+          curve.push_back(nan_value);
+          continue;
+        }
+        const auto t0 = std::chrono::steady_clock::now();
+        const std::vector<Estimate> est = e.run_by_count(c.cloud.points, k, 1);
+        const double seconds = seconds_since(t0);
+        budget.record(e.name, seconds, work);
+        Errors err = score(c.cloud, est, e.unsigned_curvatures);
+        err.H = primary(e, c.cloud, est);
+        curve.push_back(err.H);
+        rows.push_back(Error_row{e.name, c.cloud.sample_size, nan_value, "k=" + std::to_string(k), err, seconds,
+                                 c.cloud.points.size()});
+        all_rows.push_back(rows.back());
+        all_rows.back().condition = c.name + ", k=" + std::to_string(k);
+      }
+      std::cerr << "  " << e.name << " on " << c.name << " done\n";
+    }
+    plot_rows.push_back({c.name, rows});
+  }
+  write_error_csv(ctx.path("neighbors.csv"), all_rows);
+
+  Table t;
+  t.header = {"estimator"};
+  for(const Count_cloud& c : clouds)
+    t.header.push_back(c.name + ": error at k = 3 / 6 / 10 / 20 / 40");
+  t.header.push_back("minimum, factor 2");
+  t.header.push_back("minimum, factor 3");
+  for(const Estimator& e : ctx.estimators)
+  {
+    std::vector<std::string> row = {e.name};
+    for(const std::vector<double>& curve : errors[e.name])
+    {
+      std::string cell;
+      for(std::size_t k : {3, 6, 10, 20, 40})
+      {
+        const auto it = std::find(ks.begin(), ks.end(), k);
+        const double v = it == ks.end() ? nan_value : curve[std::size_t(it - ks.begin())];
+        cell += (cell.empty() ? "" : " / ") + (std::isfinite(v) ? format(v, 2) : std::string("-"));
+      }
+      row.push_back(cell);
+    }
+    row.push_back(std::to_string(minimum_by_rule(errors[e.name], ks, 2)));
+    row.push_back(std::to_string(minimum_by_rule(errors[e.name], ks, 3)));
+    t.rows.push_back(row);
+  }
+  ctx.report.table(t);
+  ctx.report.text(skipped_text(ctx, "neighbors"));
+  plot_errors_vs_x(ctx, "neighbors", "Error against the neighbour count k (by count, exact normals)", plot_rows,
+                   "k (neighbours, query included)",
+                   [](const Error_row& row) { return std::stod(row.condition.substr(2)); }, true,
+                   {"set xrange [2.8:45]", "set xtics (3, 4, 6, 8, 12, 20, 40)"},
+                   "primary error (mean |H - H*|, see text)");
+}
+
 // --- experiment 5 -----------------------------------------------------------------------
 
 double quantile_abs(std::vector<double> v, double q)
@@ -1645,6 +1838,8 @@ int main(int argc, char** argv)
       experiment_timings(ctx);
     if(options.run("pictures"))
       experiment_pictures(ctx);
+    if(options.run("neighbors"))
+      experiment_neighbors(ctx);
 
     ctx.report.section("Goursat samples used");
     Table t;

@@ -77,8 +77,21 @@ Kind kind(Method m)
   return m == Method::VCM ? Kind::MAGNITUDES : Kind::SIGNED_TENSOR;
 }
 
-// Minimal number of neighbours (query included) of each function with default parameters.
+// Least number of neighbours (query included) of a valid estimate of each function with
+// default parameters: the measured minima of the user manual ("Neighbourhoods and scale").
 std::size_t minimum_neighbors(Method m)
+{
+  switch(m)
+  {
+    case Method::ASO: case Method::JET: case Method::WAVEJET: return 12;
+    case Method::PCA_PLANE: return 10;
+    case Method::PSS: return 15;
+    default: return 20;  // barycenter, VCM
+  }
+}
+
+// ... and the least the fit itself can solve, reached with min_neighbors(1).
+std::size_t fit_minimum_neighbors(Method m)
 {
   switch(m)
   {
@@ -635,7 +648,13 @@ TEST_CASE("Ellipsoid (random sampling): every estimator within its measured tole
     const Errors e = errors(kind(t.m), est, pts, truth);
     print_row(name(t.m), e);
     INFO(name(t.m));
-    CHECK(e.valid == pts.size());
+    // every point is valid but those below the estimator's measured minimum (20 for the
+    // barycenter and VCM: 27 of the 10000 points of this irregular sample)
+    std::size_t too_few = 0;
+    for(const auto& x : est)
+      too_few += x.status == CGAL::Curvature_estimate_status::TOO_FEW_NEIGHBORS && x.neighbor_count < 20;
+    CHECK(e.valid + too_few == pts.size());
+    CHECK(too_few <= 30);
     if(kind(t.m) != Kind::MAGNITUDES)
     {
       CHECK(e.H.mean() < t.mean_H);
@@ -1021,10 +1040,17 @@ TEST_CASE("Too few neighbours: status, count and NaN at the threshold of each es
   struct Threshold { Method m; std::size_t minimum; std::function<Estimates(const std::vector<Oriented_point>&)> run; };
   std::vector<Threshold> thresholds;
   for(Method m : all_methods)
+  {
     thresholds.push_back({m, minimum_neighbors(m), [m, r](const std::vector<Oriented_point>& p) { return run(m, p, r); }});
+    // a threshold below the fit's own minimum is raised to it
+    thresholds.push_back({m, fit_minimum_neighbors(m), [m, r](const std::vector<Oriented_point>& p) {
+                            return run<CGAL::Parallel_tag>(m, p, r, PSC::parameters::min_neighbors(1, maps()));
+                          }});
+  }
   thresholds.push_back({Method::JET, 10, [r](const std::vector<Oriented_point>& p) {
                           return CGAL::estimate_jet_curvatures<CGAL::Parallel_tag>(
-                            p, r, CGAL::parameters::degree_fitting(3).point_map(Point_map()).normal_map(Normal_map()));
+                            p, r, PSC::parameters::min_neighbors(1, CGAL::parameters::degree_fitting(3)
+                                                                      .point_map(Point_map()).normal_map(Normal_map())));
                         }});
   for(const Threshold& t : thresholds)
   {
@@ -1088,7 +1114,8 @@ TEST_CASE("VCM: a collinear cloud is degenerate, the callback can cancel", "[bas
   std::vector<Oriented_point> line;
   for(int i = 0; i < 50; ++i)
     line.emplace_back(Point(0.01 * i, 0, 0), Vector(0, 0, 1));
-  for(const auto& e : run(Method::VCM, line, 0.1))
+  // (19 neighbours at most: below VCM's default minimum of 20, so the fit's own minimum)
+  for(const auto& e : run<CGAL::Parallel_tag>(Method::VCM, line, 0.1, PSC::parameters::min_neighbors(3, maps())))
   {
     CHECK(e.status == CGAL::Curvature_estimate_status::DEGENERATE_FIT);
     CHECK(all_nan(e));
@@ -1156,14 +1183,15 @@ TEST_CASE("Jets by count on coincident points are DEGENERATE_FIT (CGAL's fitting
 {
   // CGAL's Monge_via_jet_fitting indexed Eigen blocks with negative sizes on coincident points
   // (an assertion failure; undefined behaviour in Release).
-  std::vector<Oriented_point> same(10, Oriented_point(Point(1, 2, 3), Vector(0, 0, 1)));
+  // 12 points: the jets' default minimum
+  std::vector<Oriented_point> same(12, Oriented_point(Point(1, 2, 3), Vector(0, 0, 1)));
   const auto np = CGAL::Point_set_curvatures::parameters::neighbor_count(
     1000, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()));
   const auto e = CGAL::estimate_jet_curvatures<CGAL::Sequential_tag>(same, np);
   for(const auto& x : e)
   {
     CHECK(x.status == CGAL::Curvature_estimate_status::DEGENERATE_FIT);
-    CHECK(x.neighbor_count == 10);
+    CHECK(x.neighbor_count == 12);
   }
 }
 

@@ -862,7 +862,7 @@ TEST_CASE("A cloud whose points are all unusable gives only invalid estimates", 
   }
 }
 
-TEST_CASE("Fewer than 3 neighbours is TOO_FEW_NEIGHBORS with the right neighbor_count", "[bad_input]")
+TEST_CASE("Fewer neighbours than the minimum is TOO_FEW_NEIGHBORS with the right neighbor_count", "[bad_input]")
 {
   auto pts = sphere(3000, 1);
   const double r = 0.15;
@@ -870,36 +870,51 @@ TEST_CASE("Fewer than 3 neighbours is TOO_FEW_NEIGHBORS with the right neighbor_
   pts.emplace_back(Point(10, 0, 0), Vector(1, 0, 0));             // alone: 1 neighbour
   pts.emplace_back(Point(0, 10, 0), Vector(0, 1, 0));             // a pair: 2 neighbours each
   pts.emplace_back(Point(0, 10 + 0.5 * r, 0), Vector(0, 1, 0));
-  pts.emplace_back(Point(0, 0, 10), Vector(0, 0, 1));             // three: the minimum
+  pts.emplace_back(Point(0, 0, 10), Vector(0, 0, 1));             // three: the fits' minimum
   pts.emplace_back(Point(0.05, 0, 10), Vector(0, 0, 1));
   pts.emplace_back(Point(0, 0.05, 10), Vector(0, 0, 1));
-  for(const auto& est : {aso(pts, r), apss(pts, r), aso_authors(pts, r)})
-  {
-    REQUIRE(est.size() == pts.size());
-    CHECK(est[lonely].status == Status::TOO_FEW_NEIGHBORS);
-    CHECK(est[lonely].neighbor_count == 1);
-    for(std::size_t i : {lonely + 1, lonely + 2})
+  const auto three = PSC::parameters::min_neighbors(3, maps());
+  const auto three_authors = PSC::parameters::min_neighbors(3, authors_maps());
+  // the default minimum (never below 6) and the fits' own minimum, 3 (min_neighbors(3))
+  for(bool defaults : {true, false})
+    for(const auto& est : {defaults ? aso(pts, r) : CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, r, three),
+                           defaults ? apss(pts, r) : CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(pts, r, three),
+                           defaults ? aso_authors(pts, r) : CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, r, three_authors)})
     {
-      CHECK(est[i].status == Status::TOO_FEW_NEIGHBORS);
-      CHECK(est[i].neighbor_count == 2);
+      REQUIRE(est.size() == pts.size());
+      CHECK(est[lonely].status == Status::TOO_FEW_NEIGHBORS);
+      CHECK(est[lonely].neighbor_count == 1);
+      for(std::size_t i : {lonely + 1, lonely + 2})
+      {
+        CHECK(est[i].status == Status::TOO_FEW_NEIGHBORS);
+        CHECK(est[i].neighbor_count == 2);
+      }
+      for(std::size_t i = lonely; i < lonely + 3; ++i)
+        CHECK(every_numeric_field_nan(est[i]));
+      for(std::size_t i = lonely + 3; i < lonely + 6; ++i)
+      {
+        // 3 neighbours is never a valid curvature tensor by default
+        CHECK((est[i].status == Status::TOO_FEW_NEIGHBORS) == defaults);
+        CHECK(est[i].neighbor_count == 3);
+      }
+      // the sphere's points keep their estimates (about 10 neighbours each)
+      CHECK(est[0].is_valid());
     }
-    for(std::size_t i = lonely; i < lonely + 3; ++i)
-      CHECK(every_numeric_field_nan(est[i]));
-    for(std::size_t i = lonely + 3; i < lonely + 6; ++i)
-    {
-      CHECK(est[i].status != Status::TOO_FEW_NEIGHBORS);
-      CHECK(est[i].neighbor_count == 3);
-    }
-  }
+  // a smaller minimum than the fits need is raised to it: 2 neighbours stay too few
+  const auto est = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, r, PSC::parameters::min_neighbors(1, maps()));
+  CHECK(est[lonely + 1].status == Status::TOO_FEW_NEIGHBORS);
 }
 
-// Three flat neighbours with equal normals are a plane, the smallest valid neighbourhood.
-TEST_CASE("Three neighbours on a plane are enough for a valid, flat estimate", "[aso][apss][plane]")
+// Three flat neighbours with equal normals are a plane, the smallest neighbourhood the fits
+// can solve (reached with min_neighbors(3); by default 3 neighbours are too few).
+TEST_CASE("Three neighbours on a plane are enough for the fits, not for the default minimum", "[aso][apss][plane]")
 {
   const std::vector<Oriented_point> pts = {{Point(0, 0, 1), Vector(0, 0, 2)},
                                            {Point(0.3, 0, 1), Vector(0, 0, 2)},
                                            {Point(0, 0.4, 1), Vector(0, 0, 2)}};
-  for(const auto& est : {aso(pts, 1.0), apss(pts, 1.0)})
+  const auto three = PSC::parameters::min_neighbors(3, maps());
+  for(const auto& est : {CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, 1.0, three),
+                         CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(pts, 1.0, three)})
     for(const Estimate& e : est)
     {
       REQUIRE(e.is_valid());
@@ -908,6 +923,12 @@ TEST_CASE("Three neighbours on a plane are enough for a valid, flat estimate", "
       CHECK(std::abs(e.mean_curvature) < 1e-12);  // measured 0
       CHECK(length(e.normal - Vector(0, 0, 1)) < 1e-12);
     }
+  for(const auto& est : {aso(pts, 1.0), apss(pts, 1.0)})
+    for(const Estimate& e : est)
+    {
+      CHECK(e.status == Status::TOO_FEW_NEIGHBORS);
+      CHECK(e.neighbor_count == 3);
+    }
 }
 
 TEST_CASE("Neighbours that all coincide are DEGENERATE_FIT with NaN fields", "[bad_input]")
@@ -915,7 +936,7 @@ TEST_CASE("Neighbours that all coincide are DEGENERATE_FIT with NaN fields", "[b
   auto pts = sphere(3000, 1);
   const double r = 0.15;
   const std::size_t first = pts.size();
-  for(int i = 0; i < 5; ++i)
+  for(int i = 0; i < 12; ++i)
     pts.emplace_back(Point(5, 5, 5), Vector(0, 0, 1));
   for(const auto& est : {aso(pts, r), apss(pts, r), aso_authors(pts, r), aso<CGAL::Parallel_tag>(pts, r)})
   {
@@ -925,10 +946,10 @@ TEST_CASE("Neighbours that all coincide are DEGENERATE_FIT with NaN fields", "[b
       CHECK(est[i].status == Status::DEGENERATE_FIT);
       CHECK(!est[i].is_valid());
       // the neighbours are counted (points at distance < r, the query included)
-      CHECK(est[i].neighbor_count == 5);
+      CHECK(est[i].neighbor_count == 12);
       CHECK(every_numeric_field_nan(est[i]));
     }
-    CHECK(count_invalid(est) == 5);
+    CHECK(count_invalid(est) == 12);
   }
 }
 
@@ -1167,21 +1188,87 @@ TEST_CASE("callback reports non-decreasing progress in [0,1] ending at 1, and re
   }
 }
 
+// The documented rule: callback(fraction done) at least every 1% of the points, whatever
+// the driver, the concurrency tag, and however many points share a grid cell.
+TEST_CASE("callback comes at most 1% of the points apart on 100K points, by radius, by count and with one cell holding everything", "[aso][callback]")
+{
+  const auto pts = sphere(100000, 1);
+  auto widest_step = [](const std::vector<double>& p) {
+    double w = p.empty() ? 1.0 : p[0];
+    for(std::size_t i = 1; i < p.size(); ++i)
+      w = std::max(w, p[i] - p[i - 1]);
+    return w;
+  };
+  for(int run = 0; run < 4; ++run)
+  {
+    INFO("run " << run << (run % 2 ? " parallel" : " sequential") << (run < 2 ? ", radius" : ", count"));
+    std::vector<double> progress;
+    const std::function<bool(double)> cb = [&progress](double x) {
+      progress.push_back(x);
+      return true;
+    };
+    const auto by_radius = maps().callback(cb);
+    const auto by_count = PSC::parameters::neighbor_count(30, maps().callback(cb));
+    const auto est = run == 0 ? CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, 0.03, by_radius)
+                   : run == 1 ? CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, 0.03, by_radius)
+                   : run == 2 ? CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, by_count)
+                              : CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, by_count);
+    CHECK(count_invalid(est) == 0);
+    REQUIRE(progress.size() >= 100);
+    CHECK(widest_step(progress) <= 0.01 + 1e-12);  // 1000 points of 100000
+    CHECK(progress.back() == 1.0);
+  }
+
+  // A radius covering the whole cloud: one grid cell holds every point, and is still split
+  // into batches of at most 1% (and between threads); cancelling at the first report stops
+  // the run there.
+  const auto small = sphere(3000, 1);
+  for(bool parallel : {false, true})
+  {
+    INFO((parallel ? "parallel" : "sequential") << ", radius 3 on a unit sphere");
+    std::vector<double> progress;
+    const std::function<bool(double)> cb = [&progress](double x) {
+      progress.push_back(x);
+      return true;
+    };
+    const auto est = parallel ? CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(small, 3.0, maps().callback(cb))
+                              : CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(small, 3.0, maps().callback(cb));
+    CHECK(count_invalid(est) == 0);
+    REQUIRE(progress.size() >= 100);
+    CHECK(widest_step(progress) <= 0.01 + 1e-12);  // 30 points of 3000
+    std::size_t reports = 0;
+    const std::function<bool(double)> cancel = [&reports](double) { return ++reports < 1; };
+    const auto cut = parallel ? CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(small, 3.0, maps().callback(cancel))
+                              : CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(small, 3.0, maps().callback(cancel));
+    CHECK(reports == 1);
+    CHECK(count_invalid(cut) >= 3000 - 30);  // NOT_COMPUTED beyond the first batch
+  }
+}
+
 // ---------------------------------------------------------------------------------------
 // Per-query classes
 // ---------------------------------------------------------------------------------------
 
 namespace {
 
-// A patch of an ellipsoid whose bounding box is smaller than r in every direction: the
-// cloud functions then see every neighbourhood in input order (one grid cell), the order
-// in which the per-query classes below receive them, so results must be bitwise equal.
-std::vector<Oriented_point> small_patch(double half_side)
+// A patch of an ellipsoid whose bounding box is smaller than r in every direction, moved
+// inside one cell of the drivers' lattice (cells of side r anchored at the origin): the cloud
+// functions then see every neighbourhood in input order, the order in which the per-query
+// classes below receive them, so results must be bitwise equal.
+std::vector<Oriented_point> small_patch(double half_side, double r)
 {
   std::vector<Oriented_point> patch;
   for(const auto& p : ellipsoid(20000, 1, 0.8, 0.6))
     if(p.first.x() > 0 && std::abs(p.first.y()) < half_side && std::abs(p.first.z()) < half_side)
       patch.push_back(p);
+  double lo[3] = {1e300, 1e300, 1e300};
+  for(const auto& p : patch)
+    for(int a = 0; a < 3; ++a)
+      lo[a] = std::min(lo[a], p.first[a]);
+  // the lowest corner goes to 1% of r above a lattice point (2r, 0, 0), by an exact shift
+  const Vector shift(2 * r + 0.01 * r - lo[0], 0.01 * r - lo[1], 0.01 * r - lo[2]);
+  for(auto& p : patch)
+    p.first = p.first + shift;
   return patch;
 }
 
@@ -1190,7 +1277,7 @@ std::vector<Oriented_point> small_patch(double half_side)
 TEST_CASE("The per-query classes reproduce the cloud functions exactly at an input point", "[aso][apss][per_query]")
 {
   const double r = 0.3;
-  const auto patch = small_patch(0.14);  // extent 0.28 < r, in x too (x > 0.95 there)
+  const auto patch = small_patch(0.14, r);  // extent 0.28 < r, in x too (x > 0.95 there)
   REQUIRE(patch.size() > 50);
   const auto est = aso(patch, r);
   const auto est_authors = aso_authors(patch, r);
@@ -1355,10 +1442,12 @@ TEST_CASE("The per-query classes reject bad radii, non-finite positions and unus
   CHECK(fit.add_neighbor(Point(0.1, 0, 1), Vector(0, 0, 1)));
   CHECK(fit.estimate().status == Status::TOO_FEW_NEIGHBORS);
   CHECK(fit.estimate().neighbor_count == 2);
-  // coincident neighbours: degenerate
+  // 2 < 12 (the default minimum); the fit's own minimum is 3
+  CHECK(fit.estimate(1).status == Status::TOO_FEW_NEIGHBORS);
+  // coincident neighbours (as many as the default minimum): degenerate
   CGAL::Algebraic_shape_operator_fit<Kernel> same(x, 0.5);
   CGAL::Algebraic_sphere_fit<Kernel> same_sphere(x, 0.5);
-  for(int i = 0; i < 4; ++i)
+  for(int i = 0; i < 12; ++i)
   {
     same.add_neighbor(Point(0, 0.1, 1), Vector(0, 0, 1));
     same_sphere.add_neighbor(Point(0, 0.1, 1), Vector(0, 0, 1));
@@ -1367,4 +1456,129 @@ TEST_CASE("The per-query classes reject bad radii, non-finite positions and unus
   CHECK(same_sphere.estimate().status == Status::DEGENERATE_FIT);
   CHECK(every_numeric_field_nan(same.estimate()));
   CHECK(every_numeric_field_nan(same_sphere.estimate()));
+}
+
+// ---------------------------------------------------------------------------------------
+// Tiles (Tile.h): a cloud estimated tile by tile gives the whole-cloud estimates bitwise
+// ---------------------------------------------------------------------------------------
+
+namespace {
+
+// The range a tile needs: every point at distance <= halo from its core, in input order;
+// `origin[j]` is the input index of the j-th point of the range.
+std::vector<Oriented_point> tile_range(const std::vector<Oriented_point>& pts, const PSC::Tile& t,
+                                       std::vector<std::size_t>& origin)
+{
+  std::vector<Oriented_point> range;
+  origin.clear();
+  for(std::size_t i = 0; i < pts.size(); ++i)
+    if(t.distance_to_core(pts[i].first.x(), pts[i].first.y(), pts[i].first.z()) <= t.halo)
+    {
+      range.push_back(pts[i]);
+      origin.push_back(i);
+    }
+  return range;
+}
+
+} // namespace
+
+TEST_CASE("Tiles: every point estimated once, bitwise as in the whole-cloud run, by radius and by count", "[aso][apss][tile]")
+{
+  auto pts = ellipsoid(20000, 1, 0.8, 0.6, 7);
+  pts[5].first = Point(nan_value, 0, 0);  // a non-finite point: nobody's own point
+  const double r = 0.08;
+  const std::size_t k = 25;
+  const PSC::Tile_grid tiles(CGAL::Bbox_3(-1, -0.8, -0.6, 1, 0.8, 0.6), {{3, 2, 2}});
+  REQUIRE(tiles.size() == 12);
+  const auto whole_radius = aso(pts, r);
+  const auto whole_count = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, PSC::parameters::neighbor_count(k, maps()));
+  const auto whole_apss = apss<CGAL::Parallel_tag>(pts, r);
+  std::vector<int> owned(pts.size(), 0);
+  std::size_t differ = 0, retried = 0, differ_count = 0;
+  for(std::size_t i = 0; i < tiles.size(); ++i)
+  {
+    std::vector<std::size_t> origin;
+    // by radius: a halo of one radius
+    const PSC::Tile t = tiles.tile(i, r);
+    const auto range = tile_range(pts, t, origin);
+    const auto e = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(range, r, PSC::parameters::tile(t, maps()));
+    const auto a = CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(range, r, PSC::parameters::tile(t, maps()));
+    for(std::size_t j = 0; j < range.size(); ++j)
+    {
+      const Point& p = range[j].first;
+      const bool own = t.owns(p.x(), p.y(), p.z());
+      if(own)
+      {
+        ++owned[origin[j]];
+        differ += !same_estimate(e[j], whole_radius[origin[j]]) + !same_estimate(a[j], whole_apss[origin[j]]);
+      }
+      else  // the unusable point keeps its status in every tile; the others are not computed
+      {
+        const Status expected = origin[j] == 5 ? Status::NON_FINITE_POINT : Status::NOT_COMPUTED;
+        differ += (e[j].status != expected) + (a[j].status != expected);
+      }
+    }
+    // by count: start from a small halo, grow it to what Halo_too_small asks
+    double halo = 0.02;
+    for(;;)
+    {
+      const PSC::Tile tk = tiles.tile(i, halo);
+      const auto range_k = tile_range(pts, tk, origin);
+      try
+      {
+        const auto ek = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
+          range_k, PSC::parameters::neighbor_count(k, PSC::parameters::tile(tk, maps())));
+        for(std::size_t j = 0; j < range_k.size(); ++j)
+          if(tk.owns(range_k[j].first.x(), range_k[j].first.y(), range_k[j].first.z()))
+            differ_count += !same_estimate(ek[j], whole_count[origin[j]]);
+        break;
+      }
+      catch(const PSC::Halo_too_small& too_small)
+      {
+        REQUIRE(too_small.required_halo() > halo);
+        halo = too_small.required_halo();
+        ++retried;
+      }
+    }
+  }
+  CHECK(differ == 0);
+  CHECK(differ_count == 0);
+  std::size_t once = 0;
+  for(std::size_t i = 0; i < pts.size(); ++i)
+    once += owned[i] == (i == 5 ? 0 : 1);
+  CHECK(once == pts.size());
+  CHECK(retried > 0);  // the small first halo was refused at least once (the retry path is tested)
+  // a halo smaller than the radius is refused by radius
+  CHECK_THROWS_AS(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
+                    pts, r, PSC::parameters::tile(tiles.tile(0, 0.5 * r), maps())),
+                  std::invalid_argument);
+}
+
+// Issue 14: normals far from unit length are not trusted. With the authors' projection
+// (normals used unnormalised) a normal of length 1e15 once gave a VALID H = 1.0036 on the unit
+// sphere, 1e20 gave 535.
+TEST_CASE("Normals of length outside [1e-3, 1e3] are INVALID_NORMAL unless accept_unnormalized_normals", "[aso][apss][bad_input]")
+{
+  auto pts = sphere(3000, 1);
+  const double r = 0.15;
+  const std::size_t big = 100, small = 200, fine = 300;
+  pts[big].second = pts[big].second * 1e15;
+  pts[small].second = pts[small].second * 1e-5;
+  pts[fine].second = pts[fine].second * 900;  // inside the range: used (normalised by default)
+  for(const auto& est : {aso(pts, r), apss(pts, r), aso_authors(pts, r)})
+  {
+    CHECK(est[big].status == Status::INVALID_NORMAL);
+    CHECK(est[small].status == Status::INVALID_NORMAL);
+    CHECK(every_numeric_field_nan(est[big]));
+    CHECK(est[fine].is_valid());
+    CHECK(est[0].is_valid());
+  }
+  // asked for: every finite non-zero normal is used; the default projection normalises them,
+  // so the sphere stays exact
+  const auto accepted = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
+    pts, r, PSC::parameters::accept_unnormalized_normals(true, maps()));
+  CHECK(accepted[big].is_valid());
+  CHECK(accepted[small].is_valid());
+  CHECK(std::abs(accepted[big].mean_curvature - 1) < 1e-9);
+  CHECK(std::abs(accepted[small].mean_curvature - 1) < 1e-9);
 }

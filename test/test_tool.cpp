@@ -18,6 +18,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -333,8 +334,8 @@ TEST_CASE("neighbor_count: ties, k above the number of points, coincident points
   CHECK(count_of(grid, 6).first[centre] == 9);
   CHECK(count_of(grid, 9).first[centre] == 9);
   CHECK(count_of(grid, 10).first[centre] == 13);  // next ring: 4 points at 2h
-  // A plane: valid, zero curvature, at every point.
-  const auto plane_run = count_of(grid, 9).second;
+  // A plane: valid, zero curvature, at every point (k = 13: the default minimum is 12).
+  const auto plane_run = count_of(grid, 13).second;
   std::size_t flat = 0;
   for(const Estimate& e : plane_run)
     flat += e.is_valid() && std::abs(e.mean_curvature) < 1e-9 && std::abs(e.gaussian_curvature) < 1e-9;
@@ -455,19 +456,27 @@ TEST_CASE("neighbor_count: density varying 1:10, at least k neighbours everywher
   CHECK(exactly_k == pts.size());
   CHECK(valid == pts.size());
   CHECK(different == 0);
-  // 20000 points: batches of whole grid cells holding at least 16384 points (as the radius
-  // driver), two progress reports per run ending at 1
-  REQUIRE(seq_reports == 2);
-  const std::size_t first_batch = static_cast<std::size_t>(std::lround(progress[0] * 20000));
-  CHECK(progress[0] * 20000 == Approx(double(first_batch)).epsilon(1e-12));
-  CHECK(first_batch >= 16384);
-  CHECK(first_batch < 16384 + 100);  // a cell holds a few points, not hundreds
-  CHECK(progress[1] == 1.0);
+  // progress at most 1% of the points apart (the documented rule), ending at 1
+  REQUIRE(seq_reports >= 100);
+  double widest_step = progress[0];
+  for(std::size_t i = 1; i < seq_reports; ++i)
+    widest_step = std::max(widest_step, progress[i] - progress[i - 1]);
+  CHECK(widest_step <= 0.01 + 1e-12);
+  CHECK(progress[seq_reports - 1] == 1.0);
 
-  // Cancelled after the first batch: the rest is NOT_COMPUTED with NaN, the rest as before.
+  // Cancelled at the first report: the points of the first batch are computed as before, the
+  // rest is NOT_COMPUTED with NaN.
+  double first_report = -1;
   const std::vector<Estimate> cut = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
     pts, PSC::parameters::neighbor_count(
-           k, pair_maps.callback(std::function<bool(double)>([](double) { return false; }))));
+           k, pair_maps.callback(std::function<bool(double)>([&first_report](double f) {
+             first_report = f;
+             return false;
+           }))));
+  const std::size_t first_batch = static_cast<std::size_t>(std::lround(first_report * 20000));
+  CHECK(first_report * 20000 == Approx(double(first_batch)).epsilon(1e-12));
+  CHECK(first_batch >= 1);
+  CHECK(first_batch <= 200);  // at most 1%
   std::size_t not_computed = 0, unchanged = 0;
   for(std::size_t i = 0; i < pts.size(); ++i)
     if(cut[i].status == CGAL::Curvature_estimate_status::NOT_COMPUTED)
@@ -588,12 +597,12 @@ TEST_CASE("tool: .xyz, .pwn, .off and ASCII, little- and big-endian binary .ply 
   write_text(file("formats_little.ply"), little);
   write_text(file("formats_big.ply"), big);
 
-  REQUIRE(run_tool(q(file("formats.xyz")) + " " + q(file("formats_xyz.csv")) + " --radius 0.3").status == 0);
+  REQUIRE(run_tool(q(file("formats.xyz")) + " " + q(file("formats_xyz.csv")) + " --radius 0.6").status == 0);
   const std::string reference = read_text(file("formats_xyz.csv"));
   CHECK(std::count(reference.begin(), reference.end(), '\n') == 501);
   for(const char* name : {"formats.pwn", "formats.off", "formats_ascii.ply", "formats_little.ply", "formats_big.ply"})
   {
-    const Run r = run_tool(q(file(name)) + " " + q(file("formats_other.csv")) + " --radius 0.3");
+    const Run r = run_tool(q(file(name)) + " " + q(file("formats_other.csv")) + " --radius 0.6");
     INFO(name << ": " << r.err);
     REQUIRE(r.status == 0);
     CHECK(r.err.empty());  // normals found: no warning
@@ -676,7 +685,7 @@ TEST_CASE("tool: --neighbors K on a cloud with density varying 1:10 gives every 
   const std::vector<Oriented_point> pts = varying_density(5000, 11);
   const std::string input = file("varying.xyz");
   write_xyz(input, pts);
-  for(const char* k : {"10", "30"})
+  for(const char* k : {"12", "30"})
   {
     const Run r = run_tool(q(input) + " " + q(file("varying.csv")) + " --neighbors " + k);
     INFO(r.err);
@@ -778,6 +787,22 @@ TEST_CASE("tool: every error exits with status 2, one line naming the file or op
   write_text(file("not_ply.ply"), "solid ascii\n");
   write_text(file("positions.xyz"), "0 0 0\n1 0 0\n0 1 0\n");
   fs::create_directories(file("a_directory.xyz"));
+  // headers whose counts or layout cannot be trusted: refused before anything is allocated
+  const std::string vertex_xyz = "property float x\nproperty float y\nproperty float z\n";
+  write_text(file("property_first.ply"), "ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\nend_header\n0\n");
+  write_text(file("no_xyz.ply"), "ply\nformat ascii 1.0\nelement vertex 1\nproperty float u\nend_header\n0\n");
+  write_text(file("huge_count.ply"), "ply\nformat binary_little_endian 1.0\nelement vertex 999999999999999999\n" +
+                                       vertex_xyz + "end_header\n" + std::string(24, '\0'));
+  std::string huge_list = "ply\nformat binary_little_endian 1.0\nelement vertex 1\n" + vertex_xyz +
+                          "element face 1\nproperty list int int vertex_indices\nend_header\n" + std::string(12, '\0');
+  huge_list += std::string("\x00\x94\x35\x77", 4);  // a list of 2e9 items
+  write_text(file("huge_list.ply"), huge_list);
+  write_text(file("negative_list.ply"), "ply\nformat ascii 1.0\nelement vertex 1\n" + vertex_xyz +
+                                          "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n-1\n");
+  write_text(file("partial_normals.ply"), "ply\nformat ascii 1.0\nelement vertex 1\n" + vertex_xyz +
+                                            "property float nx\nend_header\n0 0 0 1\n");
+  write_text(file("nine.xyz"), "0 0 0 1 2 3 0 0 1\n");
+  ::mkfifo(file("fifo.xyz").c_str(), 0600);
 
   struct Case
   {
@@ -791,7 +816,7 @@ TEST_CASE("tool: every error exits with status 2, one line naming the file or op
     {q(file("truncated_ascii.ply")) + " " + q(out), "'" + file("truncated_ascii.ply") + "': truncated: the file ends in vertex 3"},
     {q(file("text_ascii.ply")) + " " + q(out), "'" + file("text_ascii.ply") + "': line 12: 'zero' is not a number"},
     {q(file("count_more.ply")) + " " + q(out), "'" + file("count_more.ply") + "': truncated: the file ends in vertex 4 of the 4"},
-    {q(file("count_fewer.ply")) + " " + q(out), "'" + file("count_fewer.ply") + "': more data than the 2 vertices"},
+    {q(file("count_fewer.ply")) + " " + q(out), "'" + file("count_fewer.ply") + "': line 13: more data than the 2 vertices"},
     {q(file("count_fewer_binary.ply")) + " " + q(out), "more data than the 499 vertices"},
     {q(file("text.xyz")) + " " + q(out), "'" + file("text.xyz") + "' line 3: '1x' is not a number"},
     {q(file("text_normal.xyz")) + " " + q(out), "line 3: 'abc' is not a number"},
@@ -804,6 +829,19 @@ TEST_CASE("tool: every error exits with status 2, one line naming the file or op
     {q(file("not_ply.ply")) + " " + q(out), "not a PLY file"},
     {q(file("positions.xyz")) + " " + q(out) + " --require-normals", "has no normals"},
     {q(good) + " " + q(out) + " --frobnicate", "unknown option '--frobnicate'"},
+    {q(file("property_first.ply")) + " " + q(out), "PLY header line 3: a property before any element"},
+    {q(file("no_xyz.ply")) + " " + q(out), "the PLY vertex element has no scalar property x"},
+    {q(file("huge_count.ply")) + " " + q(out), "truncated: the file ends in vertex 3 of the 999999999999999999"},
+    {q(file("huge_list.ply")) + " " + q(out), "truncated: the file ends in face 1 of the 1"},
+    {q(file("negative_list.ply")) + " " + q(out), "invalid list length -1 (face 1 of the 1"},
+    {q(file("partial_normals.ply")) + " " + q(out), "has only some of nx ny nz"},
+    {q(file("nine.xyz")) + " " + q(out), "found 9; give --columns to name them"},
+    {q(good) + " " + q(out) + " --columns x,y,nx", "--columns 'x,y,nx' does not name all of x, y, z"},
+    {q(good) + " " + q(out) + " --columns x,y,z,nx,nx,nz", "names nx twice"},
+    {q(file("good_binary.ply")) + " " + q(out) + " --columns x,y,z", "--columns applies to text point files"},
+    {q(file("fifo.xyz")) + " " + q(out), "not a regular file"},
+    {q(file("good_binary.ply")) + " " + q(file("good_binary.ply")), "is the input file"},
+    {q(good) + " " + q(out) + " --neighbors 8", "--neighbors 8 is below the 12 neighbours of a valid aso estimate"},
     {q(good) + " " + q(out) + " --radius 0", "--radius must be positive, got '0'"},
     {q(good) + " " + q(out) + " --radius -1.5", "--radius must be positive, got '-1.5'"},
     {q(good) + " " + q(out) + " --radius 0x", "--radius must be positive, got '0x'"},
@@ -841,4 +879,103 @@ TEST_CASE("tool: every error exits with status 2, one line naming the file or op
   CHECK(run_tool(q(file("truncated_binary.ply")) + " " + q(out)).status == 2);
   CHECK(read_text(out) == "previous result");
   CHECK(files_starting_with(".out.") == 0);
+}
+
+// Issue 10: columns that are not normals, normals under other names, small neighbourhoods.
+TEST_CASE("tool: rgb columns are refused with a message naming --columns, and --columns, CSV headers and normal_x PLY read the same cloud")
+{
+  const std::vector<Oriented_point> pts = sphere(500, 1.0);
+  write_xyz(file("cols.xyz"), pts);
+  REQUIRE(run_tool(q(file("cols.xyz")) + " " + q(file("cols_ref.csv")) + " --radius 0.6").status == 0);
+  const std::string reference = read_text(file("cols_ref.csv"));
+
+  std::ostringstream rgb, nine, csv, cloudcompare;
+  for(std::ostringstream* s : {&rgb, &nine, &csv, &cloudcompare})
+    s->precision(17);
+  cloudcompare << "//X,Y,Z,R,G,B,Nx,Ny,Nz\n";
+  for(const Oriented_point& p : pts)
+  {
+    const double x = p.first.x(), y = p.first.y(), z = p.first.z();
+    const double nx = p.second.x(), ny = p.second.y(), nz = p.second.z();
+    rgb << x << " " << y << " " << z << " 200 120 35\n";
+    nine << x << " " << y << " " << z << " 200 120 35 " << nx << " " << ny << " " << nz << "\n";
+    csv << x << "," << y << "," << z << "," << nx << "," << ny << "," << nz << "\n";
+    cloudcompare << x << "," << y << "," << z << ",200,120,35," << nx << "," << ny << "," << nz << "\n";
+  }
+  write_text(file("rgb.xyz"), rgb.str());
+  write_text(file("nine.txt"), nine.str());
+  write_text(file("plain.csv"), csv.str());
+  write_text(file("cloudcompare.csv"), cloudcompare.str());
+
+  // x y z r g b: never read as normals without being told
+  const Run refused = run_tool(q(file("rgb.xyz")) + " " + q(file("out.ply")));
+  CHECK(refused.status == 2);
+  CHECK(refused.err.find("columns 4-6 are not unit normals (median length 235.") != std::string::npos);
+  CHECK(refused.err.find("--columns x,y,z,r,g,b") != std::string::npos);
+  CHECK(std::count(refused.err.begin(), refused.err.end(), '\n') == 1);
+  CHECK(!fs::exists(file("out.ply")));
+  // told: positions only, normals estimated with a warning
+  const Run told = run_tool(q(file("rgb.xyz")) + " " + q(file("out.ply")) + " --columns x,y,z,r,g,b --radius 0.6");
+  CHECK(told.status == 0);
+  CHECK(told.err.find("has no normals: estimating them") != std::string::npos);
+
+  // the same cloud through --columns, a comma-separated file and CloudCompare's header
+  for(const std::string& args : {q(file("nine.txt")) + " --columns x,y,z,_,_,_,nx,ny,nz",
+                                 q(file("plain.csv")), q(file("cloudcompare.csv"))})
+  {
+    const Run r = run_tool(args + " " + q(file("cols_other.csv")) + " --radius 0.6");
+    INFO(args << ": " << r.err);
+    REQUIRE(r.status == 0);
+    CHECK(r.err.empty());
+    CHECK(read_text(file("cols_other.csv")) == reference);
+  }
+
+  // PLY as PCL and Open3D write it: normal_x normal_y normal_z, properties in any order,
+  // an extra property and a face element
+  std::ostringstream ply;
+  ply.precision(17);
+  ply << "ply\nformat ascii 1.0\nelement vertex " << pts.size()
+      << "\nproperty double normal_x\nproperty double z\nproperty uchar red\nproperty double x\n"
+         "property double normal_z\nproperty double y\nproperty double normal_y\n"
+         "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  for(const Oriented_point& p : pts)
+    ply << p.second.x() << " " << p.first.z() << " 7 " << p.first.x() << " " << p.second.z() << " " << p.first.y()
+        << " " << p.second.y() << "\n";
+  ply << "3 0 1 2\n";
+  write_text(file("open3d.ply"), ply.str());
+  const Run r = run_tool(q(file("open3d.ply")) + " " + q(file("cols_other.csv")) + " --radius 0.6");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK(r.err.empty());  // normals found: no warning
+  CHECK(read_text(file("cols_other.csv")) == reference);
+}
+
+TEST_CASE("tool: 3-neighbour estimates are invalid, with one warning suggesting a scale")
+{
+  // The simulated LiDAR scan at r = 0.3: every point has about 3 neighbours. They used to be
+  // reported valid (86.9%) with a mean H error of 0.072.
+  const Run r = run_tool(q(repo_data("goursat-lidar.xyz")) + " " + q(file("lidar.csv")) + " --radius 0.3");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK(r.out.find("valid       0 (0.00 %)") != std::string::npos);
+  CHECK(r.err.find("warning: the median neighbourhood holds 3 points, fewer than the 20") != std::string::npos);
+  CHECK(r.err.find("try --radius ") != std::string::npos);
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  const std::string rows = read_text(file("lidar.csv"));
+  CHECK(rows.find(",1\n") == std::string::npos);  // no row ends with valid = 1
+
+  // at the scale it suggests (about 40 neighbours), no warning and every point valid but a few
+  const std::size_t at = r.err.find("try --radius ") + 13;
+  const std::string suggested = r.err.substr(at, r.err.find_first_of("\n ", at) - at);
+  const Run again = run_tool(q(repo_data("goursat-lidar.xyz")) + " " + q(file("lidar.csv")) + " --radius " + suggested);
+  INFO(again.out << again.err);
+  CHECK(again.status == 0);
+  CHECK(again.err.empty());
+
+  // --neighbors below the method's minimum is refused at once
+  const Run few = run_tool(q(repo_data("goursat-lidar.xyz")) + " " + q(file("lidar.csv")) + " --neighbors 5");
+  CHECK(few.status == 2);
+  CHECK(few.err.find("--neighbors 5 is below the 12 neighbours of a valid aso estimate") != std::string::npos);
+  // and allowed with --min-neighbors
+  CHECK(run_tool(q(repo_data("goursat-lidar.xyz")) + " " + q(file("lidar.csv")) + " --neighbors 5 --min-neighbors 5 --quiet").status == 0);
 }

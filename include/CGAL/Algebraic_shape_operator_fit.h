@@ -85,10 +85,16 @@ public:
   std::size_t neighbor_count() const { return m_columns[0].size(); }
 
   /// Normal, principal curvatures and directions, mean and Gaussian curvature of the
-  /// neighbours added so far (invalid with `TOO_FEW_NEIGHBORS` below 3 neighbours, or
-  /// `DEGENERATE_FIT`).
-  Curvature_estimate<GeomTraits> estimate() const
+  /// neighbours added so far. Invalid with `TOO_FEW_NEIGHBORS` below `min_neighbors`
+  /// neighbours (by default the measured minimum of `estimate_aso_curvatures()`, 12; never
+  /// below 3), or `DEGENERATE_FIT`.
+  Curvature_estimate<GeomTraits> estimate(
+    std::size_t min_neighbors = Point_set_curvatures::internal::default_min_neighbors::aso) const
   {
+    if(neighbor_count() < min_neighbors)
+      return Point_set_curvatures::internal::to_curvature_estimate<GeomTraits>(
+        Point_set_curvatures::internal::Local_estimate::invalid(Curvature_estimate_status::TOO_FEW_NEIGHBORS),
+        neighbor_count());
     Point_set_curvatures::internal::Neighborhood nb;
     nb.size = neighbor_count();
     nb.qx = m_columns[0].data(); nb.qy = m_columns[1].data(); nb.qz = m_columns[2].data();

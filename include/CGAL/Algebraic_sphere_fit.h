@@ -60,12 +60,18 @@ public:
   /// number of neighbours used so far
   std::size_t neighbor_count() const { return m_sums.count; }
 
-  /// APSS normal and mean curvature; the principal fields are NaN.
-  Curvature_estimate<GeomTraits> estimate() const
+  /// APSS normal and mean curvature; the principal fields are NaN. Invalid with
+  /// `TOO_FEW_NEIGHBORS` below `min_neighbors` neighbours (by default the measured minimum of
+  /// `estimate_apss_curvatures()`, 12; never below 3), or `DEGENERATE_FIT`.
+  Curvature_estimate<GeomTraits> estimate(
+    std::size_t min_neighbors = Point_set_curvatures::internal::default_min_neighbors::apss) const
   {
-    return Point_set_curvatures::internal::to_curvature_estimate<GeomTraits>(
-      Point_set_curvatures::internal::algebraic_sphere_estimate(m_sums, m_frame.radius()),
-      m_sums.count);
+    namespace I = Point_set_curvatures::internal;
+    if(m_sums.count < min_neighbors)
+      return I::to_curvature_estimate<GeomTraits>(
+        I::Local_estimate::invalid(Curvature_estimate_status::TOO_FEW_NEIGHBORS), m_sums.count);
+    return I::to_curvature_estimate<GeomTraits>(I::algebraic_sphere_estimate(m_sums, m_frame.radius()),
+                                                m_sums.count);
   }
 
 private:

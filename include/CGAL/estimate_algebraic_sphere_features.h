@@ -122,7 +122,7 @@ struct Algebraic_sphere_features
   FT kernel_radius = nan();
   /// number of input points at distance `< r` from the evaluation point, itself included
   std::size_t neighbor_count = 0;
-  /// why the result is (in)valid: `VALID`, `TOO_FEW_NEIGHBORS` (fewer than 3), `DEGENERATE_FIT`,
+  /// why the result is (in)valid: `VALID`, `TOO_FEW_NEIGHBORS` (fewer than `min_neighbors`, 12 by default), `DEGENERATE_FIT`,
   /// `NON_FINITE_POINT`, `INVALID_NORMAL`, `NOT_COMPUTED` (cancelled), as for curvatures
   Curvature_estimate_status status = Curvature_estimate_status::NOT_COMPUTED;
 
@@ -196,11 +196,12 @@ sphere_features_at_every_point(const PointRange& points, bool radius_given, doub
 {
   typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits Geom_traits;
   const bool constant = weight_kernel_parameter(np) == Apss_weight_kernel::CONSTANT;
+  const std::size_t min_count = min_neighbors_parameter(np, default_min_neighbors::sphere_features);
   return evaluate_at_every_point<Algebraic_sphere_features<Geom_traits>, ConcurrencyTag>(
     points, radius_given, radius, np, neighborhood_options(np, function_name, true),
-    [constant](const Neighborhood& nb) {
-      const Local_sphere_features f = constant ? sphere_features<Constant_kernel>(nb)
-                                               : sphere_features<Smooth_kernel>(nb);
+    [constant, min_count](const Neighborhood& nb) {
+      const Local_sphere_features f = constant ? sphere_features<Constant_kernel>(nb, min_count)
+                                               : sphere_features<Smooth_kernel>(nb, min_count);
       return to_sphere_features<Geom_traits>(f, nb.center);
     });
 }
@@ -213,12 +214,13 @@ struct Multiscale_visitor
   std::vector<std::vector<Algebraic_sphere_features<GeomTraits> > >* results;
   const std::vector<double>* radii;
   bool constant;
+  std::size_t min_count;
   Multiscale_sphere_features scales;
   std::vector<Local_sphere_features> local;
 
   Multiscale_visitor(std::vector<std::vector<Algebraic_sphere_features<GeomTraits> > >* results,
-                     const std::vector<double>* radii, bool constant)
-    : results(results), radii(radii), constant(constant)
+                     const std::vector<double>* radii, bool constant, std::size_t min_count)
+    : results(results), radii(radii), constant(constant), min_count(min_count)
   {
     scales.set_radii(*radii);
     local.resize(radii->size());
@@ -227,9 +229,9 @@ struct Multiscale_visitor
   void operator()(std::size_t i, const Neighborhood& nb)
   {
     if(constant)
-      scales.compute<Constant_kernel>(nb, local.data());
+      scales.compute<Constant_kernel>(nb, local.data(), min_count);
     else
-      scales.compute<Smooth_kernel>(nb, local.data());
+      scales.compute<Smooth_kernel>(nb, local.data(), min_count);
     for(std::size_t k = 0; k < local.size(); ++k)
       (*results)[k][i] = to_sphere_features<GeomTraits>(local[k], nb.center);
   }
@@ -291,6 +293,28 @@ struct Multiscale_visitor
 ///       its scale derivatives are obtained)}
 ///     \cgalParamType{`CGAL::Apss_weight_kernel`}
 ///     \cgalParamDefault{`CGAL::Apss_weight_kernel::SMOOTH`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Point_set_curvatures::parameters::min_neighbors}
+///     \cgalParamDescription{the least number of neighbours (query included) of a valid
+///       estimate; below it the status is `TOO_FEW_NEIGHBORS`. Values below what the fit
+///       needs (3) are raised to it}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{12: the measured minimum of this estimator (user manual,
+///       "Neighbourhoods and scale")}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Point_set_curvatures::parameters::accept_unnormalized_normals}
+///     \cgalParamDescription{by default a normal whose length lies outside `[1e-3, 1e3]` is
+///       `INVALID_NORMAL` (colours or unscaled integers read as normals); `true` uses every
+///       finite non-zero normal}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Point_set_curvatures::parameters::tile}
+///     \cgalParamDescription{estimates only the own points of a tile of a larger cloud
+///       (`points` holds them and their halo), bitwise as in the whole-cloud run; the other
+///       points get `NOT_COMPUTED`}
+///     \cgalParamType{`CGAL::Point_set_curvatures::Tile`}
+///     \cgalParamDefault{no tile: every point is estimated}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
@@ -398,7 +422,9 @@ estimate_multiscale_algebraic_sphere_features(const PointRange& points,
   const std::size_t n = static_cast<std::size_t>(std::distance(points.begin(), points.end()));
   std::vector<std::vector<Algebraic_sphere_features<Geom_traits> > > results(
     radii.size(), std::vector<Algebraic_sphere_features<Geom_traits> >(n));
-  PSC::internal::Multiscale_visitor<Geom_traits> visit(&results, &radii, constant);
+  PSC::internal::Multiscale_visitor<Geom_traits> visit(
+    &results, &radii, constant,
+    PSC::internal::min_neighbors_parameter(np, PSC::internal::default_min_neighbors::sphere_features));
   const double max_radius = *std::max_element(radii.begin(), radii.end());
   const std::vector<Curvature_estimate_status> status = PSC::internal::for_each_neighborhood<ConcurrencyTag>(
     points, NP_helper::get_const_point_map(points, np), NP_helper::get_normal_map(points, np),

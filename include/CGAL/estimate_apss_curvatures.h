@@ -21,12 +21,16 @@ struct Apss_estimator : Estimator_base
   // weight kernel (named parameter weight_kernel, issue 6)
   Apss_weight_kernel kernel = Apss_weight_kernel::SMOOTH;
 
-  Apss_estimator() { check_tangent_spread = false; }  // tested by fit_algebraic_sphere
-  template <class NamedParameters>
-  explicit Apss_estimator(const NamedParameters& np)
-    : kernel(weight_kernel_parameter(np))
+  Apss_estimator()
   {
     check_tangent_spread = false;  // tested by fit_algebraic_sphere
+    min_neighbors = default_min_neighbors::apss;
+  }
+  template <class NamedParameters>
+  explicit Apss_estimator(const NamedParameters& np)
+    : Apss_estimator()
+  {
+    kernel = weight_kernel_parameter(np);
   }
 
   Local_estimate operator()(const Neighborhood& nb) const
@@ -96,6 +100,28 @@ struct Apss_estimator : Estimator_base
 ///       `CONSTANT` (1 inside the ball, the weight of the paper's asymptotic analysis)}
 ///     \cgalParamType{`CGAL::Apss_weight_kernel`}
 ///     \cgalParamDefault{`CGAL::Apss_weight_kernel::SMOOTH`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Point_set_curvatures::parameters::min_neighbors}
+///     \cgalParamDescription{the least number of neighbours (query included) of a valid
+///       estimate; below it the status is `TOO_FEW_NEIGHBORS`. Values below what the fit
+///       needs (3) are raised to it}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{12: the measured minimum of this estimator (user manual,
+///       "Neighbourhoods and scale")}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Point_set_curvatures::parameters::accept_unnormalized_normals}
+///     \cgalParamDescription{by default a normal whose length lies outside `[1e-3, 1e3]` is
+///       `INVALID_NORMAL` (colours or unscaled integers read as normals); `true` uses every
+///       finite non-zero normal}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Point_set_curvatures::parameters::tile}
+///     \cgalParamDescription{estimates only the own points of a tile of a larger cloud
+///       (`points` holds them and their halo), bitwise as in the whole-cloud run; the other
+///       points get `NOT_COMPUTED`}
+///     \cgalParamType{`CGAL::Point_set_curvatures::Tile`}
+///     \cgalParamDefault{no tile: every point is estimated}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///

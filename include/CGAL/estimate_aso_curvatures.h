@@ -27,6 +27,7 @@ struct Aso_estimator : Estimator_base
   {
     normalize_normals = (p == Aso_projection::CORRECTED_NORMAL);
     check_tangent_spread = false;  // tested on the first pass's moments
+    min_neighbors = default_min_neighbors::aso;
   }
 
   Local_estimate operator()(const Neighborhood& nb) const
@@ -75,8 +76,8 @@ Aso_estimator aso_estimator_from(const NamedParameters& np)
 /// The corrected normal is `∇f/|∇f|`, oriented like the input normals. Points that
 /// cannot be estimated have a status saying why and NaN in every numeric field:
 /// non-finite coordinates (`NON_FINITE_POINT`), zero or non-finite normal
-/// (`INVALID_NORMAL`; such points are nobody's neighbour either), fewer than 3 neighbours
-/// (`TOO_FEW_NEIGHBORS`), coincident neighbours, cancelling normals, or neighbours without
+/// (`INVALID_NORMAL`; such points are nobody's neighbour either), fewer than `min_neighbors` neighbours
+/// (12 by default; `TOO_FEW_NEIGHBORS`), coincident neighbours, cancelling normals, or neighbours without
 /// spread in two tangent directions such as a single scan line (`DEGENERATE_FIT`),
 /// cancellation through `callback` (`NOT_COMPUTED`). A planar neighbourhood is valid with
 /// zero curvatures. For invalid points `neighbor_count` is 0 except for `TOO_FEW_NEIGHBORS`
@@ -90,8 +91,10 @@ Aso_estimator aso_estimator_from(const NamedParameters& np)
 ///
 /// \param points input oriented point cloud
 /// \param radius radius `r` of the neighbourhoods and of the weight kernel, in the unit of
-///        the coordinates. A good start is 5 to 8 times the average spacing (about 40
-///        neighbours); smaller radii follow finer detail and amplify noise.
+///        the coordinates. A good start is about 40 neighbours: 3.5 to 4 times the average spacing
+///        of `CGAL::compute_average_spacing()` with 6 neighbours (36 to 51 neighbours
+///        measured on the Goursat clouds and the bunny); smaller radii follow finer detail
+///        and amplify noise.
 /// \param np an optional sequence of named parameters among the ones listed below
 ///
 /// \cgalNamedParamsBegin
@@ -114,7 +117,8 @@ Aso_estimator aso_estimator_from(const NamedParameters& np)
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{callback}
 ///     \cgalParamDescription{called with the fraction of points processed so far (in `[0,1]`),
-///       from the calling thread, about every 1% of the points; if it returns `false` the
+///       from the calling thread, at least every 1% of the points and about every 0.25 s
+///       on long runs; if it returns `false` the
 ///       estimation stops and the points not yet processed keep the status `NOT_COMPUTED`}
 ///     \cgalParamType{an instance of `std::function<bool(double)>`}
 ///     \cgalParamDefault{no callback}
@@ -131,6 +135,28 @@ Aso_estimator aso_estimator_from(const NamedParameters& np)
 ///       differentiates the weights, the constant kernel has no usable derivative}
 ///     \cgalParamType{`CGAL::Apss_weight_kernel`}
 ///     \cgalParamDefault{`CGAL::Apss_weight_kernel::SMOOTH`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Point_set_curvatures::parameters::min_neighbors}
+///     \cgalParamDescription{the least number of neighbours (query included) of a valid
+///       estimate; below it the status is `TOO_FEW_NEIGHBORS`. Values below what the fit
+///       needs (3) are raised to it}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{12: the measured minimum of this estimator (user manual,
+///       "Neighbourhoods and scale")}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Point_set_curvatures::parameters::accept_unnormalized_normals}
+///     \cgalParamDescription{by default a normal whose length lies outside `[1e-3, 1e3]` is
+///       `INVALID_NORMAL` (colours or unscaled integers read as normals); `true` uses every
+///       finite non-zero normal}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Point_set_curvatures::parameters::tile}
+///     \cgalParamDescription{estimates only the own points of a tile of a larger cloud
+///       (`points` holds them and their halo), bitwise as in the whole-cloud run; the other
+///       points get `NOT_COMPUTED`}
+///     \cgalParamType{`CGAL::Point_set_curvatures::Tile`}
+///     \cgalParamDefault{no tile: every point is estimated}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///

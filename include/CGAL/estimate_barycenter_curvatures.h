@@ -18,7 +18,11 @@ namespace internal {
 // Distance to the barycenter of the neighbourhood; the normals are not read.
 struct Barycenter_estimator : Estimator_base
 {
-  Barycenter_estimator() { normalize_normals = false; }
+  Barycenter_estimator()
+  {
+    normalize_normals = false;
+    min_neighbors = default_min_neighbors::barycenter;
+  }
   Local_estimate operator()(const Neighborhood& nb) const
   {
     return barycenter_mean_curvature(nb);
@@ -50,8 +54,8 @@ struct Barycenter_estimator : Estimator_base
 /// Results: one `Curvature_estimate` per element of `points`, in the same order, with the
 /// statuses of `CGAL::estimate_aso_curvatures()`: `NON_FINITE_POINT`, `INVALID_NORMAL`
 /// (such points are nobody's neighbour either), `NOT_COMPUTED` (cancelled through
-/// `callback`), `TOO_FEW_NEIGHBORS` (fewer than 3 points at distance `< r`, the query
-/// included), `DEGENERATE_FIT` (every neighbour on the query point). Invalid estimates hold
+/// `callback`), `TOO_FEW_NEIGHBORS` (fewer points at distance `< r`, the query included,
+/// than `min_neighbors`: 20 by default), `DEGENERATE_FIT` (every neighbour on the query point). Invalid estimates hold
 /// NaN in every numeric field. Sequential and parallel runs return identical results.
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag` (needs TBB).
@@ -61,8 +65,8 @@ struct Barycenter_estimator : Estimator_base
 /// \param points input oriented point cloud
 /// \param radius radius `r` of the neighbourhoods (every input point at distance `< r`, the
 ///        query point included), in the unit of the coordinates.
-///        A good start is 5 to 8 times the average spacing (about 40
-///        neighbours), as for `CGAL::estimate_aso_curvatures()`.
+///        A good start is about 40 neighbours (3.5 to 4 times the average
+///        spacing), as for `CGAL::estimate_aso_curvatures()`.
 /// \param np an optional sequence of named parameters among the ones listed below
 ///
 /// \cgalNamedParamsBegin
@@ -89,10 +93,33 @@ struct Barycenter_estimator : Estimator_base
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{callback}
 ///     \cgalParamDescription{called with the fraction of points processed so far (in `[0,1]`),
-///       from the calling thread, about every 1% of the points; if it returns `false` the
+///       from the calling thread, at least every 1% of the points and about every 0.25 s
+///       on long runs; if it returns `false` the
 ///       estimation stops and the points not yet processed keep the status `NOT_COMPUTED`}
 ///     \cgalParamType{an instance of `std::function<bool(double)>`}
 ///     \cgalParamDefault{no callback}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Point_set_curvatures::parameters::min_neighbors}
+///     \cgalParamDescription{the least number of neighbours (query included) of a valid
+///       estimate; below it the status is `TOO_FEW_NEIGHBORS`. Values below what the fit
+///       needs (3) are raised to it}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{20: the measured minimum of this estimator (user manual,
+///       "Neighbourhoods and scale")}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Point_set_curvatures::parameters::accept_unnormalized_normals}
+///     \cgalParamDescription{by default a normal whose length lies outside `[1e-3, 1e3]` is
+///       `INVALID_NORMAL` (colours or unscaled integers read as normals); `true` uses every
+///       finite non-zero normal}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Point_set_curvatures::parameters::tile}
+///     \cgalParamDescription{estimates only the own points of a tile of a larger cloud
+///       (`points` holds them and their halo), bitwise as in the whole-cloud run; the other
+///       points get `NOT_COMPUTED`}
+///     \cgalParamType{`CGAL::Point_set_curvatures::Tile`}
+///     \cgalParamDefault{no tile: every point is estimated}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///

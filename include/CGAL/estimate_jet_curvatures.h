@@ -22,7 +22,7 @@ namespace internal {
 struct Jet_estimator : Estimator_base
 {
   Jet_degrees degrees;
-  explicit Jet_estimator(const Jet_degrees& d) : degrees(d) {}
+  explicit Jet_estimator(const Jet_degrees& d) : degrees(d) { min_neighbors = default_min_neighbors::jet; }
   Local_estimate operator()(const Neighborhood& nb) const
   {
     return osculating_jet_estimate(nb, degrees);
@@ -102,8 +102,8 @@ Jet_degrees jet_degrees(const NamedParameters& np, const char* function_name)
 /// \param points input oriented point cloud
 /// \param radius radius `r` of the neighbourhoods (every input point at distance `< r`, the
 ///        query point included), in the unit of the coordinates.
-///        A good start is 5 to 8 times the average spacing (about 40
-///        neighbours), as for `CGAL::estimate_aso_curvatures()`.
+///        A good start is about 40 neighbours (3.5 to 4 times the average
+///        spacing), as for `CGAL::estimate_aso_curvatures()`.
 /// \param np an optional sequence of named parameters among the ones listed below
 ///
 /// \cgalNamedParamsBegin
@@ -130,7 +130,8 @@ Jet_degrees jet_degrees(const NamedParameters& np, const char* function_name)
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{callback}
 ///     \cgalParamDescription{called with the fraction of points processed so far (in `[0,1]`),
-///       from the calling thread, about every 1% of the points; if it returns `false` the
+///       from the calling thread, at least every 1% of the points and about every 0.25 s
+///       on long runs; if it returns `false` the
 ///       estimation stops and the points not yet processed keep the status `NOT_COMPUTED`}
 ///     \cgalParamType{an instance of `std::function<bool(double)>`}
 ///     \cgalParamDefault{no callback}
@@ -147,6 +148,28 @@ Jet_degrees jet_degrees(const NamedParameters& np, const char* function_name)
 ///       `d'`); the curvatures need 2, higher degrees only add work here}
 ///     \cgalParamType{an integer, from 2 to `min(4, degree_fitting)`}
 ///     \cgalParamDefault{2}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Point_set_curvatures::parameters::min_neighbors}
+///     \cgalParamDescription{the least number of neighbours (query included) of a valid
+///       estimate; below it the status is `TOO_FEW_NEIGHBORS`. Values below what the fit
+///       needs (6 with order-2 fitting, 10 with order 3) are raised to it}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{12: the measured minimum of this estimator (user manual,
+///       "Neighbourhoods and scale")}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Point_set_curvatures::parameters::accept_unnormalized_normals}
+///     \cgalParamDescription{by default a normal whose length lies outside `[1e-3, 1e3]` is
+///       `INVALID_NORMAL` (colours or unscaled integers read as normals); `true` uses every
+///       finite non-zero normal}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Point_set_curvatures::parameters::tile}
+///     \cgalParamDescription{estimates only the own points of a tile of a larger cloud
+///       (`points` holds them and their halo), bitwise as in the whole-cloud run; the other
+///       points get `NOT_COMPUTED`}
+///     \cgalParamType{`CGAL::Point_set_curvatures::Tile`}
+///     \cgalParamDefault{no tile: every point is estimated}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///

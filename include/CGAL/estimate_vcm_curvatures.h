@@ -52,8 +52,8 @@ namespace CGAL {
 /// Results: one `Curvature_estimate` per element of `points`, in the same order, with the
 /// statuses of `CGAL::estimate_aso_curvatures()`: `NON_FINITE_POINT`, `INVALID_NORMAL`
 /// (such points are nobody's neighbour either), `NOT_COMPUTED` (cancelled through
-/// `callback`), `TOO_FEW_NEIGHBORS` (fewer than 3 points at distance `< r`, the query
-/// included), `DEGENERATE_FIT` (the usable points are collinear, or the measure is zero).
+/// `callback`), `TOO_FEW_NEIGHBORS` (fewer points at distance `< r`, the query included,
+/// than `min_neighbors`: 20 by default), `DEGENERATE_FIT` (the usable points are collinear, or the measure is zero).
 /// Invalid estimates hold NaN in every numeric field. Sequential and parallel runs return
 /// the same results up to rounding: CGAL's construction of the Voronoi cells is not bitwise
 /// reproducible from one call to the next (covariances within 1e-15 relative, magnitudes
@@ -66,8 +66,8 @@ namespace CGAL {
 /// \param points input oriented point cloud
 /// \param radius radius `r` of the neighbourhoods (every input point at distance `< r`, the
 ///        query point included), in the unit of the coordinates.
-///        A good start is 5 to 8 times the average spacing (about 40
-///        neighbours), as for `CGAL::estimate_aso_curvatures()`.
+///        A good start is about 40 neighbours (3.5 to 4 times the average
+///        spacing), as for `CGAL::estimate_aso_curvatures()`.
 ///        It is also the convolution radius of the VCM.
 /// \param np an optional sequence of named parameters among the ones listed below
 ///
@@ -108,6 +108,25 @@ namespace CGAL {
 ///     \cgalParamType{`double`, positive and finite}
 ///     \cgalParamDefault{the radius `r` (by count: the median of the per-point radii);
 ///       Lejemble et al. 2021 use `0.5 r`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Point_set_curvatures::parameters::min_neighbors}
+///     \cgalParamDescription{the least number of neighbours (query included) of a valid
+///       estimate; below it the status is `TOO_FEW_NEIGHBORS`. Values below what the fit
+///       needs (3) are raised to it}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{20: the measured minimum of this estimator (user manual,
+///       "Neighbourhoods and scale")}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Point_set_curvatures::parameters::accept_unnormalized_normals}
+///     \cgalParamDescription{by default a normal whose length lies outside `[1e-3, 1e3]` is
+///       `INVALID_NORMAL` (colours or unscaled integers read as normals); `true` uses every
+///       finite non-zero normal}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Point_set_curvatures::parameters::tile}
+///     \cgalParamDescription{not supported: CGAL's VCM integrates over Voronoi cells, which
+///       no fixed halo bounds; `std::invalid_argument` is thrown}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///

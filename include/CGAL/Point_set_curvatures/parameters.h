@@ -13,6 +13,7 @@
 #define CGAL_POINT_SET_CURVATURES_PARAMETERS_H
 
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/Point_set_curvatures/Tile.h>
 
 #include <cstddef>
 
@@ -74,6 +75,73 @@ neighbor_count(std::size_t k, const NamedParameters& np = CGAL::parameters::defa
 
 } // namespace parameters
 } // namespace Point_set_curvatures
+
+// ---- Validity and tiles: options of every per-point function ----
+namespace Point_set_curvatures {
+namespace internal_np {
+
+enum min_neighbors_t { min_neighbors };
+enum accept_unnormalized_normals_t { accept_unnormalized_normals };
+enum tile_t { tile };
+
+} // namespace internal_np
+
+namespace parameters {
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// Named parameter of every estimation function: the least number of neighbours (points at
+/// distance `< r`, the query point included) for which an estimate is computed; below it the
+/// estimate is `TOO_FEW_NEIGHBORS`, with NaN fields and its `neighbor_count` set.
+///
+/// The default of each function is its measured minimum: the smallest count from which its
+/// mean error stays within 3 times its error at 40 neighbours on four Goursat clouds (blue
+/// noise, i.i.d. random, simulated LiDAR scan lines; user manual, "Neighbourhoods and scale"):
+/// 12 for `estimate_aso_curvatures()`, `estimate_apss_curvatures()`,
+/// `estimate_algebraic_sphere_features()`, `estimate_jet_curvatures()` and
+/// `estimate_wavejet_curvatures()`; 10 for `estimate_pca_plane_curvatures()`; 15 for
+/// `estimate_pss_curvatures()`; 20 for `estimate_barycenter_curvatures()` and
+/// `estimate_vcm_curvatures()`. A smaller value is raised to what the fit itself needs (3 for
+/// the sphere fits, the barycenter, the PCA plane and VCM, 6 for PSS, wavejets and order-2
+/// jets).
+template <class NamedParameters = CGAL::parameters::Default_named_parameters>
+CGAL::Named_function_parameters<std::size_t, internal_np::min_neighbors_t, NamedParameters>
+min_neighbors(std::size_t count, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return CGAL::Named_function_parameters<std::size_t, internal_np::min_neighbors_t,
+                                         NamedParameters>(count, np);
+}
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// Named parameter of every function reading normals: by default (`false`) a normal whose
+/// length lies outside `[1e-3, 1e3]` is `INVALID_NORMAL` (and the point is nobody's
+/// neighbour), since such a vector is almost surely not a normal (colours read as normals,
+/// unscaled integers); `true` accepts any finite non-zero length, for the estimators that use
+/// the input normals unnormalised on purpose (`aso_projection(AUTHORS_IMPLEMENTATION)`).
+template <class NamedParameters = CGAL::parameters::Default_named_parameters>
+CGAL::Named_function_parameters<bool, internal_np::accept_unnormalized_normals_t, NamedParameters>
+accept_unnormalized_normals(bool accept, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return CGAL::Named_function_parameters<bool, internal_np::accept_unnormalized_normals_t,
+                                         NamedParameters>(accept, np);
+}
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// Named parameter of every estimation function: estimates only the own points of `tile` (the
+/// range holds them and their halo, see `CGAL::Point_set_curvatures::Tile`), bitwise as in
+/// the whole-cloud run; the other points get `NOT_COMPUTED` (unusable points
+/// keep `NON_FINITE_POINT` or `INVALID_NORMAL`). With a halo too small for that,
+/// the function throws `CGAL::Point_set_curvatures::Halo_too_small` (neighbourhoods by count)
+/// or `std::invalid_argument` (by radius: the halo must be at least the radius).
+template <class NamedParameters = CGAL::parameters::Default_named_parameters>
+CGAL::Named_function_parameters<Tile, internal_np::tile_t, NamedParameters>
+tile(const Tile& t, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return CGAL::Named_function_parameters<Tile, internal_np::tile_t, NamedParameters>(t, np);
+}
+
+} // namespace parameters
+} // namespace Point_set_curvatures
+// ---- end of the validity and tile options ----
 
 // ---- Baseline estimators (issue 4): options of estimate_vcm_curvatures() ----
 namespace Point_set_curvatures {

@@ -189,16 +189,17 @@ struct Local_sphere_features
   bool is_valid() const { return status == Curvature_estimate_status::VALID; }
 };
 
-// Features of the sphere fitted to sums `s`, with scale derivative sums `ds`.
-// `count` is the number of neighbours behind the sums.
+// Features of the sphere fitted to sums `s`, with scale derivative sums `ds`; TOO_FEW_NEIGHBORS
+// below `min_count` neighbours (never below the fit's own minimum).
 template <class WeightKernel>
 Local_sphere_features sphere_features(const Algebraic_sphere_sums<WeightKernel>& s,
-                                      const Sphere_sums& ds, double radius)
+                                      const Sphere_sums& ds, double radius,
+                                      std::size_t min_count = apss_min_neighbors)
 {
   Local_sphere_features f;
   f.neighbor_count = s.count;
   f.radius = radius;
-  if(s.count < apss_min_neighbors)
+  if(s.count < apss_min_neighbors || s.count < min_count)
   {
     f.status = Curvature_estimate_status::TOO_FEW_NEIGHBORS;
     return f;
@@ -240,11 +241,11 @@ Local_sphere_features sphere_features(const Algebraic_sphere_sums<WeightKernel>&
 // Single scale: the whole neighbourhood at its radius. The sums are those of the APSS
 // estimator (same code), so normal and mean curvature agree with it exactly.
 template <class WeightKernel>
-Local_sphere_features sphere_features(const Neighborhood& nb)
+Local_sphere_features sphere_features(const Neighborhood& nb, std::size_t min_count = apss_min_neighbors)
 {
   Algebraic_sphere_sums<WeightKernel> sums;
   sums.add(nb);
-  return sphere_features(sums, scale_derivative_sums<WeightKernel>(nb), nb.radius);
+  return sphere_features(sums, scale_derivative_sums<WeightKernel>(nb), nb.radius, min_count);
 }
 
 // Projection of the point x (scaled frame) onto the fitted sphere, Equation 20. With
@@ -310,7 +311,7 @@ public:
   // (nb.radius == the value returned by set_radii); out[k] for radii[k]. Not thread-safe
   // (scratch buckets): one object per thread.
   template <class WeightKernel>
-  void compute(const Neighborhood& nb, Local_sphere_features* out)
+  void compute(const Neighborhood& nb, Local_sphere_features* out, std::size_t min_count = apss_min_neighbors)
   {
     const std::size_t n_radii = m_radii.size();
     m_buckets.assign(n_radii, Moments());
@@ -356,7 +357,7 @@ public:
       Sphere_sums ds;
       combine(prefix, lambda, Poly::weight, sums.A, sums.B, sums.C, sums.D, sums.E);
       combine(prefix, lambda, Poly::scale_derivative, ds.A, ds.B, ds.C, ds.D, ds.E);
-      out[k] = sphere_features(sums, ds, radius);
+      out[k] = sphere_features(sums, ds, radius, min_count);
     }
   }
 

@@ -42,17 +42,32 @@ template <class PointRange, class NamedParameters>
 using Estimates_without_radius = Results_without_radius<Curvature_estimate, PointRange, NamedParameters>;
 
 // Driver options of a public function: its name (for messages), whether its estimator wants
-// unit normals, and the `callback` named parameter.
+// unit normals, and the named parameters `callback`, `accept_unnormalized_normals` and `tile`.
 template <class NamedParameters>
 Neighborhood_options neighborhood_options(const NamedParameters& np, const char* function_name,
                                           bool normalize_normals)
 {
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
   Neighborhood_options options;
   options.normalize_normals = normalize_normals;
-  options.callback = CGAL::parameters::choose_parameter(
-    CGAL::parameters::get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
+  options.callback = choose_parameter(get_parameter(np, CGAL::internal_np::callback),
+                                      std::function<bool(double)>());
   options.function_name = function_name;
+  options.check_normal_length =
+    !choose_parameter(get_parameter(np, internal_np::accept_unnormalized_normals), false);
+  options.has_tile = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::tile_t>::value;
+  options.tile = choose_parameter(get_parameter(np, internal_np::tile), Tile());
   return options;
+}
+
+// The least neighbour count of an estimate: the named parameter `min_neighbors` if given,
+// else the estimator's measured default.
+template <class NamedParameters>
+std::size_t min_neighbors_parameter(const NamedParameters& np, std::size_t estimator_default)
+{
+  return CGAL::parameters::choose_parameter(
+    CGAL::parameters::get_parameter(np, internal_np::min_neighbors), estimator_default);
 }
 
 // The common body of every per-point function of the package: reads the named parameters
@@ -101,10 +116,14 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
                         const char* function_name)
 {
   typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits Geom_traits;
+  const std::size_t min_neighbors = min_neighbors_parameter(np, estimator.min_neighbors);
   return evaluate_at_every_point<Curvature_estimate<Geom_traits>, ConcurrencyTag>(
     points, radius_given, radius, np,
     neighborhood_options(np, function_name, estimator.normalize_normals),
-    [&estimator](const Neighborhood& nb) {
+    [&estimator, min_neighbors](const Neighborhood& nb) {
+      if(nb.size < min_neighbors)
+        return to_curvature_estimate<Geom_traits>(
+          Local_estimate::invalid(Curvature_estimate_status::TOO_FEW_NEIGHBORS), nb.size);
       Local_estimate e = estimator(nb);
       if(e.status == Curvature_estimate_status::VALID && estimator.check_tangent_spread &&
          neighborhood_lacks_tangent_spread(nb))

@@ -9,14 +9,16 @@
 //      neighbour loops read contiguous memory),
 //   4. for every point, gather the points at distance < r into a small reusable buffer
 //      in the point's scaled centred frame and hand it to a visitor (for_each_neighborhood),
-//      sequentially or with TBB, reporting progress through `callback` between batches.
+//      sequentially or with TBB, reporting progress through `callback` between batches
+//      (for_each_batch: the batch rule is documented there).
 // estimate_at_every_point() (estimate_at_every_point.h) builds the curvature functions on
 // it, with knn_neighborhoods.h for neighbourhoods by count.
 //
 // An estimator is a copyable callable `Local_estimate operator()(const Neighborhood&)
 // const` with a member `bool normalize_normals` (Estimator_base); it must not keep state
-// between calls. Results do not depend on the concurrency tag: every point sees its
-// neighbours in the same (grid) order.
+// between calls. Results do not depend on the concurrency tag nor on the other points of a
+// tile (Tile.h): every point sees its neighbours in the same order, that of a lattice of
+// cells anchored at the origin (neighbor_grid.h) and, within a cell, of the input.
 
 #ifndef CGAL_POINT_SET_CURVATURES_INTERNAL_ESTIMATION_DRIVER_H
 #define CGAL_POINT_SET_CURVATURES_INTERNAL_ESTIMATION_DRIVER_H
@@ -24,6 +26,7 @@
 #include <CGAL/Curvature_estimate.h>
 #include <CGAL/Point_set_curvatures/internal/local_estimate.h>
 #include <CGAL/Point_set_curvatures/internal/neighbor_grid.h>
+#include <CGAL/Point_set_curvatures/Tile.h>
 #include <CGAL/Point_set_curvatures/parameters.h>
 
 #include <CGAL/Kernel_traits.h>
@@ -38,9 +41,11 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
+#include <tbb/task_arena.h>
 #endif
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -58,7 +63,8 @@ namespace Point_set_curvatures {
 namespace internal {
 
 // Common part of the per-point estimators: whether they want unit normals (the driver
-// normalises once per point) or the input normals as given; and whether the driver must
+// normalises once per point) or the input normals as given; their least neighbour count;
+// and whether the driver must
 // reject their valid estimates on neighbourhoods without spread in two tangent directions
 // (one scan line, a planar curve: one curvature is not measured), which estimators that
 // test it with their own moments (ASO, APSS) turn off.
@@ -66,6 +72,10 @@ struct Estimator_base
 {
   bool normalize_normals = true;
   bool check_tangent_spread = true;
+  // The least number of neighbours (query included) of a valid estimate unless the named
+  // parameter min_neighbors says otherwise: the estimator's entry of default_min_neighbors
+  // (local_estimate.h).
+  std::size_t min_neighbors = 12;
 };
 
 template <class ConcurrencyTag>
@@ -191,7 +201,36 @@ struct Sorted_cloud
   std::vector<double> position;            // xyz per point, grid order
   std::vector<double> normal;              // normal per point (unit if asked), grid order
   double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};  // bounding box of the usable points
+  // With a tile: own[k] != 0 for the tile's own points (the only ones estimated), grid order.
+  // Empty without a tile: every point is estimated.
+  std::vector<char> own;
+  std::size_t own_count = 0;  // points estimated (own points, or every usable point)
+
+  bool is_own(std::size_t k) const { return own.empty() || own[k] != 0; }
 };
+
+// Options of the driver (for_each_neighborhood(), for_each_neighborhood_knn()).
+struct Neighborhood_options
+{
+  bool normalize_normals = true;             // hand unit normals to the visitor
+  // normals of length outside [1e-3, 1e3] are INVALID_NORMAL (accept_unnormalized_normals)
+  bool check_normal_length = true;
+  std::function<bool(double)> callback;      // progress in [0,1]; false cancels
+  const char* function_name = "Point_set_curvatures";  // for error messages
+  // A tile (Tile.h): only its own points are visited; `reach` is how far, in radii, an
+  // estimate depends on other points (1: its neighbourhood), which the halo must cover.
+  bool has_tile = false;
+  Tile tile;
+  double reach = 1;
+};
+
+// Usable normal: non-zero, finite and, unless accepted, of length in [1e-3, 1e3].
+inline bool usable_normal(double squared_length, bool check_length)
+{
+  if(!(squared_length > 0) || !std::isfinite(squared_length))
+    return false;
+  return !check_length || (squared_length >= 1e-6 && squared_length <= 1e6);
+}
 
 // Runs f(first, last) over [0, n): in one piece, or in chunks on TBB's threads.
 template <class ConcurrencyTag, class Function>
@@ -210,13 +249,15 @@ void for_index_chunks(std::size_t n, const Function& f)
 
 // Reads the range through the maps, sets the status of unusable points and returns the
 // usable points sorted in a grid of cell size >= radius, with unit normals if
-// `normalize_normals`. Every pass is parallel with Parallel_tag; the result does not
-// depend on the tag (ties in the sort are broken by input position).
+// `options.normalize_normals`, and the tile's own points flagged. Every pass is parallel
+// with Parallel_tag; the result does not depend on the tag (ties in the sort are broken by
+// input position).
 template <class ConcurrencyTag, class PointRange, class PointMap, class NormalMap>
 void read_and_sort(const PointRange& points, PointMap point_map, NormalMap normal_map,
-                   double radius, bool normalize_normals,
+                   double radius, const Neighborhood_options& options,
                    std::vector<Curvature_estimate_status>& status, Sorted_cloud& cloud)
 {
+  const bool normalize_normals = options.normalize_normals;
   typedef typename PointRange::const_iterator Iterator;
   typedef typename std::iterator_traits<Iterator>::iterator_category Category;
   constexpr bool random_access = std::is_convertible<Category, std::random_access_iterator_tag>::value;
@@ -260,7 +301,7 @@ void read_and_sort(const PointRange& points, PointMap point_map, NormalMap norma
       const auto& v = get(normal_map, item(i));
       const double nv[3] = {CGAL::to_double(v.x()), CGAL::to_double(v.y()), CGAL::to_double(v.z())};
       const double nn = nv[0] * nv[0] + nv[1] * nv[1] + nv[2] * nv[2];
-      if(!(nn > 0) || !std::isfinite(nn))
+      if(!usable_normal(nn, options.check_normal_length))
       {
         status[i] = Curvature_estimate_status::INVALID_NORMAL;
         continue;
@@ -334,6 +375,21 @@ void read_and_sort(const PointRange& points, PointMap point_map, NormalMap norma
       }
     }
   });
+
+  // The tile's own points.
+  cloud.own_count = n_usable;
+  if(options.has_tile)
+  {
+    cloud.own.assign(n_usable, 0);
+    for_index_chunks<ConcurrencyTag>(n_usable, [&](std::size_t first, std::size_t last) {
+      for(std::size_t k = first; k < last; ++k)
+      {
+        const double* x = &cloud.position[3 * k];
+        cloud.own[k] = options.tile.owns(x[0], x[1], x[2]) ? 1 : 0;
+      }
+    });
+    cloud.own_count = static_cast<std::size_t>(std::count(cloud.own.begin(), cloud.own.end(), char(1)));
+  }
 }
 
 // Fills the buffer's columns with the points `index[0..size)` of `cloud` in the scaled
@@ -368,15 +424,20 @@ void visit_neighborhood(const Sorted_cloud& cloud, std::uint32_t query, double r
   visit(std::size_t(cloud.input_index[query]), static_cast<const Neighborhood&>(nb));
 }
 
-// Visits the neighbourhood of every point of the cells [first, last): selects the points
-// at distance < r among the candidates of the 27 surrounding cells, copies them into
-// `buffer` (scaled centred frame) and calls visit(input_index, nb).
+// Visits the neighbourhood of every own point of the grid positions [first, last): selects
+// the points at distance < r among the candidates of the 27 cells around its cell, copies
+// them into `buffer` (scaled centred frame) and calls visit(input_index, nb). A range may
+// start or end inside a cell, so that a cell holding many points is shared between tasks.
 template <class Visitor>
-void visit_cells(const Sorted_cloud& cloud, double radius, std::size_t first_cell,
-                 std::size_t last_cell, Neighbor_buffer& buffer, Visitor& visit)
+void visit_points(const Sorted_cloud& cloud, double radius, std::uint32_t first,
+                  std::uint32_t last, Neighbor_buffer& buffer, Visitor& visit)
 {
+  if(first >= last)
+    return;
   const double r2 = radius * radius;
   const double* position = cloud.position.data();
+  const std::size_t first_cell = cloud.grid.cell_of_point(first);
+  const std::size_t last_cell = cloud.grid.cell_of_point(last - 1) + 1;
   cloud.grid.for_each_cell(first_cell, last_cell, [&](Index_range cell, const Index_range* rows) {
     std::size_t n_candidates = 0;
     for(int r = 0; r < 9; ++r)
@@ -384,8 +445,11 @@ void visit_cells(const Sorted_cloud& cloud, double radius, std::size_t first_cel
     buffer.set_size(0);
     buffer.reserve(n_candidates);
     std::uint32_t* selected = buffer.candidates();
-    for(std::uint32_t query = cell.begin; query < cell.end; ++query)
+    const std::uint32_t query_end = std::min(cell.end, last);
+    for(std::uint32_t query = std::max(cell.begin, first); query < query_end; ++query)
     {
+      if(!cloud.is_own(query))
+        continue;
       const double x0 = position[3 * query], x1 = position[3 * query + 1],
                    x2 = position[3 * query + 2];
       // 1. select: branch-free, the index is always written and kept if inside the ball
@@ -405,62 +469,101 @@ void visit_cells(const Sorted_cloud& cloud, double radius, std::size_t first_cel
   });
 }
 
-// The batch loop of the drivers. Runs `process(first_cell, last_cell)` over every cell of
-// cloud.grid, in batches of cells holding about 1% of the points (at least 16384; a single
-// batch without a callback); with Parallel_tag, a batch is split between TBB's threads, so
-// `process` is called concurrently on disjoint ranges. After each batch, `finish(first_point,
-// last_point)` is called from the calling thread with the batch's points (grid order), the
-// points are marked VALID and `callback` gets the fraction done; false cancels, leaving the
-// points not reached NOT_COMPUTED.
-template <class ConcurrencyTag, class Process, class Finish>
-void for_each_cell_batch(const Sorted_cloud& cloud, const std::function<bool(double)>& callback,
-                         std::vector<Curvature_estimate_status>& status, Process process,
-                         Finish finish)
+// Calls process(first, last) on ranges of positions covering [begin, end) of the grid order:
+// one range, or ranges processed concurrently by TBB's threads (Parallel_tag), small enough
+// that the points of one cell, however many, are shared between threads.
+template <class ConcurrencyTag, class Process>
+void process_in_parallel(std::size_t begin, std::size_t end, const Process& process)
 {
-  const std::size_t n_cells = cloud.grid.number_of_cells();
-  const std::size_t n_points = cloud.grid.number_of_points();
-  const std::size_t batch_points = callback ? std::max<std::size_t>(16384, n_points / 100) : n_points + 1;
-  std::size_t done = 0;
-  for(std::size_t first = 0; first < n_cells;)
-  {
-    std::size_t last = first;
-    const std::size_t stop = done + batch_points;
-    std::size_t batch_end = done;
-    while(last < n_cells && batch_end < stop)
-      batch_end = cloud.grid.points_of_cell(last++).end;
-
 #ifdef CGAL_LINKED_WITH_TBB
-    if(is_parallel<ConcurrencyTag>())
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last, 64),
-                        [&](const tbb::blocked_range<std::size_t>& range) { process(range.begin(), range.end()); });
-    else
+  if(is_parallel<ConcurrencyTag>() && end - begin > 1)
+  {
+    const std::size_t grain =
+      std::max<std::size_t>(1, (end - begin) / (64 * std::size_t(std::max(1, tbb::this_task_arena::max_concurrency()))));
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end, grain),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        process(static_cast<std::uint32_t>(r.begin()), static_cast<std::uint32_t>(r.end()));
+                      });
+    return;
+  }
 #endif
-      process(first, last);
-    finish(static_cast<std::uint32_t>(done), static_cast<std::uint32_t>(batch_end));
+  process(static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(end));
+}
 
-    for(std::size_t k = done; k < batch_end; ++k)
-      status[cloud.input_index[k]] = Curvature_estimate_status::VALID;
-    done = batch_end;
+// The batch loop of the drivers: runs `process(first, last)` over the grid positions of
+// cloud.grid, then `finish(first, last)` from the calling thread, batch after batch; marks
+// the own points of each batch VALID and reports progress. Without a callback, one batch.
+// With a callback, the rule the documentation states: `callback(fraction of the own points
+// done)` is called from the calling thread after every batch; a batch holds at most 1% of
+// the points (rounded up), and fewer when the previous batches ran slower than 0.25 s per
+// 1%: a batch is sized to take about 0.25 s at the speed measured so far (at least one point
+// per thread). So the callback comes at least every 1% of the points and, on large inputs,
+// about every 0.25 s, whatever the cell sizes (a single point taking longer delays it). It
+// gets 1 after the last batch; returning false cancels, leaving the points not reached
+// NOT_COMPUTED.
+template <class ConcurrencyTag, class Process, class Finish>
+void for_each_batch(const Sorted_cloud& cloud, const std::function<bool(double)>& callback,
+                    std::vector<Curvature_estimate_status>& status, Process process,
+                    Finish finish)
+{
+  typedef std::chrono::steady_clock Clock;
+  const std::size_t n_points = cloud.grid.number_of_points();
+  const double n_own = double(std::max<std::size_t>(cloud.own_count, 1));
+  const std::size_t max_batch = callback ? (n_points + 99) / 100 : n_points;
+  std::size_t min_batch = 1;
+#ifdef CGAL_LINKED_WITH_TBB
+  if(is_parallel<ConcurrencyTag>())
+    min_batch = std::size_t(std::max(1, tbb::this_task_arena::max_concurrency()));
+#endif
+  std::size_t batch = callback ? std::min(max_batch, 64 * min_batch) : n_points;
+  std::size_t own_done = 0;
+  for(std::size_t first = 0; first < n_points;)
+  {
+    const std::size_t last = std::min(n_points, first + batch);
+    const Clock::time_point start = Clock::now();
+    process_in_parallel<ConcurrencyTag>(first, last, process);
+    finish(static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(last));
+    for(std::size_t k = first; k < last; ++k)
+      if(cloud.is_own(k))
+      {
+        status[cloud.input_index[k]] = Curvature_estimate_status::VALID;
+        ++own_done;
+      }
+    const std::size_t done = last - first;
     first = last;
-    if(callback && !callback(double(done) / double(n_points)))
-      break;
+    if(callback)
+    {
+      if(!callback(first == n_points ? 1.0 : double(own_done) / n_own))
+        break;
+      const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+      const double wanted = seconds > 0 ? double(done) * 0.25 / seconds : double(max_batch);
+      batch = static_cast<std::size_t>(std::max(double(min_batch), std::min(double(max_batch), wanted)));
+    }
   }
 }
 
-// Options of for_each_neighborhood().
-struct Neighborhood_options
+// Throws unless a tile's halo covers the reach of its estimates with a fixed radius.
+inline void check_tile_halo(const Neighborhood_options& options, double radius)
 {
-  bool normalize_normals = true;             // hand unit normals to the visitor
-  std::function<bool(double)> callback;      // progress in [0,1]; false cancels
-  const char* function_name = "Point_set_curvatures";  // for error messages
-};
+  if(options.has_tile && !(options.tile.halo >= options.reach * radius))
+  {
+    std::ostringstream msg;
+    msg.precision(17);
+    msg << options.function_name << ": parameter 'tile': the halo " << options.tile.halo
+        << " must be at least " << options.reach * radius << " (" << options.reach
+        << " times the radius) for exact results";
+    throw std::invalid_argument(msg.str());
+  }
+}
 
 // The driver. Calls `visit(input_index, nb)` for every usable point of `points` with the
 // points at distance < radius (itself included) in its scaled centred frame; with
 // Parallel_tag, from several threads at once (distinct indices). Returns, per input point,
 // VALID if it was visited, NON_FINITE_POINT or INVALID_NORMAL if it is unusable (then it is
-// nobody's neighbour), NOT_COMPUTED if the callback cancelled the run first.
-// Throws std::invalid_argument for a radius that is not positive and finite.
+// nobody's neighbour), NOT_COMPUTED if the callback cancelled the run first or if it is not
+// one of the tile's own points.
+// Throws std::invalid_argument for a radius that is not positive and finite, or a tile
+// whose halo is smaller than the radius.
 template <class ConcurrencyTag, class PointRange, class PointMap, class NormalMap, class Visitor>
 std::vector<Curvature_estimate_status>
 for_each_neighborhood(const PointRange& points, PointMap point_map, NormalMap normal_map,
@@ -468,28 +571,28 @@ for_each_neighborhood(const PointRange& points, PointMap point_map, NormalMap no
 {
   check_concurrency_tag<ConcurrencyTag>();
   check_radius(radius, options.function_name);
+  check_tile_halo(options, radius);
   const std::size_t n = static_cast<std::size_t>(std::distance(points.begin(), points.end()));
   std::vector<Curvature_estimate_status> status(n, Curvature_estimate_status::NOT_COMPUTED);
   if(n == 0)
     return status;
 
   Sorted_cloud cloud;
-  read_and_sort<ConcurrencyTag>(points, point_map, normal_map, radius, options.normalize_normals,
-                                status, cloud);
+  read_and_sort<ConcurrencyTag>(points, point_map, normal_map, radius, options, status, cloud);
 #ifdef CGAL_LINKED_WITH_TBB
   tbb::enumerable_thread_specific<Neighbor_buffer> buffers;
 #endif
   Neighbor_buffer sequential_buffer;
-  for_each_cell_batch<ConcurrencyTag>(
+  for_each_batch<ConcurrencyTag>(
     cloud, options.callback, status,
-    [&](std::size_t first_cell, std::size_t last_cell) {
+    [&](std::uint32_t first, std::uint32_t last) {
       Visitor local = visit;
 #ifdef CGAL_LINKED_WITH_TBB
       Neighbor_buffer& buffer = is_parallel<ConcurrencyTag>() ? buffers.local() : sequential_buffer;
 #else
       Neighbor_buffer& buffer = sequential_buffer;
 #endif
-      visit_cells(cloud, radius, first_cell, last_cell, buffer, local);
+      visit_points(cloud, radius, first, last, buffer, local);
     },
     [](std::uint32_t, std::uint32_t) {});
   return status;

@@ -50,6 +50,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
@@ -117,6 +118,52 @@ struct Knn_scratch
   std::vector<double> d2, selection;
   std::vector<Point_kd_tree::Candidate> neighbors;
   std::vector<std::uint32_t> index;
+  std::vector<std::uint64_t> order;
+};
+
+// Orders a neighbourhood (grid positions) by input position. Grid and tree find the same set
+// in different orders, and which one serves a point depends on the whole cloud (the grid's
+// side comes from a sample): the input order is the one order a tile shares with the whole
+// cloud, so that its sums, hence its estimates, are bitwise the same.
+inline void sort_by_input_index(const Sorted_cloud& cloud, std::uint32_t* index, std::size_t size,
+                                std::vector<std::uint64_t>& order)
+{
+  order.resize(size);
+  for(std::size_t i = 0; i < size; ++i)
+    order[i] = (std::uint64_t(cloud.input_index[index[i]]) << 32) | index[i];
+  std::sort(order.begin(), order.end());
+  for(std::size_t i = 0; i < size; ++i)
+    index[i] = static_cast<std::uint32_t>(order[i]);
+}
+
+// With a tile, the largest halo its own points need so far: a point's neighbourhood (radius
+// times `reach`) must lie within the halo around the core.
+class Halo_requirement
+{
+public:
+  Halo_requirement(const Neighborhood_options& options) : m_options(options) {}
+  void check(const double* x, double radius)
+  {
+    if(!m_options.has_tile)
+      return;
+    const double need = m_options.reach * radius - m_options.tile.distance_inside_core(x[0], x[1], x[2]);
+    if(need > m_options.tile.halo)
+    {
+      std::lock_guard<std::mutex> lock(m_mutex);
+      m_required = std::max(m_required, need);
+    }
+  }
+  // Throws Halo_too_small if a point needed more than the tile's halo.
+  void enforce() const
+  {
+    if(m_required > m_options.tile.halo)
+      throw Halo_too_small(m_required, m_options.tile.halo);
+  }
+
+private:
+  const Neighborhood_options& m_options;
+  std::mutex m_mutex;
+  double m_required = 0;
 };
 
 // The k-th smallest (1-based, k <= c) of the c values d2[i] in [0, s2): a histogram of 32
@@ -150,15 +197,20 @@ inline double kth_smallest(const double* d2, std::size_t c, std::size_t k, doubl
   return bin_values[j];
 }
 
-// The grid part (see the header comment): visits the points of the cells [first, last)
-// whose neighbourhood lies within the 27 cells around them, flags the others in `deferred`.
+// The grid part (see the header comment): visits the own points of the grid positions
+// [first, last) whose neighbourhood lies within the 27 cells around them, flags the others in
+// `deferred`.
 template <class Visitor>
-void visit_cells_knn(const Sorted_cloud& cloud, std::size_t k, std::size_t first_cell,
-                     std::size_t last_cell, Knn_scratch& scratch, std::vector<char>& deferred,
-                     Visitor& visit)
+void visit_points_knn(const Sorted_cloud& cloud, std::size_t k, std::uint32_t first,
+                      std::uint32_t last, Knn_scratch& scratch, std::vector<char>& deferred,
+                      Halo_requirement& halo, Visitor& visit)
 {
+  if(first >= last)
+    return;
   const double side = cloud.grid.cell_size(), s2 = side * side;
   const double* position = cloud.position.data();
+  const std::size_t first_cell = cloud.grid.cell_of_point(first);
+  const std::size_t last_cell = cloud.grid.cell_of_point(last - 1) + 1;
   cloud.grid.for_each_cell(first_cell, last_cell, [&](Index_range cell, const Index_range* rows) {
     std::size_t n_candidates = 0;
     for(int r = 0; r < 9; ++r)
@@ -169,10 +221,13 @@ void visit_cells_knn(const Sorted_cloud& cloud, std::size_t k, std::size_t first
       scratch.d2.resize(n_candidates);
     std::uint32_t* selected = scratch.buffer.candidates();
     double* d2 = scratch.d2.data();
-    for(std::uint32_t query = cell.begin; query < cell.end; ++query)
+    const std::uint32_t query_end = std::min(cell.end, last);
+    for(std::uint32_t query = std::max(cell.begin, first); query < query_end; ++query)
     {
+      if(!cloud.is_own(query))
+        continue;
       const double* x = position + 3 * std::size_t(query);
-      // the points within the side, branch-free as in visit_cells()
+      // the points within the side, branch-free as in visit_points()
       std::size_t c = 0;
       for(int r = 0; r < 9; ++r)
         for(std::uint32_t j = rows[r].begin; j < rows[r].end; ++j)
@@ -213,6 +268,8 @@ void visit_cells_knn(const Sorted_cloud& cloud, std::size_t k, std::size_t first
         selected[size] = selected[i];
         size += d2[i] < r2 ? 1 : 0;
       }
+      halo.check(x, radius);
+      sort_by_input_index(cloud, selected, size, scratch.order);
       visit_neighborhood(cloud, query, radius, selected, size, scratch.buffer, visit);
     }
   });
@@ -305,12 +362,16 @@ for_each_neighborhood_knn(const PointRange& points, PointMap point_map, NormalMa
   double side = 1.0;
   bool use_grid = true;
   {
+    Neighborhood_options read_options = options;
+    read_options.normalize_normals = false;
+    read_options.has_tile = false;
     Sorted_cloud input;
     read_and_sort<ConcurrencyTag>(points, point_map, normal_map, std::numeric_limits<double>::max(),
-                                  false, status, input);
+                                  read_options, status, input);
     const std::size_t m = input.input_index.size();
     if(m == 0)
       return status;
+    k = std::min(k, m);  // at least every usable point (and no k + 1 overflow for SIZE_MAX)
     tree.build<ConcurrencyTag>(input.position.data(), m);
     // the bounding box read_and_sort() will grid again, so that the cost model sees its cells
     const double *lo = input.lo, *hi = input.hi;
@@ -326,8 +387,7 @@ for_each_neighborhood_knn(const PointRange& points, PointMap point_map, NormalMa
 
   // 2. The usable points in the grid of that side; tree ids relabelled to grid positions.
   Sorted_cloud cloud;
-  read_and_sort<ConcurrencyTag>(points, point_map, normal_map, side, options.normalize_normals,
-                                status, cloud);
+  read_and_sort<ConcurrencyTag>(points, point_map, normal_map, side, options, status, cloud);
   const std::size_t m = cloud.input_index.size();
   {
     std::vector<std::uint32_t> grid_position(n, 0);
@@ -336,9 +396,10 @@ for_each_neighborhood_knn(const PointRange& points, PointMap point_map, NormalMa
     tree.relabel(grid_position);
   }
 
-  // 3. Batches of cells: the grid part, then the tree for the points it deferred.
+  // 3. Batches of points: the grid part, then the tree for the points it deferred.
   std::vector<char> deferred(m, 0);
   std::vector<std::uint32_t> batch_deferred;
+  Halo_requirement halo(options);
 #ifdef CGAL_LINKED_WITH_TBB
   tbb::enumerable_thread_specific<Knn_scratch> scratches;
 #endif
@@ -350,51 +411,43 @@ for_each_neighborhood_knn(const PointRange& points, PointMap point_map, NormalMa
 #endif
     return sequential_scratch;
   };
-  auto from_tree = [&](std::size_t first, std::size_t last) {
+  auto from_tree = [&](std::uint32_t first, std::uint32_t last) {
     Visitor local = visit;
     Knn_scratch& s = scratch();
     for(std::size_t d = first; d < last; ++d)
     {
       const std::uint32_t query = batch_deferred[d];
-      const double radius = knn_neighborhood(tree, &cloud.position[3 * std::size_t(query)], k, s.neighbors);
+      const double* x = &cloud.position[3 * std::size_t(query)];
+      const double radius = knn_neighborhood(tree, x, k, s.neighbors);
       s.index.resize(s.neighbors.size());
       for(std::size_t j = 0; j < s.neighbors.size(); ++j)
         s.index[j] = s.neighbors[j].second;
+      halo.check(x, radius);
+      sort_by_input_index(cloud, s.index.data(), s.index.size(), s.order);
       s.buffer.set_size(0);
       s.buffer.reserve(s.index.size());
       visit_neighborhood(cloud, query, radius, s.index.data(), s.index.size(), s.buffer, local);
     }
   };
-  for_each_cell_batch<ConcurrencyTag>(
+  for_each_batch<ConcurrencyTag>(
     cloud, options.callback, status,
-    [&](std::size_t first_cell, std::size_t last_cell) {
+    [&](std::uint32_t first, std::uint32_t last) {
       if(!use_grid)
       {
-        for(std::size_t c = first_cell; c < last_cell; ++c)
-        {
-          const Index_range cell = cloud.grid.points_of_cell(c);
-          std::fill(deferred.begin() + cell.begin, deferred.begin() + cell.end, char(1));
-        }
+        std::fill(deferred.begin() + first, deferred.begin() + last, char(1));
         return;
       }
       Visitor local = visit;
-      visit_cells_knn(cloud, k, first_cell, last_cell, scratch(), deferred, local);
+      visit_points_knn(cloud, k, first, last, scratch(), deferred, halo, local);
     },
-    [&](std::uint32_t first_point, std::uint32_t last_point) {
+    [&](std::uint32_t first, std::uint32_t last) {
       batch_deferred.clear();
-      for(std::uint32_t g = first_point; g < last_point; ++g)
-        if(deferred[g])
+      for(std::uint32_t g = first; g < last; ++g)
+        if(deferred[g] && cloud.is_own(g))
           batch_deferred.push_back(g);
-#ifdef CGAL_LINKED_WITH_TBB
-      if(is_parallel<ConcurrencyTag>())
-      {
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, batch_deferred.size(), 64),
-                          [&](const tbb::blocked_range<std::size_t>& r) { from_tree(r.begin(), r.end()); });
-        return;
-      }
-#endif
-      from_tree(0, batch_deferred.size());
+      process_in_parallel<ConcurrencyTag>(0, batch_deferred.size(), from_tree);
     });
+  halo.enforce();
   return status;
 }
 

@@ -37,10 +37,31 @@ struct Index_range
   std::uint32_t begin = 0, end = 0;
 };
 
-// Side of the cubic cells of a uniform grid over [lo, hi] searched with radius `radius`:
-// `radius`, doubled while a grid of floor(extent / side) + 1 + extra_cells cells per axis
-// would not fit 62-bit keys (very sparse clouds); `dims` receives those counts. Extents that
-// overflow (coordinates near +-1e308) give an infinite side: one cell holds everything.
+// Cell coordinate of x along an axis of a lattice of cubic cells of side `side` anchored at
+// the origin: the exact floor(x / side), an integral double. The quotient is rounded, so it is
+// corrected with the exact sign of x - q side (fma rounds once and keeps the sign). Exact
+// cells make two points at distance < side fall in the same or adjacent cells, and anchoring
+// at the origin rather than at the cloud's corner makes a point's cell independent of the
+// other points: a tile of a cloud is sorted in the same relative order as the whole cloud.
+// Valid for |x / side| < 2^52, which grid_cell_size() guarantees; an infinite side gives 0.
+inline double grid_cell_coordinate(double x, double side)
+{
+  if(std::isinf(side))
+    return 0.0;
+  double q = std::floor(x / side);
+  if(std::fma(-q, side, x) < 0)
+    q -= 1;
+  else if(std::fma(-(q + 1), side, x) >= 0)
+    q += 1;
+  return q;
+}
+
+// Side of the cubic cells of a uniform grid over the points of [lo, hi] searched with radius
+// `radius`: `radius`, doubled while the grid of (cells spanned per axis + extra_cells) cells
+// would not fit 62-bit keys (very sparse clouds), or while a coordinate exceeds 2^50 cells
+// from the origin (where cell coordinates would lose their exactness); `dims` receives the
+// counts per axis. Extents that overflow (coordinates near +-1e308) give an infinite side:
+// one cell holds everything.
 inline double grid_cell_size(const double lo[3], const double hi[3], double radius,
                              double extra_cells, double dims[3])
 {
@@ -48,24 +69,27 @@ inline double grid_cell_size(const double lo[3], const double hi[3], double radi
   if(!(std::isfinite(hi[0] - lo[0]) && std::isfinite(hi[1] - lo[1]) &&
        std::isfinite(hi[2] - lo[2]) && std::isfinite(radius)))
     side = std::numeric_limits<double>::infinity();
+  constexpr double max_cell = 1125899906842624.0;  // 2^50
   for(;;)
   {
+    if(std::isinf(side))
+    {
+      for(int i = 0; i < 3; ++i)
+        dims[i] = 1 + extra_cells;
+      return side;
+    }
     double cells = 1;
+    bool exact = true;
     for(int i = 0; i < 3; ++i)
     {
-      dims[i] = std::isinf(side) ? 1 + extra_cells : std::floor((hi[i] - lo[i]) / side) + 1 + extra_cells;
+      exact = exact && std::abs(lo[i] / side) < max_cell && std::abs(hi[i] / side) < max_cell;
+      dims[i] = exact ? grid_cell_coordinate(hi[i], side) - grid_cell_coordinate(lo[i], side) + 1 + extra_cells : 0;
       cells *= dims[i];
     }
-    if(cells < 4.0e18)
+    if(exact && cells < 4.0e18)
       return side;
     side *= 2;
   }
-}
-
-// Cell coordinate (an integral double) of x along an axis of a grid starting at `origin`.
-inline double grid_cell_coordinate(double x, double origin, double side)
-{
-  return std::isinf(side) ? 0.0 : std::floor((x - origin) / side);
 }
 
 class Neighbor_grid
@@ -82,16 +106,16 @@ public:
     // one empty cell on each side, so that cell +-1 never wraps around a row
     m_cell = grid_cell_size(lo, hi, radius, 2, m_dim);
     for(int i = 0; i < 3; ++i)
-      m_origin[i] = lo[i];
+      m_base[i] = grid_cell_coordinate(lo[i], m_cell) - 1;
     m_stride_y = static_cast<Key>(m_dim[0]);
     m_stride_z = m_stride_y * static_cast<Key>(m_dim[1]);
   }
 
   Key key(double x, double y, double z) const
   {
-    const Key ix = static_cast<Key>(grid_cell_coordinate(x, m_origin[0], m_cell)) + 1;
-    const Key iy = static_cast<Key>(grid_cell_coordinate(y, m_origin[1], m_cell)) + 1;
-    const Key iz = static_cast<Key>(grid_cell_coordinate(z, m_origin[2], m_cell)) + 1;
+    const Key ix = static_cast<Key>(grid_cell_coordinate(x, m_cell) - m_base[0]);
+    const Key iy = static_cast<Key>(grid_cell_coordinate(y, m_cell) - m_base[1]);
+    const Key iz = static_cast<Key>(grid_cell_coordinate(z, m_cell) - m_base[2]);
     return ix + m_stride_y * iy + m_stride_z * iz;
   }
 
@@ -116,6 +140,12 @@ public:
   std::size_t number_of_cells() const { return m_keys.size(); }
   std::size_t number_of_points() const { return m_start.empty() ? 0 : m_start.back(); }
   Index_range points_of_cell(std::size_t c) const { return {m_start[c], m_start[c + 1]}; }
+  // The cell holding the point at position p of the sorted order (p < number_of_points()).
+  std::size_t cell_of_point(std::uint32_t p) const
+  {
+    return static_cast<std::size_t>(std::upper_bound(m_start.begin(), m_start.end() - 1, p) -
+                                    m_start.begin()) - 1;
+  }
 
   // Visits the cells [first_cell, last_cell) in order. For each cell, `visit(cell_points,
   // rows)` receives the cell's own points and the 9 ranges holding every point of the 27
@@ -162,7 +192,7 @@ public:
   }
 
 private:
-  double m_origin[3] = {0, 0, 0};
+  double m_base[3] = {0, 0, 0};  // lattice cell coordinate of the grid's first (empty) cell
   double m_dim[3] = {0, 0, 0};
   double m_cell = 1;
   Key m_stride_y = 0, m_stride_z = 0;

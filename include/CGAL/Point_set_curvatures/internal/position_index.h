@@ -51,7 +51,7 @@ public:
       }
     m_cell = grid_cell_size(lo, hi, radius, 0, m_dim);
     for(int a = 0; a < 3; ++a)
-      m_origin[a] = lo[a];
+      m_base[a] = grid_cell_coordinate(lo[a], m_cell);
 
     std::vector<std::pair<Key, std::size_t> > keyed(n);
     for(std::size_t i = 0; i < n; ++i)
@@ -122,7 +122,7 @@ private:
   {
     for(int a = 0; a < 3; ++a)
     {
-      c[a] = grid_cell_coordinate(x[a], m_origin[a], m_cell);
+      c[a] = grid_cell_coordinate(x[a], m_cell) - m_base[a];
       if(!(c[a] > -2))
         c[a] = -2;  // far below (or NaN): no neighbour cell
       else if(c[a] > m_dim[a] + 1)
@@ -137,7 +137,7 @@ private:
   }
 
   double m_radius = 1, m_cell = 1;
-  double m_origin[3] = {0, 0, 0};
+  double m_base[3] = {0, 0, 0};  // lattice cell coordinate of the grid's first cell
   double m_dim[3] = {1, 1, 1};
   std::vector<Key> m_keys;            // sorted keys of the non-empty cells
   std::vector<std::size_t> m_start;   // first point of each cell, plus the total

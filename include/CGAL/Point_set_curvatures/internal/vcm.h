@@ -156,6 +156,12 @@ estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double 
     bool no_spread = false;
     Curvature_estimate_status status = Curvature_estimate_status::NOT_COMPUTED;
   };
+  // CGAL's VCM integrates over Voronoi cells, which depend on points beyond any fixed halo:
+  // tiles cannot give the whole-cloud result, so they are refused rather than approximated.
+  if(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::tile_t>::value)
+    throw std::invalid_argument(std::string(function_name) + ": parameter 'tile' is not supported by VCM");
+  const std::size_t min_count =
+    (std::max)(vcm_min_neighbors, min_neighbors_parameter(np, default_min_neighbors::vcm));
   Neighborhood_options options;  // the callback reports the VCM steps below, not this pass
   options.normalize_normals = false;
   options.function_name = function_name;
@@ -214,7 +220,7 @@ estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double 
       if(s == Curvature_estimate_status::DEGENERATE_FIT)
       {
         r.neighbor_count = records[input_index[j]].count;
-        if(records[input_index[j]].count < vcm_min_neighbors)
+        if(records[input_index[j]].count < min_count)
           r.status = Curvature_estimate_status::TOO_FEW_NEIGHBORS;
       }
     }
@@ -277,7 +283,7 @@ estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double 
   auto estimate = [&](std::size_t j) {
     const std::size_t i = input_index[j];
     Local_estimate e;
-    if(records[i].count < vcm_min_neighbors)
+    if(records[i].count < min_count)
       e = Local_estimate::invalid(Curvature_estimate_status::TOO_FEW_NEIGHBORS);
     else if(records[i].no_spread)
       e = Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);

@@ -1,0 +1,222 @@
+// Copyright (c) 2026 The Point_set_curvatures authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Spatial tiles: estimating a cloud piece by piece (bounded memory, several processes or
+// machines) with results bitwise identical to the whole-cloud run.
+
+#ifndef CGAL_POINT_SET_CURVATURES_TILE_H
+#define CGAL_POINT_SET_CURVATURES_TILE_H
+
+#include <CGAL/Bbox_3.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Point_set_curvatures {
+
+/// \ingroup PkgPointSetCurvaturesRef
+///
+/// One tile of a cloud: the points it estimates (its *own* points, those inside `core`) and the
+/// distance `halo` up to which the points around the core are present as neighbours.
+///
+/// Given to an estimation function with the named parameter
+/// `CGAL::Point_set_curvatures::parameters::tile()`, the range passed to the function must hold
+/// every point of the whole cloud at distance `<= halo` from `core` (points farther away are
+/// allowed and ignored as queries), **in the same relative order as in the whole cloud**. Then
+/// the estimate of every own point is bitwise identical to the one of the whole-cloud run
+/// with the same parameters and concurrency tag, whatever the other tiles; the other points get
+/// the status `NOT_COMPUTED`, or `NON_FINITE_POINT` / `INVALID_NORMAL` if they are unusable.
+///
+/// The core is half-open: a point `p` is own if `core.min(a) <= p[a] < core.max(a)` on each
+/// axis `a`; bounds may be infinite, so that the tiles of a `Tile_grid` cover all of space and
+/// every finite point is own in exactly one tile.
+struct Tile
+{
+  /// the region of the tile's own points (half-open, see above)
+  Bbox_3 core;
+  /// every point of the cloud at distance `<= halo` from `core` is in the range
+  double halo = 0;
+
+  Tile() = default;
+  Tile(const Bbox_3& core_box, double halo_distance) : core(core_box), halo(halo_distance) {}
+
+  /// `true` if the point `(x, y, z)` is one of the tile's own points (never for NaN)
+  bool owns(double x, double y, double z) const
+  {
+    return x >= core.xmin() && x < core.xmax() && y >= core.ymin() && y < core.ymax() &&
+           z >= core.zmin() && z < core.zmax();
+  }
+
+  /// Euclidean distance from `(x, y, z)` to the core (0 inside)
+  double distance_to_core(double x, double y, double z) const
+  {
+    const double d[3] = {std::max({0.0, core.xmin() - x, x - core.xmax()}),
+                         std::max({0.0, core.ymin() - y, y - core.ymax()}),
+                         std::max({0.0, core.zmin() - z, z - core.zmax()})};
+    return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  }
+
+  /// Distance from an own point to the core's boundary (infinite along unbounded sides): a
+  /// ball around it of radius `distance_inside_core() + halo` holds only points of the range.
+  double distance_inside_core(double x, double y, double z) const
+  {
+    return std::min({x - core.xmin(), core.xmax() - x, y - core.ymin(), core.ymax() - y,
+                     z - core.zmin(), core.zmax() - z});
+  }
+};
+
+/// \ingroup PkgPointSetCurvaturesRef
+///
+/// Thrown by an estimation function run on a `Tile` when the tile's halo is too small for
+/// the result to be exact: with neighbourhoods by count, a point's radius reaches its `k`-th
+/// nearest neighbour, which is only known once it is found. `required_halo` is a halo that
+/// suffices: run the tile again with it (more points in the range only shrink the radii,
+/// so the second run succeeds).
+class Halo_too_small : public std::runtime_error
+{
+public:
+  Halo_too_small(double required, double given)
+    : std::runtime_error(message(required, given)), m_required(required)
+  {}
+  /// a halo with which the same tile gives exact results
+  double required_halo() const { return m_required; }
+
+private:
+  static std::string message(double required, double given)
+  {
+    std::ostringstream s;
+    s.precision(17);
+    s << "Point_set_curvatures: the tile's halo " << given
+      << " is too small for exact results; a halo of " << required << " suffices";
+    return s.str();
+  }
+  double m_required;
+};
+
+/// \ingroup PkgPointSetCurvaturesRef
+///
+/// A partition of space into a grid of tiles covering a cloud's bounding box: every finite
+/// point is own in exactly one tile (the outer tiles extend to infinity), and
+/// `for_each_tile_near()` lists the tiles whose halo contains a point, so that one pass over a
+/// cloud distributes it (own points and halos) in input order.
+class Tile_grid
+{
+public:
+  Tile_grid() = default;
+
+  /// Tiles of side about `tile_side` over `box` (at least one per axis; the interior
+  /// boundaries split each axis of the box evenly).
+  /// \throws std::invalid_argument if `tile_side` is not positive and finite.
+  Tile_grid(const Bbox_3& box, double tile_side)
+  {
+    if(!(tile_side > 0) || !std::isfinite(tile_side))
+      throw std::invalid_argument("Tile_grid: the tile side must be positive and finite");
+    std::array<std::size_t, 3> counts;
+    for(int a = 0; a < 3; ++a)
+    {
+      const double extent = box.max(a) - box.min(a);
+      const double c = std::isfinite(extent) && extent > 0 ? std::ceil(extent / tile_side) : 1.0;
+      counts[a] = static_cast<std::size_t>(std::min(c, 1e6));
+    }
+    set(box, counts);
+  }
+
+  /// `counts[a]` tiles along axis `a` over `box` (each at least 1).
+  Tile_grid(const Bbox_3& box, const std::array<std::size_t, 3>& counts) { set(box, counts); }
+
+  /// number of tiles
+  std::size_t size() const { return m_boundaries[0].empty() ? 0 : count(0) * count(1) * count(2); }
+  /// number of tiles along axis `a`
+  std::size_t count(int a) const { return m_boundaries[a].size() - 1; }
+
+  /// Tile `i` (`i < size()`) with the given halo. Its core's outer sides are infinite.
+  Tile tile(std::size_t i, double halo) const
+  {
+    const std::size_t c[3] = {i % count(0), (i / count(0)) % count(1), i / (count(0) * count(1))};
+    return Tile(Bbox_3(m_boundaries[0][c[0]], m_boundaries[1][c[1]], m_boundaries[2][c[2]],
+                       m_boundaries[0][c[0] + 1], m_boundaries[1][c[1] + 1], m_boundaries[2][c[2] + 1]),
+                halo);
+  }
+
+  /// The tile owning `(x, y, z)`, or `size()` for a point with a NaN or infinite coordinate
+  /// (such points are nobody's own point: their estimate is `NON_FINITE_POINT` anyway).
+  std::size_t tile_of(double x, double y, double z) const
+  {
+    const double p[3] = {x, y, z};
+    std::size_t c[3];
+    for(int a = 0; a < 3; ++a)
+    {
+      if(!std::isfinite(p[a]))
+        return size();
+      c[a] = slab(a, p[a]);
+    }
+    return c[0] + count(0) * (c[1] + count(1) * c[2]);
+  }
+
+  /// Calls `f(i)` for every tile `i` whose core is at distance `<= halo` from `(x, y, z)`
+  /// (the owning tile included), in increasing `i`. Nothing for non-finite points.
+  template <class Function>
+  void for_each_tile_near(double x, double y, double z, double halo, Function&& f) const
+  {
+    const double p[3] = {x, y, z};
+    std::size_t first[3], last[3];
+    for(int a = 0; a < 3; ++a)
+    {
+      if(!std::isfinite(p[a]))
+        return;
+      first[a] = slab(a, p[a] - halo);
+      last[a] = slab(a, p[a] + halo);
+    }
+    for(std::size_t k = first[2]; k <= last[2]; ++k)
+      for(std::size_t j = first[1]; j <= last[1]; ++j)
+        for(std::size_t i = first[0]; i <= last[0]; ++i)
+        {
+          const std::size_t t = i + count(0) * (j + count(1) * k);
+          if(tile(t, halo).distance_to_core(x, y, z) <= halo)
+            f(t);
+        }
+  }
+
+private:
+  void set(const Bbox_3& box, const std::array<std::size_t, 3>& counts)
+  {
+    const double inf = std::numeric_limits<double>::infinity();
+    for(int a = 0; a < 3; ++a)
+    {
+      const std::size_t n = std::max<std::size_t>(1, counts[a]);
+      std::vector<double>& b = m_boundaries[a];
+      b.assign(1, -inf);
+      const double lo = box.min(a), extent = box.max(a) - box.min(a);
+      for(std::size_t i = 1; i < n; ++i)
+      {
+        const double v = lo + extent * (double(i) / double(n));
+        if(std::isfinite(v) && v > b.back())
+          b.push_back(v);
+      }
+      b.push_back(inf);
+    }
+  }
+
+  // index of the slab [b_i, b_{i+1}) holding v along axis a (clamped for infinite v)
+  std::size_t slab(int a, double v) const
+  {
+    const std::vector<double>& b = m_boundaries[a];
+    const std::size_t i = static_cast<std::size_t>(std::upper_bound(b.begin(), b.end(), v) - b.begin());
+    return std::min(std::max<std::size_t>(i, 1), b.size() - 1) - 1;
+  }
+
+  std::vector<double> m_boundaries[3];  // per axis: -inf, interior boundaries, +inf
+};
+
+} // namespace Point_set_curvatures
+} // namespace CGAL
+
+#endif // CGAL_POINT_SET_CURVATURES_TILE_H
