@@ -12,7 +12,6 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Point_set_3.h>
-#include <CGAL/Point_set_3/IO.h>
 #include <CGAL/compute_average_spacing.h>
 #include <CGAL/jet_estimate_normals.h>
 #include <CGAL/mst_orient_normals.h>
@@ -47,6 +46,10 @@
 #endif
 
 #include <tbb/global_control.h>
+
+#include "read_point_cloud.h"
+#include "tool_support.h"
+#include "write_point_cloud.h"
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -83,37 +86,9 @@ typedef CGAL::Curvature_estimate<Kernel> Estimate;
 typedef std::vector<Estimate> Estimates;
 typedef std::function<bool(double)> Callback;
 namespace PSC = CGAL::Point_set_curvatures;
+using namespace psc_tool;
 
 const char* const program = "point_set_curvatures";
-
-// Every failure the user can fix (arguments, files): one line on stderr, exit status 2.
-struct Error : std::runtime_error
-{
-  using std::runtime_error::runtime_error;
-};
-
-template <class... T>
-std::string cat(const T&... t)
-{
-  std::ostringstream s;
-  (s << ... << t);
-  return s.str();
-}
-
-// (not named quoted: std::quoted would win by ADL for non-const strings)
-std::string in_quotes(const std::string& s) { return "'" + s + "'"; }
-
-std::string lower_extension(const std::string& path)
-{
-  const std::size_t slash = path.find_last_of('/');
-  const std::size_t dot = path.find_last_of('.');
-  if(dot == std::string::npos || (slash != std::string::npos && dot < slash))
-    return "";
-  std::string e = path.substr(dot);
-  for(char& c : e)
-    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return e;
-}
 
 // ---------------------------------------------------------------------------------------
 // Methods: every estimate_*_curvatures() function of the package with the common signature.
@@ -125,6 +100,7 @@ struct Scale
   double radius = 0;           // by radius, in the unit of the coordinates
   double spacing_multiple = 0; // > 0 for "--radius Nx"
   double spacing = 0;          // CGAL::compute_average_spacing, for "--radius Nx"
+  std::size_t min_neighbors = 0;  // --min-neighbors; 0: the method's default
 };
 
 typedef Estimates (*Run_method)(const Point_set&, const Scale&, const Callback&);
@@ -134,42 +110,50 @@ struct Method
   const char* name;
   const char* description;
   Run_method run;
+  // The least neighbour count of a valid estimate (the library's default min_neighbors), and
+  // the count from which the method's mean error stays within twice its error at 40
+  // neighbours: both measured with `paper_experiments --only neighbors` (user manual,
+  // "Neighbourhoods and scale"). Below `good`, the tool warns.
+  std::size_t min_neighbors;
+  std::size_t good_neighbors;
 };
 
 // One table entry per estimator; the Point_set_3's point and normal maps are the defaults.
-#define PSC_TOOL_METHOD(NAME, DESCRIPTION)                                                   \
-  Method{#NAME, DESCRIPTION, [](const Point_set& points, const Scale& scale,                 \
-                               const Callback& callback) -> Estimates {                      \
-           const auto np = CGAL::parameters::callback(callback);                              \
-           if(scale.by_count)                                                                 \
-             return CGAL::estimate_##NAME##_curvatures<CGAL::Parallel_tag>(                  \
-               points, PSC::parameters::neighbor_count(scale.neighbors, np));                 \
-           return CGAL::estimate_##NAME##_curvatures<CGAL::Parallel_tag>(points, scale.radius, \
-                                                                         np);                 \
-         }}
+#define PSC_TOOL_METHOD(NAME, DESCRIPTION, GOOD)                                               \
+  Method{#NAME, DESCRIPTION,                                                                   \
+         [](const Point_set& points, const Scale& scale, const Callback& callback) -> Estimates { \
+           const auto np = PSC::parameters::min_neighbors(                                      \
+             scale.min_neighbors ? scale.min_neighbors : PSC::internal::default_min_neighbors::NAME, \
+             CGAL::parameters::callback(callback));                                             \
+           if(scale.by_count)                                                                   \
+             return CGAL::estimate_##NAME##_curvatures<CGAL::Parallel_tag>(                    \
+               points, PSC::parameters::neighbor_count(scale.neighbors, np));                   \
+           return CGAL::estimate_##NAME##_curvatures<CGAL::Parallel_tag>(points, scale.radius, np); \
+         },                                                                                     \
+         PSC::internal::default_min_neighbors::NAME, GOOD}
 
 const std::vector<Method>& methods()
 {
   static const std::vector<Method> table = {
-    PSC_TOOL_METHOD(aso, "Algebraic Shape Operator (Lejemble et al. 2021): full curvature tensor"),
-    PSC_TOOL_METHOD(apss, "APSS algebraic sphere: corrected normal and mean curvature only"),
+    PSC_TOOL_METHOD(aso, "Algebraic Shape Operator (Lejemble et al. 2021): full curvature tensor", 20),
+    PSC_TOOL_METHOD(apss, "APSS algebraic sphere: corrected normal and mean curvature only", 20),
 #ifdef PSC_TOOL_HAS_BARYCENTER
-    PSC_TOOL_METHOD(barycenter, "baseline: distance to the barycentre"),
+    PSC_TOOL_METHOD(barycenter, "baseline: distance to the barycentre", 25),
 #endif
 #ifdef PSC_TOOL_HAS_PCA_PLANE
-    PSC_TOOL_METHOD(pca_plane, "baseline: distance to the PCA plane"),
+    PSC_TOOL_METHOD(pca_plane, "baseline: distance to the PCA plane", 15),
 #endif
 #ifdef PSC_TOOL_HAS_PSS
-    PSC_TOOL_METHOD(pss, "baseline: point set surface"),
+    PSC_TOOL_METHOD(pss, "baseline: point set surface", 20),
 #endif
 #ifdef PSC_TOOL_HAS_JET
-    PSC_TOOL_METHOD(jet, "baseline: osculating jet"),
+    PSC_TOOL_METHOD(jet, "baseline: osculating jet", 12),
 #endif
 #ifdef PSC_TOOL_HAS_VCM
-    PSC_TOOL_METHOD(vcm, "baseline: Voronoi covariance measure"),
+    PSC_TOOL_METHOD(vcm, "baseline: Voronoi covariance measure", 25),
 #endif
 #ifdef PSC_TOOL_HAS_WAVEJET
-    PSC_TOOL_METHOD(wavejet, "baseline: wavejet"),
+    PSC_TOOL_METHOD(wavejet, "baseline: wavejet", 12),
 #endif
   };
   return table;
@@ -212,6 +196,7 @@ struct Options
   int threads = 0;  // 0: every core
   bool quiet = false, ascii = false, require_normals = false, help = false;
   std::string color;  // quantity to colour by, empty for none
+  std::vector<std::string> columns;  // --columns, empty: automatic
 };
 
 void print_usage(std::ostream& os)
@@ -219,9 +204,11 @@ void print_usage(std::ostream& os)
   os << "usage: " << program << " INPUT OUTPUT [options]\n"
      << "\n"
      << "Estimates curvatures at every point of a point cloud.\n"
-     << "  INPUT   .xyz or .pwn (x y z [nx ny nz] per line), .ply (ASCII or binary, normals as\n"
-     << "          nx ny nz), .off. Without normals, they are estimated (CGAL jet fitting,\n"
-     << "          then oriented along a minimum spanning tree) with a warning.\n"
+     << "  INPUT   .xyz, .pwn, .txt or .csv (one point per line, values separated by spaces or\n"
+     << "          commas: x y z, or x y z nx ny nz, or a header line naming the columns, or\n"
+     << "          --columns), .ply (ASCII or binary, normals nx ny nz or normal_x normal_y\n"
+     << "          normal_z), .off. Without normals, they are estimated (CGAL jet fitting, then\n"
+     << "          oriented along a minimum spanning tree) with a warning.\n"
      << "  OUTPUT  .ply (binary unless --ascii) or .csv (with a header line): every input point\n"
      << "          in input order with x y z, the corrected normal nx ny nz, k_min k_max mean\n"
      << "          gaussian, the principal directions dmin_x dmin_y dmin_z dmax_x dmax_y dmax_z\n"
@@ -233,9 +220,15 @@ void print_usage(std::ostream& os)
      << "  --neighbors K      neighbourhoods by count: each point's radius is the distance to its\n"
      << "                     K-th nearest neighbour, itself counted (default: --neighbors 40)\n"
      << "  --radius R         neighbourhoods of radius R, in the unit of the coordinates; or Nx\n"
-     << "                     (e.g. 4x): N times the average spacing (CGAL::compute_average_\n"
-     << "                     spacing, 6 neighbours; 4x gives about 45 neighbours on an even\n"
-     << "                     sampling)\n"
+     << "                     (e.g. 3.5x): N times the average spacing (CGAL::compute_average_\n"
+     << "                     spacing, 6 neighbours); on even samplings 3x gives about 27\n"
+     << "                     neighbours, 3.5x about 37, 4x about 47\n"
+     << "  --min-neighbors M  estimates with fewer than M neighbours are invalid\n"
+     << "                     (too_few_neighbors); default: the method's measured minimum\n"
+     << "                     (aso, apss, jet, wavejet 12; pca_plane 10; pss 15; barycenter, vcm 20)\n"
+     << "  --columns LIST     names of the values of a text line, comma-separated: x y z, nx ny nz\n"
+     << "                     (or normal_x ...), anything else skipped (e.g. x,y,z,r,g,b or\n"
+     << "                     x,y,z,_,_,_,nx,ny,nz)\n"
      << "  --color Q          add red green blue (uchar) showing Q = mean|gaussian|k_min|k_max:\n"
      << "                     blue < 0 < red, white at 0, saturated beyond the 2nd/98th\n"
      << "                     percentiles; grey where invalid\n"
@@ -344,6 +337,16 @@ Options parse_command_line(int argc, char** argv)
       o.scale.neighbors = k;
       o.neighbors_given = true;
     }
+    else if(name == "--min-neighbors" || name == "--min-neighbours")
+    {
+      const std::string v = take_value();
+      std::size_t m = 0;
+      if(!parse_positive_integer(v, m))
+        throw Error(cat(name, " must be a positive integer, got ", in_quotes(v)));
+      o.scale.min_neighbors = m;
+    }
+    else if(name == "--columns")
+      o.columns = parse_columns(take_value());
     else if(name == "--threads")
     {
       const std::string v = take_value();
@@ -378,381 +381,28 @@ Options parse_command_line(int argc, char** argv)
                     " INPUT OUTPUT [options])"));
   if(o.radius_given && o.neighbors_given)
     throw Error("give either --radius or --neighbors, not both");
+  const std::size_t least = o.scale.min_neighbors ? o.scale.min_neighbors : o.method->min_neighbors;
+  if(o.scale.by_count && o.scale.neighbors < least)
+    throw Error(cat("--neighbors ", o.scale.neighbors, " is below the ", least, " neighbours of a valid ", o.method->name,
+                    " estimate", o.scale.min_neighbors ? " (--min-neighbors)" : " (measured minimum, see the manual)",
+                    ": every estimate would be invalid; use --neighbors ", least,
+                    " or more, or lower the threshold with --min-neighbors"));
   o.input = positional[0];
   o.output = positional[1];
   return o;
 }
 
 // ---------------------------------------------------------------------------------------
-// Input. CGAL's readers accept some malformed files silently (the XYZ and OFF readers skip
-// or truncate lines they cannot parse, the PLY reader ignores data beyond the declared
-// counts), so the text formats are checked line by line first and PLY data is checked to
-// end where the header says.
+// Progress and interruption
 
-// CGAL's readers report details on std::cerr: keep them for the one-line error message.
-class Capture_cerr
+volatile std::sig_atomic_t interrupted = 0;
+
+extern "C" void on_interrupt(int)
 {
-public:
-  Capture_cerr() : m_old(std::cerr.rdbuf(m_text.rdbuf())) {}
-  ~Capture_cerr() { std::cerr.rdbuf(m_old); }
-  std::string first_line() const
-  {
-    std::string s = m_text.str();
-    s = s.substr(0, s.find('\n'));
-    return s;
-  }
-
-private:
-  std::ostringstream m_text;
-  std::streambuf* m_old;
-};
-
-std::string trim(const std::string& s)
-{
-  const std::size_t b = s.find_first_not_of(" \t\r");
-  if(b == std::string::npos)
-    return "";
-  return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
-}
-
-std::vector<std::string> tokens(const std::string& line)
-{
-  std::vector<std::string> t;
-  std::size_t b = 0;
-  for(;;)
-  {
-    b = line.find_first_not_of(" \t\r", b);
-    if(b == std::string::npos)
-      return t;
-    const std::size_t e = std::min(line.find_first_of(" \t\r", b), line.size());
-    t.emplace_back(line, b, e - b);
-    b = e;
-  }
-}
-
-// A number as CGAL's text readers parse it (digits, sign, point, exponent: no nan or inf).
-bool is_number(const std::string& token)
-{
-  if(token.find_first_not_of("0123456789+-.eE") != std::string::npos)
-    return false;
-  char* end = nullptr;
-  std::strtod(token.c_str(), &end);
-  return end == token.c_str() + token.size();
-}
-
-bool is_index(const std::string& token)
-{
-  return !token.empty() && token.find_first_not_of("0123456789") == std::string::npos &&
-         token.size() < 19;
-}
-
-struct Text_check
-{
-  std::size_t points = 0;
-  bool normals = false;
-};
-
-// .xyz/.pwn: optional point count alone on the first line, '#' comments, then 3 or 6 numbers
-// per line, the same on every line.
-Text_check check_xyz(const std::string& path)
-{
-  std::ifstream in(path);
-  Text_check result;
-  std::string line;
-  std::size_t line_number = 0, declared = 0, columns = 0;
-  bool has_count = false;
-  while(std::getline(in, line))
-  {
-    ++line_number;
-    const std::string t = trim(line);
-    if(t.empty() || t[0] == '#')
-      continue;
-    const std::vector<std::string> w = tokens(t);
-    if(line_number == 1 && w.size() == 1 && is_index(w[0]))
-    {
-      has_count = true;
-      declared = static_cast<std::size_t>(std::stoull(w[0]));
-      continue;
-    }
-    for(const std::string& token : w)
-      if(!is_number(token))
-        throw Error(cat(in_quotes(path), " line ", line_number, ": ", in_quotes(token), " is not a number"));
-    if(w.size() != 3 && w.size() != 6)
-      throw Error(cat(in_quotes(path), " line ", line_number, ": expected 3 (x y z) or 6 (x y z nx ny nz) values, found ",
-                      w.size()));
-    if(columns != 0 && w.size() != columns)
-      throw Error(cat(in_quotes(path), " line ", line_number, ": ", w.size(), " values where the previous lines have ",
-                      columns));
-    columns = w.size();
-    ++result.points;
-  }
-  if(in.bad())
-    throw Error(cat("cannot read ", in_quotes(path), ": ", std::strerror(errno)));
-  if(has_count && declared != result.points)
-    throw Error(cat(in_quotes(path), ": its first line declares ", declared, " points but it has ",
-                    result.points));
-  result.normals = (columns == 6);
-  return result;
-}
-
-// .off: "OFF" or "NOFF", then "V F E", V vertex lines of 3 numbers (6 with normals), F face
-// lines of integers, and nothing else.
-Text_check check_off(const std::string& path)
-{
-  std::ifstream in(path);
-  Text_check result;
-  std::string line, signature;
-  std::size_t line_number = 0, declared_vertices = 0, declared_faces = 0, faces = 0, columns = 0;
-  int stage = 0;  // 0 signature, 1 counts, 2 vertices, 3 faces
-  while(std::getline(in, line))
-  {
-    ++line_number;
-    const std::string t = trim(line);
-    if(t.empty() || t[0] == '#')
-      continue;
-    const std::vector<std::string> w = tokens(t);
-    auto fail = [&](const std::string& what) {
-      throw Error(cat(in_quotes(path), " line ", line_number, ": ", what));
-    };
-    if(stage == 0)
-    {
-      if(w.size() != 1 || (w[0] != "OFF" && w[0] != "NOFF"))
-        fail("expected the header OFF or NOFF (binary and coloured OFF are not supported)");
-      signature = w[0];
-      stage = 1;
-    }
-    else if(stage == 1)
-    {
-      if(w.size() != 3 || !is_index(w[0]) || !is_index(w[1]) || !is_index(w[2]))
-        fail("expected the counts 'vertices faces edges'");
-      declared_vertices = static_cast<std::size_t>(std::stoull(w[0]));
-      declared_faces = static_cast<std::size_t>(std::stoull(w[1]));
-      stage = declared_vertices > 0 ? 2 : 3;
-    }
-    else if(stage == 2)
-    {
-      for(const std::string& token : w)
-        if(!is_number(token))
-          fail(cat(in_quotes(token), " is not a number"));
-      const std::size_t expected = signature == "NOFF" ? 6 : (columns ? columns : w.size());
-      if((w.size() != 3 && w.size() != 6) || w.size() != expected)
-        fail(cat("expected ", signature == "NOFF" ? "6 (x y z nx ny nz)" : "3 (x y z) or 6 (x y z nx ny nz)",
-                 " values like the other vertices, found ", w.size(),
-                 " (wrong vertex count in the header?)"));
-      columns = w.size();
-      if(++result.points == declared_vertices)
-        stage = 3;
-    }
-    else
-    {
-      std::size_t corners = 0;
-      if(!is_index(w[0]) || (corners = static_cast<std::size_t>(std::stoull(w[0]))) + 1 > w.size() ||
-         faces >= declared_faces)
-        fail(cat("unexpected line after the ", result.points, " vertices and ", faces,
-                 " faces declared (wrong vertex or face count?)"));
-      for(std::size_t c = 1; c <= corners; ++c)
-        if(!is_index(w[c]) || std::stoull(w[c]) >= declared_vertices)
-          fail(cat("face with an invalid vertex index ", in_quotes(w[c])));
-      ++faces;
-    }
-  }
-  if(in.bad())
-    throw Error(cat("cannot read ", in_quotes(path), ": ", std::strerror(errno)));
-  if(stage < 2)
-    throw Error(cat(in_quotes(path), ": not an OFF file (missing header or counts)"));
-  if(result.points != declared_vertices)
-    throw Error(cat(in_quotes(path), ": the header declares ", declared_vertices,
-                    " vertices but the file has ", result.points));
-  if(faces != declared_faces)
-    throw Error(cat(in_quotes(path), ": the header declares ", declared_faces,
-                    " faces but the file has ", faces));
-  result.normals = (columns == 6);
-  return result;
-}
-
-// The PLY header: format and elements.
-struct Ply_header
-{
-  struct Element
-  {
-    std::string name;
-    std::size_t count = 0;
-    std::vector<bool> list;  // per property: a list (count, then items) or a scalar
-  };
-  bool ascii = false;
-  std::size_t vertices = 0;
-  std::vector<Element> elements;
-};
-
-Ply_header check_ply_header(std::istream& in, const std::string& path)
-{
-  Ply_header h;
-  std::string line;
-  if(!std::getline(in, line) || trim(line) != "ply")
-    throw Error(cat(in_quotes(path), ": not a PLY file (no 'ply' on its first line)"));
-  bool format = false;
-  while(std::getline(in, line))
-  {
-    const std::vector<std::string> w = tokens(line);
-    if(w.empty())
-      continue;
-    if(w[0] == "end_header")
-    {
-      if(!format)
-        throw Error(cat(in_quotes(path), ": PLY header without a format line"));
-      return h;
-    }
-    if(w[0] == "format" && w.size() >= 2)
-    {
-      format = true;
-      h.ascii = (w[1] == "ascii");
-      if(!h.ascii && w[1] != "binary_little_endian" && w[1] != "binary_big_endian")
-        throw Error(cat(in_quotes(path), ": unknown PLY format ", in_quotes(w[1])));
-    }
-    else if(w[0] == "element" && w.size() >= 3)
-    {
-      if(!is_index(w[2]))
-        throw Error(cat(in_quotes(path), ": invalid PLY element count ", in_quotes(w[2])));
-      h.elements.emplace_back();
-      h.elements.back().name = w[1];
-      h.elements.back().count = static_cast<std::size_t>(std::stoull(w[2]));
-      if(w[1] == "vertex" || w[1] == "vertices")
-        h.vertices = h.elements.back().count;
-    }
-    else if(w[0] == "property" && !h.elements.empty())
-      h.elements.back().list.push_back(w.size() >= 2 && w[1] == "list");
-  }
-  throw Error(cat(in_quotes(path), ": truncated PLY header (no end_header)"));
-}
-
-// Why CGAL could not read an ASCII PLY file (its reader does not say): the first value that
-// is not a number, or where the data ends.
-std::string diagnose_ascii_ply(const std::string& path, const Ply_header& h)
-{
-  std::ifstream in(path);
-  std::string line;
-  std::size_t line_number = 0;
-  while(std::getline(in, line))
-  {
-    ++line_number;
-    if(trim(line) == "end_header")
-      break;
-  }
-  std::vector<std::string> words;
-  std::size_t next_word = 0;
-  // the next value, or false at the end of the file
-  auto next = [&](std::string& word) {
-    while(next_word == words.size())
-    {
-      if(!std::getline(in, line))
-        return false;
-      ++line_number;
-      words = tokens(line);
-      next_word = 0;
-    }
-    word = words[next_word++];
-    return true;
-  };
-  for(const Ply_header::Element& e : h.elements)
-    for(std::size_t item = 0; item < e.count; ++item)
-    {
-      const std::string where = cat(e.name, " ", item + 1, " of the ", e.count, " declared in the header");
-      for(bool list : e.list)
-      {
-        std::string word;
-        if(!next(word))
-          return cat("truncated: the file ends in ", where);
-        if(!is_number(word))
-          return cat("line ", line_number, ": ", in_quotes(word), " is not a number (", where, ")");
-        if(list)
-        {
-          if(!is_index(word))
-            return cat("line ", line_number, ": invalid list length ", in_quotes(word), " (", where, ")");
-          for(std::size_t c = std::stoull(word); c > 0; --c)
-          {
-            if(!next(word))
-              return cat("truncated: the file ends in ", where);
-            if(!is_number(word))
-              return cat("line ", line_number, ": ", in_quotes(word), " is not a number (", where, ")");
-          }
-        }
-      }
-    }
-  return "malformed PLY data";
-}
-
-struct Input
-{
-  Point_set points;
-  bool had_normals = false;
-};
-
-void read_input(const std::string& path, Input& input)
-{
-  struct stat st;
-  if(::stat(path.c_str(), &st) != 0)
-    throw Error(cat("cannot open input ", in_quotes(path), ": ", std::strerror(errno)));
-  if(S_ISDIR(st.st_mode))
-    throw Error(cat("cannot read input ", in_quotes(path), ": it is a directory"));
-  {
-    std::ifstream probe(path);
-    if(!probe)
-      throw Error(cat("cannot open input ", in_quotes(path), ": ", std::strerror(errno)));
-  }
-  const std::string ext = lower_extension(path);
-  Point_set& ps = input.points;
-  if(ext == ".xyz" || ext == ".pwn" || ext == ".off")
-  {
-    const Text_check check = ext == ".off" ? check_off(path) : check_xyz(path);
-    std::ifstream in(path);
-    bool ok = false;
-    Capture_cerr capture;
-    ok = ext == ".off" ? CGAL::IO::read_OFF(in, ps) : CGAL::IO::read_XYZ(in, ps);
-    if(!ok)
-      throw Error(cat("cannot read ", in_quotes(path), ": ", capture.first_line()));
-    if(ps.size() != check.points)
-      throw Error(cat("cannot read ", in_quotes(path), ": read ", ps.size(), " of its ", check.points,
-                      " points"));
-  }
-  else if(ext == ".ply")
-  {
-    std::ifstream in(path, std::ios::binary);
-    const Ply_header header = check_ply_header(in, path);
-    in.clear();
-    in.seekg(0);
-    CGAL::IO::set_mode(in, CGAL::IO::BINARY);
-    bool ok = false;
-    {
-      Capture_cerr capture;
-      ok = CGAL::IO::read_PLY(in, ps);
-    }
-    if(!ok)
-    {
-      if(header.ascii)
-        throw Error(cat(in_quotes(path), ": ", diagnose_ascii_ply(path, header)));
-      // binary data can only be short: CGAL stopped in the first incomplete item
-      if(ps.size() < header.vertices)
-        throw Error(cat(in_quotes(path), ": truncated: the file ends in vertex ", ps.size() + 1,
-                        " of the ", header.vertices, " declared in the header"));
-      throw Error(cat(in_quotes(path), ": truncated: the file ends after the ", header.vertices,
-                      " vertices, in a later element"));
-    }
-    if(ps.size() != header.vertices)
-      throw Error(cat(in_quotes(path), ": the header declares ", header.vertices,
-                      " vertices but ", ps.size(), " were read"));
-    // data beyond the declared elements: the declared vertex count is wrong
-    if(header.ascii)
-      in >> std::ws;
-    if(in.peek() != std::char_traits<char>::eof())
-      throw Error(cat(in_quotes(path), ": more data than the ", header.vertices,
-                      " vertices declared in the header (wrong vertex count?)"));
-  }
-  else
-    throw Error(cat("unsupported input format ", in_quotes(ext.empty() ? path : ext), " for ",
-                    in_quotes(path), " (expected .xyz, .pwn, .ply or .off)"));
-  if(ps.empty())
-    throw Error(cat(in_quotes(path), " contains no points"));
-  input.had_normals = ps.has_normal_map();
+  interrupted = 1;
+  // a second Ctrl-C kills at once
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -774,59 +424,48 @@ std::vector<Point_set::Index> finite_points(const Point_set& ps)
 }
 
 // Unoriented normals by jet fitting, oriented along a minimum spanning tree (CGAL). Returns
-// the number of points whose orientation could not be propagated.
-std::size_t estimate_normals(Point_set& ps, std::size_t k)
+// the number of points whose orientation could not be propagated. `progress` follows the jet
+// fitting; CGAL's orientation reports none.
+std::size_t estimate_normals(Point_set& ps, std::size_t k, const Callback& progress)
 {
   ps.add_normal_map();
   std::vector<Point_set::Index> indices = finite_points(ps);
   if(indices.size() <= k)
     return indices.size();  // too few points: normals stay zero (INVALID_NORMAL)
   const auto np = CGAL::parameters::point_map(ps.point_map()).normal_map(ps.normal_map());
-  CGAL::jet_estimate_normals<CGAL::Parallel_tag>(indices, static_cast<unsigned int>(k), np);
+  CGAL::jet_estimate_normals<CGAL::Parallel_tag>(indices, static_cast<unsigned int>(k), np.callback(progress));
+  if(interrupted)
+    throw Cancelled();
   // mst_orient_normals partitions the range it is given: a copy of the indices keeps the
   // point set in input order
   const auto unoriented = CGAL::mst_orient_normals(indices, static_cast<unsigned int>(k), np);
   return static_cast<std::size_t>(std::distance(unoriented, indices.end()));
 }
 
-// ---------------------------------------------------------------------------------------
-// Progress and interruption
-
-volatile std::sig_atomic_t interrupted = 0;
-
-extern "C" void on_interrupt(int)
-{
-  interrupted = 1;
-  // a second Ctrl-C kills at once
-  std::signal(SIGINT, SIG_DFL);
-  std::signal(SIGTERM, SIG_DFL);
-}
-
+// One line per phase on a terminal ("reading     [#######.....]  58%   1.2 s"), redrawn at
+// every new percent. The callbacks return false once Ctrl-C was pressed, which cancels the
+// phase. CGAL's Parallel_tag functions call them from a thread of their own: only one thread
+// draws at a time.
 class Progress_bar
 {
 public:
-  explicit Progress_bar(bool enabled) : m_enabled(enabled), m_start(std::chrono::steady_clock::now()) {}
+  explicit Progress_bar(bool enabled) : m_enabled(enabled) {}
 
-  bool operator()(double fraction)
+  // Starts a phase (ending the previous one) and returns its callback.
+  Callback phase(const char* name)
   {
-    if(m_enabled)
-    {
-      const int percent = static_cast<int>(100 * fraction);
-      if(percent != m_last)
-      {
-        m_last = percent;
-        const int width = 40, filled = percent * width / 100;
-        const double seconds =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
-        std::fprintf(stderr, "\r[%s%s] %3d%% %6.1f s", std::string(filled, '#').c_str(),
-                     std::string(width - filled, '.').c_str(), percent, seconds);
-        std::fflush(stderr);
-        m_drawn = true;
-      }
-    }
-    return !interrupted;
+    finish();
+    m_name = name;
+    m_start = std::chrono::steady_clock::now();
+    m_last = -1;
+    draw(0.0);
+    return [this](double fraction) {
+      draw(fraction);
+      return !interrupted;
+    };
   }
 
+  // Ends the current phase's line.
   void finish()
   {
     if(m_drawn)
@@ -835,7 +474,24 @@ public:
   }
 
 private:
+  void draw(double fraction)
+  {
+    if(!m_enabled)
+      return;
+    const int percent = static_cast<int>(100 * std::max(0.0, std::min(1.0, fraction)));
+    if(percent == m_last)
+      return;
+    m_last = percent;
+    const int width = 30, filled = percent * width / 100;
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
+    std::fprintf(stderr, "\r%-12s [%s%s] %3d%% %7.1f s", m_name, std::string(filled, '#').c_str(),
+                 std::string(width - filled, '.').c_str(), percent, seconds);
+    std::fflush(stderr);
+    m_drawn = true;
+  }
+
   bool m_enabled;
+  const char* m_name = "";
   std::chrono::steady_clock::time_point m_start;
   int m_last = -1;
   bool m_drawn = false;
@@ -950,138 +606,6 @@ double robust_range(const std::vector<double>& values)
   return std::max(std::abs(percentile(values, 0.02)), std::abs(percentile(values, 0.98)));
 }
 
-struct Record
-{
-  double value[16];
-  std::int32_t neighbors;
-  unsigned char valid;
-};
-
-const char* const field_names[16] = {"x", "y", "z", "nx", "ny", "nz", "k_min", "k_max", "mean",
-                                     "gaussian", "dmin_x", "dmin_y", "dmin_z", "dmax_x", "dmax_y",
-                                     "dmax_z"};
-
-Record make_record(const Point& p, const Estimate& e)
-{
-  Record r;
-  const double v[16] = {p.x(), p.y(), p.z(), e.normal.x(), e.normal.y(), e.normal.z(),
-                        e.min_curvature, e.max_curvature, e.mean_curvature, e.gaussian_curvature,
-                        e.min_direction.x(), e.min_direction.y(), e.min_direction.z(),
-                        e.max_direction.x(), e.max_direction.y(), e.max_direction.z()};
-  std::copy(v, v + 16, r.value);
-  r.neighbors = static_cast<std::int32_t>(std::min<std::size_t>(e.neighbor_count, INT32_MAX));
-  r.valid = e.is_valid() ? 1 : 0;
-  return r;
-}
-
-void put_text_double(std::FILE* f, double v)
-{
-  if(std::isnan(v))
-    std::fputs("nan", f);
-  else
-    std::fprintf(f, "%.17g", v);
-}
-
-// One row of text output (ASCII PLY, CSV): the 16 doubles, neighbors, valid and, if given,
-// the colour, separated by `separator`.
-void put_text_row(std::FILE* f, const Record& r, const unsigned char* color, char separator)
-{
-  for(int a = 0; a < 16; ++a)
-  {
-    put_text_double(f, r.value[a]);
-    std::fputc(separator, f);
-  }
-  std::fprintf(f, "%d%c%d", int(r.neighbors), separator, int(r.valid));
-  if(color)
-    std::fprintf(f, "%c%d%c%d%c%d", separator, int(color[0]), separator, int(color[1]), separator,
-                 int(color[2]));
-  std::fputc('\n', f);
-}
-
-bool little_endian_host()
-{
-  const std::uint16_t one = 1;
-  unsigned char first;
-  std::memcpy(&first, &one, 1);
-  return first == 1;
-}
-
-template <class T>
-void put_binary(std::vector<char>& out, T v, bool swap)
-{
-  char bytes[sizeof(T)];
-  std::memcpy(bytes, &v, sizeof(T));
-  if(swap)
-    std::reverse(bytes, bytes + sizeof(T));
-  out.insert(out.end(), bytes, bytes + sizeof(T));
-}
-
-struct Output_description
-{
-  std::vector<std::string> comments;
-  bool color = false;
-};
-
-void write_ply(std::FILE* f, bool ascii, const Point_set& ps, const Estimates& estimates,
-               const std::vector<std::array<unsigned char, 3> >& colors, const Output_description& d)
-{
-  std::fprintf(f, "ply\nformat %s 1.0\n", ascii ? "ascii" : "binary_little_endian");
-  for(const std::string& c : d.comments)
-    std::fprintf(f, "comment %s\n", c.c_str());
-  std::fprintf(f, "element vertex %zu\n", ps.size());
-  for(const char* name : field_names)
-    std::fprintf(f, "property double %s\n", name);
-  std::fputs("property int neighbors\nproperty uchar valid\n", f);
-  if(d.color)
-    std::fputs("property uchar red\nproperty uchar green\nproperty uchar blue\n", f);
-  std::fputs("end_header\n", f);
-
-  const bool swap = !little_endian_host();
-  std::vector<char> chunk;
-  std::size_t i = 0;
-  for(Point_set::Index idx : ps)
-  {
-    const Record r = make_record(ps.point(idx), estimates[i]);
-    if(ascii)
-      put_text_row(f, r, d.color ? colors[i].data() : nullptr, ' ');
-    else
-    {
-      for(int a = 0; a < 16; ++a)
-        put_binary(chunk, r.value[a], swap);
-      put_binary(chunk, r.neighbors, swap);
-      chunk.push_back(static_cast<char>(r.valid));
-      if(d.color)
-        for(int a = 0; a < 3; ++a)
-          chunk.push_back(static_cast<char>(colors[i][a]));
-      if(chunk.size() > (1u << 20))
-      {
-        std::fwrite(chunk.data(), 1, chunk.size(), f);
-        chunk.clear();
-      }
-    }
-    ++i;
-  }
-  if(!chunk.empty())
-    std::fwrite(chunk.data(), 1, chunk.size(), f);
-}
-
-void write_csv(std::FILE* f, const Point_set& ps, const Estimates& estimates,
-               const std::vector<std::array<unsigned char, 3> >& colors, const Output_description& d)
-{
-  for(const char* name : field_names)
-    std::fprintf(f, "%s,", name);
-  std::fputs("neighbors,valid", f);
-  if(d.color)
-    std::fputs(",red,green,blue", f);
-  std::fputc('\n', f);
-  std::size_t i = 0;
-  for(Point_set::Index idx : ps)
-  {
-    put_text_row(f, make_record(ps.point(idx), estimates[i]), d.color ? colors[i].data() : nullptr, ',');
-    ++i;
-  }
-}
-
 // ---------------------------------------------------------------------------------------
 // Summary
 
@@ -1107,6 +631,39 @@ std::string scale_description(const Scale& s)
   return cat("radius ", s.radius);
 }
 
+// The warning when neighbourhoods are small: empty if the median count of the estimated
+// points reaches the method's measured `good_neighbors`.
+std::string small_neighborhood_warning(const Method& m, const Scale& scale, const Estimates& estimates)
+{
+  std::vector<double> counts;
+  std::size_t too_few = 0;
+  for(const Estimate& e : estimates)
+    if(e.is_valid() || e.status == CGAL::Curvature_estimate_status::TOO_FEW_NEIGHBORS)
+    {
+      counts.push_back(double(e.neighbor_count));
+      too_few += !e.is_valid();
+    }
+  if(counts.empty())
+    return "";
+  const double median = percentile(counts, 0.5);
+  if(median >= double(m.good_neighbors))
+    return "";
+  // counts grow like the radius squared on a surface
+  std::string suggestion;
+  if(scale.by_count)
+    suggestion = cat("--neighbors ", std::max<std::size_t>(40, m.good_neighbors));
+  else
+  {
+    const double factor = std::sqrt(40.0 / std::max(median, 1.0));
+    suggestion = scale.spacing_multiple > 0 ? cat("--radius ", scale.spacing_multiple * factor, "x")
+                                            : cat("--radius ", scale.radius * factor);
+  }
+  return cat("the median neighbourhood holds ", median, " points, fewer than the ", m.good_neighbors,
+             " from which ", m.name, "'s errors stay within twice those at 40 neighbours (measured, see the "
+             "manual); ", too_few, " points have fewer than ", scale.min_neighbors ? scale.min_neighbors : m.min_neighbors,
+             " and are invalid (too_few_neighbors). For about 40 neighbours, try ", suggestion);
+}
+
 int run(const Options& o)
 {
   const auto start = std::chrono::steady_clock::now();
@@ -1114,6 +671,12 @@ int run(const Options& o)
   if(out_ext != ".ply" && out_ext != ".csv")
     throw Error(cat("unsupported output format ", in_quotes(out_ext.empty() ? o.output : out_ext),
                     " for ", in_quotes(o.output), " (expected .ply or .csv)"));
+  {
+    struct stat in, out;
+    if(::stat(o.input.c_str(), &in) == 0 && ::stat(o.output.c_str(), &out) == 0 && in.st_dev == out.st_dev &&
+       in.st_ino == out.st_ino)
+      throw Error(cat("the output ", in_quotes(o.output), " is the input file: choose another output"));
+  }
 
   std::unique_ptr<tbb::global_control> threads;
   if(o.threads > 0)
@@ -1124,27 +687,44 @@ int run(const Options& o)
   Temporary_output output(o.output);
   std::signal(SIGINT, on_interrupt);
   std::signal(SIGTERM, on_interrupt);
+  Progress_bar progress(!o.quiet && ::isatty(STDERR_FILENO));
   auto check_interrupted = [&]() {
     if(interrupted)
-    {
-      output.discard();
-      std::fprintf(stderr, "%s: interrupted, nothing written\n", program);
-      std::exit(130);
-    }
+      throw Cancelled();
   };
-  auto warn = [&](const std::string& message) {
-    if(!o.quiet)
-      std::fprintf(stderr, "%s: warning: %s\n", program, message.c_str());
-  };
+  // Warnings are printed once the output is written, so that a failure prints one line only.
+  std::vector<std::string> warnings;
+  auto warn = [&](const std::string& message) { warnings.push_back(message); };
 
-  Input input;
-  read_input(o.input, input);
-  Point_set& ps = input.points;
+  // 1. Read.
+  Point_set ps;
+  bool had_normals = false;
+  {
+    Read_options read_options;
+    read_options.columns = o.columns;
+    read_options.progress = progress.phase("reading");
+    const Point_cloud cloud = read_point_cloud(o.input, read_options);
+    had_normals = cloud.has_normals();
+    ps.reserve(cloud.size());
+    if(had_normals)
+      ps.add_normal_map();
+    for(std::size_t i = 0; i < cloud.size(); ++i)
+    {
+      const double* p = &cloud.xyz[3 * i];
+      const auto it = ps.insert(Point(p[0], p[1], p[2]));
+      if(had_normals)
+      {
+        const double* n = &cloud.normals[3 * i];
+        ps.normal(*it) = Vector(n[0], n[1], n[2]);
+      }
+    }
+  }
   const double read_seconds = seconds_since(start);
   check_interrupted();
 
+  // 2. Normals, if the file has none.
   const std::size_t normal_neighbors = 18;
-  if(!input.had_normals)
+  if(!had_normals)
   {
     if(o.require_normals)
       throw Error(cat(in_quotes(o.input), " has no normals (nx ny nz) and --require-normals was given"));
@@ -1155,7 +735,8 @@ int run(const Options& o)
     if(usable <= normal_neighbors)
       warn(cat("only ", usable, " points with finite coordinates: too few to estimate normals "
                "(more than ", normal_neighbors, " needed); every estimate will be invalid"));
-    const std::size_t unoriented = estimate_normals(ps, normal_neighbors);
+    const std::size_t unoriented = estimate_normals(ps, normal_neighbors, progress.phase("normals"));
+    progress.finish();
     if(unoriented > 0 && usable > normal_neighbors)
       warn(cat(unoriented, " points could not be oriented (isolated parts); their curvature "
                "signs may be wrong"));
@@ -1163,6 +744,7 @@ int run(const Options& o)
   const double normals_seconds = seconds_since(start) - read_seconds;
   check_interrupted();
 
+  // 3. Average spacing, for --radius Nx.
   Scale scale = o.scale;
   const auto spacing_start = std::chrono::steady_clock::now();
   if(!scale.by_count && scale.spacing_multiple > 0)
@@ -1172,55 +754,69 @@ int run(const Options& o)
       throw Error(cat("--radius ", scale.spacing_multiple, "x: ", in_quotes(o.input),
                       " has fewer than 7 points, too few for an average spacing"));
     scale.spacing = CGAL::compute_average_spacing<CGAL::Parallel_tag>(
-      indices, 6, CGAL::parameters::point_map(ps.point_map()));
+      indices, 6, CGAL::parameters::point_map(ps.point_map()).callback(progress.phase("spacing")));
+    check_interrupted();
     scale.radius = scale.spacing_multiple * scale.spacing;
     if(!(scale.radius > 0) || !std::isfinite(scale.radius))
       throw Error(cat("--radius ", scale.spacing_multiple, "x: the average spacing of ",
                       in_quotes(o.input), " is ", scale.spacing, " (coincident points?)"));
   }
-
   const double spacing_seconds = seconds_since(spacing_start);
+
+  // 4. Curvatures.
   const auto estimation_start = std::chrono::steady_clock::now();
-  Progress_bar progress(!o.quiet && ::isatty(STDERR_FILENO));
-  progress(0.0);  // the bar shows at once: the first report comes after the first batch
-  Estimates estimates;
-  estimates = o.method->run(ps, scale, std::ref(progress));
-  progress.finish();
+  const Estimates estimates = o.method->run(ps, scale, progress.phase("curvatures"));
   const double estimation_seconds = seconds_since(estimation_start);
   check_interrupted();
 
-  Output_description description;
-  description.comments.push_back(cat("point_set_curvatures method ", o.method->name, ", ",
-                                     scale_description(scale)));
-  description.comments.push_back(cat("input ", o.input));
-  std::vector<std::array<unsigned char, 3> > colors;
+  // 5. Write.
+  Output_layout layout;
+  layout.format = out_ext == ".csv" ? Output_layout::CSV : o.ascii ? Output_layout::ASCII_PLY : Output_layout::BINARY_PLY;
+  layout.comments.push_back(cat("point_set_curvatures method ", o.method->name, ", ", scale_description(scale)));
+  layout.comments.push_back(cat("input ", o.input));
+  double Estimate::*color_field = nullptr;
+  double color_range = 0;
   if(!o.color.empty())
   {
-    const auto field = color_quantities().at(o.color);
-    const std::vector<double> values = finite_values(estimates, field);
+    color_field = color_quantities().at(o.color);
+    const std::vector<double> values = finite_values(estimates, color_field);
     if(values.empty())
       warn(cat("--color ", o.color, ": no valid value (not estimated by method ", o.method->name,
-               "?); every point is grey"));
-    const double range = robust_range(values);
-    description.color = true;
-    description.comments.push_back(
-      cat("colors: ", o.color, ", blue -", range, " white 0 red +", range, ", grey invalid"));
-    colors.reserve(estimates.size());
-    for(const Estimate& e : estimates)
-      colors.push_back(diverging_color(e.is_valid() ? e.*field : std::nan(""), range));
+                             "?); every point is grey"));
+    color_range = robust_range(values);
+    layout.color = true;
+    layout.comments.push_back(
+      cat("colors: ", o.color, ", blue -", color_range, " white 0 red +", color_range, ", grey invalid"));
   }
-
   const auto write_start = std::chrono::steady_clock::now();
-  if(out_ext == ".csv")
-    write_csv(output.file(), ps, estimates, colors, description);
-  else
-    write_ply(output.file(), o.ascii, ps, estimates, colors, description);
+  write_point_cloud(output.file(), layout, ps.size(), [&](std::size_t i, Output_row& r) {
+    const Point& p = ps.point(*(ps.begin() + i));
+    const Estimate& e = estimates[i];
+    const double v[16] = {p.x(), p.y(), p.z(), e.normal.x(), e.normal.y(), e.normal.z(),
+                          e.min_curvature, e.max_curvature, e.mean_curvature, e.gaussian_curvature,
+                          e.min_direction.x(), e.min_direction.y(), e.min_direction.z(),
+                          e.max_direction.x(), e.max_direction.y(), e.max_direction.z()};
+    std::copy(v, v + 16, r.value);
+    r.neighbors = static_cast<std::int32_t>(std::min<std::size_t>(e.neighbor_count, INT32_MAX));
+    r.valid = e.is_valid() ? 1 : 0;
+    if(color_field)
+    {
+      const std::array<unsigned char, 3> c = diverging_color(e.is_valid() ? e.*color_field : std::nan(""), color_range);
+      std::copy(c.begin(), c.end(), r.color);
+    }
+  }, progress.phase("writing"));
+  progress.finish();
   check_interrupted();
   output.commit();
   const double write_seconds = seconds_since(write_start);
 
+  const std::string small = small_neighborhood_warning(*o.method, scale, estimates);
+  if(!small.empty())
+    warn(small);
   if(!o.quiet)
   {
+    for(const std::string& w : warnings)
+      std::fprintf(stderr, "%s: warning: %s\n", program, w.c_str());
     std::size_t valid = 0, neighbors = 0;
     std::map<std::string, std::size_t> invalid;
     for(const Estimate& e : estimates)
@@ -1237,7 +833,7 @@ int run(const Options& o)
     std::printf("%s: %s -> %s\n", program, o.input.c_str(), o.output.c_str());
     std::printf("  method      %s (%s)\n", o.method->name, o.method->description);
     std::printf("  scale       %s\n", scale_description(scale).c_str());
-    std::printf("  points      %zu%s\n", ps.size(), input.had_normals ? "" : " (normals estimated)");
+    std::printf("  points      %zu%s\n", ps.size(), had_normals ? "" : " (normals estimated)");
     std::printf("  valid       %zu (%.2f %%)%s\n", valid, 100.0 * valid / ps.size(), why.c_str());
     std::printf("  neighbours  %.2f on average (valid estimates)\n",
                 valid ? double(neighbors) / valid : 0.0);
@@ -1265,6 +861,12 @@ int main(int argc, char** argv)
       return 0;
     }
     return run(options);
+  }
+  catch(const Cancelled&)
+  {
+    // the temporary output was removed when the stack unwound
+    std::fprintf(stderr, "\n%s: interrupted, nothing written\n", program);
+    return 130;
   }
   catch(const Error& e)
   {

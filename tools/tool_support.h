@@ -1,0 +1,64 @@
+// Copyright (c) 2026 The Point_set_curvatures authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// What every part of the point_set_curvatures tool shares: the error a user can fix (exit
+// status 2, one line on stderr), the cancellation of a long phase (exit status 130), string
+// helpers and the progress callback type.
+
+#ifndef POINT_SET_CURVATURES_TOOL_SUPPORT_H
+#define POINT_SET_CURVATURES_TOOL_SUPPORT_H
+
+#include <cctype>
+#include <functional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace psc_tool {
+
+// Every failure the user can fix (arguments, files): one line on stderr, exit status 2.
+struct Error : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+// A phase stopped because its progress callback returned false (Ctrl-C): exit status 130.
+struct Cancelled : std::runtime_error
+{
+  Cancelled() : std::runtime_error("cancelled") {}
+};
+
+// Fraction done in [0, 1]; returning false cancels the phase.
+typedef std::function<bool(double)> Progress;
+
+template <class... T>
+std::string cat(const T&... t)
+{
+  std::ostringstream s;
+  (s << ... << t);
+  return s.str();
+}
+
+// (not named quoted: std::quoted would win by ADL for non-const strings)
+inline std::string in_quotes(const std::string& s) { return "'" + s + "'"; }
+
+inline std::string lower_case(std::string s)
+{
+  for(char& c : s)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// ".ply" for "a/b.PLY", "" without an extension.
+inline std::string lower_extension(const std::string& path)
+{
+  const std::size_t slash = path.find_last_of('/');
+  const std::size_t dot = path.find_last_of('.');
+  if(dot == std::string::npos || (slash != std::string::npos && dot < slash))
+    return "";
+  return lower_case(path.substr(dot));
+}
+
+} // namespace psc_tool
+
+#endif
