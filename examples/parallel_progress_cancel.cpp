@@ -37,8 +37,9 @@ int main()
                     .normal_map(CGAL::Second_of_pair_property_map<Oriented_point>());
   const double radius = 0.15;
 
-  // 1. Progress: the callback runs on the calling thread between batches of about 1% of the
-  //    points (at least 16384), with the fraction done; returning true continues.
+  // 1. Progress: the callback runs on the calling thread between batches of at most 1% of
+  //    the points (about 0.25 s each on long runs), with the fraction done; returning true
+  //    continues.
   const std::vector<Estimate> all = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
     points, radius, np.callback(std::function<bool(double)>([](double done) {
       std::cout << "progress " << int(100 * done) << "%\n";

@@ -306,21 +306,15 @@ estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double 
     }
     results[i] = to_curvature_estimate<Geom_traits>(e, records[i].count);
   };
-  const std::size_t batch = callback ? std::max<std::size_t>(16384, m / 100) : m;
+  // batches of at most 1% of the points, as the driver's
+  const std::size_t batch = callback ? std::max<std::size_t>(1, (m + 99) / 100) : std::max<std::size_t>(m, 1);
   for(std::size_t first = 0; first < m; first += batch)
   {
     const std::size_t last = std::min(m, first + batch);
-#ifdef CGAL_LINKED_WITH_TBB
-    if(is_parallel<ConcurrencyTag>())
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last, 256),
-                        [&](const tbb::blocked_range<std::size_t>& range) {
-                          for(std::size_t j = range.begin(); j < range.end(); ++j)
-                            estimate(j);
-                        });
-    else
-#endif
-      for(std::size_t j = first; j < last; ++j)
+    process_in_parallel<ConcurrencyTag>(first, last, [&](std::uint32_t b, std::uint32_t e) {
+      for(std::size_t j = b; j < e; ++j)
         estimate(j);
+    });
     if(callback && !callback(double(last) / double(m)))
       break;  // the points not reached keep NOT_COMPUTED
   }
