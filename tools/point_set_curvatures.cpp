@@ -13,12 +13,11 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Point_set_3.h>
 #include <CGAL/compute_average_spacing.h>
-#include <CGAL/jet_estimate_normals.h>
-#include <CGAL/mst_orient_normals.h>
 
 #include <CGAL/Point_set_curvatures/parameters.h>
 #include <CGAL/estimate_apss_curvatures.h>
 #include <CGAL/estimate_aso_curvatures.h>
+#include <CGAL/estimate_oriented_normals.h>
 // The baseline estimators, when the package has them (same signatures as the ones above).
 #if __has_include(<CGAL/estimate_barycenter_curvatures.h>)
 #include <CGAL/estimate_barycenter_curvatures.h>
@@ -197,6 +196,9 @@ struct Options
   bool quiet = false, ascii = false, require_normals = false, help = false;
   std::string color;  // quantity to colour by, empty for none
   std::vector<std::string> columns;  // --columns, empty: automatic
+  CGAL::Normal_orientation orientation;  // --orient
+  std::string orientation_text = "mst";
+  std::size_t normal_neighbors = 18;     // --normal-neighbors
 };
 
 void print_usage(std::ostream& os)
@@ -207,8 +209,8 @@ void print_usage(std::ostream& os)
      << "  INPUT   .xyz, .pwn, .txt or .csv (one point per line, values separated by spaces or\n"
      << "          commas: x y z, or x y z nx ny nz, or a header line naming the columns, or\n"
      << "          --columns), .ply (ASCII or binary, normals nx ny nz or normal_x normal_y\n"
-     << "          normal_z), .off. Without normals, they are estimated (CGAL jet fitting, then\n"
-     << "          oriented along a minimum spanning tree) with a warning.\n"
+     << "          normal_z), .off. Without normals, they are estimated (PCA of the 18 nearest\n"
+     << "          neighbours, oriented along a minimum spanning tree; see --orient) with a warning.\n"
      << "  OUTPUT  .ply (binary unless --ascii) or .csv (with a header line): every input point\n"
      << "          in input order with x y z, the corrected normal nx ny nz, k_min k_max mean\n"
      << "          gaussian, the principal directions dmin_x dmin_y dmin_z dmax_x dmax_y dmax_z\n"
@@ -234,6 +236,10 @@ void print_usage(std::ostream& os)
      << "                     percentiles; grey where invalid\n"
      << "  --ascii            ASCII PLY output (NaN written as nan)\n"
      << "  --require-normals  fail if INPUT has no normals instead of estimating them\n"
+     << "  --orient O         orientation of estimated normals: mst (propagated along a minimum\n"
+     << "                     spanning tree, default), +z, -z, +x, -x, +y, -y (airborne scans:\n"
+     << "                     +z), or viewpoint:X,Y,Z (towards the scanner at X,Y,Z)\n"
+     << "  --normal-neighbors K  neighbours of the normal estimation (default 18)\n"
      << "  --threads N        use at most N threads (default: every core)\n"
      << "  --quiet            print errors only (no progress bar, warnings or summary)\n"
      << "  --help             print this help\n"
@@ -278,6 +284,35 @@ void parse_radius(const std::string& text, Scale& scale)
     scale.spacing_multiple = value;
   else
     scale.radius = value;
+}
+
+// --orient: mst, +z, -y, ..., or viewpoint:X,Y,Z.
+CGAL::Normal_orientation parse_orientation(const std::string& text)
+{
+  if(text == "mst")
+    return CGAL::Normal_orientation::minimum_spanning_tree();
+  if(text.size() == 2 && (text[0] == '+' || text[0] == '-') && text[1] >= 'x' && text[1] <= 'z')
+  {
+    double v[3] = {0, 0, 0};
+    v[text[1] - 'x'] = text[0] == '+' ? 1 : -1;
+    return CGAL::Normal_orientation::along_vector(v[0], v[1], v[2]);
+  }
+  const std::string prefix = "viewpoint:";
+  if(text.compare(0, prefix.size(), prefix) == 0)
+  {
+    std::string rest = text.substr(prefix.size());
+    double v[3];
+    for(int a = 0; a < 3; ++a)
+    {
+      const std::size_t comma = a < 2 ? rest.find(',') : std::string::npos;
+      if((a < 2 && comma == std::string::npos) || !parse_double(rest.substr(0, comma), v[a]))
+        throw Error(cat("--orient ", in_quotes(text), ": expected viewpoint:X,Y,Z with three numbers"));
+      rest = a < 2 ? rest.substr(comma + 1) : "";
+    }
+    return CGAL::Normal_orientation::towards_point(v[0], v[1], v[2]);
+  }
+  throw Error(cat("--orient: unknown orientation ", in_quotes(text),
+                  " (mst, +z, -z, +x, -x, +y, -y or viewpoint:X,Y,Z)"));
 }
 
 Options parse_command_line(int argc, char** argv)
@@ -347,6 +382,17 @@ Options parse_command_line(int argc, char** argv)
     }
     else if(name == "--columns")
       o.columns = parse_columns(take_value());
+    else if(name == "--orient")
+    {
+      o.orientation_text = take_value();
+      o.orientation = parse_orientation(o.orientation_text);
+    }
+    else if(name == "--normal-neighbors" || name == "--normal-neighbours")
+    {
+      const std::string v = take_value();
+      if(!parse_positive_integer(v, o.normal_neighbors) || o.normal_neighbors < 3)
+        throw Error(cat(name, " must be an integer >= 3, got ", in_quotes(v)));
+    }
     else if(name == "--threads")
     {
       const std::string v = take_value();
@@ -396,13 +442,21 @@ Options parse_command_line(int argc, char** argv)
 // Progress and interruption
 
 volatile std::sig_atomic_t interrupted = 0;
+// The temporary output file, removed by a second Ctrl-C (a fixed buffer: the handler may only
+// call async-signal-safe functions). Empty when there is none.
+char temporary_output_path[4096] = "";
 
+// The first Ctrl-C (or SIGTERM) cancels the current phase at its next progress report; a
+// second one removes the temporary output and exits at once.
 extern "C" void on_interrupt(int)
 {
+  if(interrupted)
+  {
+    if(temporary_output_path[0] != '\0')
+      ::unlink(temporary_output_path);
+    ::_exit(130);
+  }
   interrupted = 1;
-  // a second Ctrl-C kills at once
-  std::signal(SIGINT, SIG_DFL);
-  std::signal(SIGTERM, SIG_DFL);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -423,23 +477,18 @@ std::vector<Point_set::Index> finite_points(const Point_set& ps)
   return indices;
 }
 
-// Unoriented normals by jet fitting, oriented along a minimum spanning tree (CGAL). Returns
-// the number of points whose orientation could not be propagated. `progress` follows the jet
-// fitting; CGAL's orientation reports none.
-std::size_t estimate_normals(Point_set& ps, std::size_t k, const Callback& progress)
+// Normals of the package's estimate_oriented_normals(): PCA of the `k` nearest, oriented as
+// `orientation` says. Returns the number of points left without a normal.
+std::size_t estimate_normals(Point_set& ps, std::size_t k, const CGAL::Normal_orientation& orientation,
+                             const Callback& progress)
 {
   ps.add_normal_map();
-  std::vector<Point_set::Index> indices = finite_points(ps);
-  if(indices.size() <= k)
-    return indices.size();  // too few points: normals stay zero (INVALID_NORMAL)
-  const auto np = CGAL::parameters::point_map(ps.point_map()).normal_map(ps.normal_map());
-  CGAL::jet_estimate_normals<CGAL::Parallel_tag>(indices, static_cast<unsigned int>(k), np.callback(progress));
+  const std::size_t without = CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
+    ps, PSC::parameters::neighbor_count(k, PSC::parameters::normal_orientation(
+                                             orientation, CGAL::parameters::callback(progress))));
   if(interrupted)
     throw Cancelled();
-  // mst_orient_normals partitions the range it is given: a copy of the indices keeps the
-  // point set in input order
-  const auto unoriented = CGAL::mst_orient_normals(indices, static_cast<unsigned int>(k), np);
-  return static_cast<std::size_t>(std::distance(unoriented, indices.end()));
+  return without;
 }
 
 // One line per phase on a terminal ("reading     [#######.....]  58%   1.2 s"), redrawn at
@@ -519,6 +568,8 @@ public:
     if(fd < 0)
       throw Error(cat("cannot write output ", in_quotes(output), ": ", std::strerror(errno)));
     m_path = buffer.data();
+    if(m_path.size() < sizeof(temporary_output_path))
+      std::memcpy(temporary_output_path, m_path.c_str(), m_path.size() + 1);
     // mkstemp creates the file readable by its owner only: give it the usual permissions
     const mode_t mask = ::umask(0);
     ::umask(mask);
@@ -545,6 +596,7 @@ public:
     m_file = nullptr;
     if(!written || !closed)
       throw Error(cat("cannot write output ", in_quotes(m_output), ": ", std::strerror(errno)));
+    temporary_output_path[0] = '\0';
     if(std::rename(m_path.c_str(), m_output.c_str()) != 0)
       throw Error(cat("cannot write output ", in_quotes(m_output), ": ", std::strerror(errno)));
     m_path.clear();
@@ -555,6 +607,7 @@ public:
     if(m_file)
       std::fclose(m_file);
     m_file = nullptr;
+    temporary_output_path[0] = '\0';
     if(!m_path.empty())
       std::remove(m_path.c_str());
     m_path.clear();
@@ -723,23 +776,18 @@ int run(const Options& o)
   check_interrupted();
 
   // 2. Normals, if the file has none.
-  const std::size_t normal_neighbors = 18;
   if(!had_normals)
   {
     if(o.require_normals)
       throw Error(cat(in_quotes(o.input), " has no normals (nx ny nz) and --require-normals was given"));
-    warn(cat(in_quotes(o.input), " has no normals: estimating them (CGAL::jet_estimate_normals and "
-             "CGAL::mst_orient_normals, ", normal_neighbors, " neighbours); a wrong orientation "
+    warn(cat(in_quotes(o.input), " has no normals: estimating them (PCA of the ", o.normal_neighbors,
+             " nearest neighbours, oriented by --orient ", o.orientation_text, "); a wrong orientation "
              "flips the sign of the curvatures"));
-    const std::size_t usable = finite_points(ps).size();
-    if(usable <= normal_neighbors)
-      warn(cat("only ", usable, " points with finite coordinates: too few to estimate normals "
-               "(more than ", normal_neighbors, " needed); every estimate will be invalid"));
-    const std::size_t unoriented = estimate_normals(ps, normal_neighbors, progress.phase("normals"));
+    const std::size_t without = estimate_normals(ps, o.normal_neighbors, o.orientation, progress.phase("normals"));
     progress.finish();
-    if(unoriented > 0 && usable > normal_neighbors)
-      warn(cat(unoriented, " points could not be oriented (isolated parts); their curvature "
-               "signs may be wrong"));
+    if(without > 0)
+      warn(cat(without, " points got no normal (coincident or collinear neighbours, non-finite "
+               "coordinates) and are invalid_normal"));
   }
   const double normals_seconds = seconds_since(start) - read_seconds;
   check_interrupted();

@@ -70,6 +70,25 @@ std::size_t min_neighbors_parameter(const NamedParameters& np, std::size_t estim
     CGAL::parameters::get_parameter(np, internal_np::min_neighbors), estimator_default);
 }
 
+// The body of evaluate_at_every_point() below, with the maps and the scale given: balls of
+// `radius` if `radius_given`, else the `k` nearest.
+template <class Result, class ConcurrencyTag, class PointRange, class PointMap, class NormalMap, class Evaluate>
+std::vector<Result> evaluate_with_maps(const PointRange& points, bool radius_given, double radius,
+                                       std::size_t k, PointMap point_map, NormalMap normal_map,
+                                       const Neighborhood_options& options, const Evaluate& evaluate)
+{
+  std::vector<Result> results(static_cast<std::size_t>(std::distance(points.begin(), points.end())));
+  auto visit = [&results, &evaluate](std::size_t i, const Neighborhood& nb) { results[i] = evaluate(nb); };
+  const std::vector<Curvature_estimate_status> status =
+    radius_given
+      ? for_each_neighborhood<ConcurrencyTag>(points, point_map, normal_map, radius, options, visit)
+      : for_each_neighborhood_knn<ConcurrencyTag>(points, point_map, normal_map, k, options, visit);
+  for(std::size_t i = 0; i < results.size(); ++i)
+    if(status[i] != Curvature_estimate_status::VALID)
+      results[i].status = status[i];  // unusable or not reached: NaN fields, count 0
+  return results;
+}
+
 // The common body of every per-point function of the package: reads the named parameters
 // (point_map, normal_map, the package's neighbor_count), checks the scale, runs the driver
 // with balls of `radius` (`radius_given`: the overloads with a radius) or by count (the
@@ -92,18 +111,9 @@ std::vector<Result> evaluate_at_every_point(const PointRange& points, bool radiu
     std::size_t(0));
   check_scale(radius, k, !radius_given, options.function_name);
 
-  std::vector<Result> results(static_cast<std::size_t>(std::distance(points.begin(), points.end())));
-  auto visit = [&results, &evaluate](std::size_t i, const Neighborhood& nb) { results[i] = evaluate(nb); };
-  const auto point_map = NP_helper::get_const_point_map(points, np);
-  const auto normal_map = NP_helper::get_normal_map(points, np);
-  const std::vector<Curvature_estimate_status> status =
-    radius_given
-      ? for_each_neighborhood<ConcurrencyTag>(points, point_map, normal_map, radius, options, visit)
-      : for_each_neighborhood_knn<ConcurrencyTag>(points, point_map, normal_map, k, options, visit);
-  for(std::size_t i = 0; i < results.size(); ++i)
-    if(status[i] != Curvature_estimate_status::VALID)
-      results[i].status = status[i];  // unusable or not reached: NaN fields, count 0
-  return results;
+  return evaluate_with_maps<Result, ConcurrencyTag>(points, radius_given, radius, k,
+                                                    NP_helper::get_const_point_map(points, np),
+                                                    NP_helper::get_normal_map(points, np), options, evaluate);
 }
 
 // Per-point curvature estimation, from `estimator` (a copyable, stateless

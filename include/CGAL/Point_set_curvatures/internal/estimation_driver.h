@@ -421,6 +421,8 @@ void visit_neighborhood(const Sorted_cloud& cloud, std::uint32_t query, double r
   nb.center[0] = x[0]; nb.center[1] = x[1]; nb.center[2] = x[2];
   for(int a = 0; a < 3; ++a)
     nb.query_normal[a] = normal[3 * std::size_t(query) + a];
+  nb.index = index;
+  nb.input_index = cloud.input_index.data();
   visit(std::size_t(cloud.input_index[query]), static_cast<const Neighborhood&>(nb));
 }
 

@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 
 namespace CGAL {
@@ -46,6 +47,11 @@ struct Neighborhood
   double radius = 1;               // r, to convert curvatures back to input units
   double center[3] = {0, 0, 0};    // x, absolute coordinates of the evaluation point
   double query_normal[3] = {0, 0, 0};
+  // Which input points the neighbours are, when the cloud drivers gather them (else null):
+  // neighbour i is element input_index[index[i]] of the input range. For estimators that
+  // need the neighbourhood graph (normal orientation).
+  const std::uint32_t* index = nullptr;
+  const std::uint32_t* input_index = nullptr;
 };
 
 // One estimate in double precision, before conversion to the kernel's types.

@@ -1,0 +1,409 @@
+// Copyright (c) 2026 The Point_set_curvatures authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Oriented normals for clouds that have none (most LiDAR scans): PCA normals on the package's
+// neighbourhood driver, then an orientation along a vector, towards a point (the scanner),
+// or propagated along a minimum spanning tree of the neighbourhood graph.
+
+#ifndef CGAL_ESTIMATE_ORIENTED_NORMALS_H
+#define CGAL_ESTIMATE_ORIENTED_NORMALS_H
+
+#include <CGAL/Point_set_curvatures/internal/estimate_at_every_point.h>
+#include <CGAL/Point_set_curvatures/internal/pca_plane.h>
+#include <CGAL/Point_set_curvatures/parameters.h>
+
+#include <CGAL/property_map.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <numeric>
+#include <stdexcept>
+#include <vector>
+
+namespace CGAL {
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// How `CGAL::estimate_oriented_normals()` orients the normals it estimates.
+struct Normal_orientation
+{
+  enum Kind
+  {
+    /// Propagation along a minimum spanning tree of the neighbourhood graph weighted by
+    /// `1 - |n_i . n_j|` (Hoppe et al. 1992), started in each connected part at its highest
+    /// point (largest z), whose normal points to +z. For closed or unknown shapes. Default.
+    MINIMUM_SPANNING_TREE,
+    /// Every normal makes a non-negative dot product with `vector` (airborne scans: +z).
+    ALONG_VECTOR,
+    /// Every normal points towards `point` (a scanner or camera position).
+    TOWARDS_POINT
+  };
+  Kind kind = MINIMUM_SPANNING_TREE;
+  double target[3] = {0, 0, 1};  ///< the vector or the point
+
+  /// the default: propagation along a minimum spanning tree
+  static Normal_orientation minimum_spanning_tree() { return Normal_orientation(); }
+  /// normals on the side of the vector `(x, y, z)`
+  static Normal_orientation along_vector(double x, double y, double z)
+  {
+    Normal_orientation o;
+    o.kind = ALONG_VECTOR;
+    o.target[0] = x; o.target[1] = y; o.target[2] = z;
+    return o;
+  }
+  /// normals towards the point `(x, y, z)`
+  static Normal_orientation towards_point(double x, double y, double z)
+  {
+    Normal_orientation o = along_vector(x, y, z);
+    o.kind = TOWARDS_POINT;
+    return o;
+  }
+};
+
+namespace Point_set_curvatures {
+namespace internal_np {
+enum normal_orientation_t { normal_orientation };
+} // namespace internal_np
+
+namespace parameters {
+/// \ingroup PkgPointSetCurvaturesRef
+/// Named parameter of `CGAL::estimate_oriented_normals()`: how the normals are oriented.
+template <class NamedParameters = CGAL::parameters::Default_named_parameters>
+CGAL::Named_function_parameters<Normal_orientation, internal_np::normal_orientation_t, NamedParameters>
+normal_orientation(const Normal_orientation& o, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return CGAL::Named_function_parameters<Normal_orientation, internal_np::normal_orientation_t,
+                                         NamedParameters>(o, np);
+}
+} // namespace parameters
+
+namespace internal {
+
+// Degree of the neighbourhood graph of the spanning tree: each point's nearest neighbours.
+constexpr std::size_t normal_graph_degree = 12;
+
+// Per point: the unoriented PCA normal and its nearest neighbours (input indices).
+struct Pca_normal_record
+{
+  double normal[3] = {0, 0, 0};
+  std::uint32_t neighbor[normal_graph_degree];
+  std::uint8_t degree = 0;
+  Curvature_estimate_status status = Curvature_estimate_status::NOT_COMPUTED;
+};
+
+inline Pca_normal_record pca_normal_record(const Neighborhood& nb)
+{
+  Pca_normal_record r;
+  Neighborhood_pca pca;
+  if(nb.size < pca_plane_min_neighbors)
+  {
+    r.status = Curvature_estimate_status::TOO_FEW_NEIGHBORS;
+    return r;
+  }
+  if(!pca.compute(nb))
+  {
+    r.status = Curvature_estimate_status::DEGENERATE_FIT;
+    return r;
+  }
+  std::copy(pca.vectors[0], pca.vectors[0] + 3, r.normal);
+  r.status = Curvature_estimate_status::VALID;
+  // the nearest neighbours other than the point itself, ties by input index
+  std::pair<double, std::uint32_t> candidates[64];
+  std::size_t c = 0;
+  for(std::size_t i = 0; i < nb.size; ++i)
+  {
+    const double d2 = nb.qx[i] * nb.qx[i] + nb.qy[i] * nb.qy[i] + nb.qz[i] * nb.qz[i];
+    if(d2 == 0)
+      continue;  // the point itself, or a copy of it: no orientation to learn from it
+    const std::pair<double, std::uint32_t> e(d2, nb.input_index[nb.index[i]]);
+    if(c < 64)
+      candidates[c++] = e;
+    else
+    {
+      // keep the 64 nearest: replace the farthest if closer
+      std::pair<double, std::uint32_t>* far = std::max_element(candidates, candidates + c);
+      if(e < *far)
+        *far = e;
+    }
+  }
+  const std::size_t degree = std::min(c, normal_graph_degree);
+  std::partial_sort(candidates, candidates + degree, candidates + c);
+  for(std::size_t i = 0; i < degree; ++i)
+    r.neighbor[i] = candidates[i].second;
+  r.degree = static_cast<std::uint8_t>(degree);
+  return r;
+}
+
+// Orients the unit normals `n` (3 per point; records that are not VALID have none) by Prim's
+// algorithm on the symmetric graph of the records' neighbours, weights 1 - |n_i . n_j|
+// (quantized), from the highest unvisited usable point of each connected part (its normal
+// set to point to +z). Deterministic. `progress` gets the fraction of
+// the points visited; returns false if cancelled.
+inline bool orient_along_spanning_tree(const std::vector<Pca_normal_record>& records,
+                                       const std::vector<double>& z, std::vector<double>& n,
+                                       const std::function<bool(double)>& progress)
+{
+  const std::size_t count = records.size();
+  auto usable = [&](std::size_t i) { return records[i].status == Curvature_estimate_status::VALID; };
+  // symmetric adjacency (CSR)
+  std::vector<std::uint32_t> offset(count + 1, 0);
+  for(std::size_t i = 0; i < count; ++i)
+    if(usable(i))
+      for(std::size_t e = 0; e < records[i].degree; ++e)
+        if(usable(records[i].neighbor[e]))
+        {
+          ++offset[i + 1];
+          ++offset[records[i].neighbor[e] + 1];
+        }
+  std::partial_sum(offset.begin(), offset.end(), offset.begin());
+  std::vector<std::uint32_t> adjacency(offset.back());
+  {
+    std::vector<std::uint32_t> fill(offset.begin(), offset.end() - 1);
+    for(std::size_t i = 0; i < count; ++i)
+      if(usable(i))
+        for(std::size_t e = 0; e < records[i].degree; ++e)
+        {
+          const std::uint32_t j = records[i].neighbor[e];
+          if(!usable(j))
+            continue;
+          adjacency[fill[i]++] = j;
+          adjacency[fill[j]++] = static_cast<std::uint32_t>(i);
+        }
+  }
+  // seeds: usable points by decreasing height
+  std::vector<std::uint32_t> by_height;
+  for(std::size_t i = 0; i < count; ++i)
+    if(usable(i))
+      by_height.push_back(static_cast<std::uint32_t>(i));
+  std::sort(by_height.begin(), by_height.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return z[a] > z[b] || (z[a] == z[b] && a < b);
+  });
+
+  // The candidate edges, by weight quantized to 1/4096 (a bucket queue: O(1) per edge, where
+  // a binary heap of the ~24 edges per point costs 5 times more on 2M points); within a
+  // bucket, last in first out. Lazy: an edge to a visited point is dropped when popped.
+  constexpr std::size_t buckets = 4096;
+  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t> > > queue(buckets);
+  std::size_t lowest = buckets, queued = 0;
+  std::vector<char> visited(count, 0);
+  const std::size_t step = std::max<std::size_t>(1, by_height.size() / 100);
+  std::size_t done = 0;
+  auto visit = [&](std::uint32_t i) {
+    visited[i] = 1;
+    const double* ni = &n[3 * std::size_t(i)];
+    for(std::uint32_t a = offset[i]; a < offset[i + 1]; ++a)
+    {
+      const std::uint32_t j = adjacency[a];
+      if(visited[j])
+        continue;
+      const double* nj = &n[3 * std::size_t(j)];
+      const double w = 1 - std::abs(ni[0] * nj[0] + ni[1] * nj[1] + ni[2] * nj[2]);
+      const std::size_t b = std::min(buckets - 1, static_cast<std::size_t>(std::max(0.0, w) * double(buckets)));
+      queue[b].emplace_back(j, i);
+      lowest = std::min(lowest, b);
+      ++queued;
+    }
+    ++done;
+    return !(progress && done % step == 0 && !progress(double(done) / double(by_height.size())));
+  };
+  for(std::uint32_t seed : by_height)
+  {
+    if(visited[seed])
+      continue;
+    if(n[3 * std::size_t(seed) + 2] < 0)
+      for(int a = 0; a < 3; ++a)
+        n[3 * std::size_t(seed) + a] = -n[3 * std::size_t(seed) + a];
+    if(!visit(seed))
+      return false;
+    while(queued > 0)
+    {
+      while(queue[lowest].empty())
+        ++lowest;
+      const std::pair<std::uint32_t, std::uint32_t> e = queue[lowest].back();
+      queue[lowest].pop_back();
+      --queued;
+      if(visited[e.first])
+        continue;
+      double* nj = &n[3 * std::size_t(e.first)];
+      const double* ni = &n[3 * std::size_t(e.second)];
+      if(ni[0] * nj[0] + ni[1] * nj[1] + ni[2] * nj[2] < 0)
+        for(int a = 0; a < 3; ++a)
+          nj[a] = -nj[a];
+      if(!visit(e.first))
+        return false;
+    }
+    lowest = buckets;
+  }
+  return true;
+}
+
+// The common body of the two overloads.
+template <class ConcurrencyTag, class PointRange, class NamedParameters>
+std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, double radius,
+                                      const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
+  typedef typename NP_helper::Geom_traits Geom_traits;
+  typedef typename Geom_traits::Vector_3 Vector_3;
+  static_assert(NP_helper::has_normal_map(),
+                "Error: no normal map. Pass CGAL::parameters::normal_map(...): the normals are "
+                "written there.");
+  const char* name = "estimate_oriented_normals";
+  const std::size_t k = choose_parameter(get_parameter(np, internal_np::neighbor_count),
+                                         radius_given ? std::size_t(0) : std::size_t(18));
+  check_scale(radius, k, !radius_given, name);
+  const Normal_orientation orientation =
+    choose_parameter(get_parameter(np, internal_np::normal_orientation), Normal_orientation());
+  for(double t : orientation.target)
+    if(!std::isfinite(t))
+      throw std::invalid_argument("estimate_oriented_normals: parameter 'normal_orientation' needs a finite target");
+  const std::function<bool(double)> callback =
+    choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
+  const bool tree = orientation.kind == Normal_orientation::MINIMUM_SPANNING_TREE;
+
+  // 1. PCA normals and nearest neighbours, on the driver (the input normals are not read).
+  Neighborhood_options options;
+  options.function_name = name;
+  if(callback)
+    options.callback = [&callback, tree](double f) { return callback(tree ? 0.7 * f : f); };
+  const auto point_map = NP_helper::get_const_point_map(points, np);
+  typedef typename boost::property_traits<decltype(point_map)>::key_type Key;
+  const CGAL::Constant_property_map<Key, Vector_3> no_normal(Vector_3(0, 0, 1));
+  const std::vector<Pca_normal_record> records = evaluate_with_maps<Pca_normal_record, ConcurrencyTag>(
+    points, radius_given, radius, k, point_map, no_normal, options, &pca_normal_record);
+  bool cancelled = false;
+  for(const Pca_normal_record& r : records)
+    cancelled = cancelled || r.status == Curvature_estimate_status::NOT_COMPUTED;
+
+  // 2. Orientation.
+  const std::size_t count = records.size();
+  std::vector<double> n(3 * count, 0.0), z(count, 0.0);
+  std::size_t i = 0;
+  for(auto it = points.begin(); it != points.end(); ++it, ++i)
+  {
+    const auto& p = get(point_map, *it);
+    const double x[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+    z[i] = x[2];
+    if(records[i].status != Curvature_estimate_status::VALID)
+      continue;
+    std::copy(records[i].normal, records[i].normal + 3, &n[3 * i]);
+    if(tree)
+      continue;
+    double t[3] = {orientation.target[0], orientation.target[1], orientation.target[2]};
+    if(orientation.kind == Normal_orientation::TOWARDS_POINT)
+      for(int a = 0; a < 3; ++a)
+        t[a] -= x[a];
+    if(n[3 * i] * t[0] + n[3 * i + 1] * t[1] + n[3 * i + 2] * t[2] < 0)
+      for(int a = 0; a < 3; ++a)
+        n[3 * i + a] = -n[3 * i + a];
+  }
+  if(tree && !cancelled)
+  {
+    std::function<bool(double)> tree_progress;
+    if(callback)
+      tree_progress = [&callback](double f) { return callback(0.7 + 0.3 * f); };
+    cancelled = !orient_along_spanning_tree(records, z, n, tree_progress);
+  }
+
+  // 3. Output: the normals, zero where there is none (those points are then INVALID_NORMAL
+  // for the estimators) or if the run was cancelled.
+  const auto normal_map = NP_helper::get_normal_map(points, np);
+  std::size_t without = 0;
+  i = 0;
+  for(auto it = points.begin(); it != points.end(); ++it, ++i)
+  {
+    const bool has = !cancelled && records[i].status == Curvature_estimate_status::VALID;
+    without += has ? 0 : 1;
+    put(normal_map, *it, has ? Vector_3(n[3 * i], n[3 * i + 1], n[3 * i + 2]) : Vector_3(0, 0, 0));
+  }
+  if(callback && !cancelled)
+    callback(1.0);
+  return without;
+}
+
+} // namespace internal
+} // namespace Point_set_curvatures
+
+/// \ingroup PkgPointSetCurvaturesRef
+///
+/// Estimates an oriented unit normal at every point of a point cloud without normals (most
+/// LiDAR scans) and writes it through `normal_map`: the normal of the least-squares plane of
+/// the point's `k` nearest neighbours (itself included; principal component analysis, on the
+/// package's neighbourhood driver, in parallel with `CGAL::Parallel_tag`), then oriented as
+/// `Point_set_curvatures::parameters::normal_orientation` says: along a minimum spanning
+/// tree of the graph of each point's 12 nearest neighbours (default), along a vector, or
+/// towards a point. The result is the input the curvature estimators of this package need.
+///
+/// Points whose normal cannot be estimated (non-finite coordinates, fewer than 3 neighbours,
+/// coincident or collinear neighbours) get a zero normal, which the estimators report as
+/// `INVALID_NORMAL`; so do all points if the run is cancelled through `callback`.
+/// Sequential and parallel runs give identical normals.
+///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`
+/// \tparam PointRange a model of `Range` whose value type is the key type of the maps
+///
+/// \param points the point cloud
+/// \param np named parameters among the ones below
+///
+/// \returns the number of points that got a zero normal.
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{point_map}
+///     \cgalParamDescription{a property map associating points to the elements of `points`}
+///     \cgalParamType{a model of `ReadablePropertyMap` whose value type is `geom_traits::Point_3`}
+///     \cgalParamDefault{`CGAL::Identity_property_map<geom_traits::Point_3>`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{normal_map}
+///     \cgalParamDescription{a property map in which the normals are written. Required.}
+///     \cgalParamType{a model of `WritablePropertyMap` whose value type is `geom_traits::Vector_3`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Point_set_curvatures::parameters::neighbor_count}
+///     \cgalParamDescription{the number `k` of nearest neighbours of the PCA, the point included}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{18}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Point_set_curvatures::parameters::normal_orientation}
+///     \cgalParamDescription{how the normals are oriented}
+///     \cgalParamType{`CGAL::Normal_orientation`}
+///     \cgalParamDefault{`CGAL::Normal_orientation::minimum_spanning_tree()`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{callback}
+///     \cgalParamDescription{called from the calling thread with the fraction done, at least
+///       every 1% of the points (the PCA is the first 70% with the spanning tree); returning
+///       `false` cancels}
+///     \cgalParamType{`std::function<bool(double)>`}
+///     \cgalParamDefault{no callback}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{geom_traits}
+///     \cgalParamDescription{an instance of a geometric traits class}
+///     \cgalParamType{a model of `Kernel` with a floating-point `FT`}
+///     \cgalParamDefault{the kernel deduced from the point type, using `CGAL::Kernel_traits`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \throws std::invalid_argument for a `neighbor_count` of 0 or a non-finite orientation target.
+template <typename ConcurrencyTag, typename PointRange,
+          typename NamedParameters = parameters::Default_named_parameters>
+std::size_t estimate_oriented_normals(PointRange& points,
+                                      const NamedParameters& np = parameters::default_values())
+{
+  return Point_set_curvatures::internal::estimate_oriented_normals<ConcurrencyTag>(points, false, 0.0, np);
+}
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// Same as above with the neighbours at distance `< radius` instead of the `k` nearest.
+/// \throws std::invalid_argument if `radius` is not positive and finite.
+template <typename ConcurrencyTag, typename PointRange,
+          typename NamedParameters = parameters::Default_named_parameters>
+std::size_t estimate_oriented_normals(PointRange& points, double radius,
+                                      const NamedParameters& np = parameters::default_values())
+{
+  return Point_set_curvatures::internal::estimate_oriented_normals<ConcurrencyTag>(points, true, radius, np);
+}
+
+} // namespace CGAL
+
+#endif
