@@ -1,10 +1,12 @@
 // Copyright (c) 2026 The Point_set_curvatures authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// A cloud without normals: read the positions only, estimate normals with CGAL (jet fitting),
-// orient them consistently along a minimum spanning tree, then estimate the Algebraic Shape
-// Operator. The sign of the curvatures follows the orientation found: CGAL starts from the
-// highest point with an upward normal, which is outward on a closed surface.
+// A cloud without normals: read the positions only, estimate normals with the package
+// (CGAL::estimate_oriented_normals: PCA of the 18 nearest neighbours, oriented along a
+// minimum spanning tree), then estimate the Algebraic Shape Operator. The sign of the
+// curvatures follows the orientation found: the tree starts from the highest point with an
+// upward normal, which is outward on a closed surface. For an airborne scan, orient along +z
+// instead: normal_orientation(CGAL::Normal_orientation::along_vector(0, 0, 1)).
 //
 // usage: curvatures_without_normals INPUT [NEIGHBORS]
 // (INPUT: any point file CGAL reads; normals in it, if any, are ignored here)
@@ -13,8 +15,7 @@
 #include <CGAL/IO/read_points.h>
 #include <CGAL/Point_set_curvatures/parameters.h>
 #include <CGAL/estimate_aso_curvatures.h>
-#include <CGAL/jet_estimate_normals.h>
-#include <CGAL/mst_orient_normals.h>
+#include <CGAL/estimate_oriented_normals.h>
 #include <CGAL/property_map.h>
 
 #include <algorithm>
@@ -49,14 +50,12 @@ int main(int argc, char** argv)
     return EXIT_FAILURE;
   }
 
-  // 1. Unoriented normals from a jet fitted to the 18 nearest neighbours of each point.
+  // 1. Oriented normals (18 nearest neighbours, the default); points in input order. Points
+  //    whose neighbours are coincident or collinear get a zero normal (INVALID_NORMAL below).
   const auto np = CGAL::parameters::point_map(Point_map()).normal_map(Normal_map());
-  CGAL::jet_estimate_normals<CGAL::Parallel_tag>(points, 18, np);
-  // 2. Consistent orientation. The points are reordered: the oriented ones come first.
-  const auto unoriented = CGAL::mst_orient_normals(points, 18, np);
-  const std::size_t n_unoriented = static_cast<std::size_t>(std::distance(unoriented, points.end()));
+  const std::size_t without = CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(points, np);
 
-  // 3. Curvatures, neighbourhoods by count (each point's radius: distance to its K-th nearest).
+  // 2. Curvatures, neighbourhoods by count (each point's radius: distance to its K-th nearest).
   const std::vector<CGAL::Curvature_estimate<Kernel> > estimates =
     CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
       points, CGAL::Point_set_curvatures::parameters::neighbor_count(neighbors, np));
@@ -65,7 +64,7 @@ int main(int argc, char** argv)
   for(const CGAL::Curvature_estimate<Kernel>& e : estimates)
     if(e.is_valid())
       mean.push_back(e.mean_curvature);
-  std::cout << points.size() << " points, " << n_unoriented << " normals left unoriented, "
+  std::cout << points.size() << " points, " << without << " without a normal, "
             << mean.size() << " valid estimates\n";
   if(mean.empty())
     return EXIT_FAILURE;
