@@ -160,7 +160,11 @@ int main(int argc, char** argv)
   const auto params = CGAL::parameters::point_map(Point_map()).normal_map(Normal_map());
 
   double t_bare = 1e300, t_kd = 1e300, t_apss_s = 1e300, t_apss_p = 1e300, t_aso_s = 1e300,
-         t_aso_p = 1e300, t_knn_s = 1e300, t_knn_p = 1e300;
+         t_aso_p = 1e300, t_knn_s = 1e300, t_knn_p = 1e300, t_paper_s = 1e300, t_paper_p = 1e300,
+         t_uniform_s = 1e300;
+  namespace P = CGAL::Point_set_curvatures::parameters;
+  const auto paper = P::aso_variant(CGAL::Aso_variant::PAPER, params);
+  const auto uniform = P::sample_weights(CGAL::Sample_weights::UNIFORM, params);
   std::size_t pairs = 0;
   long long aso_peak_extra = 0;
   double checksum = 0;
@@ -207,6 +211,21 @@ int main(int argc, char** argv)
     t_aso_p = std::min(t_aso_p, seconds_since(t0));
     decltype(aso)().swap(aso);
 
+    // the paper's variant, and the default without its sample-weight pass
+    t0 = std::chrono::steady_clock::now();
+    aso = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, r, paper);
+    t_paper_s = std::min(t_paper_s, seconds_since(t0));
+    checksum += aso[n / 7].max_curvature;
+    decltype(aso)().swap(aso);
+    t0 = std::chrono::steady_clock::now();
+    aso = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, r, paper);
+    t_paper_p = std::min(t_paper_p, seconds_since(t0));
+    decltype(aso)().swap(aso);
+    t0 = std::chrono::steady_clock::now();
+    aso = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, r, uniform);
+    t_uniform_s = std::min(t_uniform_s, seconds_since(t0));
+    decltype(aso)().swap(aso);
+
     const std::size_t k = static_cast<std::size_t>(std::lround(double(pairs) / double(n)));
     const auto by_count = CGAL::Point_set_curvatures::parameters::neighbor_count(k, params);
     t0 = std::chrono::steady_clock::now();
@@ -232,15 +251,21 @@ int main(int argc, char** argv)
     row("CGAL Kd_tree + Fuzzy_sphere (spatially sorted)", t_kd);
   row("APSS, Sequential_tag", t_apss_s);
   row("APSS, Parallel_tag", t_apss_p);
-  row("ASO, Sequential_tag", t_aso_s);
-  row("ASO, Parallel_tag", t_aso_p);
+  row("ASO (default: Aso_variant::ROBUST), Sequential_tag", t_aso_s);
+  row("ASO (default: Aso_variant::ROBUST), Parallel_tag", t_aso_p);
+  row("ASO, default without sample weights (kernel ^3, orientation), Sequential_tag", t_uniform_s);
+  row("ASO, Aso_variant::PAPER, Sequential_tag", t_paper_s);
+  row("ASO, Aso_variant::PAPER, Parallel_tag", t_paper_p);
   row("ASO by count (neighbor_count), Sequential_tag", t_knn_s);
   row("ASO by count (neighbor_count), Parallel_tag", t_knn_p);
   std::printf("\nASO parallel speed-up: %.2fx; APSS parallel speed-up: %.2fx\n", t_aso_s / t_aso_p,
               t_apss_s / t_apss_p);
   std::printf("ASO by count / ASO by radius: %.2f sequential, %.2f parallel\n", t_knn_s / t_aso_s,
               t_knn_p / t_aso_p);
-  std::printf("ASO peak heap beyond input and result: %.1f bytes per point\n",
+  std::printf("default / paper: %.2f sequential, %.2f parallel; sample-weight pass: %.3f s, %.2f of the "
+              "default's ASO pass\n", t_aso_s / t_paper_s, t_aso_p / t_paper_p, t_aso_s - t_uniform_s,
+              (t_aso_s - t_uniform_s) / t_uniform_s);
+  std::printf("ASO (default) peak heap beyond input and result: %.1f bytes per point\n",
               double(aso_peak_extra) / double(n));
   std::printf("(checksum %.6g)\n", checksum);
   return 0;

@@ -549,6 +549,23 @@ inline double lloyd_step(std::vector<double>& xyz, bool parallel, double search_
 // too large, which slows the early iterations down without biasing the final ones.
 inline double lloyd_search_radius(int it) { return it < 2 ? 2.5 : 2.0; }
 
+// `n` area-uniform i.i.d. points of the surface (stage 1 only, no relaxation) with their
+// exact outward unit normals.
+inline std::vector<Oriented_point> iid_sample(std::size_t n, std::uint64_t seed)
+{
+  Random random(seed);
+  const std::vector<double> xyz = uniform_random_points(n, random);
+  std::vector<Oriented_point> points;
+  points.reserve(n);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    double nv[3];
+    unit_normal(&xyz[3 * i], nv);
+    points.emplace_back(Point(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]), Vector(nv[0], nv[1], nv[2]));
+  }
+  return points;
+}
+
 // The sample: positions on the surface with exact outward unit normals.
 inline std::vector<Oriented_point> sample(const Sampling_options& options)
 {

@@ -26,26 +26,43 @@ namespace {
 struct Sample
 {
   double p[3], n[3];
+  double a = 1;  // sample weight
 };
 
-// phi(x) for samples with fixed positions, weights (1 - |p - x|^2/r^2)^2 centred at x.
-double apss_field(const std::vector<Sample>& samples, double r, const double x[3])
+// The variant of the field: kernel (1 - |p - x|^2/r^2)^P, the samples' weights, and the
+// robust orientation (each normal flipped against the weighted sum of the normals at x).
+struct Field_variant
 {
-  double A = 0, B[3] = {0, 0, 0}, C[3] = {0, 0, 0}, D = 0, E = 0;
-  for(const Sample& s : samples)
-  {
+  int P = 2;
+  bool orient = false;
+};
+
+// phi(x) for samples with fixed positions, weights a (1 - |p - x|^2/r^2)^P centred at x.
+double apss_field(const std::vector<Sample>& samples, double r, const double x[3], Field_variant v = {})
+{
+  auto weight = [&](const Sample& s) {
     double d2 = 0;
     for(int i = 0; i < 3; ++i)
       d2 += (s.p[i] - x[i]) * (s.p[i] - x[i]);
-    if(d2 >= r * r)
+    return d2 >= r * r ? 0.0 : s.a * std::pow(1 - d2 / (r * r), v.P);
+  };
+  double m[3] = {0, 0, 0};
+  for(const Sample& s : samples)
+    for(int i = 0; i < 3; ++i)
+      m[i] += weight(s) * s.n[i];
+  double A = 0, B[3] = {0, 0, 0}, C[3] = {0, 0, 0}, D = 0, E = 0;
+  for(const Sample& s : samples)
+  {
+    const double w = weight(s);
+    if(w == 0)
       continue;
-    const double t = 1 - d2 / (r * r), w = t * t;
+    const double side = v.orient && s.n[0] * m[0] + s.n[1] * m[1] + s.n[2] * m[2] < 0 ? -1.0 : 1.0;
     A += w;
     for(int i = 0; i < 3; ++i)
     {
       B[i] += w * s.p[i];
-      C[i] += w * s.n[i];
-      D += w * s.p[i] * s.n[i];
+      C[i] += w * side * s.n[i];
+      D += w * s.p[i] * side * s.n[i];
       E += w * s.p[i] * s.p[i];
     }
   }
@@ -85,9 +102,33 @@ std::vector<Sample> patch(unsigned seed, double r, std::size_t n)
 TEST_CASE("ASO gradient and Hessian equal finite differences of the APSS field")
 {
   const double r = 0.3;
+  // The paper's field, then the variants of estimate_aso_curvatures(): kernels ^3 and ^4,
+  // sample weights, and 30% of the normals flipped with the robust orientation.
+  struct Case
+  {
+    Field_variant v;
+    CGAL::Apss_weight_kernel kernel;
+    bool weighted;
+  };
+  const Case cases[] = {{{2, false}, CGAL::Apss_weight_kernel::SMOOTH, false},
+                        {{3, false}, CGAL::Apss_weight_kernel::SMOOTH_CUBIC, false},
+                        {{4, false}, CGAL::Apss_weight_kernel::SMOOTH_QUARTIC, true},
+                        {{3, true}, CGAL::Apss_weight_kernel::SMOOTH_CUBIC, true}};
+  for(const Case& c : cases)
   for(unsigned seed : {1u, 2u, 3u})
   {
-    const std::vector<Sample> samples = patch(seed, r, 80);
+    INFO("kernel exponent " << c.v.P << ", weights " << c.weighted << ", orientation " << c.v.orient);
+    std::vector<Sample> samples = patch(seed, r, 80);
+    std::mt19937 rng(seed + 100);
+    std::uniform_real_distribution<double> u(0, 1);
+    for(std::size_t i = 1; i < samples.size(); ++i)
+    {
+      if(c.weighted)
+        samples[i].a = 0.5 + u(rng);
+      if(c.v.orient && u(rng) < 0.3)
+        for(double& x : samples[i].n)
+          x = -x;
+    }
 
     // Central differences, step h = 1e-4 r: truncation O(h^2) ~ 1e-8 relative, rounding
     // ~ 1e-16 / h^2 ~ 1e-8 for the Hessian.
@@ -98,7 +139,7 @@ TEST_CASE("ASO gradient and Hessian equal finite differences of the APSS field")
       double xp[3] = {0, 0, 0}, xm[3] = {0, 0, 0};
       xp[i] = h;
       xm[i] = -h;
-      grad[i] = (apss_field(samples, r, xp) - apss_field(samples, r, xm)) / (2 * h);
+      grad[i] = (apss_field(samples, r, xp, c.v) - apss_field(samples, r, xm, c.v)) / (2 * h);
       for(int j = 0; j < 3; ++j)
       {
         double pp[3] = {0, 0, 0}, pm[3] = {0, 0, 0}, mp[3] = {0, 0, 0}, mm[3] = {0, 0, 0};
@@ -106,8 +147,8 @@ TEST_CASE("ASO gradient and Hessian equal finite differences of the APSS field")
         pm[i] += h; pm[j] -= h;
         mp[i] -= h; mp[j] += h;
         mm[i] -= h; mm[j] -= h;
-        hess[i][j] = (apss_field(samples, r, pp) - apss_field(samples, r, pm) -
-                      apss_field(samples, r, mp) + apss_field(samples, r, mm)) / (4 * h * h);
+        hess[i][j] = (apss_field(samples, r, pp, c.v) - apss_field(samples, r, pm, c.v) -
+                      apss_field(samples, r, mp, c.v) + apss_field(samples, r, mm, c.v)) / (4 * h * h);
       }
     }
     // Truth from the finite differences: shape operator of phi on the plane orthogonal to
@@ -116,20 +157,22 @@ TEST_CASE("ASO gradient and Hessian equal finite differences of the APSS field")
                           hess[1][2], hess[2][0], hess[2][1], hess[2][2]};
     const Truth fd = truth_from_implicit(grad, h9);
 
-    CGAL::Algebraic_shape_operator_fit<Kernel> fit(Point(0, 0, 0), r);
+    CGAL::Algebraic_shape_operator_fit<Kernel> fit(Point(0, 0, 0), r, CGAL::Aso_projection::CORRECTED_NORMAL,
+                                                   c.kernel, c.v.orient);
     for(const Sample& s : samples)
-      fit.add_neighbor(Point(s.p[0], s.p[1], s.p[2]), Vector(s.n[0], s.n[1], s.n[2]));
+      fit.add_neighbor(Point(s.p[0], s.p[1], s.p[2]), Vector(s.n[0], s.n[1], s.n[2]), s.a);
     const auto e = fit.estimate();
     REQUIRE(e.is_valid());
-    std::printf("seed %u: |1 - n.n_fd| %.1e, |dk_min| %.1e, |dk_max| %.1e, direction %.1e deg\n", seed,
+    std::printf("P=%d weights %d orientation %d seed %u: |1 - n.n_fd| %.1e, |dk_min| %.1e, |dk_max| %.1e, "
+                "direction %.1e deg\n", c.v.P, int(c.weighted), int(c.v.orient), seed,
                 std::abs(e.normal * fd.normal - 1), std::abs(e.min_curvature - fd.k_min),
                 std::abs(e.max_curvature - fd.k_max), line_angle_degrees(e.max_direction, fd.d_max));
     INFO("seed " << seed << ": ASO k_min " << e.min_curvature << " k_max " << e.max_curvature
                  << ", finite differences " << fd.k_min << " " << fd.k_max);
-    // Measured over the three seeds: 1 - n.n_fd <= 1.1e-16, curvature differences
-    // <= 5.1e-8 (curvatures of order 1: the finite-difference error), directions equal to
-    // the printed precision. Bounds: 10x the measured curvature error; a wrong term of
-    // Equation 29 changes the curvatures by O(1).
+    // Measured over the seeds and variants: 1 - n.n_fd <= 2.2e-16, curvature differences
+    // <= 8e-8 (curvatures of order 1: the finite-difference error). Bounds: 5e-7; a wrong
+    // term of Equation 29, a wrong kernel derivative or a weight missing from one pass
+    // changes the curvatures by O(1e-2) at least.
     CHECK(std::abs(e.normal * fd.normal - 1) < 1e-12);
     CHECK(std::abs(e.min_curvature - fd.k_min) < 5e-7);
     CHECK(std::abs(e.max_curvature - fd.k_max) < 5e-7);

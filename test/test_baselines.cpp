@@ -12,6 +12,7 @@
 // (std::cout) by every accuracy test.
 
 #include "test_support.h"
+#include "../benchmark/goursat_sampler.h"  // area-uniform i.i.d. samples of the Goursat surface
 
 #include <CGAL/estimate_aso_curvatures.h>
 #include <CGAL/estimate_barycenter_curvatures.h>
@@ -622,10 +623,11 @@ TEST_CASE("Cylinder: every estimator within its measured tolerance", "[baselines
 // (psc_test::ellipsoid: normalised Gaussian directions), r = 0.09 (about 39 neighbours).
 // Random sampling is irregular at the scale of the neighbourhoods, which hurts the
 // estimators that differentiate the weights (ASO) or use the barycenter. Measured mean / max
-// errors (tolerances x1.5):
-//   H: ASO 0.038 / 0.73, PSS 0.0093 / 0.066, jets 0.013 / 0.10, wavejets 0.014 / 0.11,
+// errors (tolerances x1.5), ASO the default variant (the paper's: H 0.038 / 0.73, k 0.049 /
+// 0.93; the default's sample weights and kernel cut them 2.7 times, PSS stays ahead here):
+//   H: ASO 0.0141 / 0.258, PSS 0.0093 / 0.066, jets 0.013 / 0.10, wavejets 0.014 / 0.11,
 //      PCA plane 0.14 / 0.92, barycenter 3.3 / 17.5 (useless here);
-//   k_min, k_max (worse of the two): ASO 0.049 / 0.93, PSS 0.015 / 0.11, jets 0.021 / 0.17,
+//   k_min, k_max (worse of the two): ASO 0.0194 / 0.579, PSS 0.015 / 0.11, jets 0.021 / 0.17,
 //      wavejets 0.021 / 0.18; VCM magnitudes 3.3 / 5.6.
 TEST_CASE("Ellipsoid (random sampling): every estimator within its measured tolerance", "[baselines][ellipsoid]")
 {
@@ -635,7 +637,7 @@ TEST_CASE("Ellipsoid (random sampling): every estimator within its measured tole
   print_header("Ellipsoid 1 x 0.7 x 0.5, 10000 random points, r = 0.09");
   struct Tolerance { Method m; double mean_H, max_H, mean_k, max_k; };
   const Tolerance tolerances[] = {
-    {Method::ASO, 0.057, 1.1, 0.074, 1.4},
+    {Method::ASO, 0.021, 0.39, 0.029, 0.87},
     {Method::BARYCENTER, 5.0, 26, 0, 0},
     {Method::PCA_PLANE, 0.22, 1.4, 0, 0},
     {Method::PSS, 0.014, 0.099, 0.023, 0.165},
@@ -1203,6 +1205,11 @@ TEST_CASE("VCM refuses coordinates beyond 1e150 instead of crashing in CGAL", "[
   pts.emplace_back(Point(-1.5e308, 0, 0), Vector(0, 0, 1));
   const auto np = CGAL::parameters::point_map(Point_map()).normal_map(Normal_map());
   CHECK_THROWS_AS(CGAL::estimate_vcm_curvatures<CGAL::Sequential_tag>(pts, 0.3, np), std::invalid_argument);
+  // ... and below 1e-100, where CGAL's exact fallback divided by zero (SIGFPE)
+  std::vector<Oriented_point> tiny;
+  for(const Oriented_point& p : sphere(500, 1.0))
+    tiny.emplace_back(CGAL::ORIGIN + (p.first - CGAL::ORIGIN) * 1e-250, p.second);
+  CHECK_THROWS_AS(CGAL::estimate_vcm_curvatures<CGAL::Sequential_tag>(tiny, 0.3e-250, np), std::invalid_argument);
   const auto aso = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, 0.3, np);
   CHECK(aso[0].is_valid());
   CHECK(aso[500].status == CGAL::Curvature_estimate_status::TOO_FEW_NEIGHBORS);
@@ -1223,4 +1230,208 @@ TEST_CASE("The 3x3 eigen-solver is scale invariant (VCM covariances scale as len
     CHECK(values[2] / scale == Approx(5).epsilon(1e-12));
     CHECK(std::abs(std::abs(vectors[0][0]) - std::sqrt(0.5)) < 1e-12);
   }
+}
+
+// =======================================================================================
+// Beyond the paper: the default ASO (Aso_variant::ROBUST) against the paper's and PSS
+// =======================================================================================
+
+namespace {
+
+typedef CGAL::Curvature_estimate_status Status;
+
+// Prints a measured value when PSC_TEST_PRINT is set.
+void measured(const std::string& what, double value)
+{
+  if(std::getenv("PSC_TEST_PRINT"))
+    std::printf("[measured] %-70s %.4g\n", what.c_str(), value);
+}
+
+double mean_H_error(const Estimates& est, const std::vector<Oriented_point>& truth_points)
+{
+  double sum = 0;
+  std::size_t n = 0;
+  for(std::size_t i = 0; i < est.size(); ++i)
+    if(est[i].is_valid())
+    {
+      sum += std::abs(est[i].mean_curvature - goursat_truth(truth_points[i].first).mean);
+      ++n;
+    }
+  REQUIRE(n > 0.99 * double(est.size()));
+  return sum / double(n);
+}
+
+auto paper_maps() { return PSC::parameters::aso_variant(CGAL::Aso_variant::PAPER, maps()); }
+
+// Mean |H - H*| of the default ASO, the paper's ASO and PSS on a Goursat cloud, printed.
+struct Three_errors
+{
+  double robust, paper, pss;
+};
+Three_errors default_paper_pss(const std::vector<Oriented_point>& pts, double r, const std::string& name)
+{
+  Three_errors e;
+  e.robust = mean_H_error(CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, r, maps()), pts);
+  e.paper = mean_H_error(CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, r, paper_maps()), pts);
+  e.pss = mean_H_error(run(Method::PSS, pts, r), pts);
+  measured(name + " mean |H - H*|: default ASO", e.robust);
+  measured(name + " mean |H - H*|: paper's ASO", e.paper);
+  measured(name + " mean |H - H*|: PSS", e.pss);
+  return e;
+}
+
+} // namespace
+
+// The targets of the issue "an ASO that stays accurate on real sampling and imperfect
+// normals", measured on the same clouds as benchmark/paper_experiments (experiment 7).
+TEST_CASE("Default ASO: 4.7x the paper's accuracy on Goursat 50K, unaffected by 30% flipped normals, noisy normals refined", "[aso][robust]")
+{
+  const auto pts = read_xyz(repo_data("goursat_050000.xyz"));
+  const double r = 1.5;
+  const Three_errors e = default_paper_pss(pts, r, "Goursat 50K r=1.5");
+  // Measured 0.255e-3, 1.20e-3, 2.40e-3. The issue's target for the default: 0.30e-3.
+  CHECK(e.robust < 0.30e-3);
+  CHECK(e.paper > 1.1e-3);
+  CHECK(e.robust < e.pss);
+
+  // 30% of the normals flipped: the robust orientation uses them flipped back.
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0, 1);
+  auto flipped = pts;
+  for(auto& p : flipped)
+    if(u(rng) < 0.3)
+      p.second = -p.second;
+  const double robust_flipped = mean_H_error(CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(flipped, r, maps()), pts);
+  const double paper_flipped = mean_H_error(CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(flipped, r, paper_maps()), pts);
+  measured("Goursat 50K, 30% flipped: default ASO", robust_flipped);
+  measured("Goursat 50K, 30% flipped: paper's ASO", paper_flipped);
+  // Measured 0.257e-3 (the clean value: every flip is undone) and 21.0e-3. Target 5e-3.
+  CHECK(robust_flipped < 5e-3);
+  CHECK(paper_flipped > 15e-3);
+
+  // Every normal tilted by 30 degrees in a random tangent direction: two refinements.
+  auto tilted = pts;
+  for(auto& p : tilted)
+  {
+    const Vector n = p.second;
+    const Vector a = std::abs(n.x()) < 0.9 ? Vector(1, 0, 0) : Vector(0, 1, 0);
+    Vector t1 = CGAL::cross_product(n, a);
+    t1 = t1 / std::sqrt(t1.squared_length());
+    const Vector t2 = CGAL::cross_product(n, t1);
+    const double phi = 2 * M_PI * u(rng), tilt = 30 * M_PI / 180;
+    p.second = std::cos(tilt) * n + std::sin(tilt) * (std::cos(phi) * t1 + std::sin(phi) * t2);
+  }
+  const double tilted_default = mean_H_error(CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(tilted, r, maps()), pts);
+  const double tilted_refined = mean_H_error(
+    CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(tilted, r, PSC::parameters::normal_refinement(2, maps())), pts);
+  measured("Goursat 50K, normals tilted 30 deg: default ASO", tilted_default);
+  measured("Goursat 50K, normals tilted 30 deg: default ASO, normal_refinement(2)", tilted_refined);
+  // Measured (experiment 7, another draw of the tilts) 50.6e-3 and 5.95e-3; the issue's
+  // target with refinement: 15e-3.
+  CHECK(tilted_refined < 15e-3);
+  CHECK(tilted_default > 3 * tilted_refined);
+}
+
+TEST_CASE("Default ASO on i.i.d. random Goursat samples: at least as accurate as PSS (the paper's ASO: 2.3 times worse)", "[aso][robust]")
+{
+  std::vector<Oriented_point> pts;  // the draw of paper_experiments' experiment 7
+  for(const auto& p : goursat::iid_sample(10000, 2021 * 37 + 1))
+    pts.emplace_back(Point(p.first.x(), p.first.y(), p.first.z()), Vector(p.second.x(), p.second.y(), p.second.z()));
+  const Three_errors e = default_paper_pss(pts, 1.5, "Goursat 10K i.i.d. r=1.5");
+  // Measured 2.79e-3, 6.62e-3, 2.95e-3.
+  CHECK(e.robust <= e.pss);
+  CHECK(e.paper > 2 * e.robust);
+}
+
+// Every variant is exact on a sphere, however irregular the sampling: the sample weights,
+// the kernel and the orientation change the weights of an exact fit, not the fit.
+TEST_CASE("Every ASO variant gives k = 1 on a unit sphere sampled i.i.d. with a 1:10 density ramp", "[aso][robust]")
+{
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<Oriented_point> pts;
+  for(const Oriented_point& p : ellipsoid(20000, 1, 1, 1, 9))
+    if(u(rng) * 10 < 1 + 9 * (p.first.x() + 1) / 2)
+      pts.push_back(p);
+  for(auto kernel : {CGAL::Apss_weight_kernel::SMOOTH, CGAL::Apss_weight_kernel::SMOOTH_CUBIC,
+                     CGAL::Apss_weight_kernel::SMOOTH_QUARTIC})
+    for(auto weights : {CGAL::Sample_weights::UNIFORM, CGAL::Sample_weights::TANGENT_VORONOI_AREA})
+      for(bool robust : {false, true})
+      {
+        INFO("kernel " << int(kernel) << ", weights " << int(weights) << ", orientation " << robust);
+        const auto est = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
+          pts, 0.3, PSC::parameters::weight_kernel(kernel, PSC::parameters::sample_weights(
+                                                              weights, PSC::parameters::robust_orientation(robust, maps()))));
+        double worst = 0;
+        std::size_t valid = 0;
+        for(const auto& e : est)
+          if(e.is_valid())
+          {
+            ++valid;
+            worst = std::max({worst, std::abs(e.min_curvature - 1), std::abs(e.max_curvature - 1)});
+          }
+        CHECK(valid == pts.size());
+        CHECK(worst < 1e-9);  // measured below 1e-12
+      }
+}
+
+// Two parallel sheets closer than r with opposite normals (both sides of a thin plate): the
+// robust orientation would flip one sheet's normals and fit one surface to both. It reports
+// TWO_SHEETS instead; away from the other sheet the estimates are the plane's.
+TEST_CASE("Thin plate: the robust orientation reports TWO_SHEETS where both sides are within r; a cube's edges are left alone", "[aso][robust]")
+{
+  const double r = 0.2, gap = 0.05;  // sheets 0.25 r apart
+  std::vector<Oriented_point> plate;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for(int i = 0; i < 8000; ++i)
+  {
+    const double x = u(rng), y = u(rng);
+    plate.emplace_back(Point(x, y, 0), Vector(0, 0, -1));  // bottom side, outward down
+    const double x2 = u(rng), y2 = u(rng);
+    if(x2 < 0)  // the top side covers half of it: points at x > r see one sheet only
+      plate.emplace_back(Point(x2, y2, gap), Vector(0, 0, 1));
+  }
+  const auto est = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(plate, r, maps());
+  std::size_t two_sheets_under = 0, under = 0, flat_alone = 0, alone = 0;
+  for(std::size_t i = 0; i < plate.size(); ++i)
+  {
+    const Point& p = plate[i].first;
+    if(std::abs(p.x()) > 0.95 - r || std::abs(p.y()) > 0.95 - r)
+      continue;  // away from the plate's border
+    if(p.x() < -r)
+    {
+      ++under;
+      two_sheets_under += est[i].status == Status::TWO_SHEETS;
+    }
+    else if(p.x() > r)
+    {
+      ++alone;
+      flat_alone += est[i].is_valid() && std::abs(est[i].mean_curvature) < 1e-6;
+    }
+  }
+  CHECK(under > 1000);
+  CHECK(two_sheets_under == under);
+  CHECK(flat_alone == alone);
+
+  // A cube's faces meet at 90 degrees: no normal is more than 90 degrees from the weighted
+  // majority, so nothing is flipped and the estimates are those without the orientation.
+  std::vector<Oriented_point> cube;
+  for(int f = 0; f < 6; ++f)
+    for(int i = 0; i < 2000; ++i)
+    {
+      double c[3] = {u(rng), u(rng), u(rng)};
+      const int axis = f / 2;
+      c[axis] = f % 2 ? 1 : -1;
+      Vector n(axis == 0 ? c[0] : 0, axis == 1 ? c[1] : 0, axis == 2 ? c[2] : 0);
+      cube.emplace_back(Point(c[0], c[1], c[2]), n);
+    }
+  const auto with = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(cube, 0.3, maps());
+  const auto without = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
+    cube, 0.3, PSC::parameters::robust_orientation(false, maps()));
+  std::size_t same = 0;
+  for(std::size_t i = 0; i < cube.size(); ++i)
+    same += with[i].status == without[i].status &&
+            (!with[i].is_valid() || with[i].mean_curvature == without[i].mean_curvature);
+  CHECK(same == cube.size());
 }

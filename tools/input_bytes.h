@@ -15,6 +15,7 @@
 #include <charconv>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 #include <string_view>
@@ -187,11 +188,25 @@ inline bool parse_number(std::string_view t, double& v)
   const char* b = t.data();
   const char* e = b + t.size();
   if(b != e && *b == '+')
+  {
     ++b;
+    if(b != e && (*b == '+' || *b == '-'))
+      return false;  // "+-1"
+  }
   if(b == e)
     return false;
   const std::from_chars_result r = std::from_chars(b, e, v);
-  return r.ec == std::errc() && r.ptr == e;
+  if(r.ptr != e)
+    return false;
+  if(r.ec == std::errc::result_out_of_range)
+  {
+    // beyond the range of doubles: 1e400 is infinite (a non-finite point), 1e-400 is 0, as
+    // strtod rounds them
+    const std::string copy(b, e);
+    v = std::strtod(copy.c_str(), nullptr);
+    return true;
+  }
+  return r.ec == std::errc();
 }
 
 // A count: decimal digits only, below 2^63.

@@ -100,6 +100,7 @@ struct Scale
   double spacing_multiple = 0; // > 0 for "--radius Nx"
   double spacing = 0;          // CGAL::compute_average_spacing, for "--radius Nx"
   std::size_t min_neighbors = 0;  // --min-neighbors; 0: the method's default
+  CGAL::Aso_variant variant = CGAL::Aso_variant::ROBUST;  // --variant (aso)
 };
 
 typedef Estimates (*Run_method)(const Point_set&, const Scale&, const Callback&);
@@ -123,7 +124,7 @@ struct Method
          [](const Point_set& points, const Scale& scale, const Callback& callback) -> Estimates { \
            const auto np = PSC::parameters::min_neighbors(                                      \
              scale.min_neighbors ? scale.min_neighbors : PSC::internal::default_min_neighbors::NAME, \
-             CGAL::parameters::callback(callback));                                             \
+             PSC::parameters::aso_variant(scale.variant, CGAL::parameters::callback(callback))); \
            if(scale.by_count)                                                                   \
              return CGAL::estimate_##NAME##_curvatures<CGAL::Parallel_tag>(                    \
                points, PSC::parameters::neighbor_count(scale.neighbors, np));                   \
@@ -134,7 +135,7 @@ struct Method
 const std::vector<Method>& methods()
 {
   static const std::vector<Method> table = {
-    PSC_TOOL_METHOD(aso, "Algebraic Shape Operator (Lejemble et al. 2021): full curvature tensor", 20),
+    PSC_TOOL_METHOD(aso, "Algebraic Shape Operator (Lejemble et al. 2021): full curvature tensor", 15),
     PSC_TOOL_METHOD(apss, "APSS algebraic sphere: corrected normal and mean curvature only", 20),
 #ifdef PSC_TOOL_HAS_BARYCENTER
     PSC_TOOL_METHOD(barycenter, "baseline: distance to the barycentre", 25),
@@ -219,6 +220,9 @@ void print_usage(std::ostream& os)
      << "\n"
      << "options:\n"
      << "  --method M         estimator: " << method_names() << " (default aso)\n"
+     << "  --variant V        aso: robust (default: kernel (1-d^2/r^2)^3, tangent Voronoi area\n"
+     << "                     weights, neighbours' normals oriented by their majority) or paper\n"
+     << "                     (the estimator of Lejemble et al. 2021 exactly)\n"
      << "  --neighbors K      neighbourhoods by count: each point's radius is the distance to its\n"
      << "                     K-th nearest neighbour, itself counted (default: --neighbors 40)\n"
      << "  --radius R         neighbourhoods of radius R, in the unit of the coordinates; or Nx\n"
@@ -382,6 +386,13 @@ Options parse_command_line(int argc, char** argv)
     }
     else if(name == "--columns")
       o.columns = parse_columns(take_value());
+    else if(name == "--variant")
+    {
+      const std::string v = take_value();
+      if(v != "robust" && v != "paper")
+        throw Error(cat("--variant: unknown variant ", in_quotes(v), " (robust or paper)"));
+      o.scale.variant = v == "paper" ? CGAL::Aso_variant::PAPER : CGAL::Aso_variant::ROBUST;
+    }
     else if(name == "--orient")
     {
       o.orientation_text = take_value();
@@ -820,7 +831,9 @@ int run(const Options& o)
   // 5. Write.
   Output_layout layout;
   layout.format = out_ext == ".csv" ? Output_layout::CSV : o.ascii ? Output_layout::ASCII_PLY : Output_layout::BINARY_PLY;
-  layout.comments.push_back(cat("point_set_curvatures method ", o.method->name, ", ", scale_description(scale)));
+  const std::string method_label = std::string(o.method->name) +
+    (std::string(o.method->name) == "aso" ? (scale.variant == CGAL::Aso_variant::PAPER ? " (paper's variant)" : " (robust variant)") : "");
+  layout.comments.push_back(cat("point_set_curvatures method ", method_label, ", ", scale_description(scale)));
   layout.comments.push_back(cat("input ", o.input));
   double Estimate::*color_field = nullptr;
   double color_range = 0;
@@ -879,7 +892,7 @@ int run(const Options& o)
     for(const auto& s : invalid)
       why += cat(why.empty() ? "; " : ", ", s.second, " ", s.first);
     std::printf("%s: %s -> %s\n", program, o.input.c_str(), o.output.c_str());
-    std::printf("  method      %s (%s)\n", o.method->name, o.method->description);
+    std::printf("  method      %s: %s\n", method_label.c_str(), o.method->description);
     std::printf("  scale       %s\n", scale_description(scale).c_str());
     std::printf("  points      %zu%s\n", ps.size(), had_normals ? "" : " (normals estimated)");
     std::printf("  valid       %zu (%.2f %%)%s\n", valid, 100.0 * valid / ps.size(), why.c_str());

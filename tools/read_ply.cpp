@@ -115,7 +115,9 @@ Ply_header read_ply_header(Line_source& lines, const std::string& path)
   auto fail = [&](const std::string& what) {
     throw Error(cat(in_quotes(path), " PLY header line ", lines.line_number(), ": ", what));
   };
-  if(!lines.next(line) || trim(line) != "ply")
+  if(lines.next(line) && line.size() >= 3 && line.substr(0, 3) == "\xEF\xBB\xBF")
+    line.remove_prefix(3);  // UTF-8 byte order mark
+  if(lines.line_number() == 0 || trim(line) != "ply")
     throw Error(cat(in_quotes(path), ": not a PLY file (no 'ply' on its first line)"));
   bool format = false, end = false;
   while(!end && lines.next(line))
@@ -342,6 +344,8 @@ public:
     return true;
   }
   std::size_t line_number() const { return m_lines.line_number(); }
+  // every value of the current line was read
+  bool at_line_end() const { return m_next == m_values.size(); }
 
 private:
   Line_source& m_lines;
@@ -362,10 +366,18 @@ void read_ply_ascii(Line_source& lines, const Ply_header& h, Point_cloud& cloud,
     double point[6] = {0, 0, 0, 0, 0, 0};
     for(std::uint64_t item = 0; item < e.count; ++item)
     {
+      // each element is one line (PLY): its values may not run over to the next line, nor
+      // share theirs with the next element
+      std::size_t item_line = 0;
       auto number = [&](double& v) {
         std::string_view t;
         if(!values.next(t))
           throw Error(cat(in_quotes(path), ": truncated: the file ends in ", item_text(e, item)));
+        if(item_line == 0)
+          item_line = values.line_number();
+        else if(values.line_number() != item_line)
+          throw Error(cat(in_quotes(path), ": line ", item_line, ": fewer values than the properties of ",
+                          item_text(e, item), " (each element is one line; wrong properties in the header?)"));
         if(!parse_number(t, v))
           throw Error(cat(in_quotes(path), ": line ", values.line_number(), ": ", quoted(t), " is not a number (",
                           item_text(e, item), ")"));
@@ -389,6 +401,9 @@ void read_ply_ascii(Line_source& lines, const Ply_header& h, Point_cloud& cloud,
         for(double c = v; c > 0; --c)
           number(v);
       }
+      if(!values.at_line_end())
+        throw Error(cat(in_quotes(path), ": line ", item_line, ": more values than the properties of ",
+                        item_text(e, item), " (each element is one line; wrong properties in the header?)"));
       if(is_vertex)
       {
         cloud.xyz.insert(cloud.xyz.end(), point, point + 3);
@@ -432,6 +447,9 @@ Point_cloud read_ply(Byte_source& bytes, const std::string& path)
   else
   {
     read_ply_binary(bytes, h, cloud, path);
+    // a line break some writers append after the data is not data
+    for(int i = 0; i < 2 && bytes.fill(1) == 1 && (*bytes.data() == '\n' || *bytes.data() == '\r'); ++i)
+      bytes.advance(1);
     if(!bytes.at_end())
       throw Error(cat(in_quotes(path), ": more data than the ", v.count, " vertices",
                       h.elements.size() > 1 ? " and other elements" : "",

@@ -78,6 +78,26 @@ double median(std::vector<double> v)
   return v[v.size() / 2];
 }
 
+// Normals read from unnamed values: refused when they are not unit vectors (median length
+// outside [0.5, 2]: colours, intensities), never silently used as normals.
+void check_unit_normals(const Point_cloud& cloud, const std::string& path, const char* what)
+{
+  std::vector<double> lengths;
+  for(std::size_t i = 0; i < cloud.size(); ++i)
+  {
+    const double* n = &cloud.normals[3 * i];
+    const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if(std::isfinite(l))
+      lengths.push_back(l);
+  }
+  const double m = median(lengths);
+  if(!(m >= 0.5 && m <= 2))
+    throw Error(cat(in_quotes(path), ": ", what, " are not unit normals (median length ", m,
+                    "): if they are colours or other values, give --columns to name the columns, for "
+                    "example --columns x,y,z,r,g,b (normals are then estimated), or --columns "
+                    "x,y,z,nx,ny,nz to use them as normals"));
+}
+
 // ---------------------------------------------------------------------------------------
 // .xyz, .pwn, .txt, .csv
 
@@ -90,7 +110,7 @@ Point_cloud read_xyz(Byte_source& bytes, const std::string& path, const Read_opt
   bool automatic_six = false, explicit_columns = !options.columns.empty();
   std::string layout_origin;
   std::uint64_t declared = 0;
-  bool has_count = false, first_content = true;
+  bool has_count = false, first_content = true, header_allowed = true;
   std::string_view line;
   if(explicit_columns)
   {
@@ -104,8 +124,8 @@ Point_cloud read_xyz(Byte_source& bytes, const std::string& path, const Read_opt
   {
     if(lines.line_number() == 1 && line.size() >= 3 && line.substr(0, 3) == "\xEF\xBB\xBF")
       line.remove_prefix(3);  // UTF-8 byte order mark
-    line = trim(line);
-    if(line.empty() || line[0] == '#')
+    line = trim(line.substr(0, line.find('#')));  // '#' starts a comment, anywhere
+    if(line.empty())
       continue;
     split(line, values);
     if(first_content)
@@ -116,8 +136,12 @@ Point_cloud read_xyz(Byte_source& bytes, const std::string& path, const Read_opt
       {
         has_count = true;
         declared = count;
-        continue;
+        continue;  // a header line may follow
       }
+    }
+    if(header_allowed)
+    {
+      header_allowed = false;
       // a header line of names: no value is a number
       bool names = true;
       for(std::string_view v : values)
@@ -172,22 +196,7 @@ Point_cloud read_xyz(Byte_source& bytes, const std::string& path, const Read_opt
   else
     cloud.normals_source = automatic_six ? "columns 4-6" : cat("the columns named by ", layout_origin);
   if(automatic_six && cloud.size() > 0)
-  {
-    std::vector<double> lengths;
-    for(std::size_t i = 0; i < cloud.size(); ++i)
-    {
-      const double* n = &cloud.normals[3 * i];
-      const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-      if(std::isfinite(l))
-        lengths.push_back(l);
-    }
-    const double m = median(lengths);
-    if(!(m >= 0.5 && m <= 2))
-      throw Error(cat(in_quotes(path), ": its columns 4-6 are not unit normals (median length ", m,
-                      "): if they are colours or other values, give --columns to name the columns, for "
-                      "example --columns x,y,z,r,g,b (normals are then estimated), or --columns "
-                      "x,y,z,nx,ny,nz to use them as normals"));
-  }
+    check_unit_normals(cloud, path, "its columns 4-6");
   return cloud;
 }
 
@@ -215,12 +224,15 @@ Point_cloud read_off(Byte_source& bytes, const std::string& path)
     split_spaces(line, w);
     if(stage == 0)
     {
-      if(w.size() != 1 || (w[0] != "OFF" && w[0] != "NOFF"))
+      if(w.empty() || (w[0] != "OFF" && w[0] != "NOFF"))
         fail("expected the header OFF or NOFF (binary and coloured OFF are not supported)");
       signature = std::string(w[0]);
       stage = 1;
+      if(w.size() == 1)
+        continue;
+      w.erase(w.begin());  // the counts on the same line: "OFF 8 6 12"
     }
-    else if(stage == 1)
+    if(stage == 1)
     {
       if(w.size() != 3 || !parse_count(w[0], declared_vertices) || !parse_count(w[1], declared_faces) ||
          !parse_count(w[2], dummy))
@@ -264,7 +276,10 @@ Point_cloud read_off(Byte_source& bytes, const std::string& path)
   if(faces != declared_faces)
     throw Error(cat(in_quotes(path), ": the header declares ", declared_faces, " faces but the file has ", faces));
   if(cloud.has_normals())
+  {
     cloud.normals_source = "the vertex lines (x y z nx ny nz)";
+    check_unit_normals(cloud, path, "the 4th to 6th values of its vertex lines");
+  }
   return cloud;
 }
 

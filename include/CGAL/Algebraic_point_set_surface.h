@@ -120,8 +120,7 @@ public:
     Point_set_curvatures::internal::check_radius(radius, "Algebraic_point_set_surface");
     m_radius = radius;
     m_tolerance = 1e-10 * radius;
-    m_constant = Point_set_curvatures::internal::weight_kernel_parameter(np) ==
-                 Apss_weight_kernel::CONSTANT;
+    m_constant = Point_set_curvatures::internal::constant_kernel_parameter(np, "Algebraic_point_set_surface");
     const auto point_map = NP_helper::get_const_point_map(points, np);
     const auto normal_map = NP_helper::get_normal_map(points, np);
     std::vector<std::size_t> ids;

@@ -37,20 +37,32 @@ public:
   typedef typename GeomTraits::Vector_3 Vector_3;
 
   /// Starts a fit at `evaluation_point` with the kernel `(1 - d²/radius²)²`, projected on
-  /// the tangent plane chosen by `projection` (see `CGAL::Aso_projection`).
-  /// \throws std::invalid_argument if `radius` is not positive and finite or the
-  /// evaluation point is not finite.
+  /// the tangent plane chosen by `projection` (see `CGAL::Aso_projection`): the paper's
+  /// estimator. `kernel` (`SMOOTH`, `SMOOTH_CUBIC` or `SMOOTH_QUARTIC`) and
+  /// `robust_orientation` (neighbours' normals flipped against their weighted majority,
+  /// `TWO_SHEETS` when they form a second sheet) select the variants of
+  /// `estimate_aso_curvatures()`; sample weights are given per neighbour to `add_neighbor()`.
+  /// \throws std::invalid_argument if `radius` is not positive and finite, the evaluation
+  /// point is not finite, or `kernel` is `CONSTANT`.
   Algebraic_shape_operator_fit(const Point_3& evaluation_point, FT radius,
-                               Aso_projection projection = Aso_projection::CORRECTED_NORMAL)
+                               Aso_projection projection = Aso_projection::CORRECTED_NORMAL,
+                               Apss_weight_kernel kernel = Apss_weight_kernel::SMOOTH,
+                               bool robust_orientation = false)
     : m_frame(evaluation_point, CGAL::to_double(radius), "Algebraic_shape_operator_fit",
-              projection == Aso_projection::CORRECTED_NORMAL),
-      m_projection(projection)
-  {}
+              projection == Aso_projection::CORRECTED_NORMAL)
+  {
+    if(kernel == Apss_weight_kernel::CONSTANT)
+      throw std::invalid_argument("Algebraic_shape_operator_fit: the constant kernel has no derivative");
+    m_settings.projection = projection;
+    m_settings.kernel_exponent = Point_set_curvatures::internal::kernel_exponent(kernel);
+    m_settings.orient_neighbors = robust_orientation;
+  }
 
-  /// Adds the oriented point `(p, n)`; returns `true` if it lies at distance `< radius`
-  /// and was used. `n` need not be unit: it is normalised (except with
+  /// Adds the oriented point `(p, n)` with the quadrature weight `sample_weight` (positive:
+  /// the area it stands for; 1 for the paper's equal weights); returns `true` if it lies at
+  /// distance `< radius` and was used. `n` need not be unit: it is normalised (except with
   /// `Aso_projection::AUTHORS_IMPLEMENTATION`, which uses it as given).
-  bool add_neighbor(const Point_3& p, const Vector_3& n)
+  bool add_neighbor(const Point_3& p, const Vector_3& n, double sample_weight = 1.0)
   {
     double q[3], nn[3];
     if(!m_frame.to_frame(p, n, q, nn))
@@ -60,6 +72,8 @@ public:
       m_columns[i].push_back(q[i]);
       m_columns[3 + i].push_back(nn[i]);
     }
+    m_weights.push_back(sample_weight);
+    m_weighted = m_weighted || sample_weight != 1.0;
     return true;
   }
 
@@ -68,9 +82,11 @@ public:
   void reset(const Point_3& evaluation_point, FT radius)
   {
     m_frame = Frame(evaluation_point, CGAL::to_double(radius), "Algebraic_shape_operator_fit",
-                    m_projection == Aso_projection::CORRECTED_NORMAL);
+                    m_settings.projection == Aso_projection::CORRECTED_NORMAL);
     for(auto& c : m_columns)
       c.clear();
+    m_weights.clear();
+    m_weighted = false;
   }
 
   /// Adds every element of `range`, read through `point_map` and `normal_map`.
@@ -100,15 +116,18 @@ public:
     nb.qx = m_columns[0].data(); nb.qy = m_columns[1].data(); nb.qz = m_columns[2].data();
     nb.nx = m_columns[3].data(); nb.ny = m_columns[4].data(); nb.nz = m_columns[5].data();
     nb.radius = m_frame.radius();
+    nb.sample_weight = m_weighted ? m_weights.data() : nullptr;
     return Point_set_curvatures::internal::to_curvature_estimate<GeomTraits>(
-      Point_set_curvatures::internal::algebraic_shape_operator(nb, m_projection), nb.size);
+      Point_set_curvatures::internal::algebraic_shape_operator(nb, m_settings), nb.size);
   }
 
 private:
   typedef Point_set_curvatures::internal::Local_frame<GeomTraits> Frame;
   Frame m_frame;
-  Aso_projection m_projection;
+  Point_set_curvatures::internal::Aso_settings m_settings;
   std::vector<double> m_columns[6];  // q (scaled centred frame) and n of the neighbours
+  std::vector<double> m_weights;     // their sample weights
+  bool m_weighted = false;           // some sample weight differs from 1
 };
 
 } // namespace CGAL

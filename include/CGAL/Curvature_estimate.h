@@ -23,7 +23,11 @@ enum class Curvature_estimate_status : unsigned char
   DEGENERATE_FIT,     ///< the neighbours (nearly) coincide, or the fit has no usable normal or tensor
   NON_FINITE_POINT,   ///< the query point has a NaN or infinite coordinate
   INVALID_NORMAL,     ///< the input normal of the query point is zero, NaN or infinite
-  NOT_COMPUTED        ///< the run was cancelled by the `callback` before this point was processed
+  NOT_COMPUTED,       ///< the run was cancelled by the `callback` before this point was processed
+  /// with `robust_orientation`: the neighbours with opposite normals lie on a second sheet,
+  /// offset along the normal (both sides of a thin plate, two walls closer than `r`); fitting
+  /// one surface to both would merge them, so no estimate is given (use a smaller radius)
+  TWO_SHEETS
 };
 
 /// \ingroup PkgPointSetCurvaturesRef
@@ -38,6 +42,7 @@ inline const char* to_string(Curvature_estimate_status s)
     case Curvature_estimate_status::NON_FINITE_POINT: return "non_finite_point";
     case Curvature_estimate_status::INVALID_NORMAL: return "invalid_normal";
     case Curvature_estimate_status::NOT_COMPUTED: return "not_computed";
+    case Curvature_estimate_status::TWO_SHEETS: return "two_sheets";
   }
   return "unknown";
 }

@@ -185,7 +185,7 @@ apss_smooth_point_set(PointRange& points, double radius,
   const std::size_t iterations = static_cast<std::size_t>(asked_iterations);
   const bool update_normals =
     choose_parameter(get_parameter(np, PSC::internal_np::update_normals), false);
-  const bool constant = PSC::internal::weight_kernel_parameter(np) == Apss_weight_kernel::CONSTANT;
+  const bool constant = PSC::internal::constant_kernel_parameter(np, "apss_smooth_point_set");
   const std::function<bool(double)> callback =
     choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
   constexpr bool normals_writable = PSC::internal::is_writable_map<Normal_map>();

@@ -195,7 +195,7 @@ sphere_features_at_every_point(const PointRange& points, bool radius_given, doub
                                const NamedParameters& np, const char* function_name)
 {
   typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits Geom_traits;
-  const bool constant = weight_kernel_parameter(np) == Apss_weight_kernel::CONSTANT;
+  const bool constant = constant_kernel_parameter(np, function_name);
   const std::size_t min_count = min_neighbors_parameter(np, default_min_neighbors::sphere_features);
   return evaluate_at_every_point<Algebraic_sphere_features<Geom_traits>, ConcurrencyTag>(
     points, radius_given, radius, np, neighborhood_options(np, function_name, true),
@@ -417,7 +417,7 @@ estimate_multiscale_algebraic_sphere_features(const PointRange& points,
     throw std::invalid_argument(std::string(name) + ": neighbor_count is not supported, give radii");
 
   const PSC::internal::Neighborhood_options options = PSC::internal::neighborhood_options(np, name, true);
-  const bool constant = PSC::internal::weight_kernel_parameter(np) == Apss_weight_kernel::CONSTANT;
+  const bool constant = PSC::internal::constant_kernel_parameter(np, name);
 
   const std::size_t n = static_cast<std::size_t>(std::distance(points.begin(), points.end()));
   std::vector<std::vector<Algebraic_sphere_features<Geom_traits> > > results(

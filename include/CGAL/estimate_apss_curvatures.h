@@ -20,6 +20,7 @@ struct Apss_estimator : Estimator_base
 {
   // weight kernel (named parameter weight_kernel, issue 6)
   Apss_weight_kernel kernel = Apss_weight_kernel::SMOOTH;
+  bool orient_neighbors = false;  // robust_orientation
 
   Apss_estimator()
   {
@@ -30,20 +31,34 @@ struct Apss_estimator : Estimator_base
   explicit Apss_estimator(const NamedParameters& np)
     : Apss_estimator()
   {
+    using CGAL::parameters::choose_parameter;
+    using CGAL::parameters::get_parameter;
     kernel = weight_kernel_parameter(np);
+    orient_neighbors = choose_parameter(get_parameter(np, internal_np::robust_orientation), false);
+    sample_weights = choose_parameter(get_parameter(np, internal_np::sample_weights), Sample_weights::UNIFORM) ==
+                     Sample_weights::TANGENT_VORONOI_AREA;
+  }
+
+  template <class Kernel>
+  Local_estimate fit(const Neighborhood& nb) const
+  {
+    Algebraic_sphere_sums<Kernel> sums;
+    double ref[3];
+    if(orient_neighbors && !majority_orientation<Kernel>(nb, ref))
+      return Local_estimate::invalid(Curvature_estimate_status::TWO_SHEETS);
+    sums.add(nb, orient_neighbors ? ref : nullptr);
+    return algebraic_sphere_estimate(sums, nb.radius);
   }
 
   Local_estimate operator()(const Neighborhood& nb) const
   {
-    if(kernel == Apss_weight_kernel::CONSTANT)
+    switch(kernel)
     {
-      Algebraic_sphere_sums<Constant_kernel> sums;
-      sums.add(nb);
-      return algebraic_sphere_estimate(sums, nb.radius);
+      case Apss_weight_kernel::CONSTANT: return fit<Constant_kernel>(nb);
+      case Apss_weight_kernel::SMOOTH_CUBIC: return fit<Power_kernel<3> >(nb);
+      case Apss_weight_kernel::SMOOTH_QUARTIC: return fit<Power_kernel<4> >(nb);
+      default: return fit<Smooth_kernel>(nb);
     }
-    Algebraic_sphere_sums<Smooth_kernel> sums;
-    sums.add(nb);
-    return algebraic_sphere_estimate(sums, nb.radius);
   }
 };
 
@@ -96,10 +111,23 @@ struct Apss_estimator : Estimator_base
 ///     \cgalParamDefault{no callback}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Point_set_curvatures::parameters::weight_kernel}
-///     \cgalParamDescription{the weight kernel of the fit: `SMOOTH` `(1 - d²/radius²)²` or
-///       `CONSTANT` (1 inside the ball, the weight of the paper's asymptotic analysis)}
+///     \cgalParamDescription{the weight kernel of the fit: `SMOOTH` `(1 - d²/radius²)²`,
+///       `SMOOTH_CUBIC` and `SMOOTH_QUARTIC` (exponents 3 and 4) or `CONSTANT` (1 inside the
+///       ball, the weight of the paper's asymptotic analysis)}
 ///     \cgalParamType{`CGAL::Apss_weight_kernel`}
 ///     \cgalParamDefault{`CGAL::Apss_weight_kernel::SMOOTH`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Point_set_curvatures::parameters::sample_weights}
+///     \cgalParamDescription{the quadrature weights of the samples, as for
+///       `estimate_aso_curvatures()`}
+///     \cgalParamType{`CGAL::Sample_weights`}
+///     \cgalParamDefault{`CGAL::Sample_weights::UNIFORM`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Point_set_curvatures::parameters::robust_orientation}
+///     \cgalParamDescription{neighbours' normals oriented by their weighted majority, as for
+///       `estimate_aso_curvatures()`}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`false`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Point_set_curvatures::parameters::min_neighbors}
 ///     \cgalParamDescription{the least number of neighbours (query included) of a valid

@@ -147,7 +147,7 @@ inline bool orient_along_spanning_tree(const std::vector<Pca_normal_record>& rec
   const std::size_t count = records.size();
   auto usable = [&](std::size_t i) { return records[i].status == Curvature_estimate_status::VALID; };
   // symmetric adjacency (CSR)
-  std::vector<std::uint32_t> offset(count + 1, 0);
+  std::vector<std::size_t> offset(count + 1, 0);  // up to 24 entries per point: 64 bits
   for(std::size_t i = 0; i < count; ++i)
     if(usable(i))
       for(std::size_t e = 0; e < records[i].degree; ++e)
@@ -159,7 +159,7 @@ inline bool orient_along_spanning_tree(const std::vector<Pca_normal_record>& rec
   std::partial_sum(offset.begin(), offset.end(), offset.begin());
   std::vector<std::uint32_t> adjacency(offset.back());
   {
-    std::vector<std::uint32_t> fill(offset.begin(), offset.end() - 1);
+    std::vector<std::size_t> fill(offset.begin(), offset.end() - 1);
     for(std::size_t i = 0; i < count; ++i)
       if(usable(i))
         for(std::size_t e = 0; e < records[i].degree; ++e)
@@ -192,7 +192,7 @@ inline bool orient_along_spanning_tree(const std::vector<Pca_normal_record>& rec
   auto visit = [&](std::uint32_t i) {
     visited[i] = 1;
     const double* ni = &n[3 * std::size_t(i)];
-    for(std::uint32_t a = offset[i]; a < offset[i + 1]; ++a)
+    for(std::size_t a = offset[i]; a < offset[i + 1]; ++a)
     {
       const std::uint32_t j = adjacency[a];
       if(visited[j])
@@ -267,14 +267,18 @@ std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, dou
   // 1. PCA normals and nearest neighbours, on the driver (the input normals are not read).
   Neighborhood_options options;
   options.function_name = name;
+  bool cancelled = false;
   if(callback)
-    options.callback = [&callback, tree](double f) { return callback(tree ? 0.7 * f : f); };
+    options.callback = [&callback, &cancelled, tree](double f) {
+      const bool go_on = callback(tree ? 0.7 * f : f);
+      cancelled = cancelled || !go_on;
+      return go_on;
+    };
   const auto point_map = NP_helper::get_const_point_map(points, np);
   typedef typename boost::property_traits<decltype(point_map)>::key_type Key;
   const CGAL::Constant_property_map<Key, Vector_3> no_normal(Vector_3(0, 0, 1));
   const std::vector<Pca_normal_record> records = evaluate_with_maps<Pca_normal_record, ConcurrencyTag>(
     points, radius_given, radius, k, point_map, no_normal, options, &pca_normal_record);
-  bool cancelled = false;
   for(const Pca_normal_record& r : records)
     cancelled = cancelled || r.status == Curvature_estimate_status::NOT_COMPUTED;
 

@@ -77,9 +77,11 @@ struct Tile
 ///
 /// Thrown by an estimation function run on a `Tile` when the tile's halo is too small for
 /// the result to be exact: with neighbourhoods by count, a point's radius reaches its `k`-th
-/// nearest neighbour, which is only known once it is found. `required_halo` is a halo that
-/// suffices: run the tile again with it (more points in the range only shrink the radii,
-/// so the second run succeeds).
+/// nearest neighbour, which is only known once it is found. `required_halo()` is a larger
+/// halo to run the tile again with: one that suffices for every point whose `k` nearest were
+/// found in the range (more points in the range only shrink the radii), or, when the range
+/// holds fewer than `k` points, twice the halo (at least the range's extent). Growing the
+/// halo by it terminates: at worst the range becomes the whole cloud.
 class Halo_too_small : public std::runtime_error
 {
 public:

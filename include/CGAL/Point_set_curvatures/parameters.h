@@ -16,6 +16,8 @@
 #include <CGAL/Point_set_curvatures/Tile.h>
 
 #include <cstddef>
+#include <stdexcept>
+#include <string>
 
 namespace CGAL {
 
@@ -131,7 +133,11 @@ accept_unnormalized_normals(bool accept, const NamedParameters& np = CGAL::param
 /// the whole-cloud run; the other points get `NOT_COMPUTED` (unusable points
 /// keep `NON_FINITE_POINT` or `INVALID_NORMAL`). With a halo too small for that,
 /// the function throws `CGAL::Point_set_curvatures::Halo_too_small` (neighbourhoods by count)
-/// or `std::invalid_argument` (by radius: the halo must be at least the radius).
+/// or `std::invalid_argument` (by radius: the halo must be at least the radius, twice the
+/// radius with sample weights, the default of `estimate_aso_curvatures()`). Not supported
+/// with `normal_refinement`, nor with sample weights and neighbourhoods by count
+/// (`std::invalid_argument`: use `sample_weights(Sample_weights::UNIFORM)` or
+/// `aso_variant(Aso_variant::PAPER)` there).
 template <class NamedParameters = CGAL::parameters::Default_named_parameters>
 CGAL::Named_function_parameters<Tile, internal_np::tile_t, NamedParameters>
 tile(const Tile& t, const NamedParameters& np = CGAL::parameters::default_values())
@@ -142,6 +148,105 @@ tile(const Tile& t, const NamedParameters& np = CGAL::parameters::default_values
 } // namespace parameters
 } // namespace Point_set_curvatures
 // ---- end of the validity and tile options ----
+
+// ---- Beyond the paper: sample weights, robust orientation, refinement, variants ----
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// Quadrature weights of the samples in the sums of the sphere fit and of the ASO.
+enum class Sample_weights
+{
+  /// Every neighbour counts once (the paper).
+  UNIFORM,
+  /// Every neighbour's kernel weight is multiplied by the area of its Voronoi cell taken in
+  /// its own tangent plane (among its neighbours, clipped to a square of side `r`): the sums
+  /// become a quadrature of the surface integrals that does not depend on how evenly the
+  /// samples are spread (i.i.d. samples, scan lines, density varying with range). Computed in
+  /// one more pass of the neighbourhood driver; it does not depend on the evaluation point,
+  /// so the ASO's derivatives stay exact.
+  TANGENT_VORONOI_AREA
+};
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// A preset of the options of `estimate_aso_curvatures()` (see
+/// `CGAL::Point_set_curvatures::parameters::aso_variant()`); explicit options override it.
+enum class Aso_variant
+{
+  /// The estimator of Lejemble et al. 2021: kernel `(1 - d²/r²)²`, uniform sample weights,
+  /// input normals used as given. With `aso_projection(Aso_projection::AUTHORS_IMPLEMENTATION)`
+  /// it reproduces the authors' published values.
+  PAPER,
+  /// The package's default, chosen by measurement (user manual, "Beyond the paper"): kernel
+  /// `(1 - d²/r²)³`, tangent Voronoi area weights, neighbours' normals oriented by the
+  /// weighted majority.
+  ROBUST
+};
+
+namespace Point_set_curvatures {
+namespace internal_np {
+
+enum sample_weights_t { sample_weights };
+enum robust_orientation_t { robust_orientation };
+enum normal_refinement_t { normal_refinement };
+enum aso_variant_t { aso_variant };
+
+} // namespace internal_np
+
+namespace parameters {
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// Named parameter of `estimate_aso_curvatures()` and `estimate_apss_curvatures()`: the
+/// quadrature weights of the samples (`CGAL::Sample_weights`). Default: that of the variant
+/// (`TANGENT_VORONOI_AREA` for `Aso_variant::ROBUST`, `UNIFORM` for `PAPER` and for APSS).
+template <class NamedParameters = CGAL::parameters::Default_named_parameters>
+CGAL::Named_function_parameters<Sample_weights, internal_np::sample_weights_t, NamedParameters>
+sample_weights(Sample_weights weights, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return CGAL::Named_function_parameters<Sample_weights, internal_np::sample_weights_t,
+                                         NamedParameters>(weights, np);
+}
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// Named parameter of `estimate_aso_curvatures()` and `estimate_apss_curvatures()`: if
+/// `true`, the normal of every neighbour that disagrees with the weighted majority of the
+/// neighbourhood's normals is used flipped (in the same pass), so that flipped patches of
+/// estimated normals do not bias the fit; the returned normal follows the majority. Default:
+/// that of the variant (`true` for `Aso_variant::ROBUST`, `false` for `PAPER` and for APSS).
+template <class NamedParameters = CGAL::parameters::Default_named_parameters>
+CGAL::Named_function_parameters<bool, internal_np::robust_orientation_t, NamedParameters>
+robust_orientation(bool robust, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return CGAL::Named_function_parameters<bool, internal_np::robust_orientation_t,
+                                         NamedParameters>(robust, np);
+}
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// Named parameter of `estimate_aso_curvatures()`: the estimator is run `1 + iterations`
+/// times, each run after the first with the corrected normals of the previous one as input
+/// normals (points without a valid estimate keep their input normal); the sample weights
+/// are computed once. For noisy input normals. Default 0. Not supported with `tile`.
+template <class NamedParameters = CGAL::parameters::Default_named_parameters>
+CGAL::Named_function_parameters<std::size_t, internal_np::normal_refinement_t, NamedParameters>
+normal_refinement(std::size_t iterations, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return CGAL::Named_function_parameters<std::size_t, internal_np::normal_refinement_t,
+                                         NamedParameters>(iterations, np);
+}
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// Named parameter of `estimate_aso_curvatures()`: a preset of the kernel, the sample
+/// weights and the orientation (`CGAL::Aso_variant`); `weight_kernel`, `sample_weights` and
+/// `robust_orientation` given explicitly override it. `Aso_variant::PAPER` restores the
+/// paper's estimator exactly. Default: `Aso_variant::ROBUST`.
+template <class NamedParameters = CGAL::parameters::Default_named_parameters>
+CGAL::Named_function_parameters<Aso_variant, internal_np::aso_variant_t, NamedParameters>
+aso_variant(Aso_variant variant, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return CGAL::Named_function_parameters<Aso_variant, internal_np::aso_variant_t, NamedParameters>(variant, np);
+}
+
+} // namespace parameters
+} // namespace Point_set_curvatures
+// ---- end of the options beyond the paper ----
 
 // ---- Baseline estimators (issue 4): options of estimate_vcm_curvatures() ----
 namespace Point_set_curvatures {
@@ -178,14 +283,21 @@ vcm_offset_radius(double offset_radius,
 /// a neighbour at distance `d` from the evaluation point and a radius `r`.
 enum class Apss_weight_kernel
 {
-  /// `(1 - d²/r²)²` for `d < r`: the kernel used in practice, differentiable (the Algebraic
-  /// Shape Operator needs it; its scale derivatives are exact on the samples). Default.
+  /// `(1 - d²/r²)²` for `d < r`: the kernel of the paper, differentiable (the Algebraic
+  /// Shape Operator needs it; its scale derivatives are exact on the samples). Default of the
+  /// APSS functions and of `Aso_variant::PAPER`.
   SMOOTH,
   /// `1` for `d < r`: the constant weight of the paper's asymptotic analysis (Section 4.1),
   /// under which its asymptotic constants hold as printed. It has no spatial derivative, so
   /// the Algebraic Shape Operator rejects it; its derivative in the scale `r` is a boundary
   /// term, estimated as documented in `Algebraic_sphere_features::geometric_variation`.
-  CONSTANT
+  CONSTANT,
+  /// `(1 - d²/r²)³`: its Hessian vanishes at `d = r`, so points entering the ball do not make
+  /// the ASO jump. Default of `Aso_variant::ROBUST`. For `estimate_aso_curvatures()` and
+  /// `estimate_apss_curvatures()`.
+  SMOOTH_CUBIC,
+  /// `(1 - d²/r²)⁴`. For `estimate_aso_curvatures()` and `estimate_apss_curvatures()`.
+  SMOOTH_QUARTIC
 };
 
 namespace Point_set_curvatures {
@@ -216,12 +328,37 @@ weight_kernel(Apss_weight_kernel kernel,
 
 namespace internal {
 
+// P of the kernel (1 - d^2/r^2)^P; 0 for the constant kernel.
+inline int kernel_exponent(Apss_weight_kernel k)
+{
+  switch(k)
+  {
+    case Apss_weight_kernel::SMOOTH: return 2;
+    case Apss_weight_kernel::SMOOTH_CUBIC: return 3;
+    case Apss_weight_kernel::SMOOTH_QUARTIC: return 4;
+    default: return 0;
+  }
+}
+
 // The weight kernel of a named parameter pack (default SMOOTH).
 template <class NamedParameters>
 Apss_weight_kernel weight_kernel_parameter(const NamedParameters& np)
 {
   return CGAL::parameters::choose_parameter(
     CGAL::parameters::get_parameter(np, internal_np::weight_kernel), Apss_weight_kernel::SMOOTH);
+}
+
+// For the sphere features, the projection and the flow, whose scale derivatives and
+// multi-scale moments are written for the paper's two kernels: true for CONSTANT, false for
+// SMOOTH; the kernels (1 - d^2/r^2)^3 and ^4 are refused rather than silently replaced.
+template <class NamedParameters>
+bool constant_kernel_parameter(const NamedParameters& np, const char* function_name)
+{
+  const Apss_weight_kernel k = weight_kernel_parameter(np);
+  if(k == Apss_weight_kernel::SMOOTH_CUBIC || k == Apss_weight_kernel::SMOOTH_QUARTIC)
+    throw std::invalid_argument(std::string(function_name) + ": parameter 'weight_kernel': only "
+                                "Apss_weight_kernel::SMOOTH and CONSTANT are supported here");
+  return k == Apss_weight_kernel::CONSTANT;
 }
 
 } // namespace internal

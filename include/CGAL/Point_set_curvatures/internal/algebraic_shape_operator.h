@@ -77,10 +77,37 @@ struct Aso_first_order_sums
   double tqnq[3] = {};  // sum t (q.n) q
 };
 
-// Pass 1 as one rank-1 update per neighbour, M += a g^T with a = (w, t q) and
-// g = (1, q, n, q.n): row 0 of M holds A, B, C, D, rows 1-3 the gradient moments. The
-// 4-row columns are contiguous, so the update vectorises (SSE2: 2 lanes, AVX: 4).
-inline Aso_first_order_sums aso_first_pass(const Neighborhood& nb)
+// The variants of the ASO beyond the paper's (issue "an ASO that stays accurate on real
+// sampling and imperfect normals"), all keeping the derivatives through the kernel exact:
+// - Kernel: Power_kernel<P>, w = (1 - |q|^2)^P (weight_kernel.h); the paper's is P = 2.
+// - Weighted: every neighbour's weight is multiplied by its sample weight a_i
+//   (nb.sample_weight, e.g. the area of its tangent Voronoi cell, sample_weights.h): the
+//   sums become a quadrature of the surface integrals with area weights instead of equal
+//   weights. a_i does not depend on the evaluation point, so it multiplies w, grad w and
+//   Hess w alike.
+// - Oriented: every neighbour's normal is used flipped if it disagrees with the reference
+//   orientation `ref` (the weighted sum of the neighbourhood's normals), so that a few
+//   flipped input normals do not bias the fit.
+// With the paper's choices (P = 2, no weights, no orientation) the arithmetic is the one
+// of the original code, bitwise.
+
+// The normal of neighbour i, flipped (Oriented) to agree with `ref`.
+template <bool Oriented>
+inline void neighbor_normal(const Neighborhood& nb, std::size_t i, const double ref[3], double n[3])
+{
+  n[0] = nb.nx[i]; n[1] = nb.ny[i]; n[2] = nb.nz[i];
+  if constexpr(Oriented)
+  {
+    const double side = n[0] * ref[0] + n[1] * ref[1] + n[2] * ref[2] < 0 ? -1.0 : 1.0;
+    n[0] *= side; n[1] *= side; n[2] *= side;
+  }
+}
+
+// Pass 1 as one rank-1 update per neighbour, M += a g^T with a = (w, t^(P-1) q) (times the
+// sample weight) and g = (1, q, n, q.n): row 0 of M holds A, B, C, D, rows 1-3 the gradient
+// moments. The 4-row columns are contiguous, so the update vectorises (SSE2: 2 lanes, AVX: 4).
+template <class Kernel, bool Weighted, bool Oriented>
+inline Aso_first_order_sums aso_first_pass(const Neighborhood& nb, const double ref[3])
 {
   double M[8][4] = {};  // M[j][r] = sum a_r g_j
   double E = 0;         // sum w q.q
@@ -88,11 +115,17 @@ inline Aso_first_order_sums aso_first_pass(const Neighborhood& nb)
   {
     const double qx = nb.qx[i], qy = nb.qy[i], qz = nb.qz[i];
     const double s = qx * qx + qy * qy + qz * qz;
-    const double t = Smooth_kernel::t_of(s);
-    const double w = Smooth_kernel::weight(t);
-    const double a[4] = {w, t * qx, t * qy, t * qz};
-    const double g[8] = {1.0, qx, qy, qz, nb.nx[i], nb.ny[i], nb.nz[i],
-                         qx * nb.nx[i] + qy * nb.ny[i] + qz * nb.nz[i]};
+    const double t = Kernel::t_of(s);
+    double w = Kernel::weight(t), tg = Kernel::gradient_weight(t);
+    if constexpr(Weighted)
+    {
+      w *= nb.sample_weight[i];
+      tg *= nb.sample_weight[i];
+    }
+    double n[3];
+    neighbor_normal<Oriented>(nb, i, ref, n);
+    const double a[4] = {w, tg * qx, tg * qy, tg * qz};
+    const double g[8] = {1.0, qx, qy, qz, n[0], n[1], n[2], qx * n[0] + qy * n[1] + qz * n[2]};
     for(int j = 0; j < 8; ++j)
       for(int r = 0; r < 4; ++r)
         M[j][r] += a[r] * g[j];
@@ -120,12 +153,13 @@ inline Aso_first_order_sums aso_first_pass(const Neighborhood& nb)
 
 // Jet of a sum with its value and gradient gradient_factor * moment; its Hessian is left
 // to pass 2.
+template <class Kernel>
 inline Second_order_jet first_order_jet(double value, const double moment[3])
 {
   Second_order_jet s;
   s.v = value;
   for(int i = 0; i < 3; ++i)
-    s.g[i] = Smooth_kernel::gradient_factor * moment[i];
+    s.g[i] = Kernel::gradient_factor * moment[i];
   return s;
 }
 
@@ -185,29 +219,36 @@ inline Sums_adjoint u_c_adjoint(const Aso_first_order_sums& m)
   return F;
 }
 
-// Pass 2: sum_k F_k Hess S_k = sum_i gamma_i (8 q q^T - 4 t I), packed xx xy xz yy yz zz.
-inline void aso_second_pass(const Neighborhood& nb, const Sums_adjoint& F, double hessian[6])
+// Pass 2: sum_k F_k Hess S_k = sum_i gamma_i (c1 t^(P-2) q q^T + c2 t^(P-1) I) (times the
+// sample weight), packed xx xy xz yy yz zz; for P = 2, 8 q q^T - 4 t I.
+template <class Kernel, bool Weighted, bool Oriented>
+inline void aso_second_pass(const Neighborhood& nb, const Sums_adjoint& F, const double ref[3],
+                            double hessian[6])
 {
   double gxx = 0, gxy = 0, gxz = 0, gyy = 0, gyz = 0, gzz = 0, gt = 0;
   for(std::size_t i = 0; i < nb.size; ++i)
   {
     const double qx = nb.qx[i], qy = nb.qy[i], qz = nb.qz[i];
-    const double nx = nb.nx[i], ny = nb.ny[i], nz = nb.nz[i];
+    double n[3];
+    neighbor_normal<Oriented>(nb, i, ref, n);
     const double s = qx * qx + qy * qy + qz * qz;
-    const double t = Smooth_kernel::t_of(s);
-    const double gamma = F.A + F.B[0] * qx + F.B[1] * qy + F.B[2] * qz + F.C[0] * nx +
-                         F.C[1] * ny + F.C[2] * nz + F.D * (qx * nx + qy * ny + qz * nz) +
-                         F.E * s;
-    const double gx = gamma * qx, gy = gamma * qy, gz = gamma * qz;
+    const double t = Kernel::t_of(s);
+    double gamma = F.A + F.B[0] * qx + F.B[1] * qy + F.B[2] * qz + F.C[0] * n[0] +
+                   F.C[1] * n[1] + F.C[2] * n[2] + F.D * (qx * n[0] + qy * n[1] + qz * n[2]) +
+                   F.E * s;
+    if constexpr(Weighted)
+      gamma *= nb.sample_weight[i];
+    const double gh = gamma * Kernel::hessian_weight(t);
+    const double gx = gh * qx, gy = gh * qy, gz = gh * qz;
     gxx += gx * qx; gxy += gx * qy; gxz += gx * qz;
     gyy += gy * qy; gyz += gy * qz; gzz += gz * qz;
-    gt += gamma * t;
+    gt += gamma * Kernel::gradient_weight(t);
   }
   const double g[6] = {gxx, gxy, gxz, gyy, gyz, gzz};
   for(int k = 0; k < 6; ++k)
-    hessian[k] = Smooth_kernel::hessian_qq_factor * g[k];
+    hessian[k] = Kernel::hessian_qq_factor * g[k];
   for(int k : {0, 3, 5})
-    hessian[k] += Smooth_kernel::hessian_identity_factor * gt;
+    hessian[k] += Kernel::hessian_identity_factor * gt;
 }
 
 // Minimal number of neighbours (query included) for the sphere fit and the ASO.
@@ -253,14 +294,15 @@ inline bool set_authors_shape_operator(const double gradient[3], const double he
   return std::isfinite(e.k_min) && std::isfinite(e.k_max);
 }
 
-// ASO estimate (Equations 27-35) of a neighbourhood.
-inline Local_estimate algebraic_shape_operator(const Neighborhood& nb,
-                                               Aso_projection projection = Aso_projection::CORRECTED_NORMAL)
+// The ASO of one neighbourhood with a kernel and a variant fixed at compile time.
+template <class Kernel, bool Weighted, bool Oriented>
+inline Local_estimate algebraic_shape_operator_variant(const Neighborhood& nb, Aso_projection projection)
 {
-  if(nb.size < aso_min_neighbors)
-    return Local_estimate::invalid(Curvature_estimate_status::TOO_FEW_NEIGHBORS);
-
-  const Aso_first_order_sums m = aso_first_pass(nb);
+  double ref[3] = {0, 0, 0};
+  if constexpr(Oriented)
+    if(!majority_orientation<Kernel>(nb, ref))
+      return Local_estimate::invalid(Curvature_estimate_status::TWO_SHEETS);
+  const Aso_first_order_sums m = aso_first_pass<Kernel, Weighted, Oriented>(nb, ref);
   // Degenerate fit: the weighted variance of the positions, (A E - B.B) / A^2, vanishes
   // when the neighbours coincide (relative to r^2, as q is scaled by 1/r); neighbours
   // without tangent spread (a line, a planar curve) leave a curvature unmeasured.
@@ -269,17 +311,18 @@ inline Local_estimate algebraic_shape_operator(const Neighborhood& nb,
     return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
 
   typedef Second_order_jet Jet;
-  const Jet A = first_order_jet(m.A, m.tq);
+  const Jet A = first_order_jet<Kernel>(m.A, m.tq);
   Jet B[3], C[3];
   for(int a = 0; a < 3; ++a)
   {
     const double tqa_q[3] = {m.tqq[sym_index(a, 0)], m.tqq[sym_index(a, 1)], m.tqq[sym_index(a, 2)]};
-    B[a] = first_order_jet(m.B[a], tqa_q);
-    C[a] = first_order_jet(m.C[a], m.tnq + 3 * a);
+    B[a] = first_order_jet<Kernel>(m.B[a], tqa_q);
+    C[a] = first_order_jet<Kernel>(m.C[a], m.tnq + 3 * a);
   }
-  const Jet D = first_order_jet(m.D, m.tqnq);
-  const double ts_q[3] = {m.tq[0] - m.B[0], m.tq[1] - m.B[1], m.tq[2] - m.B[2]};  // sum t (q.q) q
-  const Jet E = first_order_jet(m.E, ts_q);
+  const Jet D = first_order_jet<Kernel>(m.D, m.tqnq);
+  // sum t^(P-1) (q.q) q = sum t^(P-1) q - sum t^P q, since q.q = 1 - t
+  const double ts_q[3] = {m.tq[0] - m.B[0], m.tq[1] - m.B[1], m.tq[2] - m.B[2]};
+  const Jet E = first_order_jet<Kernel>(m.E, ts_q);
 
   // Equations 2-4 (pass 1: the Hessians hold only products of first derivatives).
   const Jet u_q = 0.5 * ((A * D - (B[0] * C[0] + B[1] * C[1] + B[2] * C[2])) *
@@ -292,7 +335,7 @@ inline Local_estimate algebraic_shape_operator(const Neighborhood& nb,
 
   // Pass 2: the part of Hess u_c linear in the sums' Hessians.
   double linear_part[6];
-  aso_second_pass(nb, u_c_adjoint(m), linear_part);
+  aso_second_pass<Kernel, Weighted, Oriented>(nb, u_c_adjoint(m), ref, linear_part);
 
   // Equations 28-29 at the evaluation point (the origin of the frame).
   double gradient[3], hessian[6];
@@ -316,6 +359,48 @@ inline Local_estimate algebraic_shape_operator(const Neighborhood& nb,
     return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
   e.status = Curvature_estimate_status::VALID;
   return e;
+}
+
+// The choices of an ASO run (the named parameters of estimate_aso_curvatures()).
+struct Aso_settings
+{
+  Aso_projection projection = Aso_projection::CORRECTED_NORMAL;
+  int kernel_exponent = 2;       // P of (1 - d^2/r^2)^P: 2, 3 or 4
+  bool orient_neighbors = false;  // flip neighbour normals against the majority
+};
+
+template <class Kernel>
+inline Local_estimate algebraic_shape_operator_kernel(const Neighborhood& nb, const Aso_settings& s)
+{
+  const bool weighted = nb.sample_weight != nullptr;
+  if(weighted)
+    return s.orient_neighbors ? algebraic_shape_operator_variant<Kernel, true, true>(nb, s.projection)
+                              : algebraic_shape_operator_variant<Kernel, true, false>(nb, s.projection);
+  return s.orient_neighbors ? algebraic_shape_operator_variant<Kernel, false, true>(nb, s.projection)
+                            : algebraic_shape_operator_variant<Kernel, false, false>(nb, s.projection);
+}
+
+// ASO estimate (Equations 27-35) of a neighbourhood; sample weights where the neighbourhood
+// carries them.
+inline Local_estimate algebraic_shape_operator(const Neighborhood& nb, const Aso_settings& s)
+{
+  if(nb.size < aso_min_neighbors)
+    return Local_estimate::invalid(Curvature_estimate_status::TOO_FEW_NEIGHBORS);
+  switch(s.kernel_exponent)
+  {
+    case 3: return algebraic_shape_operator_kernel<Power_kernel<3> >(nb, s);
+    case 4: return algebraic_shape_operator_kernel<Power_kernel<4> >(nb, s);
+    default: return algebraic_shape_operator_kernel<Power_kernel<2> >(nb, s);
+  }
+}
+
+// The paper's ASO with a projection (kept for the per-query class and the tests).
+inline Local_estimate algebraic_shape_operator(const Neighborhood& nb,
+                                               Aso_projection projection = Aso_projection::CORRECTED_NORMAL)
+{
+  Aso_settings s;
+  s.projection = projection;
+  return algebraic_shape_operator(nb, s);
 }
 
 } // namespace internal

@@ -48,17 +48,36 @@ struct Algebraic_sphere_sums
   }
 
   // Whole neighbourhood at once; local accumulators so that the compiler keeps them in
-  // registers (members could alias the input arrays).
-  void add(const Neighborhood& nb)
+  // registers (members could alias the input arrays). Each kernel weight is multiplied by
+  // the neighbour's sample weight if the neighbourhood has them; with `ref`, each normal is
+  // flipped to agree with it (robust orientation). Without either, the paper's arithmetic.
+  void add(const Neighborhood& nb, const double* ref = nullptr)
+  {
+    if(nb.sample_weight)
+      ref ? add_variant<true, true>(nb, ref) : add_variant<true, false>(nb, ref);
+    else
+      ref ? add_variant<false, true>(nb, ref) : add_variant<false, false>(nb, ref);
+  }
+
+private:
+  template <bool Weighted, bool Oriented>
+  void add_variant(const Neighborhood& nb, const double* ref)
   {
     double a = 0, b0 = 0, b1 = 0, b2 = 0, c0 = 0, c1 = 0, c2 = 0, d = 0, e = 0;
     double xx = 0, xy = 0, xz = 0, yy = 0, yz = 0, zz = 0;
     for(std::size_t i = 0; i < nb.size; ++i)
     {
       const double qx = nb.qx[i], qy = nb.qy[i], qz = nb.qz[i];
-      const double nx = nb.nx[i], ny = nb.ny[i], nz = nb.nz[i];
+      double nx = nb.nx[i], ny = nb.ny[i], nz = nb.nz[i];
+      if constexpr(Oriented)
+      {
+        const double side = nx * ref[0] + ny * ref[1] + nz * ref[2] < 0 ? -1.0 : 1.0;
+        nx *= side; ny *= side; nz *= side;
+      }
       const double s = qx * qx + qy * qy + qz * qz;
-      const double w = WeightKernel::weight(1.0 - s);
+      double w = WeightKernel::weight(1.0 - s);
+      if constexpr(Weighted)
+        w *= nb.sample_weight[i];
       a += w;
       b0 += w * qx; b1 += w * qy; b2 += w * qz;
       c0 += w * nx; c1 += w * ny; c2 += w * nz;

@@ -56,6 +56,7 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <tuple>
 #include <vector>
 
 namespace CGAL {
@@ -76,6 +77,10 @@ struct Estimator_base
   // parameter min_neighbors says otherwise: the estimator's entry of default_min_neighbors
   // (local_estimate.h).
   std::size_t min_neighbors = 12;
+  // Whether the driver computes tangent Voronoi areas first and hands them to the estimator
+  // (nb.sample_weight), and how many times the estimation reruns on its own normals.
+  bool sample_weights = false;
+  std::size_t refinement = 0;
 };
 
 template <class ConcurrencyTag>
@@ -172,8 +177,8 @@ public:
     // Columns are padded by 8 doubles so that they are not a power of two apart: the
     // gather stores and the estimators' loads would otherwise alias modulo 4 KiB and stall.
     const std::size_t stride = cap + 8;
-    std::vector<double> grown(6 * stride);
-    for(int a = 0; a < 6; ++a)
+    std::vector<double> grown(columns * stride);
+    for(int a = 0; a < columns; ++a)
       std::copy(m_data.begin() + a * m_stride, m_data.begin() + a * m_stride + m_size,
                 grown.begin() + a * stride);
     m_data.swap(grown);
@@ -181,6 +186,8 @@ public:
     m_capacity = cap;
     m_stride = stride;
   }
+  // q (3), n (3) and the sample weight of each neighbour
+  static constexpr int columns = 7;
   std::uint32_t* candidates() { return m_index.data(); }
   double* column(int a) { return m_data.data() + a * m_stride; }
   // number of neighbours stored in the columns (kept by reserve())
@@ -205,6 +212,7 @@ struct Sorted_cloud
   // Empty without a tile: every point is estimated.
   std::vector<char> own;
   std::size_t own_count = 0;  // points estimated (own points, or every usable point)
+  std::vector<double> sample_weight;  // per point, grid order; empty: equal weights
 
   bool is_own(std::size_t k) const { return own.empty() || own[k] != 0; }
 };
@@ -222,6 +230,8 @@ struct Neighborhood_options
   bool has_tile = false;
   Tile tile;
   double reach = 1;
+  // Per input point, a weight the visitor receives per neighbour (nb.sample_weight), or null.
+  const std::vector<double>* sample_weights = nullptr;
 };
 
 // Usable normal: non-zero, finite and, unless accepted, of length in [1e-3, 1e3].
@@ -376,6 +386,16 @@ void read_and_sort(const PointRange& points, PointMap point_map, NormalMap norma
     }
   });
 
+  // Sample weights in grid order.
+  if(options.sample_weights)
+  {
+    cloud.sample_weight.resize(n_usable);
+    for_index_chunks<ConcurrencyTag>(n_usable, [&](std::size_t first, std::size_t last) {
+      for(std::size_t k = first; k < last; ++k)
+        cloud.sample_weight[k] = (*options.sample_weights)[cloud.input_index[k]];
+    });
+  }
+
   // The tile's own points.
   cloud.own_count = n_usable;
   if(options.has_tile)
@@ -412,6 +432,14 @@ void visit_neighborhood(const Sorted_cloud& cloud, std::uint32_t query, double r
     qx[s] = (p[0] - x[0]) * inv_r; qy[s] = (p[1] - x[1]) * inv_r; qz[s] = (p[2] - x[2]) * inv_r;
     nx[s] = n[0]; ny[s] = n[1]; nz[s] = n[2];
   }
+  const double* sample_weight = nullptr;
+  if(!cloud.sample_weight.empty())
+  {
+    double* a = buffer.column(6);
+    for(std::size_t s = 0; s < size; ++s)
+      a[s] = cloud.sample_weight[index[s]];
+    sample_weight = a;
+  }
   buffer.set_size(size);
   Neighborhood nb;
   nb.size = size;
@@ -423,7 +451,20 @@ void visit_neighborhood(const Sorted_cloud& cloud, std::uint32_t query, double r
     nb.query_normal[a] = normal[3 * std::size_t(query) + a];
   nb.index = index;
   nb.input_index = cloud.input_index.data();
+  nb.sample_weight = sample_weight;
   visit(std::size_t(cloud.input_index[query]), static_cast<const Neighborhood&>(nb));
+}
+
+// Sorts the points `index[0..size)` of `cloud` in the order a grid of cells of side `side`
+// anchored at the origin lists them: by cell (z, then y, then x), then by input position.
+inline void sort_in_lattice_order(const Sorted_cloud& cloud, double side, std::uint32_t* index, std::size_t size)
+{
+  auto key = [&](std::uint32_t i) {
+    const double* p = &cloud.position[3 * std::size_t(i)];
+    return std::make_tuple(grid_cell_coordinate(p[2], side), grid_cell_coordinate(p[1], side),
+                           grid_cell_coordinate(p[0], side), cloud.input_index[i]);
+  };
+  std::sort(index, index + size, [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
 }
 
 // Visits the neighbourhood of every own point of the grid positions [first, last): selects
@@ -438,6 +479,10 @@ void visit_points(const Sorted_cloud& cloud, double radius, std::uint32_t first,
     return;
   const double r2 = radius * radius;
   const double* position = cloud.position.data();
+  // A grid whose cells are larger than the radius (a cloud too spread out for cells of side
+  // r, see grid_cell_size) lists the neighbours in another order: restore that of cells of
+  // side r, so that the sums do not depend on the other points (tiles, outliers).
+  const bool canonical_order = cloud.grid.cell_size() != radius;
   const std::size_t first_cell = cloud.grid.cell_of_point(first);
   const std::size_t last_cell = cloud.grid.cell_of_point(last - 1) + 1;
   cloud.grid.for_each_cell(first_cell, last_cell, [&](Index_range cell, const Index_range* rows) {
@@ -465,6 +510,8 @@ void visit_points(const Sorted_cloud& cloud, double radius, std::uint32_t first,
           selected[k] = j;
           k += (dx * dx + dy * dy + dz * dz < r2) ? 1 : 0;
         }
+      if(canonical_order)
+        sort_in_lattice_order(cloud, radius, selected, k);
       // 2. gather the k neighbours into the scaled centred frame, visit
       visit_neighborhood(cloud, query, radius, selected, k, buffer, visit);
     }
@@ -511,7 +558,8 @@ void for_each_batch(const Sorted_cloud& cloud, const std::function<bool(double)>
   typedef std::chrono::steady_clock Clock;
   const std::size_t n_points = cloud.grid.number_of_points();
   const double n_own = double(std::max<std::size_t>(cloud.own_count, 1));
-  const std::size_t max_batch = callback ? (n_points + 99) / 100 : n_points;
+  // batches are counted in points to estimate (own points, with a tile): 1% of them
+  const std::size_t max_batch = callback ? std::max<std::size_t>(1, (cloud.own_count + 99) / 100) : n_points;
   std::size_t min_batch = 1;
 #ifdef CGAL_LINKED_WITH_TBB
   if(is_parallel<ConcurrencyTag>())
@@ -521,8 +569,18 @@ void for_each_batch(const Sorted_cloud& cloud, const std::function<bool(double)>
   std::size_t own_done = 0;
   for(std::size_t first = 0; first < n_points;)
   {
-    const std::size_t last = std::min(n_points, first + batch);
+    std::size_t last = std::min(n_points, first + batch);
+    if(!cloud.own.empty())  // `batch` own points, however many other points lie between them
+    {
+      std::size_t own = 0;
+      last = first;
+      while(last < n_points && own < batch)
+        own += cloud.own[last++] ? 1 : 0;
+      while(last < n_points && !cloud.own[last])
+        ++last;  // the points after the last own one cost nothing
+    }
     const Clock::time_point start = Clock::now();
+    const std::size_t own_before = own_done;
     process_in_parallel<ConcurrencyTag>(first, last, process);
     finish(static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(last));
     for(std::size_t k = first; k < last; ++k)
@@ -531,7 +589,7 @@ void for_each_batch(const Sorted_cloud& cloud, const std::function<bool(double)>
         status[cloud.input_index[k]] = Curvature_estimate_status::VALID;
         ++own_done;
       }
-    const std::size_t done = last - first;
+    const std::size_t done = std::max<std::size_t>(1, cloud.own.empty() ? last - first : own_done - own_before);
     first = last;
     if(callback)
     {

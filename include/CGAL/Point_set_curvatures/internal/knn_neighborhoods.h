@@ -371,6 +371,16 @@ for_each_neighborhood_knn(const PointRange& points, PointMap point_map, NormalMa
     const std::size_t m = input.input_index.size();
     if(m == 0)
       return status;
+    if(options.has_tile && k > m)
+    {
+      // The range holds fewer than k points: its points' k nearest lie (partly) outside, at
+      // distances nothing here bounds. Ask for a larger halo.
+      double extent = 0;
+      for(int a = 0; a < 3; ++a)
+        extent = std::max(extent, input.hi[a] - input.lo[a]);
+      throw Halo_too_small(std::max({2 * options.tile.halo, extent, std::numeric_limits<double>::min()}),
+                           options.tile.halo);
+    }
     k = std::min(k, m);  // at least every usable point (and no k + 1 overflow for SIZE_MAX)
     tree.build<ConcurrencyTag>(input.position.data(), m);
     // the bounding box read_and_sort() will grid again, so that the cost model sees its cells

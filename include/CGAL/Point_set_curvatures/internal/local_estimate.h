@@ -52,7 +52,64 @@ struct Neighborhood
   // need the neighbourhood graph (normal orientation).
   const std::uint32_t* index = nullptr;
   const std::uint32_t* input_index = nullptr;
+  // Per-neighbour sample weights (quadrature weights such as tangent Voronoi areas), or null
+  // for equal weights: the estimators that support them multiply each neighbour's kernel
+  // weight by it.
+  const double* sample_weight = nullptr;
 };
+
+// The reference orientation of the estimators' robust orientation (ASO, APSS): the sum of
+// the neighbourhood's normals, weighted like the fit (so that the majority decides, and the
+// query's own normal is one vote); the query's normal if they cancel out.
+//
+// Returns false if the neighbours whose normals disagree with it form a second sheet rather
+// than flipped normals of the same one: they carry at least 10% of the weight and their
+// weighted mean offset along the reference differs from the others' by more than 0.05 r.
+// Flipped normals of one sheet sample the same disk (the same mean offset, up to noise); the
+// two sides of a thin plate, or two walls closer than r, are offset by their distance.
+template <class Kernel>
+inline bool majority_orientation(const Neighborhood& nb, double ref[3])
+{
+  double m[3] = {0, 0, 0};
+  for(std::size_t i = 0; i < nb.size; ++i)
+  {
+    const double s = nb.qx[i] * nb.qx[i] + nb.qy[i] * nb.qy[i] + nb.qz[i] * nb.qz[i];
+    double w = Kernel::weight(1.0 - s);
+    if(nb.sample_weight)
+      w *= nb.sample_weight[i];
+    m[0] += w * nb.nx[i]; m[1] += w * nb.ny[i]; m[2] += w * nb.nz[i];
+  }
+  const double mm = m[0] * m[0] + m[1] * m[1] + m[2] * m[2];
+  const bool use_sum = mm > 1e-24 && std::isfinite(mm);
+  for(int a = 0; a < 3; ++a)
+    ref[a] = use_sum ? m[a] : nb.query_normal[a];
+  const double rr = ref[0] * ref[0] + ref[1] * ref[1] + ref[2] * ref[2];
+  if(!(rr > 0))
+    return true;
+  const double inv = 1.0 / std::sqrt(rr);
+  double w_agree = 0, h_agree = 0, w_disagree = 0, h_disagree = 0;
+  for(std::size_t i = 0; i < nb.size; ++i)
+  {
+    const double s = nb.qx[i] * nb.qx[i] + nb.qy[i] * nb.qy[i] + nb.qz[i] * nb.qz[i];
+    double w = Kernel::weight(1.0 - s);
+    if(nb.sample_weight)
+      w *= nb.sample_weight[i];
+    const double h = (nb.qx[i] * ref[0] + nb.qy[i] * ref[1] + nb.qz[i] * ref[2]) * inv;
+    if(nb.nx[i] * ref[0] + nb.ny[i] * ref[1] + nb.nz[i] * ref[2] < 0)
+    {
+      w_disagree += w;
+      h_disagree += w * h;
+    }
+    else
+    {
+      w_agree += w;
+      h_agree += w * h;
+    }
+  }
+  if(!(w_disagree > 0.1 * (w_agree + w_disagree)) || !(w_agree > 0))
+    return true;
+  return std::abs(h_disagree / w_disagree - h_agree / w_agree) <= 0.05;
+}
 
 // One estimate in double precision, before conversion to the kernel's types.
 struct Local_estimate

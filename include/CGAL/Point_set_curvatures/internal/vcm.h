@@ -211,6 +211,25 @@ estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double 
           << ") overflow CGAL's Voronoi covariance measure; translate or scale the cloud";
       throw std::invalid_argument(msg.str());
     }
+  // ... and below 1e-100 their squares underflow (CGAL's exact fallback then divides by
+  // zero, SIGFPE): clouds whose extent is that small are refused as well.
+  {
+    double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    for(const Vcm_point& p : vcm_points)
+      for(int a = 0; a < 3; ++a)
+      {
+        lo[a] = std::min(lo[a], p[a]);
+        hi[a] = std::max(hi[a], p[a]);
+      }
+    const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+    if(extent > 0 && extent < 1e-100)
+    {
+      std::ostringstream msg;
+      msg << function_name << ": a cloud of extent " << extent
+          << " (below 1e-100) underflows CGAL's Voronoi covariance measure; scale the cloud";
+      throw std::invalid_argument(msg.str());
+    }
+  }
   auto set_all = [&](Curvature_estimate_status s) {
     for(std::size_t j = 0; j < m; ++j)
     {

@@ -15,27 +15,58 @@
 // They are polynomials in q, so the limit at distance 0 needs no special case:
 // grad w = 0 and Hessian w = -4/r^2 I there. The kernel is C^1 but not C^2 at |q| = 1:
 // points exactly on the sphere of radius r are outside the neighbourhood (d < r is strict).
+// Power_kernel<P> generalises it to (1 - d^2/r^2)^P (P = 3, 4: smoother at the boundary).
 
 #ifndef CGAL_POINT_SET_CURVATURES_INTERNAL_WEIGHT_KERNEL_H
 #define CGAL_POINT_SET_CURVATURES_INTERNAL_WEIGHT_KERNEL_H
+
+#include <cstddef>
 
 namespace CGAL {
 namespace Point_set_curvatures {
 namespace internal {
 
-// The smooth kernel (1 - d^2/r^2)^2, in the scaled frame (r = 1).
-struct Smooth_kernel
+// t^k for a compile-time k >= 0.
+template <int K>
+inline double power_of(double t)
 {
+  static_assert(K >= 0, "negative power");
+  if constexpr(K == 0)
+    return 1.0;
+  else
+    return t * power_of<K - 1>(t);
+}
+
+// The kernel (1 - d^2/r^2)^P, P >= 2, in the scaled frame (r = 1). With t = 1 - |q|^2 and
+// q = (p - x)/r, dt/dx = 2 q / r, so
+//
+//   w = t^P,   grad_x w = (1/r) 2P t^(P-1) q,
+//   Hessian_x w = (1/r^2) (4P(P-1) t^(P-2) q q^T - 2P t^(P-1) I).
+//
+// P = 2 is the paper's kernel; P = 3 and 4 have a Hessian that vanishes at |q| = 1 (C^2 and
+// C^3 at the boundary), so that points entering the ball do not make the ASO jump. The
+// limits at q = 0 are the polynomials' values (grad w = 0, Hessian w = -2P I / r^2).
+template <int P>
+struct Power_kernel
+{
+  static_assert(P >= 2, "the ASO needs a twice differentiable kernel: P >= 2");
+  static constexpr int exponent = P;
   // t = 1 - |q|^2, the building block of every term below
   static double t_of(double squared_norm) { return 1.0 - squared_norm; }
-  static double weight(double t) { return t * t; }
+  static double weight(double t) { return power_of<P>(t); }
 
-  // grad w = gradient_factor * t * q
-  static constexpr double gradient_factor = 4.0;
-  // Hessian w = hessian_qq_factor * q q^T + hessian_identity_factor * t * I
-  static constexpr double hessian_qq_factor = 8.0;
-  static constexpr double hessian_identity_factor = -4.0;
+  // grad w = gradient_factor * gradient_weight(t) * q
+  static constexpr double gradient_factor = 2.0 * P;
+  static double gradient_weight(double t) { return power_of<P - 1>(t); }
+  // Hessian w = hessian_qq_factor * hessian_weight(t) * q q^T
+  //           + hessian_identity_factor * gradient_weight(t) * I
+  static constexpr double hessian_qq_factor = 4.0 * P * (P - 1);
+  static constexpr double hessian_identity_factor = -2.0 * P;
+  static double hessian_weight(double t) { return power_of<P - 2>(t); }
 };
+
+// The kernel of the paper and the default: (1 - d^2/r^2)^2.
+typedef Power_kernel<2> Smooth_kernel;
 
 // The constant kernel of the paper's asymptotic analysis (Section 4.1): w = 1 inside the
 // ball. It has no useful derivative, so only the APSS fit (not the ASO) accepts it.
