@@ -815,6 +815,12 @@ TEST_CASE("tool: every error exits with status 2, one line naming the file or op
   write_text(file("wrapped.ply"), "ply\nformat ascii 1.0\nelement vertex 2\n" + vertex_xyz + "end_header\n1 2\n3 4 5 6\n");
   write_text(file("two_per_line.ply"), "ply\nformat ascii 1.0\nelement vertex 2\n" + vertex_xyz + "end_header\n1 2 3 4 5 6\n");
   write_text(file("plus_minus.xyz"), "0 0 0\n+-1 0 0\n0 1 0\n");
+  {
+    std::string same;
+    for(int i = 0; i < 19; ++i)
+      same += "1 2 3\n";
+    write_text(file("identical.xyz"), same);  // crashed CGAL's jet normals (issue 14)
+  }
   ::mkfifo(file("fifo.xyz").c_str(), 0600);
 
   struct Case
@@ -853,6 +859,8 @@ TEST_CASE("tool: every error exits with status 2, one line naming the file or op
     {q(file("wrapped.ply")) + " " + q(out), "line 8: fewer values than the properties of vertex 1 of the 2"},
     {q(file("two_per_line.ply")) + " " + q(out), "line 8: more values than the properties of vertex 1 of the 2"},
     {q(file("plus_minus.xyz")) + " " + q(out), "line 2: '+-1' is not a number"},
+    // warnings (no normals) come after a success only: the error stays one line
+    {q(file("identical.xyz")) + " " + q(out) + " --radius 4x", "is 0 (coincident points?)"},
     {q(good) + " " + q(out) + " --columns x,y,nx", "--columns 'x,y,nx' does not name all of x, y, z"},
     {q(good) + " " + q(out) + " --columns x,y,z,nx,nx,nz", "names nx twice"},
     {q(file("good_binary.ply")) + " " + q(out) + " --columns x,y,z", "--columns applies to text point files"},
@@ -1172,4 +1180,32 @@ TEST_CASE("tool: readers accept trailing comments, a count before a header, OFF 
   write_text(file("range.xyz"), "1e400 0 0\n1e-400 0 0\n");
   const Run range = run_tool(q(file("range.xyz")) + " " + q(file("range.csv")) + " --radius 1 --min-neighbors 1 --quiet");
   CHECK(range.status == 0);
+}
+
+// Issue 14 reproducers that are not errors: a UTF-8 byte order mark, integer coordinates in a
+// PLY, 19 identical points without normals (once a crash), neighbor_count(SIZE_MAX).
+TEST_CASE("tool and library: BOM, integer PLY coordinates, identical points, neighbor_count(SIZE_MAX)")
+{
+  write_text(file("bom.xyz"), "\xEF\xBB\xBF" "0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n");
+  CHECK(run_tool(q(file("bom.xyz")) + " " + q(file("bom.csv")) + " --quiet --min-neighbors 3").status == 0);
+  write_text(file("int.ply"), "ply\nformat ascii 1.0\nelement vertex 3\nproperty int x\nproperty float y\n"
+                              "property double z\nend_header\n0 0 0\n1 0 0\n0 1 0\n");
+  CHECK(run_tool(q(file("int.ply")) + " " + q(file("int.csv")) + " --quiet").status == 0);
+  const std::string rows = read_text(file("int.csv"));
+  CHECK(std::count(rows.begin(), rows.end(), '\n') == 4);  // header and three points
+  std::string same;
+  for(int i = 0; i < 19; ++i)
+    same += "1 2 3\n";
+  write_text(file("same.xyz"), same);
+  const Run r = run_tool(q(file("same.xyz")) + " " + q(file("same.csv")));
+  CHECK(r.status == 0);
+  CHECK(r.out.find("19 invalid_normal") != std::string::npos);
+
+  const auto pts = sphere(100, 1.0);
+  const auto e = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
+    pts, PSC::parameters::neighbor_count(std::numeric_limits<std::size_t>::max(), pair_maps));
+  std::size_t all = 0;
+  for(const auto& x : e)
+    all += x.neighbor_count == pts.size();
+  CHECK(all == pts.size());
 }

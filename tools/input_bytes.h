@@ -40,7 +40,8 @@ public:
       throw Error(cat("cannot open input ", in_quotes(path), ": ", std::strerror(errno)));
     m_step = std::max<std::uint64_t>(1, std::min<std::uint64_t>(size / 100, 16u << 20));
     m_next_report = m_step;
-    m_buffer.resize(1 << 20);
+    // 1 MB blocks, or the whole file if smaller (the buffer grows when a line needs more)
+    m_buffer.resize(std::size_t(std::min<std::uint64_t>(1u << 20, std::max<std::uint64_t>(size + 1, 4096))));
   }
   ~Byte_source() { std::fclose(m_file); }
   Byte_source(const Byte_source&) = delete;

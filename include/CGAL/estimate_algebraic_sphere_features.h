@@ -194,11 +194,30 @@ std::vector<Algebraic_sphere_features<
 sphere_features_at_every_point(const PointRange& points, bool radius_given, double radius,
                                const NamedParameters& np, const char* function_name)
 {
-  typedef typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits Geom_traits;
+  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
+  typedef typename NP_helper::Geom_traits Geom_traits;
   const bool constant = constant_kernel_parameter(np, function_name);
   const std::size_t min_count = min_neighbors_parameter(np, default_min_neighbors::sphere_features);
+  Neighborhood_options options = neighborhood_options(np, function_name, true);
+  // Sample weights (the quadrature argument of the ASO holds for the sums of the sphere): the
+  // areas of the tangent Voronoi cells, computed first; they are taken as constant in the
+  // scale r for the scale derivatives (exact where no cell reaches its bound, r/4).
+  std::vector<double> areas;
+  if(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::sample_weights),
+                                        Sample_weights::UNIFORM) == Sample_weights::TANGENT_VORONOI_AREA)
+  {
+    const std::size_t k = checked_scale<PointRange>(radius, radius_given, np, function_name);
+    if(options.has_tile)
+      throw std::invalid_argument(std::string(function_name) + ": parameter 'tile' is not supported with sample weights");
+    Neighborhood_options o = options;
+    o.callback = {};
+    areas = tangent_voronoi_areas<ConcurrencyTag>(points, radius_given, radius, k,
+                                                  NP_helper::get_const_point_map(points, np),
+                                                  NP_helper::get_normal_map(points, np), o);
+    options.sample_weights = &areas;
+  }
   return evaluate_at_every_point<Algebraic_sphere_features<Geom_traits>, ConcurrencyTag>(
-    points, radius_given, radius, np, neighborhood_options(np, function_name, true),
+    points, radius_given, radius, np, options,
     [constant, min_count](const Neighborhood& nb) {
       const Local_sphere_features f = constant ? sphere_features<Constant_kernel>(nb, min_count)
                                                : sphere_features<Smooth_kernel>(nb, min_count);
@@ -292,7 +311,16 @@ struct Multiscale_visitor
 ///       `CONSTANT` (the paper's asymptotic analysis; see `geometric_variation` for how
 ///       its scale derivatives are obtained)}
 ///     \cgalParamType{`CGAL::Apss_weight_kernel`}
-///     \cgalParamDefault{`CGAL::Apss_weight_kernel::SMOOTH`}
+///     \cgalParamDefault{`CGAL::Apss_weight_kernel::SMOOTH`; `SMOOTH_CUBIC` and `SMOOTH_QUARTIC`
+///       throw `std::invalid_argument`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Point_set_curvatures::parameters::sample_weights}
+///     \cgalParamDescription{the quadrature weights of the samples, as for
+///       `estimate_aso_curvatures()`; the areas are taken as constant in the scale for the scale
+///       derivatives. Not supported by the multi-scale function nor with `tile`
+///       (`std::invalid_argument`)}
+///     \cgalParamType{`CGAL::Sample_weights`}
+///     \cgalParamDefault{`CGAL::Sample_weights::UNIFORM`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Point_set_curvatures::parameters::min_neighbors}
 ///     \cgalParamDescription{the least number of neighbours (query included) of a valid
@@ -417,6 +445,10 @@ estimate_multiscale_algebraic_sphere_features(const PointRange& points,
     throw std::invalid_argument(std::string(name) + ": neighbor_count is not supported, give radii");
 
   const PSC::internal::Neighborhood_options options = PSC::internal::neighborhood_options(np, name, true);
+  if(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, PSC::internal_np::sample_weights),
+                                        Sample_weights::UNIFORM) != Sample_weights::UNIFORM)
+    throw std::invalid_argument(std::string(name) + ": parameter 'sample_weights' is not supported by the "
+                                "multi-scale features (the areas depend on the scale); use the single-scale function");
   const bool constant = PSC::internal::constant_kernel_parameter(np, name);
 
   const std::size_t n = static_cast<std::size_t>(std::distance(points.begin(), points.end()));

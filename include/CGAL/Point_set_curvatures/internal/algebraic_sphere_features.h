@@ -156,7 +156,9 @@ Sphere_sums scale_derivative_sums(const Neighborhood& nb)
     const double qx = nb.qx[i], qy = nb.qy[i], qz = nb.qz[i];
     const double nx = nb.nx[i], ny = nb.ny[i], nz = nb.nz[i];
     const double s = qx * qx + qy * qy + qz * qz;
-    const double w = r_dw_dr<WeightKernel>(s);
+    double w = r_dw_dr<WeightKernel>(s);
+    if(nb.sample_weight)
+      w *= nb.sample_weight[i];
     a += w;
     b0 += w * qx; b1 += w * qy; b2 += w * qz;
     c0 += w * nx; c1 += w * ny; c2 += w * nz;
