@@ -13,6 +13,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
+#include <cstring>
 #include <cmath>
 #include <fstream>
 #include <random>
@@ -256,6 +258,95 @@ inline std::string invalid_argument_message(F f)
   }
   return "<no exception>";
 }
+
+// The bytes of a LAS file, written from the ASPRS specification for the tests of the tool's
+// reader and for the benchmarks: the positions of `pts` quantised with `scale` and `offset`
+// (the values read back in `quantised`), point data record format `format` in LAS 1.`minor`,
+// `extra` extra bytes per record; the fields of point i are the functions of i below.
+inline std::uint16_t las_intensity(std::size_t i) { return std::uint16_t(i * 37 % 65536); }
+inline int las_classification(std::size_t i) { return int(2 + i % 4); }
+inline double las_gps_time(std::size_t i) { return 3.5e8 + 0.25 * double(i); }
+inline std::uint16_t las_red(std::size_t i) { return std::uint16_t(i * 256 % 65536); }
+
+template <class T>
+inline void put_le(std::string& s, std::size_t at, T v)
+{
+  unsigned char b[sizeof(T)];
+  std::memcpy(b, &v, sizeof(T));  // the test machines are little-endian, as LAS is
+  for(std::size_t k = 0; k < sizeof(T); ++k)
+    s[at + k] = char(b[k]);
+}
+
+inline std::string las_file(const std::vector<Oriented_point>& pts, int format, int minor, double scale,
+                            const double offset[3], std::size_t extra = 0,
+                            std::vector<std::array<double, 3> >* quantised = nullptr)
+{
+  static const std::size_t sizes[11] = {20, 28, 26, 34, 57, 63, 30, 36, 38, 59, 67};
+  const std::size_t header = minor >= 4 ? 375 : minor == 3 ? 235 : 227;
+  const std::size_t record = sizes[format] + extra, n = pts.size();
+  std::string h(header, '\0');
+  h.replace(0, 4, "LASF");
+  put_le<std::uint8_t>(h, 24, 1);
+  put_le<std::uint8_t>(h, 25, std::uint8_t(minor));
+  put_le<std::uint16_t>(h, 94, std::uint16_t(header));
+  put_le<std::uint32_t>(h, 96, std::uint32_t(header));
+  put_le<std::uint8_t>(h, 104, std::uint8_t(format));
+  put_le<std::uint16_t>(h, 105, std::uint16_t(record));
+  put_le<std::uint32_t>(h, 107, std::uint32_t(format < 6 ? n : 0));
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+  std::string body(n * record, '\0');
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    std::array<double, 3> x;
+    const std::size_t o = i * record;
+    for(int a = 0; a < 3; ++a)
+    {
+      const std::int32_t X = std::int32_t(std::lround((pts[i].first[a] - offset[a]) / scale));
+      put_le<std::int32_t>(body, o + 4 * a, X);
+      x[a] = double(X) * scale + offset[a];
+      lo[a] = std::min(lo[a], x[a]);
+      hi[a] = std::max(hi[a], x[a]);
+    }
+    if(quantised)
+      quantised->push_back(x);
+    put_le<std::uint16_t>(body, o + 12, las_intensity(i));
+    if(format < 6)
+    {
+      put_le<std::uint8_t>(body, o + 14, std::uint8_t(1 | (2 << 3)));  // return 1 of 2
+      put_le<std::uint8_t>(body, o + 15, std::uint8_t(las_classification(i)));
+      put_le<std::int8_t>(body, o + 16, std::int8_t(-12));
+      put_le<std::uint16_t>(body, o + 18, 7);
+      if(format != 0 && format != 2)
+        put_le<double>(body, o + 20, las_gps_time(i));
+      if(format == 2 || format == 3 || format == 5)
+        put_le<std::uint16_t>(body, o + (format == 2 ? 20 : 28), las_red(i));
+    }
+    else
+    {
+      put_le<std::uint8_t>(body, o + 14, std::uint8_t(1 | (2 << 4)));
+      put_le<std::uint8_t>(body, o + 15, std::uint8_t(1 << 3));  // overlap
+      put_le<std::uint8_t>(body, o + 16, std::uint8_t(las_classification(i)));
+      put_le<std::int16_t>(body, o + 18, std::int16_t(-2000));   // -12 degrees
+      put_le<std::uint16_t>(body, o + 20, 7);
+      put_le<double>(body, o + 22, las_gps_time(i));
+      if(format == 7 || format == 8 || format == 10)
+        put_le<std::uint16_t>(body, o + 30, las_red(i));
+      if(format == 8 || format == 10)
+        put_le<std::uint16_t>(body, o + 36, 4242);
+    }
+  }
+  for(int a = 0; a < 3; ++a)
+  {
+    put_le<double>(h, 131 + 8 * a, scale);
+    put_le<double>(h, 155 + 8 * a, offset[a]);
+    put_le<double>(h, 179 + 16 * a, hi[a]);
+    put_le<double>(h, 187 + 16 * a, lo[a]);
+  }
+  if(minor >= 4)
+    put_le<std::uint64_t>(h, 247, n);
+  return h + body;
+}
+
 
 } // namespace psc_test
 

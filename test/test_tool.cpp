@@ -29,6 +29,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -933,6 +934,7 @@ TEST_CASE("tool: rgb columns are refused with a message naming --columns, and --
   write_text(file("cloudcompare.csv"), cloudcompare.str());
 
   // x y z r g b: never read as normals without being told
+  fs::remove(file("out.ply"));  // (another test case of this process may have written one)
   const Run refused = run_tool(q(file("rgb.xyz")) + " " + q(file("out.ply")));
   CHECK(refused.status == 2);
   CHECK(refused.err.find("columns 4-6 are not unit normals (median length 235.") != std::string::npos);
@@ -945,10 +947,11 @@ TEST_CASE("tool: rgb columns are refused with a message naming --columns, and --
   CHECK(told.err.find("has no normals: estimating them") != std::string::npos);
 
   // the same cloud through --columns, a comma-separated file and CloudCompare's header
+  // (the colour columns of CloudCompare's file are attributes, dropped here to compare)
   for(const std::string& args : {q(file("nine.txt")) + " --columns x,y,z,_,_,_,nx,ny,nz",
                                  q(file("plain.csv")), q(file("cloudcompare.csv"))})
   {
-    const Run r = run_tool(args + " " + q(file("cols_other.csv")) + " --radius 0.6");
+    const Run r = run_tool(args + " " + q(file("cols_other.csv")) + " --radius 0.6 --drop-attributes");
     INFO(args << ": " << r.err);
     REQUIRE(r.status == 0);
     CHECK(r.err.empty());
@@ -968,7 +971,7 @@ TEST_CASE("tool: rgb columns are refused with a message naming --columns, and --
         << " " << p.second.y() << "\n";
   ply << "3 0 1 2\n";
   write_text(file("open3d.ply"), ply.str());
-  const Run r = run_tool(q(file("open3d.ply")) + " " + q(file("cols_other.csv")) + " --radius 0.6");
+  const Run r = run_tool(q(file("open3d.ply")) + " " + q(file("cols_other.csv")) + " --radius 0.6 --drop-attributes");
   INFO(r.err);
   REQUIRE(r.status == 0);
   CHECK(r.err.empty());  // normals found: no warning
@@ -1208,4 +1211,195 @@ TEST_CASE("tool and library: BOM, integer PLY coordinates, identical points, nei
   for(const auto& x : e)
     all += x.neighbor_count == pts.size();
   CHECK(all == pts.size());
+}
+
+// ---------------------------------------------------------------------------------------
+// LAS input, attributes carried to the output, --fields, --float (issue 12)
+
+namespace {
+
+std::vector<std::array<double, 3> > write_las(const std::string& path, const std::vector<Oriented_point>& pts,
+                                              int format, int minor, double scale, const double offset[3],
+                                              std::size_t extra = 0)
+{
+  std::vector<std::array<double, 3> > quantised;
+  write_text(path, las_file(pts, format, minor, scale, offset, extra, &quantised));
+  return quantised;
+}
+
+} // namespace
+
+TEST_CASE("tool: LAS 1.2-1.4 point formats 0-10 with their fields as attributes; refused and suspicious LAS files")
+{
+  // a sphere of radius 2 in LiDAR coordinates (offset 1e6, 2e6, 100; millimetre scale)
+  const double offset[3] = {1e6, 2e6, 100};
+  std::vector<Oriented_point> pts;
+  for(const Oriented_point& p : sphere(3000, 2.0))
+    pts.emplace_back(Point(p.first.x() + 1e6 + 3, p.first.y() + 2e6 + 4, p.first.z() + 105), p.second);
+  const std::string viewpoint = " --orient viewpoint:1000003,2000004,105";  // normals inwards: H = -1/2
+  std::string reference_curvatures;
+  for(int format = 0; format <= 10; ++format)
+  {
+    const int minor = format >= 6 ? 4 : format >= 4 ? 3 : 2;
+    INFO("point format " << format << ", LAS 1." << minor);
+    const std::string las = file("f" + std::to_string(format) + ".las"), out = file("f.ply");
+    const auto quantised = write_las(las, pts, format, minor, 0.001, offset, format == 8 ? 5 : 0);
+    const Run r = run_tool(q(las) + " " + q(out) + " --radius 0.5" + viewpoint);
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    CHECK(r.out.find("valid       3000 (100.00 %)") != std::string::npos);
+    Point_set ps;
+    REQUIRE(CGAL::IO::read_PLY(out, ps));
+    REQUIRE(ps.size() == pts.size());
+    const auto mean = property<double>(ps, "mean");
+    const auto intensity = property<std::uint16_t>(ps, "intensity");
+    const auto classification = property<std::uint8_t>(ps, "classification");
+    const auto returns = property<std::uint8_t>(ps, "number_of_returns");
+    const auto angle = property<float>(ps, "scan_angle");
+    std::size_t i = 0, wrong = 0;
+    double worst_h = 0;
+    std::ostringstream curvatures;
+    curvatures.precision(17);
+    for(Point_set::Index p : ps)
+    {
+      const Point& x = ps.point(p);
+      wrong += (x.x() != quantised[i][0] || x.y() != quantised[i][1] || x.z() != quantised[i][2]) ? 1 : 0;
+      wrong += intensity[p] != las_intensity(i) || classification[p] != las_classification(i) || returns[p] != 2 ||
+               std::abs(angle[p] + 12) > 1e-4;
+      worst_h = std::max(worst_h, std::abs(mean[p] + 0.5));
+      curvatures << mean[p] << " ";
+      ++i;
+    }
+    CHECK(wrong == 0);
+    CHECK(worst_h < 0.05);
+    // the same positions whatever the format: the same curvatures
+    if(format == 0)
+      reference_curvatures = curvatures.str();
+    CHECK(curvatures.str() == reference_curvatures);
+    const bool gps = format != 0 && format != 2, rgb = format == 2 || format == 3 || format == 5 || format >= 7;
+    CHECK(ps.property_map<double>("gps_time").second == gps);
+    CHECK(ps.property_map<std::uint16_t>("red").second == (rgb && format != 9));
+    CHECK(ps.property_map<std::uint8_t>("overlap").second == (format >= 6));
+    CHECK(ps.property_map<std::uint16_t>("nir").second == (format == 8 || format == 10));
+    if(gps)
+    {
+      const auto t = property<double>(ps, "gps_time");
+      std::size_t k = 0, bad = 0;
+      for(Point_set::Index p : ps)
+        bad += t[p] != las_gps_time(k++);
+      CHECK(bad == 0);
+    }
+    if(format == 3 || format == 8)
+    {
+      const auto red = property<std::uint16_t>(ps, "red");
+      std::size_t k = 0, bad = 0;
+      for(Point_set::Index p : ps)
+        bad += red[p] != las_red(k++);
+      CHECK(bad == 0);
+    }
+  }
+
+  // Refused, exit 2, one line, no output: .laz, a compressed format byte, a truncated file,
+  // a record length below the format's, no signature, a format not valid in the version.
+  const std::string good = read_text(file("f3.las"));
+  auto variant = [&](const std::string& name, std::size_t at, const std::string& bytes, std::size_t keep = 0) {
+    std::string s = good;
+    if(keep)
+      s.resize(keep);
+    s.replace(at, bytes.size(), bytes);
+    write_text(file(name), s);
+  };
+  write_text(file("c.laz"), good);
+  variant("compressed.las", 104, std::string(1, char(0x83)));
+  variant("truncated.las", 0, "L", good.size() - 10);
+  variant("short_record.las", 105, std::string("\x10\x00", 2));
+  variant("signature.las", 0, "LASX");
+  variant("format7_in_12.las", 104, std::string(1, char(7)));
+  const std::pair<const char*, const char*> refused[] = {
+    {"c.laz", "decompress it first"},
+    {"compressed.las", "compressed LAS (LAZ) data"},
+    {"truncated.las", "truncated: the header declares 3000 points"},
+    {"short_record.las", "point record length 16 is smaller than the 34 bytes of point format 3"},
+    {"signature.las", "no 'LASF' signature"},
+    {"format7_in_12.las", "point data record format 7 is not valid in LAS 1.2"}};
+  for(const auto& c : refused)
+  {
+    INFO(c.first);
+    fs::remove(file("refused.ply"));
+    const Run r = run_tool(q(file(c.first)) + " " + q(file("refused.ply")));
+    CHECK(r.status == 2);
+    CHECK(r.err.find(c.second) != std::string::npos);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK(!fs::exists(file("refused.ply")));
+  }
+  // header bounds that do not hold the points: read, with a warning
+  std::string wrong_bounds = good;
+  put_le<double>(wrong_bounds, 179, 1e6 + 4.0);  // max x below the sphere's 1e6 + 5
+  write_text(file("bounds.las"), wrong_bounds);
+  const Run w = run_tool(q(file("bounds.las")) + " " + q(file("bounds.ply")) + " --radius 0.5" + viewpoint);
+  CHECK(w.status == 0);
+  CHECK(w.err.find("is not within the header's bounds") != std::string::npos);
+}
+
+TEST_CASE("tool: input attributes carried in their types, renamed on a clash; --fields, --float, --drop-attributes")
+{
+  const std::vector<Oriented_point> pts = sphere(800, 1.0);
+  std::ostringstream ply;
+  ply.precision(17);
+  ply << "ply\nformat ascii 1.0\nelement vertex " << pts.size()
+      << "\nproperty double x\nproperty double y\nproperty double z\nproperty float nx\nproperty float ny\n"
+         "property float nz\nproperty uchar red\nproperty float intensity\nproperty short k_min\nend_header\n";
+  for(std::size_t i = 0; i < pts.size(); ++i)
+    ply << pts[i].first.x() << " " << pts[i].first.y() << " " << pts[i].first.z() << " " << pts[i].second.x()
+        << " " << pts[i].second.y() << " " << pts[i].second.z() << " " << i % 256 << " " << 0.5 * double(i) << " "
+        << -int(i) << "\n";
+  write_text(file("attr.ply"), ply.str());
+  REQUIRE(run_tool(q(file("attr.ply")) + " " + q(file("attr_out.ply")) + " --radius 0.3 --color mean --quiet").status == 0);
+  Point_set ps;
+  REQUIRE(CGAL::IO::read_PLY(file("attr_out.ply"), ps));
+  const auto red_in = property<std::uint8_t>(ps, "input_red");      // red is --color's
+  const auto intensity = property<float>(ps, "intensity");
+  const auto k_min_in = property<std::int16_t>(ps, "input_k_min");  // k_min is the estimate's
+  const auto k_min = property<double>(ps, "k_min");
+  std::size_t i = 0, wrong = 0;
+  for(Point_set::Index p : ps)
+  {
+    wrong += red_in[p] != i % 256 || intensity[p] != float(0.5 * double(i)) || k_min_in[p] != -int(i) ||
+             std::abs(k_min[p] - 1) > 0.05;
+    ++i;
+  }
+  CHECK(wrong == 0);
+
+  // --fields: x y z and the fields named, in the tool's order; --float: float32 estimates,
+  // double positions; CSV the same columns
+  REQUIRE(run_tool(q(file("attr.ply")) + " " + q(file("fields.ply")) +
+                   " --radius 0.3 --fields valid,mean,dmin --float --drop-attributes --quiet").status == 0);
+  const std::string fields = read_text(file("fields.ply"));
+  const std::string header = fields.substr(0, fields.find("end_header"));
+  CHECK(header.find("property double x\nproperty double y\nproperty double z\nproperty float mean\n"
+                    "property float dmin_x\nproperty float dmin_y\nproperty float dmin_z\nproperty uchar valid\n") !=
+        std::string::npos);
+  CHECK(header.find("intensity") == std::string::npos);
+  CHECK(header.find("k_min") == std::string::npos);
+  // 3 doubles + 4 floats + 1 byte per point
+  CHECK(fields.size() - fields.find("end_header\n") - 11 == pts.size() * (24 + 16 + 1));
+  REQUIRE(run_tool(q(file("attr.ply")) + " " + q(file("fields.csv")) + " --radius 0.3 --fields mean --quiet").status == 0);
+  const std::string csv = read_text(file("fields.csv"));
+  CHECK(csv.substr(0, csv.find('\n')) == "x,y,z,mean,red,intensity,input_k_min");
+  const Run bad = run_tool(q(file("attr.ply")) + " " + q(file("x.ply")) + " --fields mean,curvedness");
+  CHECK(bad.status == 2);
+  CHECK(bad.err.find("--fields: unknown field 'curvedness'") != std::string::npos);
+
+  // text columns named by a header line are attributes too
+  std::ostringstream txt;
+  txt.precision(17);
+  txt << "x y z nx ny nz reflectance _\n";
+  for(std::size_t k = 0; k < pts.size(); ++k)
+    txt << pts[k].first.x() << " " << pts[k].first.y() << " " << pts[k].first.z() << " " << pts[k].second.x() << " "
+        << pts[k].second.y() << " " << pts[k].second.z() << " " << 0.25 * double(k) << " 9\n";
+  write_text(file("attr.txt"), txt.str());
+  REQUIRE(run_tool(q(file("attr.txt")) + " " + q(file("attr_txt.csv")) + " --radius 0.3 --fields mean --quiet").status == 0);
+  const std::string out = read_text(file("attr_txt.csv"));
+  CHECK(out.substr(0, out.find('\n')) == "x,y,z,mean,reflectance");
+  CHECK(out.find(",199.75\n") != std::string::npos);  // the last point's reflectance
 }

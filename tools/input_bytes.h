@@ -223,7 +223,10 @@ inline std::string quoted(std::string_view t) { return in_quotes(std::string(t.s
 
 
 // The PLY reader (read_ply.cpp): the file after its first byte.
-Point_cloud read_ply(Byte_source& bytes, const std::string& path);
+Point_cloud read_ply(Byte_source& bytes, const std::string& path, bool keep_attributes);
+
+// The LAS reader (read_las.cpp).
+Point_cloud read_las(Byte_source& bytes, const std::string& path, bool keep_attributes);
 
 } // namespace input
 } // namespace psc_tool

@@ -195,6 +195,8 @@ struct Options
   bool radius_given = false, neighbors_given = false;
   int threads = 0;  // 0: every core
   bool quiet = false, ascii = false, require_normals = false, help = false;
+  bool float32 = false, drop_attributes = false;  // --float, --drop-attributes
+  std::vector<std::string> fields;                 // --fields, empty: all
   std::string color;  // quantity to colour by, empty for none
   std::vector<std::string> columns;  // --columns, empty: automatic
   CGAL::Normal_orientation orientation;  // --orient
@@ -210,13 +212,17 @@ void print_usage(std::ostream& os)
      << "  INPUT   .xyz, .pwn, .txt or .csv (one point per line, values separated by spaces or\n"
      << "          commas: x y z, or x y z nx ny nz, or a header line naming the columns, or\n"
      << "          --columns), .ply (ASCII or binary, normals nx ny nz or normal_x normal_y\n"
-     << "          normal_z), .off. Without normals, they are estimated (PCA of the 18 nearest\n"
+     << "          normal_z), .off, .las (LAS 1.0-1.4 uncompressed, point formats 0-10; .laz:\n"
+     << "          decompress first). Without normals, they are estimated (PCA of the 18 nearest\n"
      << "          neighbours, oriented along a minimum spanning tree; see --orient) with a warning.\n"
      << "  OUTPUT  .ply (binary unless --ascii) or .csv (with a header line): every input point\n"
      << "          in input order with x y z, the corrected normal nx ny nz, k_min k_max mean\n"
      << "          gaussian, the principal directions dmin_x dmin_y dmin_z dmax_x dmax_y dmax_z\n"
      << "          (doubles; NaN where the estimate is invalid or the method does not provide\n"
-     << "          the quantity), neighbors (int) and valid (0 or 1).\n"
+     << "          the quantity), neighbors (int) and valid (0 or 1); then the input's other\n"
+     << "          values in their own types (PLY properties, named text columns, LAS fields\n"
+     << "          such as intensity, classification, gps_time, red green blue), renamed\n"
+     << "          input_NAME where NAME is one of the above.\n"
      << "\n"
      << "options:\n"
      << "  --method M         estimator: " << method_names() << " (default aso)\n"
@@ -239,6 +245,11 @@ void print_usage(std::ostream& os)
      << "                     blue < 0 < red, white at 0, saturated beyond the 2nd/98th\n"
      << "                     percentiles; grey where invalid\n"
      << "  --ascii            ASCII PLY output (NaN written as nan)\n"
+     << "  --fields LIST      estimator fields to write, comma-separated (x y z always): nx ny nz\n"
+     << "                     or normal, k_min, k_max, mean, gaussian, dmin, dmax (or dmin_x...),\n"
+     << "                     neighbors, valid (default: all)\n"
+     << "  --float            write the estimator fields as float32 (x y z stay double)\n"
+     << "  --drop-attributes  do not carry the input's other values to the output\n"
      << "  --require-normals  fail if INPUT has no normals instead of estimating them\n"
      << "  --orient O         orientation of estimated normals: mst (propagated along a minimum\n"
      << "                     spanning tree, default), +z, -z, +x, -x, +y, -y (airborne scans:\n"
@@ -421,6 +432,12 @@ Options parse_command_line(int argc, char** argv)
     }
     else if(name == "--ascii")
       flag(o.ascii);
+    else if(name == "--float")
+      flag(o.float32);
+    else if(name == "--drop-attributes")
+      flag(o.drop_attributes);
+    else if(name == "--fields")
+      o.fields = parse_fields(take_value());
     else if(name == "--quiet")
       flag(o.quiet);
     else if(name == "--require-normals")
@@ -762,12 +779,17 @@ int run(const Options& o)
 
   // 1. Read.
   Point_set ps;
+  std::vector<Attribute> attributes;  // the input's other values, written after the estimates
   bool had_normals = false;
   {
     Read_options read_options;
     read_options.columns = o.columns;
+    read_options.keep_attributes = !o.drop_attributes;
     read_options.progress = progress.phase("reading");
-    const Point_cloud cloud = read_point_cloud(o.input, read_options);
+    Point_cloud cloud = read_point_cloud(o.input, read_options);
+    for(const std::string& w : cloud.warnings)
+      warn(w);
+    attributes = std::move(cloud.attributes);
     had_normals = cloud.has_normals();
     ps.reserve(cloud.size());
     if(had_normals)
@@ -837,6 +859,7 @@ int run(const Options& o)
   layout.comments.push_back(cat("input ", o.input));
   double Estimate::*color_field = nullptr;
   double color_range = 0;
+  bool with_color = false;
   if(!o.color.empty())
   {
     color_field = color_quantities().at(o.color);
@@ -845,9 +868,18 @@ int run(const Options& o)
       warn(cat("--color ", o.color, ": no valid value (not estimated by method ", o.method->name,
                              "?); every point is grey"));
     color_range = robust_range(values);
-    layout.color = true;
+    with_color = true;
     layout.comments.push_back(
       cat("colors: ", o.color, ", blue -", color_range, " white 0 red +", color_range, ", grey invalid"));
+  }
+  layout.fields = output_fields(o.fields, o.float32, with_color, attributes);
+  layout.attributes = &attributes;
+  if(!attributes.empty())
+  {
+    std::string kept;
+    for(const Attribute& a : attributes)
+      kept += (kept.empty() ? "" : " ") + a.name;
+    layout.comments.push_back(cat("input attributes: ", kept));
   }
   const auto write_start = std::chrono::steady_clock::now();
   write_point_cloud(output.file(), layout, ps.size(), [&](std::size_t i, Output_row& r) {

@@ -15,7 +15,7 @@ namespace psc_tool {
 namespace input {
 namespace {
 
-enum class Ply_type { INT8, UINT8, INT16, UINT16, INT32, UINT32, FLOAT32, FLOAT64 };
+typedef Scalar_type Ply_type;
 
 bool ply_type(std::string_view name, Ply_type& t)
 {
@@ -105,6 +105,9 @@ struct Ply_header
   std::vector<Ply_element> elements;
   std::size_t vertex = 0;        // index of the vertex element
   int role_property[6];          // per role (x y z nx ny nz), the vertex property, or -1
+  // per vertex property, its attribute in Point_cloud::attributes, or -1 (roles, lists,
+  // attributes not kept)
+  std::vector<int> attribute_of;
 };
 
 Ply_header read_ply_header(Line_source& lines, const std::string& path)
@@ -219,6 +222,24 @@ Ply_header read_ply_header(Line_source& lines, const std::string& path)
   return h;
 }
 
+// The vertex properties that are neither coordinates nor normals nor lists become attributes.
+void add_attributes(Ply_header& h, Point_cloud& cloud, bool keep, std::size_t reserved)
+{
+  const Ply_element& v = h.elements[h.vertex];
+  h.attribute_of.assign(v.properties.size(), -1);
+  if(!keep)
+    return;
+  for(std::size_t i = 0; i < v.properties.size(); ++i)
+  {
+    const Ply_property& p = v.properties[i];
+    if(p.list || std::find(h.role_property, h.role_property + 6, int(i)) != h.role_property + 6)
+      continue;
+    h.attribute_of[i] = int(cloud.attributes.size());
+    cloud.attributes.push_back(Attribute{p.name, p.type, {}});
+    cloud.attributes.back().values.reserve(reserved);
+  }
+}
+
 std::string item_text(const Ply_element& e, std::uint64_t item)
 {
   return cat(e.name, " ", item + 1, " of the ", e.count, " declared in the header");
@@ -271,6 +292,10 @@ void read_ply_binary(Byte_source& bytes, const Ply_header& h, Point_cloud& cloud
               for(int r = 3; r < 6; ++r)
                 cloud.normals.push_back(binary_value(base + offset[h.role_property[r]],
                                                      e.properties[h.role_property[r]].type, swap));
+            for(std::size_t pi = 0; pi < e.properties.size(); ++pi)
+              if(h.attribute_of[pi] >= 0)
+                cloud.attributes[h.attribute_of[pi]].values.push_back(
+                  binary_value(base + offset[pi], e.properties[pi].type, swap));
           }
         }
         bytes.advance(n * size);
@@ -290,9 +315,13 @@ void read_ply_binary(Byte_source& bytes, const Ply_header& h, Point_cloud& cloud
           if(bytes.fill(type_size(p.type)) < type_size(p.type))
             truncated(item);
           if(is_vertex)
+          {
             for(int r = 0; r < 6; ++r)
               if(h.role_property[r] == int(pi))
                 values[r] = binary_value(bytes.data(), p.type, swap);
+            if(h.attribute_of[pi] >= 0)
+              cloud.attributes[h.attribute_of[pi]].values.push_back(binary_value(bytes.data(), p.type, swap));
+          }
           bytes.advance(type_size(p.type));
           continue;
         }
@@ -390,9 +419,13 @@ void read_ply_ascii(Line_source& lines, const Ply_header& h, Point_cloud& cloud,
         if(!p.list)
         {
           if(is_vertex)
+          {
             for(int r = 0; r < 6; ++r)
               if(h.role_property[r] == int(pi))
                 point[r] = v;
+            if(h.attribute_of[pi] >= 0)
+              cloud.attributes[h.attribute_of[pi]].values.push_back(v);
+          }
           continue;
         }
         if(!(v >= 0) || v != std::floor(v) || v > 1e15)
@@ -424,10 +457,10 @@ void read_ply_ascii(Line_source& lines, const Ply_header& h, Point_cloud& cloud,
 
 } // namespace
 
-Point_cloud read_ply(Byte_source& bytes, const std::string& path)
+Point_cloud read_ply(Byte_source& bytes, const std::string& path, bool keep_attributes)
 {
   Line_source lines(bytes);
-  const Ply_header h = read_ply_header(lines, path);
+  Ply_header h = read_ply_header(lines, path);
   Point_cloud cloud;
   const Ply_element& v = h.elements[h.vertex];
   // Counts are not trusted: a vertex takes at least 3 bytes (binary) or 6 (ASCII), so the
@@ -436,6 +469,7 @@ Point_cloud read_ply(Byte_source& bytes, const std::string& path)
   const std::uint64_t most = bytes.remaining() / (h.format == Ply_format::ASCII ? 6 : 3);
   const std::size_t reserved = std::size_t(std::min(v.count, most));
   cloud.xyz.reserve(3 * reserved);
+  add_attributes(h, cloud, keep_attributes, reserved);
   if(h.role_property[3] >= 0)
   {
     cloud.normals.reserve(3 * reserved);

@@ -112,10 +112,25 @@ Point_cloud read_xyz(Byte_source& bytes, const std::string& path, const Read_opt
   std::uint64_t declared = 0;
   bool has_count = false, first_content = true, header_allowed = true;
   std::string_view line;
+  // per column, its attribute in cloud.attributes or -1: the named columns that are neither
+  // coordinates nor normals, except "_"
+  std::vector<int> attribute_of;
+  auto name_attributes = [&](const std::vector<std::string>& names) {
+    attribute_of.assign(names.size(), -1);
+    if(!options.keep_attributes)
+      return;
+    for(std::size_t c = 0; c < names.size(); ++c)
+      if(roles[c] < 0 && names[c] != "_")
+      {
+        attribute_of[c] = int(cloud.attributes.size());
+        cloud.attributes.push_back(Attribute{names[c], Scalar_type::FLOAT64, {}});
+      }
+  };
   if(explicit_columns)
   {
     roles = roles_of(options.columns);
     layout_origin = "--columns";
+    name_attributes(options.columns);
   }
   auto fail = [&](const std::string& what) {
     throw Error(cat(in_quotes(path), " line ", lines.line_number(), ": ", what));
@@ -161,6 +176,7 @@ Point_cloud read_xyz(Byte_source& bytes, const std::string& path, const Read_opt
             fail(cat("the header line ", problem, ": give --columns to name the columns (for example "
                      "--columns x,y,z,nx,ny,nz)"));
           layout_origin = "the header line";
+          name_attributes(header);
         }
         continue;
       }
@@ -171,6 +187,7 @@ Point_cloud read_xyz(Byte_source& bytes, const std::string& path, const Read_opt
         fail(cat("expected 3 (x y z) or 6 (x y z nx ny nz) values, found ", values.size(),
                  "; give --columns to name them (for example --columns x,y,z,intensity)"));
       roles = values.size() == 3 ? std::vector<int>{0, 1, 2} : std::vector<int>{0, 1, 2, 3, 4, 5};
+      attribute_of.assign(roles.size(), -1);
       automatic_six = values.size() == 6;
       layout_origin = "the previous lines";
     }
@@ -180,10 +197,15 @@ Point_cloud read_xyz(Byte_source& bytes, const std::string& path, const Read_opt
     double p[6] = {0, 0, 0, 0, 0, 0};
     for(std::size_t c = 0; c < values.size(); ++c)
     {
-      if(roles[c] < 0)
+      double v = 0;
+      if(roles[c] < 0 && attribute_of[c] < 0)
         continue;
-      if(!parse_number(values[c], p[roles[c]]))
+      if(!parse_number(values[c], v))
         fail(values[c].empty() ? cat("empty value in column ", c + 1) : cat(quoted(values[c]), " is not a number"));
+      if(roles[c] >= 0)
+        p[roles[c]] = v;
+      else
+        cloud.attributes[attribute_of[c]].values.push_back(v);
     }
     cloud.xyz.insert(cloud.xyz.end(), p, p + 3);
     cloud.normals.insert(cloud.normals.end(), p + 3, p + 6);
@@ -285,7 +307,13 @@ Point_cloud read_off(Byte_source& bytes, const std::string& path)
 
 } // namespace
 
-const char* readable_formats() { return ".xyz, .pwn, .txt, .csv, .ply or .off"; }
+const char* readable_formats() { return ".xyz, .pwn, .txt, .csv, .ply, .off or .las"; }
+
+const char* ply_type_name(Scalar_type t)
+{
+  static const char* const names[] = {"char", "uchar", "short", "ushort", "int", "uint", "float", "double"};
+  return names[int(t)];
+}
 
 std::vector<std::string> parse_columns(const std::string& text)
 {
@@ -320,13 +348,19 @@ Point_cloud read_point_cloud(const std::string& path, const Read_options& option
     throw Error(cat("cannot read input ", in_quotes(path), ": not a regular file (a pipe or a device?)"));
   const std::string ext = lower_extension(path);
   const bool text = ext == ".xyz" || ext == ".pwn" || ext == ".txt" || ext == ".csv";
-  if(!text && ext != ".ply" && ext != ".off")
+  if(ext == ".laz")
+    throw Error(cat(in_quotes(path), ": compressed LAS (.laz) is not read; decompress it first, for example "
+                    "with 'laszip -i FILE.laz -o FILE.las' or 'pdal translate FILE.laz FILE.las'"));
+  if(!text && ext != ".ply" && ext != ".off" && ext != ".las")
     throw Error(cat("unsupported input format ", in_quotes(ext.empty() ? path : ext), " for ", in_quotes(path),
                     " (expected ", readable_formats(), ")"));
   if(!options.columns.empty() && !text)
     throw Error(cat("--columns applies to text point files (.xyz, .pwn, .txt, .csv), not to ", in_quotes(path)));
   Byte_source bytes(path, std::uint64_t(st.st_size), options.progress);
-  Point_cloud cloud = text ? read_xyz(bytes, path, options) : ext == ".ply" ? read_ply(bytes, path) : read_off(bytes, path);
+  Point_cloud cloud = text            ? read_xyz(bytes, path, options)
+                      : ext == ".ply" ? read_ply(bytes, path, options.keep_attributes)
+                      : ext == ".las" ? read_las(bytes, path, options.keep_attributes)
+                                      : read_off(bytes, path);
   if(cloud.size() == 0)
     throw Error(cat(in_quotes(path), " contains no points"));
   if(options.progress && !options.progress(1.0))

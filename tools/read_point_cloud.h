@@ -16,6 +16,12 @@
 //                         type, other elements and properties skipped; normals named nx ny nz
 //                         or normal_x normal_y normal_z.
 //   .off                  OFF or NOFF (normals), faces checked and ignored.
+//   .las                  LAS 1.0-1.4, uncompressed, point data formats 0-10 (read_las.cpp);
+//                         .laz is refused with a message.
+//
+// With Read_options::keep_attributes, the values that are neither coordinates nor normals
+// are kept as attributes: PLY vertex properties (lists skipped), text columns named by a
+// header line or by --columns (except "_"), the LAS point fields.
 
 #ifndef POINT_SET_CURVATURES_TOOL_READ_POINT_CLOUD_H
 #define POINT_SET_CURVATURES_TOOL_READ_POINT_CLOUD_H
@@ -28,11 +34,29 @@
 
 namespace psc_tool {
 
+// The scalar types of the attributes (those of PLY).
+enum class Scalar_type { INT8, UINT8, INT16, UINT16, INT32, UINT32, FLOAT32, FLOAT64 };
+
+// "char", "uchar", ..., "double": the PLY name of a type.
+const char* ply_type_name(Scalar_type t);
+
+// A per-point value of the input other than the coordinates and the normal (intensity,
+// classification, colour, GPS time...), carried to the output. The values are held as
+// doubles, which represent every value of every type exactly.
+struct Attribute
+{
+  std::string name;
+  Scalar_type type = Scalar_type::FLOAT64;
+  std::vector<double> values;  // one per point
+};
+
 struct Point_cloud
 {
   std::vector<double> xyz;      // 3 per point, in file order
   std::vector<double> normals;  // 3 per point, or empty when the file has none
   std::string normals_source;   // where the normals came from, for messages
+  std::vector<Attribute> attributes;  // empty unless Read_options::keep_attributes
+  std::vector<std::string> warnings;  // file problems that do not prevent reading it
 
   std::size_t size() const { return xyz.size() / 3; }
   bool has_normals() const { return !normals.empty(); }
@@ -43,11 +67,13 @@ struct Read_options
   // --columns: one name per value of a text line: x, y, z, nx, ny, nz (or normal_x, ...),
   // anything else (for example _ or r) for a value that is skipped. Empty: automatic.
   std::vector<std::string> columns;
+  // Keep the other values of each point (PLY properties, named text columns, LAS fields).
+  bool keep_attributes = true;
   // Called with the fraction of the file read, about every 1%; false cancels (Cancelled).
   Progress progress;
 };
 
-// The formats read_point_cloud() understands, for messages: ".xyz, .pwn, .txt, .csv, .ply or .off".
+// The formats read_point_cloud() understands, for messages: ".xyz, .pwn, .txt, .csv, .ply, .off or .las".
 const char* readable_formats();
 
 // Parses a --columns value ("x,y,z,_,_,_,nx,ny,nz"); throws Error if it lacks x, y or z,

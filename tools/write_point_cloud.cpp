@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
+#include <set>
 
 namespace psc_tool {
 
@@ -15,30 +17,79 @@ const char* const output_field_names[16] = {"x",      "y",      "z",      "nx", 
                                             "k_min",  "k_max",  "mean",   "gaussian", "dmin_x", "dmin_y",
                                             "dmin_z", "dmax_x", "dmax_y", "dmax_z"};
 
-namespace {
-
-void put_text_double(std::FILE* f, double v)
+const char* selectable_fields()
 {
-  if(std::isnan(v))
-    std::fputs("nan", f);
-  else
-    std::fprintf(f, "%.17g", v);
+  return "nx, ny, nz (or normal), k_min, k_max, mean, gaussian, dmin_x, dmin_y, dmin_z (or dmin), dmax_x, "
+         "dmax_y, dmax_z (or dmax), neighbors, valid";
 }
 
-// One row of text output (ASCII PLY, CSV), values separated by `separator`.
-void put_text_row(std::FILE* f, const Output_row& r, bool color, char separator)
+std::vector<std::string> parse_fields(const std::string& text)
 {
-  for(int a = 0; a < 16; ++a)
+  std::vector<std::string> names;
+  std::size_t b = 0;
+  for(;;)
   {
-    put_text_double(f, r.value[a]);
-    std::fputc(separator, f);
+    const std::size_t comma = text.find(',', b);
+    std::string name = text.substr(b, comma == std::string::npos ? std::string::npos : comma - b);
+    name.erase(0, name.find_first_not_of(' '));
+    name.erase(name.find_last_not_of(' ') + 1);
+    const std::string group = name == "normal" ? "n" : name == "dmin" ? "dmin_" : name == "dmax" ? "dmax_" : "";
+    if(!group.empty())
+      for(const char* axis : {"x", "y", "z"})
+        names.push_back(group + axis);
+    else if(name == "neighbors" || name == "valid" ||
+            std::find_if(output_field_names + 3, output_field_names + 16,
+                         [&](const char* f) { return name == f; }) != output_field_names + 16)
+      names.push_back(name);
+    else
+      throw Error(cat("--fields: unknown field ", in_quotes(name), " (x y z are always written; choose among ",
+                      selectable_fields(), ")"));
+    if(comma == std::string::npos)
+      break;
+    b = comma + 1;
   }
-  std::fprintf(f, "%d%c%d", int(r.neighbors), separator, int(r.valid));
-  if(color)
-    std::fprintf(f, "%c%d%c%d%c%d", separator, int(r.color[0]), separator, int(r.color[1]), separator,
-                 int(r.color[2]));
-  std::fputc('\n', f);
+  return names;
 }
+
+std::vector<Output_field> output_fields(const std::vector<std::string>& selected, bool float32, bool color,
+                                        const std::vector<Attribute>& attributes)
+{
+  auto chosen = [&](const std::string& name) {
+    return selected.empty() || std::find(selected.begin(), selected.end(), name) != selected.end();
+  };
+  std::vector<Output_field> fields;
+  for(int i = 0; i < 16; ++i)
+    if(i < 3 || chosen(output_field_names[i]))
+      fields.push_back(Output_field{output_field_names[i],
+                                    float32 && i >= 3 ? Scalar_type::FLOAT32 : Scalar_type::FLOAT64,
+                                    Output_field::VALUE + i});
+  if(chosen("neighbors"))
+    fields.push_back(Output_field{"neighbors", Scalar_type::INT32, Output_field::NEIGHBORS});
+  if(chosen("valid"))
+    fields.push_back(Output_field{"valid", Scalar_type::UINT8, Output_field::VALID});
+  if(color)
+    for(int c = 0; c < 3; ++c)
+      fields.push_back(Output_field{c == 0 ? "red" : c == 1 ? "green" : "blue", Scalar_type::UINT8,
+                                    Output_field::COLOR + c});
+  // the tool's names, selected or not, are never an input's: no file where k_min could be
+  // an older run's value
+  std::set<std::string> taken(output_field_names, output_field_names + 16);
+  taken.insert("neighbors");
+  taken.insert("valid");
+  for(const Output_field& f : fields)
+    taken.insert(f.name);
+  for(std::size_t j = 0; j < attributes.size(); ++j)
+  {
+    std::string name = attributes[j].name;
+    while(taken.count(name))
+      name = "input_" + name;
+    taken.insert(name);
+    fields.push_back(Output_field{name, attributes[j].type, Output_field::ATTRIBUTE + int(j)});
+  }
+  return fields;
+}
+
+namespace {
 
 bool little_endian_host()
 {
@@ -46,6 +97,20 @@ bool little_endian_host()
   unsigned char first;
   std::memcpy(&first, &one, 1);
   return first == 1;
+}
+
+// A value converted to an integer type: rounded, clamped to the type's range, 0 for NaN.
+template <class T>
+T to_integer(double v)
+{
+  if(std::isnan(v))
+    return 0;
+  v = std::nearbyint(v);
+  if(v <= double(std::numeric_limits<T>::min()))
+    return std::numeric_limits<T>::min();
+  if(v >= double(std::numeric_limits<T>::max()))
+    return std::numeric_limits<T>::max();
+  return static_cast<T>(v);
 }
 
 template <class T>
@@ -58,24 +123,55 @@ void put_binary(std::vector<char>& out, T v, bool swap)
   out.insert(out.end(), bytes, bytes + sizeof(T));
 }
 
+void put_binary_value(std::vector<char>& out, Scalar_type t, double v, bool swap)
+{
+  switch(t)
+  {
+    case Scalar_type::INT8: put_binary(out, to_integer<std::int8_t>(v), swap); break;
+    case Scalar_type::UINT8: put_binary(out, to_integer<std::uint8_t>(v), swap); break;
+    case Scalar_type::INT16: put_binary(out, to_integer<std::int16_t>(v), swap); break;
+    case Scalar_type::UINT16: put_binary(out, to_integer<std::uint16_t>(v), swap); break;
+    case Scalar_type::INT32: put_binary(out, to_integer<std::int32_t>(v), swap); break;
+    case Scalar_type::UINT32: put_binary(out, to_integer<std::uint32_t>(v), swap); break;
+    case Scalar_type::FLOAT32: put_binary(out, static_cast<float>(v), swap); break;
+    default: put_binary(out, v, swap); break;
+  }
+}
+
+void put_text_value(std::FILE* f, Scalar_type t, double v)
+{
+  switch(t)
+  {
+    case Scalar_type::INT8: std::fprintf(f, "%d", int(to_integer<std::int8_t>(v))); break;
+    case Scalar_type::UINT8: std::fprintf(f, "%u", unsigned(to_integer<std::uint8_t>(v))); break;
+    case Scalar_type::INT16: std::fprintf(f, "%d", int(to_integer<std::int16_t>(v))); break;
+    case Scalar_type::UINT16: std::fprintf(f, "%u", unsigned(to_integer<std::uint16_t>(v))); break;
+    case Scalar_type::INT32: std::fprintf(f, "%ld", long(to_integer<std::int32_t>(v))); break;
+    case Scalar_type::UINT32: std::fprintf(f, "%lu", (unsigned long)(to_integer<std::uint32_t>(v))); break;
+    default:
+      if(std::isnan(v))
+        std::fputs("nan", f);
+      else if(t == Scalar_type::FLOAT32)
+        std::fprintf(f, "%.9g", double(static_cast<float>(v)));
+      else
+        std::fprintf(f, "%.17g", v);
+  }
+}
+
 void write_header(std::FILE* f, const Output_layout& layout, std::size_t n)
 {
   if(layout.format == Output_layout::CSV)
   {
-    for(const char* name : output_field_names)
-      std::fprintf(f, "%s,", name);
-    std::fputs(layout.color ? "neighbors,valid,red,green,blue\n" : "neighbors,valid\n", f);
+    for(std::size_t i = 0; i < layout.fields.size(); ++i)
+      std::fprintf(f, "%s%c", layout.fields[i].name.c_str(), i + 1 == layout.fields.size() ? '\n' : ',');
     return;
   }
   std::fprintf(f, "ply\nformat %s 1.0\n", layout.format == Output_layout::ASCII_PLY ? "ascii" : "binary_little_endian");
   for(const std::string& c : layout.comments)
     std::fprintf(f, "comment %s\n", c.c_str());
   std::fprintf(f, "element vertex %zu\n", n);
-  for(const char* name : output_field_names)
-    std::fprintf(f, "property double %s\n", name);
-  std::fputs("property int neighbors\nproperty uchar valid\n", f);
-  if(layout.color)
-    std::fputs("property uchar red\nproperty uchar green\nproperty uchar blue\n", f);
+  for(const Output_field& field : layout.fields)
+    std::fprintf(f, "property %s %s\n", ply_type_name(field.type), field.name.c_str());
   std::fputs("end_header\n", f);
 }
 
@@ -87,19 +183,32 @@ void write_point_cloud(std::FILE* f, const Output_layout& layout, std::size_t n,
   write_header(f, layout, n);
   const bool swap = !little_endian_host();
   const std::size_t step = std::max<std::size_t>(1, n / 100);
+  const char separator = layout.format == Output_layout::CSV ? ',' : ' ';
   std::vector<char> chunk;
   Output_row r;
   for(std::size_t i = 0; i < n; ++i)
   {
     row(i, r);
+    for(std::size_t c = 0; c < layout.fields.size(); ++c)
+    {
+      const Output_field& field = layout.fields[c];
+      const int s = field.source;
+      const double v = s < 16                               ? r.value[s]
+                       : s == Output_field::NEIGHBORS       ? double(r.neighbors)
+                       : s == Output_field::VALID           ? double(r.valid)
+                       : s < Output_field::ATTRIBUTE        ? double(r.color[s - Output_field::COLOR])
+                                                            : (*layout.attributes)[s - Output_field::ATTRIBUTE].values[i];
+      if(layout.format == Output_layout::BINARY_PLY)
+        put_binary_value(chunk, field.type, v, swap);
+      else
+      {
+        if(c > 0)
+          std::fputc(separator, f);
+        put_text_value(f, field.type, v);
+      }
+    }
     if(layout.format == Output_layout::BINARY_PLY)
     {
-      for(int a = 0; a < 16; ++a)
-        put_binary(chunk, r.value[a], swap);
-      put_binary(chunk, r.neighbors, swap);
-      chunk.push_back(static_cast<char>(r.valid));
-      if(layout.color)
-        chunk.insert(chunk.end(), r.color, r.color + 3);
       if(chunk.size() > (1u << 20))
       {
         std::fwrite(chunk.data(), 1, chunk.size(), f);
@@ -107,7 +216,7 @@ void write_point_cloud(std::FILE* f, const Output_layout& layout, std::size_t n,
       }
     }
     else
-      put_text_row(f, r, layout.color, layout.format == Output_layout::CSV ? ',' : ' ');
+      std::fputc('\n', f);
     if(progress && (i + 1) % step == 0 && !progress(double(i + 1) / double(n)))
       throw Cancelled();
   }

@@ -2,12 +2,13 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // The tool's writers: binary or ASCII PLY, or CSV with a header line, one row per input
-// point in input order. The rows come from a callback, so this file knows nothing of the
-// estimators.
+// point in input order, with the columns chosen by output_fields(). The rows come from a
+// callback, so this file knows nothing of the estimators.
 
 #ifndef POINT_SET_CURVATURES_TOOL_WRITE_POINT_CLOUD_H
 #define POINT_SET_CURVATURES_TOOL_WRITE_POINT_CLOUD_H
 
+#include "read_point_cloud.h"
 #include "tool_support.h"
 
 #include <cstddef>
@@ -32,12 +33,38 @@ struct Output_row
   unsigned char color[3] = {0, 0, 0};
 };
 
+// One column of the output: its name, its type, and where its value comes from.
+struct Output_field
+{
+  enum Source { VALUE = 0, NEIGHBORS = 16, VALID = 17, COLOR = 18, ATTRIBUTE = 100 };
+  std::string name;
+  Scalar_type type = Scalar_type::FLOAT64;
+  int source = 0;  // VALUE + i: Output_row::value[i]; COLOR + c; ATTRIBUTE + j: attribute j
+};
+
 struct Output_layout
 {
   enum Format { BINARY_PLY, ASCII_PLY, CSV } format = BINARY_PLY;
-  bool color = false;                 // write red green blue
-  std::vector<std::string> comments;  // PLY header comments
+  std::vector<Output_field> fields;                  // the columns, in order (output_fields())
+  const std::vector<Attribute>* attributes = nullptr;  // for Output_field::ATTRIBUTE + j
+  std::vector<std::string> comments;                 // PLY header comments
 };
+
+// The names --fields accepts, for messages.
+const char* selectable_fields();
+
+// Parses a --fields value ("k_min,k_max,mean"): the estimator fields to write, each a name of
+// output_field_names, "neighbors", "valid", or a group: "normal" (nx ny nz), "dmin", "dmax"
+// (the three components). Throws Error for an unknown name.
+std::vector<std::string> parse_fields(const std::string& text);
+
+// The columns of the output: x y z (always, in double: coordinates near 1e6 need it), then the
+// selected estimator fields (all if `selected` is empty) in the order of output_field_names,
+// as float32 if `float32`, neighbors and valid if selected, red green blue with `color`,
+// then the input's attributes in their own types (renamed input_NAME when NAME is one of the
+// tool's fields, selected or not, or red green blue with `color`).
+std::vector<Output_field> output_fields(const std::vector<std::string>& selected, bool float32, bool color,
+                                        const std::vector<Attribute>& attributes);
 
 // Writes `n` rows, row(i, r) filling row i. Progress: the fraction of rows written, about
 // every 1%; false cancels (Cancelled). Write errors are left to the caller (ferror).

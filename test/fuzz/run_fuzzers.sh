@@ -16,7 +16,7 @@ out="${2:-$repo/build-fuzz}"
 mkdir -p "$out"
 out="$(cd "$out" && pwd)"
 clang++ -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
-  "$here/fuzz_readers.cpp" "$repo/tools/read_point_cloud.cpp" "$repo/tools/read_ply.cpp" \
+  "$here/fuzz_readers.cpp" "$repo/tools/read_point_cloud.cpp" "$repo/tools/read_ply.cpp" "$repo/tools/read_las.cpp" \
   -o "$out/fuzz_readers"
 rm -rf "$out/corpus"
 cp -r "$here/corpus" "$out/corpus"

@@ -100,6 +100,16 @@ public:
       return 0.5 * R2 * std::atan2(cross(ax, ay, bx, by), ax * bx + ay * by);
     };
     double total = 0;
+    if(m_farthest <= R2)
+    {
+      // the whole cell is in the disk (the usual case): its area, without arcs
+      for(int i = 0; i < m_size; ++i)
+      {
+        const int j = i + 1 == m_size ? 0 : i + 1;
+        total += cross(m_x[i], m_y[i], m_x[j], m_y[j]);
+      }
+      return 0.5 * std::abs(total);
+    }
     for(int i = 0; i < m_size; ++i)
     {
       const int j = i + 1 == m_size ? 0 : i + 1;
@@ -120,8 +130,15 @@ public:
         total += sector(px, py, m_x[j], m_y[j]);
         continue;
       }
-      const double ax = px + t1 * dx, ay = py + t1 * dy, bx = px + t2 * dx, by = py + t2 * dy;
-      total += sector(px, py, ax, ay) + 0.5 * cross(ax, ay, bx, by) + sector(bx, by, m_x[j], m_y[j]);
+      // the chord inside the disk, and arcs for the parts of the edge outside it (none at an
+      // end inside the disk)
+      const double ax = t1 > 0 ? px + t1 * dx : px, ay = t1 > 0 ? py + t1 * dy : py;
+      const double bx = t2 < 1 ? px + t2 * dx : m_x[j], by = t2 < 1 ? py + t2 * dy : m_y[j];
+      total += 0.5 * cross(ax, ay, bx, by);
+      if(t1 > 0)
+        total += sector(px, py, ax, ay);
+      if(t2 < 1)
+        total += sector(bx, by, m_x[j], m_y[j]);
     }
     return std::abs(total);
   }
@@ -162,9 +179,14 @@ inline double tangent_voronoi_area(const Neighborhood& nb, double bound, Tangent
   const double unit[3] = {n[0] * inv, n[1] * inv, n[2] * inv};
   double t1[3], t2[3];
   tangent_basis(unit, t1, t2);
+  // Only neighbours projected within 2 * bound can ever cut the part that counts (the test
+  // in the loop below); they are put in distance order lazily, a prefix at a time
+  // (nth_element then sort, growing the prefix 4-fold), since the loop usually stops after a
+  // dozen: linear cost in the neighbourhood's size, not k log k, when the radius is large.
+  const double bound2 = bound * bound;
   std::vector<Tangent_cell_scratch::Projected>& p = scratch.projected;
-  p.resize(nb.size);
-  std::size_t m = 0, copies = 0;  // copies: other samples at the query's position
+  p.clear();
+  std::size_t copies = 0;  // copies: other samples at the query's position
   bool self = false;
   for(std::size_t i = 0; i < nb.size; ++i)
   {
@@ -177,23 +199,25 @@ inline double tangent_voronoi_area(const Neighborhood& nb, double bound, Tangent
     }
     const double u = qx * t1[0] + qy * t1[1] + qz * t1[2];
     const double v = qx * t2[0] + qy * t2[1] + qz * t2[2];
-    // insertion sort by distance: neighbourhoods here hold about ten points
-    Tangent_cell_scratch::Projected x{u * u + v * v, u, v};
-    std::size_t j = m++;
-    while(j > 0 && x < p[j - 1])
-    {
-      p[j] = p[j - 1];
-      --j;
-    }
-    p[j] = x;
+    const double d2 = u * u + v * v;
+    if(d2 <= 4 * bound2)
+      p.push_back(Tangent_cell_scratch::Projected{d2, u, v});
   }
   // a square that holds the disk, clipped by the bisectors until the next neighbour is farther
   // than twice the part of the cell that counts (its farthest vertex, at most `bound`)
   Convex_cell cell;
   cell.set_square(bound);
-  const double bound2 = bound * bound;
-  for(std::size_t i = 0; i < m; ++i)
+  std::size_t sorted = 0;
+  for(std::size_t i = 0; i < p.size(); ++i)
   {
+    if(i == sorted)
+    {
+      const std::size_t next = std::min(p.size(), std::max<std::size_t>(16, 4 * sorted));
+      if(next < p.size())
+        std::nth_element(p.begin() + sorted, p.begin() + next, p.end());
+      std::sort(p.begin() + sorted, p.begin() + next);
+      sorted = next;
+    }
     const Tangent_cell_scratch::Projected& x = p[i];
     if(x.d2 > 4 * std::min(bound2, cell.farthest_squared()))
       break;  // this and the farther neighbours cannot cut the part that counts

@@ -1,0 +1,583 @@
+# Copyright (c) 2026 The Point_set_curvatures authors.
+# SPDX-License-Identifier: LGPL-3.0-or-later
+"""Curvature estimation on oriented point clouds (Python bindings of Point_set_curvatures).
+
+The functions of the C++ package on numpy arrays: every estimator of curvatures (the
+Algebraic Shape Operator ``"aso"`` by default, ``"apss"`` and the baselines ``"barycenter"``,
+``"pca_plane"``, ``"pss"``, ``"jet"``, ``"wavejet"``, ``"vcm"``), the algebraic sphere
+features, the projection onto the APSS surface, the bilaplacian flow and the estimation of
+oriented normals.
+
+Conventions (those of the C++ package, see its user manual): one result per input point, in
+input order; curvature is positive where the surface bends away from the normal (a sphere of
+radius R with outward normals has k_min = k_max = mean = 1/R); points that cannot be
+estimated have a ``status`` other than ``Status.VALID`` and NaN in every float field.
+
+Inputs are ``(N, 3)`` arrays of float64 or float32 in any memory layout (C, Fortran or a
+strided view); they are read once, into the C++ structure. The GIL is released while the
+C++ code runs; ``progress(fraction)`` is called on the calling thread and cancels the run
+(raising :class:`Cancelled`) by returning ``False``. ``threads=None`` uses every core
+(``CGAL::Parallel_tag``), ``threads=1`` runs sequentially (``CGAL::Sequential_tag``),
+``threads=n`` runs on a TBB arena of ``n`` threads; results do not depend on it (except
+``"vcm"``, reproducible only up to rounding). Ctrl-C cancels a run too (KeyboardInterrupt).
+Invalid arguments raise ``ValueError`` (with the C++ message when the C++ code detects them).
+"""
+
+from enum import IntEnum
+
+import numpy as np
+
+from . import _core
+from ._core import Cancelled, HaloTooSmall
+
+__all__ = [
+    "Status",
+    "ProjectionStatus",
+    "Cancelled",
+    "HaloTooSmall",
+    "METHODS",
+    "estimate_curvatures",
+    "estimate_sphere_features",
+    "estimate_multiscale_sphere_features",
+    "AlgebraicPointSetSurface",
+    "apss_smooth_point_set",
+    "estimate_normals",
+    "TileGrid",
+]
+
+Cancelled.__doc__ = (
+    "Raised when the progress callable returned False: the run was cancelled "
+    "(a subclass of RuntimeError)."
+)
+HaloTooSmall.__doc__ = (
+    "Raised by a run on a tile (tile=...) by neighbour count when a neighbourhood reaches "
+    "beyond the tile's halo; ``required_halo`` is a halo that suffices (a subclass of "
+    "RuntimeError)."
+)
+
+
+class Status(IntEnum):
+    """Why an estimate is (in)valid: ``CGAL::Curvature_estimate_status``, same names and
+    values. The ``status`` arrays hold these values as uint8."""
+
+    VALID = 0  #: every field the estimator provides holds a finite value
+    TOO_FEW_NEIGHBORS = 1  #: fewer neighbours than min_neighbors
+    DEGENERATE_FIT = 2  #: coincident neighbours, cancelling normals, no tangent spread
+    NON_FINITE_POINT = 3  #: a NaN or infinite coordinate
+    INVALID_NORMAL = 4  #: zero, non-finite or implausible input normal
+    NOT_COMPUTED = 5  #: not reached (cancelled), or not an own point of the tile
+    TWO_SHEETS = 6  #: robust_orientation: the neighbours lie on two sheets
+
+
+class ProjectionStatus(IntEnum):
+    """Outcome of a projection onto the APSS surface: ``CGAL::Apss_projection_status``."""
+
+    CONVERGED = 0
+    NOT_CONVERGED = 1
+    TOO_FEW_NEIGHBORS = 2
+    DEGENERATE_FIT = 3
+    NON_FINITE_POINT = 4
+
+
+# The enums above are the C++ ones: checked at import.
+assert {s.name.lower(): s.value for s in Status} == dict(_core.STATUS_VALUES)
+assert {s.name.lower(): s.value for s in ProjectionStatus} == dict(_core.PROJECTION_STATUS_VALUES)
+
+#: The estimators of ``estimate_curvatures``.
+METHODS = ("aso", "apss", "barycenter", "pca_plane", "pss", "jet", "wavejet", "vcm")
+
+_COMMON_OPTIONS = ("min_neighbors", "accept_unnormalized_normals", "tile")
+_METHOD_OPTIONS = {
+    "aso": (
+        "aso_variant",
+        "weight_kernel",
+        "sample_weights",
+        "robust_orientation",
+        "normal_refinement",
+        "aso_projection",
+    ),
+    "apss": ("weight_kernel", "sample_weights", "robust_orientation"),
+    "barycenter": (),
+    "pca_plane": (),
+    "pss": (),
+    "jet": ("degree_fitting", "degree_monge"),
+    "wavejet": (),
+    "vcm": ("vcm_offset_radius",),
+}
+
+_ASO_VARIANTS = {"paper": 0, "robust": 1}
+_WEIGHT_KERNELS = {"smooth": 0, "constant": 1, "smooth_cubic": 2, "smooth_quartic": 3}
+_SAMPLE_WEIGHTS = {"uniform": 0, "tangent_voronoi_area": 1}
+_ASO_PROJECTIONS = {"corrected_normal": 0, "authors_implementation": 1}
+
+
+def _choice(name, value, table):
+    if isinstance(value, str) and value.lower() in table:
+        return table[value.lower()]
+    raise ValueError(
+        f"option '{name}': expected one of {', '.join(repr(k) for k in table)}, got {value!r}"
+    )
+
+
+def _bool(name, value):
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
+    raise ValueError(f"option '{name}': expected a bool, got {value!r}")
+
+
+def _int(name, value, least):
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+        raise ValueError(f"option '{name}': expected an integer, got {value!r}")
+    if value < least:
+        raise ValueError(f"option '{name}': must be at least {least}, got {value}")
+    return int(value)
+
+
+def _threads(threads):
+    if threads is None:
+        return 0
+    n = _int("threads", threads, 1)
+    return n
+
+
+def _array(x, name):
+    """The array itself if it is one (the C++ side checks dtype and shape), else a float64 copy."""
+    if isinstance(x, np.ndarray):
+        return x
+    try:
+        return np.asarray(x, dtype=np.float64)
+    except (TypeError, ValueError) as e:
+        raise ValueError(f"{name}: cannot be read as an (N, 3) array of floats: {e}") from None
+
+
+def _check_progress(progress):
+    if progress is not None and not callable(progress):
+        raise ValueError(f"progress must be a callable or None, got {progress!r}")
+
+
+def _tile(tile):
+    if tile is None:
+        return None
+    if isinstance(tile, TileGrid.Tile):
+        return (tuple(tile.core_min), tuple(tile.core_max), float(tile.halo))
+    try:
+        lo, hi, halo = tile
+        lo = tuple(float(v) for v in lo)
+        hi = tuple(float(v) for v in hi)
+        halo = float(halo)
+    except (TypeError, ValueError):
+        raise ValueError(
+            "option 'tile': expected (core_min, core_max, halo) or a TileGrid.Tile"
+        ) from None
+    if len(lo) != 3 or len(hi) != 3:
+        raise ValueError("option 'tile': core_min and core_max must have 3 coordinates")
+    return (lo, hi, halo)
+
+
+def _options(method, allowed, given):
+    """The _core options from keyword arguments; unknown or inapplicable names raise."""
+    o = _core._Options()
+    tile = None
+    for name, value in given.items():
+        if name not in allowed:
+            known = sorted(set(_COMMON_OPTIONS).union(*_METHOD_OPTIONS.values()))
+            if name in known:
+                raise ValueError(
+                    f"option '{name}' does not apply to {method}; its options: "
+                    f"{', '.join(sorted(allowed))}"
+                )
+            raise ValueError(
+                f"unknown option '{name}' for {method}; its options: {', '.join(sorted(allowed))}"
+            )
+        if value is None:
+            continue  # the default
+        if name == "min_neighbors":
+            o.min_neighbors = _int(name, value, 0)
+        elif name == "accept_unnormalized_normals":
+            o.accept_unnormalized_normals = _bool(name, value)
+        elif name == "tile":
+            tile = _tile(value)
+        elif name == "aso_variant":
+            o.aso_variant = _choice(name, value, _ASO_VARIANTS)
+        elif name == "weight_kernel":
+            o.weight_kernel = _choice(name, value, _WEIGHT_KERNELS)
+        elif name == "sample_weights":
+            o.sample_weights = _choice(name, value, _SAMPLE_WEIGHTS)
+        elif name == "robust_orientation":
+            o.robust_orientation = int(_bool(name, value))
+        elif name == "normal_refinement":
+            o.normal_refinement = _int(name, value, 0)
+        elif name == "aso_projection":
+            o.aso_projection = _choice(name, value, _ASO_PROJECTIONS)
+        elif name == "degree_fitting":
+            o.degree_fitting = _int(name, value, -(2**62))
+        elif name == "degree_monge":
+            o.degree_monge = _int(name, value, -(2**62))
+        elif name == "vcm_offset_radius":
+            v = float(value)
+            if not (v > 0 and np.isfinite(v)):
+                raise ValueError(
+                    f"option 'vcm_offset_radius' must be positive and finite, got {value!r}"
+                )
+            o.vcm_offset_radius = v
+    return o, tile
+
+
+def _scale(radius, neighbors):
+    if (radius is None) == (neighbors is None):
+        raise ValueError("give exactly one of radius and neighbors")
+    if radius is not None:
+        if isinstance(radius, (bool, np.bool_)):
+            raise ValueError(f"radius must be a number, got {radius!r}")
+        try:
+            radius = float(radius)
+        except (TypeError, ValueError):
+            raise ValueError(f"radius must be a number, got {radius!r}") from None
+        return radius, None  # positive and finite: checked by the C++ function
+    return None, _int("neighbors", neighbors, 1)
+
+
+def estimate_curvatures(
+    points,
+    normals,
+    *,
+    method="aso",
+    radius=None,
+    neighbors=None,
+    threads=None,
+    progress=None,
+    **options,
+):
+    """Estimates the corrected normal, the principal curvatures and directions, the mean and
+    the Gaussian curvature at every point of an oriented point cloud.
+
+    Parameters
+    ----------
+    points, normals : array_like, shape (N, 3), float64 or float32
+        Positions and consistently oriented normals (need not be unit), any memory layout.
+    method : str
+        ``"aso"`` (Algebraic Shape Operator, default), ``"apss"`` (normal and mean curvature),
+        ``"barycenter"``, ``"pca_plane"`` (unsigned mean curvature), ``"pss"``, ``"jet"``,
+        ``"wavejet"`` (full tensor), ``"vcm"`` (unsigned principal curvatures).
+    radius : float
+        Neighbourhoods are the points at distance ``< radius`` (about 40 neighbours is a good
+        start: 3.5 to 4 times the average spacing).
+    neighbors : int
+        Instead of a radius: each point's radius reaches its ``neighbors``-th nearest point.
+        Give exactly one of ``radius`` and ``neighbors``.
+    threads : int or None
+        None: all cores; 1: sequential; n: n threads. Same results whatever the value.
+    progress : callable or None
+        ``progress(fraction) -> bool | None``, called on the calling thread at least every 1%
+        of the points; returning False cancels and raises :class:`Cancelled`.
+    **options
+        Every option of the C++ function (ValueError for unknown names and for options the
+        method does not take):
+
+        - all methods: ``min_neighbors`` (int; least neighbour count of a valid estimate,
+          default the estimator's measured minimum), ``accept_unnormalized_normals`` (bool),
+          ``tile`` (``(core_min, core_max, halo)`` or a :class:`TileGrid.Tile`: estimate only
+          the points in the half-open box ``core_min <= p < core_max``, the arrays holding
+          every point within ``halo`` of it in input order; the others get
+          ``Status.NOT_COMPUTED``; not for ``"vcm"``);
+        - ``"aso"``: ``aso_variant`` (``"robust"`` default, ``"paper"``), ``weight_kernel``
+          (``"smooth"``, ``"smooth_cubic"``, ``"smooth_quartic"``; default per variant),
+          ``sample_weights`` (``"uniform"``, ``"tangent_voronoi_area"``),
+          ``robust_orientation`` (bool), ``normal_refinement`` (int), ``aso_projection``
+          (``"corrected_normal"`` default, ``"authors_implementation"``);
+        - ``"apss"``: ``weight_kernel`` (also ``"constant"``), ``sample_weights``,
+          ``robust_orientation``;
+        - ``"jet"``: ``degree_fitting`` (default 2), ``degree_monge`` (default 2);
+        - ``"vcm"``: ``vcm_offset_radius`` (float; default the radius).
+
+    Returns
+    -------
+    dict of numpy arrays
+        ``normal`` (N, 3), ``k_min``, ``k_max``, ``mean``, ``gaussian`` (N,),
+        ``min_direction``, ``max_direction`` (N, 3), ``neighbors`` (N,) int64 and ``status``
+        (N,) uint8 (values of :class:`Status`). NaN where a point is invalid or the
+        estimator does not provide a quantity.
+    """
+    if not isinstance(method, str) or method not in METHODS:
+        raise ValueError(f"unknown method {method!r}; methods: {', '.join(METHODS)}")
+    allowed = set(_COMMON_OPTIONS) | set(_METHOD_OPTIONS[method])
+    if method == "vcm":
+        allowed.discard("tile")
+    opts, tile = _options(f"method '{method}'", allowed, options)
+    radius, neighbors = _scale(radius, neighbors)
+    _check_progress(progress)
+    return _core.estimate_curvatures(
+        method,
+        _array(points, "points"),
+        _array(normals, "normals"),
+        radius,
+        neighbors,
+        _threads(threads),
+        progress,
+        opts,
+        tile,
+    )
+
+
+def estimate_sphere_features(
+    points,
+    normals,
+    *,
+    radius=None,
+    neighbors=None,
+    threads=None,
+    progress=None,
+    **options,
+):
+    """The features of the APSS algebraic sphere fitted around every point
+    (``CGAL::estimate_algebraic_sphere_features``, Sections 3-4 of Lejemble et al. 2021).
+
+    Arguments as for :func:`estimate_curvatures`; options: ``weight_kernel`` (``"smooth"``
+    default, or ``"constant"``, the kernel of the paper's analysis), ``sample_weights``,
+    ``min_neighbors``, ``accept_unnormalized_normals``, ``tile``.
+
+    Returns
+    -------
+    dict of numpy arrays
+        ``u_c``, ``u_l`` (N, 3), ``u_q``, ``pratt_norm``, ``anisotropy``, ``normal`` (N, 3),
+        ``mean`` (mean curvature ``2 u_q``), ``geometric_variation``, ``d_u_c_dr``,
+        ``d_normal_dr`` (N, 3), ``d_mean_dr``, ``is_plane`` (bool), ``center`` (N, 3),
+        ``sphere_radius``, ``projection`` (N, 3), ``kernel_radius``, ``neighbors``,
+        ``status`` (see ``CGAL::Algebraic_sphere_features`` for units and meaning).
+    """
+    allowed = {"weight_kernel", "sample_weights", "min_neighbors", "accept_unnormalized_normals", "tile"}
+    opts, tile = _options("estimate_sphere_features", allowed, options)
+    radius, neighbors = _scale(radius, neighbors)
+    _check_progress(progress)
+    return _core.sphere_features(
+        _array(points, "points"),
+        _array(normals, "normals"),
+        radius,
+        neighbors,
+        _threads(threads),
+        progress,
+        opts,
+        tile,
+    )
+
+
+def estimate_multiscale_sphere_features(
+    points, normals, radii, *, threads=None, progress=None, **options
+):
+    """The sphere features at several radii in one pass
+    (``CGAL::estimate_multiscale_algebraic_sphere_features``).
+
+    ``radii``: a sequence of positive radii. Options: ``weight_kernel``, ``min_neighbors``,
+    ``accept_unnormalized_normals``. Returns the dict of :func:`estimate_sphere_features`
+    with a leading axis of length ``len(radii)`` on every array.
+    """
+    allowed = {"weight_kernel", "min_neighbors", "accept_unnormalized_normals"}
+    opts, _ = _options("estimate_multiscale_sphere_features", allowed, options)
+    try:
+        radii = [float(r) for r in radii]
+    except (TypeError, ValueError):
+        raise ValueError("radii must be a sequence of numbers") from None
+    _check_progress(progress)
+    return _core.multiscale_sphere_features(
+        _array(points, "points"), _array(normals, "normals"), radii, _threads(threads), progress, opts
+    )
+
+
+class AlgebraicPointSetSurface:
+    """The APSS surface of an oriented cloud (``CGAL::Algebraic_point_set_surface``):
+    projection of any position onto it, and the sphere features at any position.
+
+    Parameters
+    ----------
+    points, normals : array_like, shape (N, 3)
+    radius : float
+        Kernel radius; positions farther than it from every point cannot be projected.
+    weight_kernel : str
+        ``"smooth"`` (default) or ``"constant"``.
+    """
+
+    def __init__(self, points, normals, radius, *, weight_kernel="smooth"):
+        self._surface = _core._Surface(
+            _array(points, "points"),
+            _array(normals, "normals"),
+            float(radius),
+            _choice("weight_kernel", weight_kernel, _WEIGHT_KERNELS),
+        )
+
+    @property
+    def radius(self):
+        """The kernel radius."""
+        return self._surface.radius
+
+    @property
+    def number_of_points(self):
+        """The number of usable points indexed (finite, with a non-zero normal)."""
+        return self._surface.number_of_points
+
+    @property
+    def tolerance(self):
+        """A projection stops when a step is shorter (default ``1e-10 * radius``)."""
+        return self._surface.tolerance
+
+    @tolerance.setter
+    def tolerance(self, value):
+        self._surface.tolerance = float(value)
+
+    @property
+    def max_iterations(self):
+        """The maximal number of steps of a projection (default 30)."""
+        return self._surface.max_iterations
+
+    @max_iterations.setter
+    def max_iterations(self, value):
+        self._surface.max_iterations = _int("max_iterations", value, 0)
+
+    def project(self, queries, *, threads=None):
+        """Projects every row of ``queries`` (M, 3) onto the surface (iterated Equation 20).
+
+        Returns a dict: ``point`` (M, 3), ``normal`` (M, 3), ``iterations``, ``neighbors``,
+        ``status`` (values of :class:`ProjectionStatus`); NaN unless converged or not
+        converged.
+        """
+        return self._surface.project(_array(queries, "queries"), _threads(threads))
+
+    def features(self, queries, *, threads=None):
+        """The sphere features fitted at every row of ``queries`` (M, 3), as returned by
+        :func:`estimate_sphere_features`."""
+        return self._surface.features(_array(queries, "queries"), _threads(threads))
+
+
+def apss_smooth_point_set(
+    points,
+    normals,
+    radius,
+    *,
+    iterations=1,
+    update_normals=False,
+    weight_kernel="smooth",
+    threads=None,
+    progress=None,
+):
+    """The bilaplacian flow of Section 4.5 (``CGAL::apss_smooth_point_set``): every point
+    moved onto the sphere fitted around it, ``iterations`` times. The inputs are not
+    modified.
+
+    Returns a dict: ``points`` (N, 3) the moved points, ``normals`` (N, 3) (the fitted
+    spheres' normals with ``update_normals=True``, else the input normals), ``status`` (the
+    last iteration's, values of :class:`Status`).
+    """
+    _check_progress(progress)
+    opts = _core._Options()
+    opts.weight_kernel = _choice("weight_kernel", weight_kernel, _WEIGHT_KERNELS)
+    return _core.smooth_point_set(
+        _array(points, "points"),
+        _array(normals, "normals"),
+        float(radius),
+        _int("iterations", iterations, 0),
+        _bool("update_normals", update_normals),
+        _threads(threads),
+        progress,
+        opts,
+    )
+
+
+_AXES = {"+x": (1, 0, 0), "-x": (-1, 0, 0), "+y": (0, 1, 0), "-y": (0, -1, 0), "+z": (0, 0, 1), "-z": (0, 0, -1)}
+
+
+def estimate_normals(points, *, neighbors=None, radius=None, orientation="mst", threads=None, progress=None):
+    """Oriented normals for a cloud without (``CGAL::estimate_oriented_normals``): the
+    normal of the least-squares plane of the ``neighbors`` nearest points (default 18) or of
+    the ball of ``radius``, then oriented.
+
+    ``orientation``: ``"mst"`` (along a minimum spanning tree, the highest point's normal
+    towards +z; default), ``"+x"``, ``"-x"``, ..., ``"-z"``, ``("along", (x, y, z))`` (every
+    normal on the side of the vector) or ``("towards", (x, y, z))`` (towards a scanner).
+
+    Returns the (N, 3) float64 array of unit normals, zero where none can be estimated
+    (such points are ``Status.INVALID_NORMAL`` for the estimators).
+    """
+    if radius is None and neighbors is None:
+        neighbors = 18
+    radius, neighbors = _scale(radius, neighbors)
+    if isinstance(orientation, str):
+        if orientation == "mst":
+            kind, target = 0, (0.0, 0.0, 1.0)
+        elif orientation in _AXES:
+            kind, target = 1, _AXES[orientation]
+        else:
+            raise ValueError(f"orientation: expected 'mst', '+x', ..., '-z', ('along', v) or ('towards', p), got {orientation!r}")
+    else:
+        try:
+            what, target = orientation
+            target = tuple(float(v) for v in target)
+        except (TypeError, ValueError):
+            raise ValueError(f"orientation: expected ('along', (x, y, z)) or ('towards', (x, y, z)), got {orientation!r}") from None
+        if what not in ("along", "towards") or len(target) != 3:
+            raise ValueError(f"orientation: expected ('along', (x, y, z)) or ('towards', (x, y, z)), got {orientation!r}")
+        kind = 1 if what == "along" else 2
+    _check_progress(progress)
+    normals, _without = _core.estimate_normals(
+        _array(points, "points"), radius, neighbors, kind, [float(v) for v in target], _threads(threads), progress
+    )
+    return normals
+
+
+class TileGrid:
+    """The library's partition of space into tiles (``CGAL::Point_set_curvatures::Tile_grid``):
+    tiles of side about ``tile_side`` (or ``counts`` tiles per axis) over a box, the outer
+    ones extending to infinity, so that every finite point is own in exactly one tile.
+    Used to estimate a cloud piece by piece (see :mod:`point_set_curvatures.dask`)."""
+
+    class Tile:
+        """One tile: the half-open core box ``core_min <= p < core_max`` and the halo."""
+
+        __slots__ = ("index", "core_min", "core_max", "halo")
+
+        def __init__(self, index, core_min, core_max, halo):
+            self.index = index
+            self.core_min = tuple(core_min)
+            self.core_max = tuple(core_max)
+            self.halo = float(halo)
+
+        def __repr__(self):
+            return f"TileGrid.Tile({self.index}, {self.core_min}, {self.core_max}, halo={self.halo})"
+
+        def halo_mask(self, points):
+            """Boolean mask of the rows of ``points`` within the halo box of the core (the
+            core grown by ``halo`` on every side: a superset of the points at distance
+            ``<= halo``, which is what a tile needs)."""
+            p = np.asarray(points)
+            lo = np.asarray(self.core_min) - self.halo
+            hi = np.asarray(self.core_max) + self.halo
+            return np.all((p >= lo) & (p <= hi), axis=1)
+
+    def __init__(self, box_min, box_max, tile_side=None, *, counts=None):
+        self._grid = _core._TileGrid(
+            [float(v) for v in box_min],
+            [float(v) for v in box_max],
+            None if tile_side is None else float(tile_side),
+            None if counts is None else [int(c) for c in counts],
+        )
+
+    def __len__(self):
+        return len(self._grid)
+
+    @property
+    def counts(self):
+        """The number of tiles along each axis."""
+        return self._grid.counts
+
+    def tile(self, index, halo):
+        """Tile ``index`` with the given halo, as a :class:`TileGrid.Tile`."""
+        lo, hi = self._grid.core(int(index))
+        return TileGrid.Tile(int(index), lo, hi, halo)
+
+    def tile_of(self, points):
+        """For each row of ``points``, the index of the tile owning it (``len(self)`` for
+        points with a non-finite coordinate), as an int64 array."""
+        return self._grid.tile_of(_array(points, "points"))
+
+    def tiles_near(self, points, halo):
+        """Every (point, tile) pair with the point at distance ``<= halo`` from the tile's
+        core: two int64 arrays ``(point_indices, tile_indices)``, sorted by tile, then point."""
+        return self._grid.tiles_near(_array(points, "points"), float(halo))

@@ -1,0 +1,154 @@
+# Type stubs of point_set_curvatures (Python bindings of Point_set_curvatures).
+from enum import IntEnum
+from typing import Callable, Dict, Literal, Optional, Sequence, Tuple, Union
+
+import numpy as np
+import numpy.typing as npt
+
+ArrayN3 = npt.ArrayLike
+Progress = Optional[Callable[[float], Optional[bool]]]
+Vec3 = Sequence[float]
+Result = Dict[str, np.ndarray]
+Method = Literal["aso", "apss", "barycenter", "pca_plane", "pss", "jet", "wavejet", "vcm"]
+WeightKernel = Literal["smooth", "constant", "smooth_cubic", "smooth_quartic"]
+SampleWeights = Literal["uniform", "tangent_voronoi_area"]
+TileSpec = Union["TileGrid.Tile", Tuple[Vec3, Vec3, float]]
+Orientation = Union[str, Tuple[Literal["along", "towards"], Vec3]]
+
+METHODS: Tuple[str, ...]
+
+class Cancelled(RuntimeError): ...
+
+class HaloTooSmall(RuntimeError):
+    required_halo: float
+
+class Status(IntEnum):
+    VALID = 0
+    TOO_FEW_NEIGHBORS = 1
+    DEGENERATE_FIT = 2
+    NON_FINITE_POINT = 3
+    INVALID_NORMAL = 4
+    NOT_COMPUTED = 5
+    TWO_SHEETS = 6
+
+class ProjectionStatus(IntEnum):
+    CONVERGED = 0
+    NOT_CONVERGED = 1
+    TOO_FEW_NEIGHBORS = 2
+    DEGENERATE_FIT = 3
+    NON_FINITE_POINT = 4
+
+def estimate_curvatures(
+    points: ArrayN3,
+    normals: ArrayN3,
+    *,
+    method: Method = "aso",
+    radius: Optional[float] = None,
+    neighbors: Optional[int] = None,
+    threads: Optional[int] = None,
+    progress: Progress = None,
+    min_neighbors: Optional[int] = None,
+    accept_unnormalized_normals: Optional[bool] = None,
+    tile: Optional[TileSpec] = None,
+    aso_variant: Optional[Literal["robust", "paper"]] = None,
+    weight_kernel: Optional[WeightKernel] = None,
+    sample_weights: Optional[SampleWeights] = None,
+    robust_orientation: Optional[bool] = None,
+    normal_refinement: Optional[int] = None,
+    aso_projection: Optional[Literal["corrected_normal", "authors_implementation"]] = None,
+    degree_fitting: Optional[int] = None,
+    degree_monge: Optional[int] = None,
+    vcm_offset_radius: Optional[float] = None,
+) -> Result:
+    """Curvatures at every point: dict with normal (N,3), k_min, k_max, mean, gaussian,
+    min_direction (N,3), max_direction (N,3), neighbors (int64), status (uint8, Status)."""
+
+def estimate_sphere_features(
+    points: ArrayN3,
+    normals: ArrayN3,
+    *,
+    radius: Optional[float] = None,
+    neighbors: Optional[int] = None,
+    threads: Optional[int] = None,
+    progress: Progress = None,
+    weight_kernel: Optional[Literal["smooth", "constant"]] = None,
+    sample_weights: Optional[SampleWeights] = None,
+    min_neighbors: Optional[int] = None,
+    accept_unnormalized_normals: Optional[bool] = None,
+    tile: Optional[TileSpec] = None,
+) -> Result:
+    """Algebraic sphere features at every point."""
+
+def estimate_multiscale_sphere_features(
+    points: ArrayN3,
+    normals: ArrayN3,
+    radii: Sequence[float],
+    *,
+    threads: Optional[int] = None,
+    progress: Progress = None,
+    weight_kernel: Optional[Literal["smooth", "constant"]] = None,
+    min_neighbors: Optional[int] = None,
+    accept_unnormalized_normals: Optional[bool] = None,
+) -> Result:
+    """Sphere features at several radii: arrays with a leading axis len(radii)."""
+
+class AlgebraicPointSetSurface:
+    """The APSS surface of an oriented cloud: projection and features at any position."""
+    def __init__(
+        self, points: ArrayN3, normals: ArrayN3, radius: float, *,
+        weight_kernel: Literal["smooth", "constant"] = "smooth",
+    ) -> None: ...
+    @property
+    def radius(self) -> float: ...
+    @property
+    def number_of_points(self) -> int: ...
+    tolerance: float
+    max_iterations: int
+    def project(self, queries: ArrayN3, *, threads: Optional[int] = None) -> Result:
+        """dict: point (M,3), normal (M,3), iterations, neighbors, status (ProjectionStatus)."""
+    def features(self, queries: ArrayN3, *, threads: Optional[int] = None) -> Result:
+        """Sphere features fitted at each query."""
+
+def apss_smooth_point_set(
+    points: ArrayN3,
+    normals: ArrayN3,
+    radius: float,
+    *,
+    iterations: int = 1,
+    update_normals: bool = False,
+    weight_kernel: Literal["smooth", "constant"] = "smooth",
+    threads: Optional[int] = None,
+    progress: Progress = None,
+) -> Result:
+    """Bilaplacian flow: dict with points (N,3), normals (N,3), status."""
+
+def estimate_normals(
+    points: ArrayN3,
+    *,
+    neighbors: Optional[int] = None,
+    radius: Optional[float] = None,
+    orientation: Orientation = "mst",
+    threads: Optional[int] = None,
+    progress: Progress = None,
+) -> np.ndarray:
+    """Oriented unit normals (N,3), zero where none can be estimated."""
+
+class TileGrid:
+    """The library's partition of space into tiles (Tile_grid)."""
+    class Tile:
+        index: int
+        core_min: Tuple[float, float, float]
+        core_max: Tuple[float, float, float]
+        halo: float
+        def __init__(self, index: int, core_min: Vec3, core_max: Vec3, halo: float) -> None: ...
+        def halo_mask(self, points: ArrayN3) -> np.ndarray: ...
+    def __init__(
+        self, box_min: Vec3, box_max: Vec3, tile_side: Optional[float] = None, *,
+        counts: Optional[Sequence[int]] = None,
+    ) -> None: ...
+    def __len__(self) -> int: ...
+    @property
+    def counts(self) -> Tuple[int, int, int]: ...
+    def tile(self, index: int, halo: float) -> "TileGrid.Tile": ...
+    def tile_of(self, points: ArrayN3) -> np.ndarray: ...
+    def tiles_near(self, points: ArrayN3, halo: float) -> Tuple[np.ndarray, np.ndarray]: ...

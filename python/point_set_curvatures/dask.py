@@ -1,0 +1,616 @@
+# Copyright (c) 2026 The Point_set_curvatures authors.
+# SPDX-License-Identifier: LGPL-3.0-or-later
+"""Distributed estimation on a ``dask.distributed`` cluster, tile by tile.
+
+The cloud is split with the library's tiling (:class:`point_set_curvatures.TileGrid`, the
+C++ ``Tile_grid``): every finite point is own in exactly one tile, and each tile is
+estimated from its own points and every point within its halo, in input order, with the
+``tile`` option of the estimators. The result of every point is then bitwise identical to
+the single-process run (the library's guarantee, tested in ``tests/test_dask.py``).
+
+The halo is two radii with a radius (the default ASO's sample weights need two; one would do
+for the other estimators). By neighbour count a point's radius is only known once its
+neighbours are found: a tile whose halo is too small fails with
+:class:`point_set_curvatures.HaloTooSmall`, and is resubmitted with the halo it asks for.
+The ASO's default sample weights are not supported by count on tiles: use
+``aso_variant="paper"`` or ``sample_weights="uniform"`` there.
+
+:func:`estimate_curvatures` takes arrays held by the client and scatters each tile's points;
+:func:`estimate_curvatures_file` takes PLY / .npy files that the workers read themselves, tile
+by tile, writing their own points' rows of a .npy output (for clouds larger than the client).
+
+Any ``distributed.Client`` works: a ``LocalCluster`` on one machine, or a scheduler started
+across machines with ``dask-scheduler`` and ``dask-worker tcp://SCHEDULER:8786`` (every
+worker must be able to import ``point_set_curvatures``).
+"""
+
+import math
+import os
+import time
+import uuid
+
+import numpy as np
+
+from . import HaloTooSmall, Status, TileGrid, estimate_curvatures as _estimate_curvatures
+
+__all__ = ["estimate_curvatures", "estimate_curvatures_file", "read_result", "estimate_tile", "RESULT_DTYPE"]
+
+_FIELDS3 = ("normal", "min_direction", "max_direction")
+_FIELDS1 = ("k_min", "k_max", "mean", "gaussian")
+
+
+def estimate_tile(points, normals, core_min, core_max, halo, *, method="aso", radius=None, neighbors=None,
+                  threads=1, **options):
+    """Estimates one tile: ``points`` and ``normals`` hold every point of the cloud within
+    ``halo`` of the half-open box ``core_min <= p < core_max``, in input order. Returns
+    ``(own, result)``: the boolean mask of the tile's own points among the rows, and the
+    dict of :func:`point_set_curvatures.estimate_curvatures` restricted to them; or
+    ``("halo", required_halo)`` when the halo is too small (neighbourhoods by count).
+    Runs in a dask worker (``threads=1`` by default: one task per worker thread)."""
+    tile = TileGrid.Tile(-1, core_min, core_max, halo)
+    try:
+        r = _estimate_curvatures(points, normals, method=method, radius=radius, neighbors=neighbors,
+                                 threads=threads, tile=tile, **options)
+    except HaloTooSmall as e:
+        return ("halo", float(e.required_halo))
+    p = np.asarray(points)
+    lo, hi = np.asarray(core_min), np.asarray(core_max)
+    own = np.all((p >= lo) & (p < hi), axis=1)  # Tile::owns, half-open
+    return own, {k: v[own] for k, v in r.items()}
+
+
+def _tile_side(lo, hi, count):
+    """A side giving about `count` tiles over the box [lo, hi]."""
+    extent = np.maximum(np.asarray(hi) - np.asarray(lo), 0.0)
+    top = float(extent.max())
+    if not top > 0:
+        return 1.0
+    side = top
+    for _ in range(200):
+        tiles = np.prod([max(1, math.ceil(e / side)) for e in extent])
+        if tiles >= count:
+            break
+        side *= 0.9
+    return side
+
+
+def estimate_curvatures(client, points, normals, *, method="aso", radius=None, neighbors=None, tile_size=None,
+                        threads=1, retries=2, initial_halo=None, **options):
+    """Estimates curvatures on a dask.distributed cluster, one task per spatial tile; returns
+    the dict of :func:`point_set_curvatures.estimate_curvatures`, in input order, bitwise
+    equal to the single-process run.
+
+    Parameters
+    ----------
+    client : distributed.Client
+    points, normals : array_like, shape (N, 3)
+    method, radius, neighbors, **options
+        As for :func:`point_set_curvatures.estimate_curvatures` (not ``tile``, nor ``method="vcm"``,
+        nor ``normal_refinement``).
+    tile_size : float or None
+        The side of the tiles; default: about 4 tiles per worker thread, and at most about
+        500 000 points per tile.
+    threads : int or None
+        Threads of each task (default 1: the workers' threads run the tasks in parallel).
+    retries : int
+        Retries of a task whose worker fails (dask's ``retries``).
+    initial_halo : float or None
+        By neighbour count, the first halo tried (default: a guess from the density); tiles
+        that need more are resubmitted with the halo they ask for.
+    """
+    if "tile" in options:
+        raise ValueError("option 'tile' is chosen by point_set_curvatures.dask")
+    if (radius is None) == (neighbors is None):
+        raise ValueError("give exactly one of radius and neighbors")
+    points = np.asarray(points)
+    normals = np.asarray(normals)
+    if points.ndim != 2 or points.shape[1:] != (3,) or normals.shape != points.shape:
+        raise ValueError(f"points and normals must have the same shape (N, 3), got {points.shape} and {normals.shape}")
+    n = len(points)
+    # output arrays, the single-process values of non-finite points
+    out = {k: np.full((n, 3), np.nan) for k in _FIELDS3}
+    out.update({k: np.full(n, np.nan) for k in _FIELDS1})
+    out["neighbors"] = np.zeros(n, dtype=np.int64)
+    out["status"] = np.full(n, Status.NON_FINITE_POINT, dtype=np.uint8)
+    finite = np.isfinite(points).all(axis=1)
+    if not finite.any():
+        # nothing to distribute: validate the arguments as the single-process run does
+        return _estimate_curvatures(points, normals, method=method, radius=radius, neighbors=neighbors,
+                                    threads=threads, **options)
+    lo, hi = points[finite].min(axis=0), points[finite].max(axis=0)
+    if tile_size is None:
+        workers = max(1, sum(client.nthreads().values()))
+        tile_size = _tile_side(lo, hi, max(4 * workers, math.ceil(n / 500_000)))
+    grid = TileGrid(lo, hi, float(tile_size))
+    owner = grid.tile_of(points)
+    counts = np.bincount(owner, minlength=len(grid) + 1)
+    if radius is not None:
+        halo = 2.0 * float(radius)
+    elif initial_halo is not None:
+        halo = float(initial_halo)
+    else:
+        # a first guess from the density: the radius of `neighbors` points on a surface
+        area = max(float(np.prod(np.sort(hi - lo)[1:])), 1e-300)
+        halo = 2.0 * math.sqrt(area * neighbors / (math.pi * max(finite.sum(), 1)))
+
+    kwargs = dict(method=method, radius=radius, neighbors=neighbors, threads=threads, **options)
+
+    def submit(index, h):
+        tile = grid.tile(index, h)
+        sel = np.nonzero(tile.halo_mask(points))[0]
+        p, q = client.scatter([np.ascontiguousarray(points[sel]), np.ascontiguousarray(normals[sel])])
+        future = client.submit(estimate_tile, p, q, tile.core_min, tile.core_max, h, pure=False,
+                               retries=retries, **kwargs)
+        return future, sel
+
+    from distributed import as_completed
+
+    pending = {}
+    for i in range(len(grid)):
+        if counts[i]:
+            future, sel = submit(i, halo)
+            pending[future] = (i, sel, halo)
+    done = as_completed(list(pending))
+    for future in done:
+        i, sel, h = pending.pop(future)
+        result = future.result()
+        if isinstance(result, tuple) and len(result) == 2 and isinstance(result[0], str):
+            new, sel = submit(i, max(result[1], 2 * h))
+            pending[new] = (i, sel, max(result[1], 2 * h))
+            done.add(new)
+            continue
+        own, r = result
+        rows = sel[own]
+        for k, v in r.items():
+            out[k][rows] = v
+    return out
+
+
+# ---------------------------------------------------------------------------------------------
+# Clouds in files: workers read their own tiles, write their own rows.
+# ---------------------------------------------------------------------------------------------
+
+#: Rows of a block: the unit of reading (one memory map at a time) and of spatial pruning.
+BLOCK_ROWS = 1 << 17
+
+#: The record of the output file (a .npy structured array, one row per input point, in input
+#: order): the fields of :func:`point_set_curvatures.estimate_curvatures`, little-endian, packed.
+RESULT_DTYPE = np.dtype([
+    ("normal", "<f8", (3,)),
+    ("k_min", "<f8"),
+    ("k_max", "<f8"),
+    ("mean", "<f8"),
+    ("gaussian", "<f8"),
+    ("min_direction", "<f8", (3,)),
+    ("max_direction", "<f8", (3,)),
+    ("neighbors", "<i8"),
+    ("status", "u1"),
+])
+
+_XYZN = ("x", "y", "z", "nx", "ny", "nz")
+_PLY_TYPES = {
+    "char": "i1", "int8": "i1", "uchar": "u1", "uint8": "u1",
+    "short": "i2", "int16": "i2", "ushort": "u2", "uint16": "u2",
+    "int": "i4", "int32": "i4", "uint": "u4", "uint32": "u4",
+    "float": "f4", "float32": "f4", "double": "f8", "float64": "f8",
+}
+
+
+def _ply_source(path):
+    """(offset, record dtype, rows) of the vertices of a binary PLY file."""
+    with open(path, "rb") as f:
+        if f.readline().rstrip(b"\r\n") != b"ply":
+            raise ValueError(f"{path}: not a PLY file")
+        order, elements, current = None, [], None
+        while True:
+            raw = f.readline()
+            if not raw:
+                raise ValueError(f"{path}: PLY header without end_header")
+            words = raw.decode("ascii", "replace").split()
+            if not words or words[0] in ("comment", "obj_info"):
+                continue
+            if words[0] == "format":
+                if len(words) < 2 or words[1] not in ("binary_little_endian", "binary_big_endian"):
+                    raise ValueError(f"{path}: only binary PLY files are supported (got format "
+                                     f"{' '.join(words[1:2])}); convert it, e.g. to .npy")
+                order = "<" if words[1] == "binary_little_endian" else ">"
+            elif words[0] == "element" and len(words) == 3:
+                current = [words[1], int(words[2]), []]
+                elements.append(current)
+            elif words[0] == "property" and current is not None:
+                if len(words) >= 2 and words[1] == "list":
+                    current[2].append(None)  # variable size
+                elif len(words) == 3 and words[1] in _PLY_TYPES:
+                    current[2].append((words[2], words[1]))
+                else:
+                    raise ValueError(f"{path}: unsupported PLY property line {raw!r}")
+            elif words[0] == "end_header":
+                break
+            else:
+                raise ValueError(f"{path}: unsupported PLY header line {raw!r}")
+        offset = f.tell()
+    if order is None:
+        raise ValueError(f"{path}: PLY header without format line")
+    for name, count, props in elements:
+        if None in props:
+            raise ValueError(f"{path}: element '{name}' has list properties before or in the "
+                             "vertices (only fixed-size records can be read in place)")
+        dtype = np.dtype([(p, order + _PLY_TYPES[t]) for p, t in props])
+        if name == "vertex":
+            missing = [c for c in _XYZN if c not in dtype.names]
+            bad = [c for c in _XYZN if c in dtype.names and dtype[c].kind != "f"]
+            if missing or bad:
+                raise ValueError(f"{path}: the vertices need float or double properties x y z nx ny nz "
+                                 f"(missing: {missing}, not floating: {bad})")
+            return offset, dtype, count
+        offset += count * dtype.itemsize
+    raise ValueError(f"{path}: no vertex element")
+
+
+def _npy_source(path):
+    """(offset, record dtype, rows) of an (N, 6) .npy array of floats (x y z nx ny nz)."""
+    try:
+        a = np.load(path, mmap_mode="r", allow_pickle=False)
+    except ValueError as e:
+        raise ValueError(f"{path}: not a readable .npy array ({e})") from None
+    shape, dtype, offset = a.shape, a.dtype, getattr(a, "offset", 0)
+    fortran = a.ndim == 2 and not a.flags.c_contiguous
+    del a
+    if len(shape) != 2 or shape[1] != 6 or dtype.kind != "f" or dtype.fields is not None:
+        raise ValueError(f"{path}: expected a .npy array of shape (N, 6) of float32 or float64 "
+                         f"(x y z nx ny nz), got shape {shape} and dtype {dtype}")
+    if fortran and shape[0] > 1:
+        raise ValueError(f"{path}: Fortran-order .npy arrays are not supported (save a C-order array)")
+    s = dtype.itemsize
+    record = np.dtype({"names": list(_XYZN), "formats": [dtype] * 6, "offsets": [a * s for a in range(6)],
+                       "itemsize": 6 * s})
+    return offset, record, shape[0]
+
+
+def _open_sources(paths):
+    """The cloud of a file or list of files: a list of (path, offset, record dtype, rows)."""
+    if isinstance(paths, (str, bytes)) or hasattr(paths, "__fspath__"):
+        paths = [paths]
+    sources = []
+    for path in paths:
+        path = os.path.abspath(os.fspath(path))
+        with open(path, "rb") as f:
+            magic = f.read(6)
+        if magic.startswith(b"ply"):
+            offset, dtype, rows = _ply_source(path)
+        elif magic == b"\x93NUMPY":
+            offset, dtype, rows = _npy_source(path)
+        else:
+            raise ValueError(f"{path}: neither a PLY nor a .npy file")
+        size = os.path.getsize(path)
+        if size < offset + rows * dtype.itemsize:
+            raise ValueError(f"{path}: truncated ({size} bytes, the header announces "
+                             f"{offset + rows * dtype.itemsize})")
+        sources.append((path, offset, dtype, rows))
+    if not sources:
+        raise ValueError("no input file")
+    return sources
+
+
+def _blocks(sources, block_rows):
+    """Every block of the cloud: an int64 array of rows (source, first row, end row, first
+    global index)."""
+    out, base = [], 0
+    for s, (_, _, _, rows) in enumerate(sources):
+        for start in range(0, rows, block_rows):
+            out.append((s, start, min(rows, start + block_rows), base + start))
+        base += rows
+    return np.array(out, dtype=np.int64).reshape(-1, 4)
+
+
+def _read(sources, block, columns):
+    """Reads `columns` of a block as a float64 (rows, len(columns)) array (the block mapped
+    only while reading: the file's pages do not stay in the worker's memory)."""
+    s, start, stop, _ = (int(v) for v in block)
+    path, offset, dtype, _ = sources[s]
+    mm = np.memmap(path, dtype=dtype, mode="r", offset=offset + start * dtype.itemsize, shape=(stop - start,))
+    try:
+        out = np.empty((stop - start, len(columns)))
+        for a, c in enumerate(columns):
+            out[:, a] = mm[c]
+        return out
+    finally:
+        del mm
+
+
+def _scan_task(sources, blocks):
+    """Pass 1, on a worker: per block, the bounding box of its finite points and their count."""
+    lo = np.full((len(blocks), 3), np.inf)
+    hi = np.full((len(blocks), 3), -np.inf)
+    finite = np.zeros(len(blocks), dtype=np.int64)
+    for b, block in enumerate(blocks):
+        p = _read(sources, block, _XYZN[:3])
+        p = p[np.isfinite(p).all(axis=1)]
+        if len(p):
+            lo[b], hi[b], finite[b] = p.min(axis=0), p.max(axis=0), len(p)
+    return lo, hi, finite
+
+
+def _default_rows(rows, status=Status.NON_FINITE_POINT):
+    """Output records of points no tile estimates (the single-process values for non-finite
+    points): NaN, no neighbours, the given status."""
+    rec = np.zeros(rows, dtype=RESULT_DTYPE)
+    for k in _FIELDS3 + _FIELDS1:
+        rec[k] = np.nan
+    rec["status"] = status
+    return rec
+
+
+def _count_task(sources, blocks, grid_args, output):
+    """Pass 2, on a worker: the number of own points of every tile. Also writes the blocks'
+    rows of the output sequentially (allocating the file, so that the tiles' scattered writes
+    only dirty pages already there): the final values of the non-finite points (nobody's own
+    points), ``NOT_COMPUTED`` for the others until their tile writes them. Returns (counts,
+    non-finite indices)."""
+    grid = TileGrid(*grid_args)
+    counts = np.zeros(len(grid) + 1, dtype=np.int64)
+    bad = []
+    path, offset, _ = output
+    fd = os.open(path, os.O_WRONLY)
+    try:
+        for block in blocks:
+            owner = grid.tile_of(_read(sources, block, _XYZN[:3]))
+            counts += np.bincount(owner, minlength=len(grid) + 1)
+            nonfinite = owner == len(grid)
+            rec = _default_rows(len(owner), Status.NOT_COMPUTED)
+            rec["status"][nonfinite] = Status.NON_FINITE_POINT
+            data = rec.tobytes()
+            at = offset + int(block[3]) * RESULT_DTYPE.itemsize
+            while data:
+                written = os.pwrite(fd, data, at)
+                data, at = data[written:], at + written
+            if nonfinite.any():
+                bad.append(np.nonzero(nonfinite)[0] + int(block[3]))
+    finally:
+        os.close(fd)
+    bad = np.concatenate(bad) if bad else np.zeros(0, dtype=np.int64)
+    return counts[:-1], bad
+
+
+def _write_rows(output, rows, records):
+    path, offset, n = output
+    w = RESULT_DTYPE.itemsize
+    mm = np.memmap(path, dtype=np.uint8, mode="r+", offset=offset, shape=(n, w))
+    try:
+        mm[rows] = records.view(np.uint8).reshape(-1, w)  # as bytes: several times faster
+        mm.flush()
+    finally:
+        del mm
+
+
+def _peak_rss():
+    """Peak resident memory of this process so far, in bytes (Linux: ru_maxrss in KiB)."""
+    try:
+        import resource
+
+        return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
+    except (ImportError, OSError):
+        return 0
+
+
+def _file_tile_task(sources, blocks, core_min, core_max, halo, output, kwargs):
+    """A tile, on a worker: reads from the files the points of `blocks` within the halo box
+    (input order kept), estimates the tile and writes its own points' rows into the output.
+    Idempotent (a retried task rewrites the same bytes). Returns a summary, or
+    ``("halo", required_halo)``."""
+    t0 = time.perf_counter()
+    box_lo = np.asarray(core_min, dtype=float) - halo
+    box_hi = np.asarray(core_max, dtype=float) + halo
+    index, points, normals = [], [], []
+    for block in blocks:
+        p = _read(sources, block, _XYZN[:3])
+        sel = np.nonzero(np.all((p >= box_lo) & (p <= box_hi), axis=1))[0]
+        if len(sel):
+            index.append(sel + int(block[3]))
+            points.append(p[sel])
+            normals.append(_read(sources, block, _XYZN[3:])[sel])
+    if index:
+        index, points, normals = np.concatenate(index), np.concatenate(points), np.concatenate(normals)
+    else:
+        index, points, normals = np.zeros(0, dtype=np.int64), np.zeros((0, 3)), np.zeros((0, 3))
+    t1 = time.perf_counter()
+    result = estimate_tile(points, normals, core_min, core_max, halo, **kwargs)
+    t2 = time.perf_counter()
+    if isinstance(result[0], str):
+        return result
+    own, r = result
+    rows = index[own]
+    records = np.empty(len(rows), dtype=RESULT_DTYPE)
+    for k, v in r.items():
+        records[k] = v
+    _write_rows(output, rows, records)
+    t3 = time.perf_counter()
+    u = rows.astype(np.uint64)
+    return {
+        "own": len(rows),
+        "halo_points": len(index),
+        "index_sum": int(np.sum(u, dtype=np.uint64)),
+        "index_square_sum": int(np.sum(u * u, dtype=np.uint64)),  # modulo 2**64
+        "read_seconds": t1 - t0,
+        "compute_seconds": t2 - t1,
+        "write_seconds": t3 - t2,
+        "peak_rss": _peak_rss(),
+        "pid": os.getpid(),
+        "start": time.time() - (t3 - t0),
+        "stop": time.time(),
+    }
+
+
+def _release(futures):
+    for f in futures:
+        f.release()
+    futures.clear()
+
+
+def read_result(path):
+    """The output of :func:`estimate_curvatures_file` as the dict of
+    :func:`point_set_curvatures.estimate_curvatures` (views on a read-only memory map)."""
+    a = np.load(path, mmap_mode="r")
+    return {k: a[k] for k in a.dtype.names}
+
+
+def estimate_curvatures_file(client, input_path, output_path, *, method="aso", radius=None, neighbors=None,
+                             tile_size=None, threads=1, retries=2, initial_halo=None, block_rows=BLOCK_ROWS,
+                             **options):
+    """Estimates curvatures of a cloud stored in files on a dask.distributed cluster, the
+    workers reading their own tiles from the files and writing their own points' results.
+
+    Parameters
+    ----------
+    client : distributed.Client
+    input_path : path or list of paths
+        A binary PLY file (little- or big-endian; vertices with float or double properties
+        ``x y z nx ny nz``, other scalar properties ignored, no list property in or before
+        the vertex element), or a ``.npy`` array of shape (N, 6) (float32 or float64, C
+        order, columns x y z nx ny nz); a list of such files is one cloud, concatenated in
+        order.
+    output_path : path
+        Written as a ``.npy`` structured array of N records of :data:`RESULT_DTYPE` (the fields
+        of :func:`point_set_curvatures.estimate_curvatures`), row i for input point i; read it
+        with :func:`read_result` or ``np.load(path, mmap_mode="r")``.
+    method, radius, neighbors, tile_size, threads, retries, initial_halo, **options
+        As for :func:`estimate_curvatures`.
+    block_rows : int
+        Rows read at a time, and the unit of spatial pruning.
+
+    Every path must be readable (inputs) and writable (output) under the same name by the
+    client and every worker (a shared file system on a cluster). The result is bitwise equal to
+    :func:`point_set_curvatures.estimate_curvatures` on the concatenated arrays (converted to
+    float64).
+
+    Returns
+    -------
+    dict
+        A report: ``points``, ``finite_points``, ``tiles`` (tasks that estimated a non-empty
+        tile), ``resubmitted`` (tiles run again with a larger halo), ``tile_side``,
+        ``grid_counts``, ``seconds`` (per phase: ``scan``, ``count``, ``tiles``, ``total``) and
+        ``tile_reports`` (one dict per tile task: ``own``, ``halo_points``, ``read_seconds``,
+        ``compute_seconds``, ``write_seconds``, ``peak_rss`` of the worker process, ``pid``,
+        ``start``, ``stop``).
+
+    How it runs: pass 1 (tasks over groups of blocks) finds each block's bounding box; pass 2
+    counts the own points of every tile of the grid (and writes the rows of non-finite points);
+    then one task per non-empty tile reads only the blocks whose box meets the tile's halo box,
+    estimates and writes. Only paths, boxes and block numbers travel in the tasks, and only
+    summaries come back. The workers write disjoint rows of a preallocated memory-mapped
+    output rather than sending results to the client: the client then never holds more than
+    the small per-block and per-tile arrays (gathering would need the whole result, about 113
+    bytes a point, in the client), and a task retried after a lost worker rewrites the same
+    bytes. Every point is checked to be written by exactly one tile (own counts per tile, and
+    sums of the indices), else RuntimeError.
+    """
+    from distributed import as_completed
+
+    if "tile" in options:
+        raise ValueError("option 'tile' is chosen by point_set_curvatures.dask")
+    if (radius is None) == (neighbors is None):
+        raise ValueError("give exactly one of radius and neighbors")
+    block_rows = int(block_rows)
+    if block_rows < 1:
+        raise ValueError("block_rows must be positive")
+    t_start = time.perf_counter()
+    kwargs = dict(method=method, radius=radius, neighbors=neighbors, threads=threads, **options)
+    # the arguments checked here, not by every task (dask would retry a failing task)
+    _estimate_curvatures(np.zeros((0, 3)), np.zeros((0, 3)), tile=((0.0,) * 3, (1.0,) * 3, 1.0), **kwargs)
+    sources = _open_sources(input_path)
+    blocks = _blocks(sources, block_rows)
+    n = sum(s[3] for s in sources)
+    output_path = os.path.abspath(os.fspath(output_path))
+    out = np.lib.format.open_memmap(output_path, mode="w+", dtype=RESULT_DTYPE, shape=(n,))
+    output = (output_path, out.offset, n)
+    del out
+    nthreads = max(1, sum(client.nthreads().values()))
+    token = uuid.uuid4().hex[:8]
+    groups = np.array_split(np.arange(len(blocks)), max(1, min(len(blocks), 4 * nthreads))) if len(blocks) else []
+
+    # pass 1: bounding boxes of the blocks
+    futures = [client.submit(_scan_task, sources, blocks[g], key=f"psc-scan-{token}-{j}", retries=retries)
+               for j, g in enumerate(groups)]
+    scans = client.gather(futures)
+    _release(futures)
+    block_lo = np.concatenate([s[0] for s in scans]) if scans else np.zeros((0, 3))
+    block_hi = np.concatenate([s[1] for s in scans]) if scans else np.zeros((0, 3))
+    finite = int(sum(s[2].sum() for s in scans))
+    t_scan = time.perf_counter()
+    report = {"points": n, "finite_points": finite, "tiles": 0, "resubmitted": 0, "tile_side": None,
+              "grid_counts": None, "tile_reports": []}
+    if finite == 0:
+        if n:
+            _write_rows(output, np.arange(n), _default_rows(n))
+        t = time.perf_counter() - t_start
+        report["seconds"] = {"scan": t_scan - t_start, "count": 0.0, "tiles": 0.0, "total": t}
+        return report
+    lo, hi = block_lo.min(axis=0), block_hi.max(axis=0)
+    if tile_size is None:
+        tile_size = _tile_side(lo, hi, max(4 * nthreads, math.ceil(finite / 500_000)))
+    grid_args = (tuple(lo), tuple(hi), float(tile_size))
+    grid = TileGrid(*grid_args)
+
+    # pass 2: own points per tile
+    futures = [client.submit(_count_task, sources, blocks[g], grid_args, output, key=f"psc-count-{token}-{j}",
+                             retries=retries) for j, g in enumerate(groups)]
+    counted = client.gather(futures)
+    # forgotten before any tile runs: a count task recomputed after a worker loss (the scheduler
+    # recomputes lost results still referenced) would overwrite the tiles' rows
+    _release(futures)
+    counts = sum(c[0] for c in counted)
+    nonfinite = np.concatenate([c[1] for c in counted])
+    t_count = time.perf_counter()
+    if int(counts.sum()) != finite or len(nonfinite) != n - finite:
+        raise RuntimeError("point_set_curvatures.dask: the passes over the files disagree (files modified?)")
+
+    if radius is not None:
+        halo = 2.0 * float(radius)
+    elif initial_halo is not None:
+        halo = float(initial_halo)
+    else:
+        area = max(float(np.prod(np.sort(hi - lo)[1:])), 1e-300)
+        halo = 2.0 * math.sqrt(area * neighbors / (math.pi * finite))
+
+    def submit(i, h):
+        tile = grid.tile(i, h)
+        box_lo = np.asarray(tile.core_min) - h
+        box_hi = np.asarray(tile.core_max) + h
+        near = np.all((block_hi >= box_lo) & (block_lo <= box_hi), axis=1)
+        return client.submit(_file_tile_task, sources, blocks[near], tile.core_min, tile.core_max, h, output,
+                             kwargs, key=f"psc-tile-{token}-{i}-{h!r}", retries=retries)
+
+    pending = {}
+    for i in np.nonzero(counts)[0]:
+        pending[submit(int(i), halo)] = (int(i), halo)
+    done = as_completed(list(pending))
+    index_sum = index_square_sum = 0
+    for future in done:
+        i, h = pending.pop(future)
+        result = future.result()
+        future.release()
+        if isinstance(result, tuple):
+            h = max(result[1], 2 * h)
+            new = submit(i, h)
+            pending[new] = (i, h)
+            done.add(new)
+            report["resubmitted"] += 1
+            continue
+        if result["own"] != counts[i]:
+            raise RuntimeError(f"point_set_curvatures.dask: tile {i} wrote {result['own']} points, "
+                               f"{counts[i]} expected")
+        result["tile"] = i
+        report["tile_reports"].append(result)
+        index_sum += result["index_sum"]
+        index_square_sum += result["index_square_sum"]
+    t_tiles = time.perf_counter()
+    # every finite index exactly once: counts above, sums here (the squares modulo 2**64)
+    bad = [int(v) for v in nonfinite]
+    expected_sum = n * (n - 1) // 2 - sum(bad)
+    expected_squares = ((n - 1) * n * (2 * n - 1) // 6 - sum(v * v for v in bad)) % (1 << 64)
+    if index_sum != expected_sum or index_square_sum % (1 << 64) != expected_squares:
+        raise RuntimeError("point_set_curvatures.dask: the tiles did not write every point exactly once")
+    report.update(tiles=len(report["tile_reports"]), tile_side=float(tile_size), grid_counts=tuple(grid.counts))
+    report["seconds"] = {"scan": t_scan - t_start, "count": t_count - t_scan, "tiles": t_tiles - t_count,
+                         "total": t_tiles - t_start}
+    return report

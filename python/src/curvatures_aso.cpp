@@ -1,0 +1,37 @@
+// Copyright (c) 2026 The Point_set_curvatures authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Python bindings: the Algebraic Shape Operator (its own translation unit: the heaviest).
+
+#include "common.h"
+
+#include <CGAL/estimate_aso_curvatures.h>
+
+namespace psc_py {
+
+std::vector<Estimate> estimate_aso(const Cloud& cloud, const Scale& s, const Options& o, const Tile_arg& t,
+                                   bool parallel, const Callback& cb)
+{
+  namespace P = CGAL::Point_set_curvatures::parameters;
+  const bool paper = o.aso_variant == 0;
+  // The defaults of the variant (aso_estimator_from), passed explicitly.
+  const CGAL::Apss_weight_kernel kernel =
+    o.weight_kernel >= 0 ? CGAL::Apss_weight_kernel(o.weight_kernel)
+                         : (paper ? CGAL::Apss_weight_kernel::SMOOTH : CGAL::Apss_weight_kernel::SMOOTH_CUBIC);
+  const CGAL::Sample_weights weights =
+    o.sample_weights >= 0 ? CGAL::Sample_weights(o.sample_weights)
+                          : (paper ? CGAL::Sample_weights::UNIFORM : CGAL::Sample_weights::TANGENT_VORONOI_AREA);
+  const bool robust = o.robust_orientation >= 0 ? o.robust_orientation != 0 : !paper;
+  const auto np = common_parameters(s, o, cb, CGAL::Point_set_curvatures::internal::default_min_neighbors::aso,
+    [&](const auto& base) {
+      return P::aso_variant(paper ? CGAL::Aso_variant::PAPER : CGAL::Aso_variant::ROBUST,
+             P::weight_kernel(kernel,
+             P::sample_weights(weights,
+             P::robust_orientation(robust,
+             P::normal_refinement(static_cast<std::size_t>(o.normal_refinement),
+             P::aso_projection(CGAL::Aso_projection(o.aso_projection), base))))));
+    });
+  return dispatch(cloud, s, t, parallel, np, PSC_PY_FUNCTION(estimate_aso_curvatures));
+}
+
+} // namespace psc_py

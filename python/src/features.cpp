@@ -1,0 +1,87 @@
+// Copyright (c) 2026 The Point_set_curvatures authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Python bindings: the algebraic sphere features, the flow and the normal estimation.
+
+#include "features.h"
+
+#include <CGAL/apss_smooth_point_set.h>
+#include <CGAL/estimate_oriented_normals.h>
+
+namespace psc_py {
+
+namespace {
+
+CGAL::Apss_weight_kernel sphere_kernel(const Options& o)
+{
+  return o.weight_kernel >= 0 ? CGAL::Apss_weight_kernel(o.weight_kernel) : CGAL::Apss_weight_kernel::SMOOTH;
+}
+
+} // namespace
+
+std::vector<Features> sphere_features(const Cloud& cloud, const Scale& s, const Options& o, const Tile_arg& t,
+                                      bool parallel, const Callback& cb)
+{
+  namespace P = CGAL::Point_set_curvatures::parameters;
+  const CGAL::Sample_weights weights =
+    o.sample_weights >= 0 ? CGAL::Sample_weights(o.sample_weights) : CGAL::Sample_weights::UNIFORM;
+  const auto np = common_parameters(s, o, cb,
+    CGAL::Point_set_curvatures::internal::default_min_neighbors::sphere_features,
+    [&](const auto& base) { return P::weight_kernel(sphere_kernel(o), P::sample_weights(weights, base)); });
+  return dispatch(cloud, s, t, parallel, np, PSC_PY_FUNCTION(estimate_algebraic_sphere_features));
+}
+
+std::vector<std::vector<Features> > multiscale_sphere_features(const Cloud& cloud, const std::vector<double>& radii,
+                                                               const Options& o, bool parallel, const Callback& cb)
+{
+  namespace P = CGAL::Point_set_curvatures::parameters;
+  const Scale by_radius;  // neighbor_count(0): the multi-scale function refuses a count
+  const CGAL::Sample_weights weights =
+    o.sample_weights >= 0 ? CGAL::Sample_weights(o.sample_weights) : CGAL::Sample_weights::UNIFORM;
+  const auto np = common_parameters(by_radius, o, cb,
+    CGAL::Point_set_curvatures::internal::default_min_neighbors::sphere_features,
+    [&](const auto& base) { return P::weight_kernel(sphere_kernel(o), P::sample_weights(weights, base)); });
+  if(parallel)
+    return CGAL::estimate_multiscale_algebraic_sphere_features<CGAL::Parallel_tag>(cloud, radii, np);
+  return CGAL::estimate_multiscale_algebraic_sphere_features<CGAL::Sequential_tag>(cloud, radii, np);
+}
+
+std::vector<CGAL::Curvature_estimate_status> smooth_point_set(Cloud& cloud, double radius, long long iterations,
+                                                              bool update_normals, const Options& o, bool parallel,
+                                                              const Callback& cb)
+{
+  namespace P = CGAL::Point_set_curvatures::parameters;
+  // number_of_iterations is read as a signed integer and checked by the function.
+  const auto np = P::weight_kernel(sphere_kernel(o),
+                    P::update_normals(update_normals,
+                      CGAL::parameters::point_map(CGAL::First_of_pair_property_map<Oriented>())
+                        .normal_map(CGAL::Second_of_pair_property_map<Oriented>())
+                        .callback(cb)
+                        .number_of_iterations(iterations)));
+  if(parallel)
+    return CGAL::apss_smooth_point_set<CGAL::Parallel_tag>(cloud, radius, np);
+  return CGAL::apss_smooth_point_set<CGAL::Sequential_tag>(cloud, radius, np);
+}
+
+std::size_t oriented_normals(Cloud& cloud, const Scale& s, int orientation, const double target[3], bool parallel,
+                             const Callback& cb)
+{
+  namespace P = CGAL::Point_set_curvatures::parameters;
+  CGAL::Normal_orientation o = CGAL::Normal_orientation::minimum_spanning_tree();
+  if(orientation == 1)
+    o = CGAL::Normal_orientation::along_vector(target[0], target[1], target[2]);
+  else if(orientation == 2)
+    o = CGAL::Normal_orientation::towards_point(target[0], target[1], target[2]);
+  const auto np = P::normal_orientation(o,
+                    P::neighbor_count(s.by_count ? s.k : 0,
+                      CGAL::parameters::point_map(CGAL::First_of_pair_property_map<Oriented>())
+                        .normal_map(CGAL::Second_of_pair_property_map<Oriented>())
+                        .callback(cb)));
+  if(parallel)
+    return s.by_count ? CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(cloud, np)
+                      : CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(cloud, s.radius, np);
+  return s.by_count ? CGAL::estimate_oriented_normals<CGAL::Sequential_tag>(cloud, np)
+                    : CGAL::estimate_oriented_normals<CGAL::Sequential_tag>(cloud, s.radius, np);
+}
+
+} // namespace psc_py

@@ -1,0 +1,32 @@
+// Copyright (c) 2026 The Point_set_curvatures authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Python bindings: the algebraic sphere features, the flow and the normal estimation
+// (implemented in features.cpp).
+
+#ifndef PSC_PYTHON_FEATURES_H
+#define PSC_PYTHON_FEATURES_H
+
+#include "common.h"
+
+#include <CGAL/estimate_algebraic_sphere_features.h>
+
+namespace psc_py {
+
+typedef CGAL::Algebraic_sphere_features<K> Features;
+
+std::vector<Features> sphere_features(const Cloud&, const Scale&, const Options&, const Tile_arg&, bool parallel,
+                                      const Callback&);
+std::vector<std::vector<Features> > multiscale_sphere_features(const Cloud&, const std::vector<double>& radii,
+                                                               const Options&, bool parallel, const Callback&);
+// The flow moves the points (and the normals with update_normals) of `cloud` in place.
+std::vector<CGAL::Curvature_estimate_status> smooth_point_set(Cloud& cloud, double radius, long long iterations,
+                                                              bool update_normals, const Options&, bool parallel,
+                                                              const Callback&);
+// Writes the normals into cloud[i].second; orientation: 0 spanning tree, 1 along, 2 towards.
+std::size_t oriented_normals(Cloud& cloud, const Scale&, int orientation, const double target[3], bool parallel,
+                             const Callback&);
+
+} // namespace psc_py
+
+#endif

@@ -1,0 +1,294 @@
+# Copyright (c) 2026 The Point_set_curvatures authors.
+# SPDX-License-Identifier: LGPL-3.0-or-later
+"""Tests of point_set_curvatures.estimate_curvatures: analytic values, the C++ API bit for
+bit, dtypes and layouts, bad input, progress and cancellation, determinism, tiles."""
+
+import threading
+
+import numpy as np
+import pytest
+
+import point_set_curvatures as psc
+from conftest import fibonacci_sphere
+
+FIELDS = ("normal", "k_min", "k_max", "mean", "gaussian", "min_direction", "max_direction", "neighbors", "status")
+
+
+def assert_same(a, b, fields=FIELDS):
+    """Bitwise equality of two results (NaN equal to NaN)."""
+    for f in fields:
+        x, y = np.asarray(a[f]), np.asarray(b[f])
+        assert x.dtype == y.dtype and x.shape == y.shape, f
+        assert np.array_equal(x.view(np.uint8), y.view(np.uint8)), f
+
+
+# ---- analytic values ----
+
+@pytest.mark.parametrize("method", ["aso", "pss", "jet", "wavejet"])
+def test_sphere_full_tensor(sphere, method):
+    points, normals = sphere
+    r = psc.estimate_curvatures(points, normals, method=method, radius=0.25)
+    valid = r["status"] == psc.Status.VALID
+    assert valid.all()
+    tol = 1e-9 if method == "aso" else 5e-3
+    for f, value in (("k_min", 0.5), ("k_max", 0.5), ("mean", 0.5), ("gaussian", 0.25)):
+        assert np.abs(r[f] - value).max() < tol, f
+    assert np.abs(np.einsum("ij,ij->i", r["normal"], normals) - 1).max() < 1e-6
+    # directions: unit, tangent, orthogonal
+    for d in ("min_direction", "max_direction"):
+        assert np.allclose(np.linalg.norm(r[d], axis=1), 1)
+        assert np.abs(np.einsum("ij,ij->i", r[d], r["normal"])).max() < 1e-6
+
+
+def test_sphere_signs(sphere):
+    points, normals = sphere
+    out = psc.estimate_curvatures(points, normals, radius=0.25)
+    inward = psc.estimate_curvatures(points, -normals, radius=0.25)
+    assert np.allclose(out["mean"], 0.5, atol=1e-12) and np.allclose(inward["mean"], -0.5, atol=1e-12)
+    assert np.allclose(inward["k_min"], -0.5, atol=1e-12) and np.allclose(inward["k_max"], -0.5, atol=1e-12)
+    assert np.allclose(inward["gaussian"], 0.25, atol=1e-12)
+    apss = psc.estimate_curvatures(points, normals, method="apss", radius=0.25)
+    assert np.allclose(apss["mean"], 0.5, atol=1e-12)
+    assert np.isnan(apss["k_min"]).all()  # a sphere fit has no principal curvatures
+
+
+@pytest.mark.parametrize("method", ["barycenter", "pca_plane", "vcm"])
+def test_sphere_unsigned_baselines(sphere, method):
+    points, normals = sphere
+    r = psc.estimate_curvatures(points[:5000] * 1.0, normals[:5000], method=method, radius=0.5)
+    valid = r["status"] == psc.Status.VALID
+    assert valid.sum() > 4000
+    if method == "vcm":
+        assert (r["k_max"][valid] >= 0).all() and np.isnan(r["mean"]).all()
+    else:
+        assert (r["mean"][valid] >= 0).all()
+
+
+# ---- the C++ API, bit for bit ----
+
+CPP_CASES = [
+    ("aso_r1.5", dict(radius=1.5)),
+    ("aso_paper_r1.5", dict(radius=1.5, threads=1, aso_variant="paper")),
+    ("aso_k30", dict(neighbors=30)),
+    ("aso_quartic_authors_r1.5", dict(radius=1.5, weight_kernel="smooth_quartic",
+                                      aso_projection="authors_implementation", min_neighbors=20)),
+    ("apss_r1.5", dict(method="apss", radius=1.5)),
+    ("pss_r1.5", dict(method="pss", radius=1.5)),
+    ("jet_r1.5_d3", dict(method="jet", radius=1.5, degree_fitting=3, degree_monge=2)),
+]
+
+
+@pytest.mark.parametrize("name,kwargs", CPP_CASES, ids=[c[0] for c in CPP_CASES])
+def test_same_as_cpp(reference, name, kwargs):
+    points, normals, load = reference
+    ref = load(name, 15)
+    r = psc.estimate_curvatures(points, normals, **kwargs)
+    expected = {
+        "normal": ref[:, 0:3], "k_min": ref[:, 3], "k_max": ref[:, 4], "mean": ref[:, 5],
+        "gaussian": ref[:, 6], "min_direction": ref[:, 7:10], "max_direction": ref[:, 10:13],
+        "neighbors": ref[:, 13].astype(np.int64), "status": ref[:, 14].astype(np.uint8),
+    }
+    assert (r["status"] == psc.Status.VALID).sum() > 9000
+    assert_same(r, {k: np.ascontiguousarray(v) for k, v in expected.items()})
+
+
+def test_same_as_cpp_features_and_normals(reference):
+    points, normals, load = reference
+    ref = load("features_r1.5", 6)
+    f = psc.estimate_sphere_features(points, normals, radius=1.5)
+    for j, name in enumerate(("u_c", "u_q", "anisotropy", "geometric_variation")):
+        assert np.array_equal(f[name], ref[:, j], equal_nan=True), name
+    assert np.array_equal(f["neighbors"], ref[:, 4].astype(np.int64))
+    assert np.array_equal(f["status"], ref[:, 5].astype(np.uint8))
+    n = psc.estimate_normals(points)
+    assert np.array_equal(n, load("normals_k18", 3))
+
+
+# ---- dtypes and memory layouts ----
+
+def test_dtype_and_layout_variants(sphere):
+    points, normals = sphere
+    p32, n32 = points.astype(np.float32), normals.astype(np.float32)
+    base = psc.estimate_curvatures(p32.astype(np.float64), n32.astype(np.float64), radius=0.25)
+    assert_same(base, psc.estimate_curvatures(p32, n32, radius=0.25))
+    assert_same(base, psc.estimate_curvatures(np.asfortranarray(p32), np.asfortranarray(n32), radius=0.25))
+    p64f, n64f = np.asfortranarray(p32.astype(np.float64)), np.asfortranarray(n32.astype(np.float64))
+    assert_same(base, psc.estimate_curvatures(p64f, n64f, radius=0.25))
+    # non-contiguous views: every other column of a wider array, every other row
+    wide = np.zeros((len(points), 6))
+    wide[:, ::2] = p32
+    assert not wide[:, ::2].flags.c_contiguous
+    assert_same(base, psc.estimate_curvatures(wide[:, ::2], n32, radius=0.25))
+    half = psc.estimate_curvatures(points[::2], normals[::2], radius=0.35)
+    assert_same(half, psc.estimate_curvatures(points[::2].copy(), normals[::2].copy(), radius=0.35))
+    # mixed dtypes, lists
+    assert_same(base, psc.estimate_curvatures(p32, n32.astype(np.float64), radius=0.25))
+    small = psc.estimate_curvatures(points[:100].tolist(), normals[:100].tolist(), radius=0.9)
+    assert_same(small, psc.estimate_curvatures(points[:100], normals[:100], radius=0.9))
+
+
+# ---- bad input ----
+
+def test_bad_shapes_and_types(sphere):
+    points, normals = sphere
+    p, n = points[:200], normals[:200]
+    for bad in (p[:, :2], p[:, 0], p.reshape(100, 2, 3), np.zeros((200, 4))):
+        with pytest.raises(ValueError, match="shape"):
+            psc.estimate_curvatures(bad, n, radius=1)
+        with pytest.raises(ValueError, match="shape"):
+            psc.estimate_curvatures(p, bad, radius=1)
+    with pytest.raises(ValueError, match="same number of rows"):
+        psc.estimate_curvatures(p, n[:100], radius=1)
+    with pytest.raises(TypeError, match="dtype"):
+        psc.estimate_curvatures(p.astype(np.int32), n, radius=1)
+    with pytest.raises(TypeError, match="dtype"):
+        psc.estimate_curvatures(p.astype(">f8"), n, radius=1)
+    with pytest.raises(ValueError):
+        psc.estimate_curvatures("abc", n, radius=1)
+
+
+@pytest.mark.parametrize("radius", [float("nan"), 0.0, -1.0, float("inf")])
+def test_bad_radius(sphere, radius):
+    points, normals = sphere
+    with pytest.raises(ValueError, match="radius"):
+        psc.estimate_curvatures(points[:100], normals[:100], radius=radius)
+
+
+def test_bad_arguments(sphere):
+    points, normals = sphere
+    p, n = points[:300], normals[:300]
+    cases = [
+        dict(radius=1, neighbors=10), dict(), dict(neighbors=0), dict(neighbors=2.5),
+        dict(radius=1, threads=0), dict(radius=1, method="nope"), dict(radius=1, unknown=3),
+        dict(radius=1, method="pss", robust_orientation=True), dict(radius=1, aso_variant="fast"),
+        dict(radius=1, method="jet", degree_monge=5), dict(radius=1, weight_kernel="constant"),
+        dict(radius=1, method="vcm", tile=((0, 0, 0), (1, 1, 1), 2)), dict(radius=1, min_neighbors=-1),
+        dict(radius=1, robust_orientation=1), dict(radius=1, progress=3), dict(radius="big"),
+    ]
+    for kwargs in cases:
+        with pytest.raises(ValueError):
+            psc.estimate_curvatures(p, n, **kwargs)
+    # the C++ message is kept
+    with pytest.raises(ValueError, match="degree_monge"):
+        psc.estimate_curvatures(p, n, radius=1, method="jet", degree_monge=5)
+    with pytest.raises(ValueError, match="CONSTANT is not supported"):
+        psc.estimate_curvatures(p, n, radius=1, weight_kernel="constant")
+
+
+def test_empty_and_invalid_points(sphere):
+    for method in psc.METHODS:
+        r = psc.estimate_curvatures(np.zeros((0, 3)), np.zeros((0, 3)), method=method, radius=1.0)
+        assert r["normal"].shape == (0, 3) and r["mean"].shape == (0,) and r["status"].dtype == np.uint8
+    points, normals = (a[:2000].copy() for a in sphere)
+    points[0] = np.nan
+    normals[1] = 0
+    normals[2] = 1e6  # implausible length
+    r = psc.estimate_curvatures(points, normals, radius=0.5)
+    assert r["status"][0] == psc.Status.NON_FINITE_POINT
+    assert r["status"][1] == psc.Status.INVALID_NORMAL and r["status"][2] == psc.Status.INVALID_NORMAL
+    for f in ("normal", "k_min", "k_max", "mean", "gaussian", "min_direction", "max_direction"):
+        assert np.isnan(r[f][:3]).all(), f
+    r = psc.estimate_curvatures(points, normals, radius=0.5, accept_unnormalized_normals=True)
+    assert r["status"][2] == psc.Status.VALID
+    few = psc.estimate_curvatures(points, normals, radius=0.5, min_neighbors=10**6)
+    assert (few["status"][3:] == psc.Status.TOO_FEW_NEIGHBORS).all() and (few["neighbors"][3:] > 0).all()
+
+
+# ---- progress, cancellation, threads ----
+
+def test_progress_and_cancel(sphere):
+    points, normals = sphere
+    seen, threads = [], set()
+
+    def progress(f):
+        seen.append(f)
+        threads.add(threading.get_ident())
+
+    full = psc.estimate_curvatures(points, normals, radius=0.25, progress=progress)
+    assert len(seen) >= 3 and seen[-1] == 1.0 and all(a <= b for a, b in zip(seen, seen[1:]))
+    assert threads == {threading.get_ident()}  # on the calling thread
+    calls = []
+
+    def stop(f):
+        calls.append(f)
+        return f < 0.3
+
+    with pytest.raises(psc.Cancelled):
+        psc.estimate_curvatures(points, normals, radius=0.25, progress=stop)
+    assert calls[-1] >= 0.3 and calls[-1] < 1.0
+    assert issubclass(psc.Cancelled, RuntimeError)
+
+    def fails(f):
+        raise KeyError("from progress")
+
+    with pytest.raises(KeyError, match="from progress"):
+        psc.estimate_curvatures(points, normals, radius=0.25, progress=fails)
+    # the module is still usable, and True / None continue
+    assert_same(full, psc.estimate_curvatures(points, normals, radius=0.25, progress=lambda f: True))
+
+
+@pytest.mark.parametrize("method", ["aso", "apss", "barycenter", "pca_plane", "pss", "jet", "wavejet"])
+def test_sequential_equals_parallel(method):
+    points, normals = fibonacci_sphere(6000, radius=1.5)
+    kwargs = dict(method=method, radius=0.15 if method != "barycenter" else 0.2)
+    seq = psc.estimate_curvatures(points, normals, threads=1, **kwargs)
+    assert_same(seq, psc.estimate_curvatures(points, normals, **kwargs))
+    assert_same(seq, psc.estimate_curvatures(points, normals, threads=2, **kwargs))
+    knn = psc.estimate_curvatures(points, normals, method=method, neighbors=30, threads=1)
+    assert_same(knn, psc.estimate_curvatures(points, normals, method=method, neighbors=30))
+
+
+def test_vcm_threads_close():
+    points, normals = fibonacci_sphere(3000, radius=1.5)
+    a = psc.estimate_curvatures(points, normals, method="vcm", radius=0.3, threads=1)
+    b = psc.estimate_curvatures(points, normals, method="vcm", radius=0.3, vcm_offset_radius=0.3)
+    assert np.array_equal(a["status"], b["status"])
+    assert np.allclose(a["k_max"], b["k_max"], rtol=1e-9, atol=1e-7, equal_nan=True)
+
+
+def test_gil_released(sphere):
+    """Another Python thread runs while an estimation computes."""
+    points, normals = sphere
+    ticks = []
+    done = threading.Event()
+
+    def tick():
+        while not done.is_set():
+            ticks.append(1)
+            done.wait(0.001)
+
+    t = threading.Thread(target=tick)
+    t.start()
+    try:
+        psc.estimate_curvatures(points, normals, method="pss", radius=0.3, threads=1)
+    finally:
+        done.set()
+        t.join()
+    assert len(ticks) > 5
+
+
+# ---- tiles ----
+
+def test_tiles_bitwise(reference):
+    points, normals, _ = reference
+    full = psc.estimate_curvatures(points, normals, radius=1.5)
+    grid = psc.TileGrid(points.min(axis=0), points.max(axis=0), counts=(2, 2, 2))
+    owner = grid.tile_of(points)
+    out = {k: np.full_like(v, 255 if k == "status" else 0) for k, v in full.items()}
+    for i in range(len(grid)):
+        tile = grid.tile(i, 2 * 1.5)  # the default ASO's sample weights need two radii
+        sel = np.nonzero(tile.halo_mask(points))[0]
+        r = psc.estimate_curvatures(points[sel], normals[sel], radius=1.5, tile=tile)
+        own = owner[sel] == i
+        assert (r["status"][~own] == psc.Status.NOT_COMPUTED).all()
+        for k in out:
+            out[k][sel[own]] = r[k][own]
+    assert_same(full, out)
+    # by count (uniform sample weights): a tiny halo is too small
+    tile = grid.tile(0, 1e-3)
+    sel = np.nonzero(tile.halo_mask(points))[0]
+    with pytest.raises(psc.HaloTooSmall) as e:
+        psc.estimate_curvatures(points[sel], normals[sel], neighbors=30, aso_variant="paper", tile=tile)
+    assert e.value.required_halo > 1e-3
+    with pytest.raises(ValueError, match="halo"):
+        psc.estimate_curvatures(points[sel], normals[sel], radius=1.5, tile=tile)

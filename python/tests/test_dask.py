@@ -1,0 +1,222 @@
+# Copyright (c) 2026 The Point_set_curvatures authors.
+# SPDX-License-Identifier: LGPL-3.0-or-later
+"""point_set_curvatures.dask on a LocalCluster of 2 worker processes: bitwise equal to the
+single-process run."""
+
+import numpy as np
+import pytest
+
+import point_set_curvatures as psc
+from conftest import fibonacci_sphere
+
+distributed = pytest.importorskip("distributed")
+import point_set_curvatures.dask as psc_dask  # noqa: E402
+
+
+@pytest.fixture(scope="module")
+def client():
+    cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                       dashboard_address=None, silence_logs=40)
+    c = distributed.Client(cluster)
+    yield c
+    c.close()
+    cluster.close()
+
+
+@pytest.fixture(scope="module")
+def cloud():
+    points, normals = fibonacci_sphere(200_000, radius=1.0, center=(3.0, -2.0, 1.0))
+    rng = np.random.default_rng(5)
+    order = rng.permutation(len(points))  # input order unrelated to space
+    points, normals = points[order], normals[order]
+    points[17] = np.nan  # a non-finite point: nobody's own point
+    return points, normals
+
+
+def assert_same(a, b):
+    assert set(a) == set(b)
+    for k in a:
+        assert a[k].dtype == b[k].dtype and a[k].shape == b[k].shape, k
+        assert np.array_equal(a[k].view(np.uint8), b[k].view(np.uint8)), k
+
+
+def test_dask_by_radius(client, cloud):
+    points, normals = cloud
+    single = psc.estimate_curvatures(points, normals, radius=0.03)
+    assert (single["status"] == psc.Status.VALID).sum() == len(points) - 1
+    assert_same(single, psc_dask.estimate_curvatures(client, points, normals, radius=0.03))
+    # more, smaller tiles
+    assert_same(single, psc_dask.estimate_curvatures(client, points, normals, radius=0.03, tile_size=0.4))
+
+
+def test_dask_by_count_and_methods(client, cloud):
+    points, normals = cloud
+    single = psc.estimate_curvatures(points, normals, neighbors=30, aso_variant="paper")
+    # a small first halo: the tiles that need more are resubmitted (HaloTooSmall)
+    assert_same(single, psc_dask.estimate_curvatures(client, points, normals, neighbors=30, aso_variant="paper",
+                                                     tile_size=0.5, initial_halo=1e-3))
+    apss = psc.estimate_curvatures(points, normals, method="pss", radius=0.03)
+    assert_same(apss, psc_dask.estimate_curvatures(client, points, normals, method="pss", radius=0.03))
+
+
+def test_estimate_tile_halo_too_small(cloud):
+    points, normals = cloud
+    grid = psc.TileGrid((2, -3, 0), (4, -1, 2), counts=(2, 2, 2))
+    t = grid.tile(0, 1e-4)
+    sel = t.halo_mask(points)
+    r = psc_dask.estimate_tile(points[sel], normals[sel], t.core_min, t.core_max, t.halo, neighbors=30,
+                               aso_variant="paper")
+    assert r[0] == "halo" and r[1] > 1e-4
+
+
+# ---------------------------------------------------------------------------------------------
+# The file variant: workers read their tiles from PLY / .npy files and write a .npy output.
+# ---------------------------------------------------------------------------------------------
+
+import os  # noqa: E402
+import sys  # noqa: E402
+
+
+def write_ply(path, points, normals, dtype="double", extra=True):
+    """A binary little-endian PLY: vertices x y z nx ny nz (+ an 'intensity' uchar and a face
+    element after the vertices with extra=True)."""
+    n = len(points)
+    fields = [(c, "<f8" if dtype == "double" else "<f4") for c in ("x", "y", "z", "nx", "ny", "nz")]
+    if extra:
+        fields.insert(3, ("intensity", "u1"))
+    rec = np.zeros(n, dtype=np.dtype(fields))
+    for a, c in enumerate("xyz"):
+        rec[c] = points[:, a]
+        rec["n" + c] = normals[:, a]
+    header = ["ply", "format binary_little_endian 1.0", "comment written by test_dask", f"element vertex {n}"]
+    for name, t in fields:
+        header.append(f"property {'uchar' if t == 'u1' else dtype} {name}")
+    if extra:
+        header += ["element face 1", "property list uchar int vertex_indices"]
+    header.append("end_header")
+    with open(path, "wb") as f:
+        f.write(("\n".join(header) + "\n").encode())
+        f.write(rec.tobytes())
+        if extra:
+            f.write(np.array([3], np.uint8).tobytes() + np.array([0, 1, 2], "<i4").tobytes())
+
+
+def read_output(path):
+    return {k: np.ascontiguousarray(v) for k, v in psc_dask.read_result(path).items()}
+
+
+N_BIG = 1_000_000
+R_BIG = 3.6 * np.sqrt(4 * np.pi / N_BIG)  # about 41 neighbours
+
+
+@pytest.fixture(scope="module")
+def big_files(tmp_path_factory):
+    """1M points of a sphere in random order (a NaN and an infinite point among them), split
+    into a PLY file and a .npy file; the single-process result on the concatenation."""
+    points, normals = fibonacci_sphere(N_BIG, radius=1.0, center=(3.0, -2.0, 1.0))
+    order = np.random.default_rng(7).permutation(N_BIG)
+    points, normals = points[order], normals[order]
+    points[123] = np.nan
+    points[456_789] = (np.inf, 0.0, 0.0)
+    d = tmp_path_factory.mktemp("dask_files")
+    split = 400_000
+    write_ply(d / "part1.ply", points[:split], normals[:split])
+    np.save(d / "part2.npy", np.hstack([points[split:], normals[split:]]))
+    single = psc.estimate_curvatures(points, normals, radius=R_BIG)
+    assert (single["status"] == psc.Status.VALID).sum() == N_BIG - 2
+    return [str(d / "part1.ply"), str(d / "part2.npy")], single, d
+
+
+def check_report(report, n_finite):
+    tiles = [t["tile"] for t in report["tile_reports"]]
+    assert len(tiles) == len(set(tiles)) == report["tiles"] > 1  # one report per tile
+    assert sum(t["own"] for t in report["tile_reports"]) == n_finite
+
+
+def test_file_1m_bitwise(client, big_files):
+    paths, single, d = big_files
+    report = psc_dask.estimate_curvatures_file(client, paths, d / "out.npy", radius=R_BIG)
+    assert report["points"] == N_BIG and report["finite_points"] == N_BIG - 2
+    check_report(report, N_BIG - 2)
+    assert_same(single, read_output(d / "out.npy"))
+
+
+class KillOnce(distributed.WorkerPlugin):
+    """Kills its worker process (os._exit) as the first tile task starts executing anywhere in
+    the cluster, once: a marker file records it. At once rather than after a delay: a tile of
+    the test takes about 0.1 s, and a kill after the task had finished would test no retry."""
+
+    def __init__(self, marker):
+        self.marker = marker
+
+    def transition(self, key, start, finish, **kwargs):
+        if finish == "executing" and str(key).startswith("psc-tile") and not os.path.exists(self.marker):
+            with open(self.marker, "w") as f:
+                f.write(f"{os.getpid()} {key}\n")
+            os._exit(1)  # the task is executing: the scheduler must run it again elsewhere
+
+
+def test_file_worker_killed(client, big_files):
+    paths, single, d = big_files
+    marker = d / "killed"
+    import cloudpickle
+
+    cloudpickle.register_pickle_by_value(sys.modules[__name__])  # workers need not import this file
+    client.register_worker_plugin(KillOnce(str(marker)), name="kill-once")
+    try:
+        pids_before = set(client.run(os.getpid).values())
+        report = psc_dask.estimate_curvatures_file(client, paths, d / "out_killed.npy", radius=R_BIG,
+                                                   tile_size=0.7)
+    finally:
+        client.unregister_worker_plugin("kill-once")
+        cloudpickle.unregister_pickle_by_value(sys.modules[__name__])
+    assert marker.exists()
+    killed_pid = int(marker.read_text().split()[0])
+    assert killed_pid in pids_before
+    assert killed_pid not in {t["pid"] for t in report["tile_reports"]}  # its task ran again elsewhere
+    check_report(report, N_BIG - 2)  # every point exactly once (also checked inside)
+    assert_same(single, read_output(d / "out_killed.npy"))
+
+
+def test_file_float32_ply_and_count(client, tmp_path):
+    points, normals = fibonacci_sphere(30_000, radius=2.0, center=(1.0, 1.0, 1.0))
+    points, normals = points.astype(np.float32), normals.astype(np.float32)
+    write_ply(tmp_path / "f.ply", points, normals, dtype="float")
+    single = psc.estimate_curvatures(points, normals, radius=0.1)
+    report = psc_dask.estimate_curvatures_file(client, tmp_path / "f.ply", tmp_path / "o.npy", radius=0.1,
+                                               block_rows=4096)
+    check_report(report, 30_000)
+    assert_same(single, read_output(tmp_path / "o.npy"))
+    # by count, a small first halo: tiles resubmitted with the halo they ask for
+    single = psc.estimate_curvatures(points, normals, neighbors=30, aso_variant="paper")
+    report = psc_dask.estimate_curvatures_file(client, str(tmp_path / "f.ply"), tmp_path / "c.npy", neighbors=30,
+                                               aso_variant="paper", initial_halo=1e-3, block_rows=4096)
+    assert report["resubmitted"] > 0
+    assert_same(single, read_output(tmp_path / "c.npy"))
+
+
+def test_file_bad_input(client, tmp_path):
+    p, q = fibonacci_sphere(100)
+    (tmp_path / "ascii.ply").write_text("ply\nformat ascii 1.0\nelement vertex 0\nend_header\n")
+    np.save(tmp_path / "shape.npy", np.zeros((10, 3)))
+    np.save(tmp_path / "ints.npy", np.zeros((10, 6), dtype=np.int32))
+    (tmp_path / "nonormal.ply").write_bytes(
+        b"ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty double x\nproperty double y\n"
+        b"property double z\nend_header\n" + bytes(24))
+    (tmp_path / "list.ply").write_bytes(
+        b"ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty list uchar int idx\nend_header\n")
+    write_ply(tmp_path / "short.ply", p, q)
+    with open(tmp_path / "short.ply", "r+b") as f:
+        f.truncate(os.path.getsize(tmp_path / "short.ply") - 50)
+    (tmp_path / "text.txt").write_text("1 2 3 0 0 1\n")
+    for name, what in [("ascii.ply", "only binary"), ("shape.npy", "shape"), ("ints.npy", "float"),
+                       ("nonormal.ply", "nx"), ("list.ply", "list"), ("short.ply", "truncated"),
+                       ("text.txt", "neither")]:
+        with pytest.raises(ValueError, match=what):
+            psc_dask.estimate_curvatures_file(client, tmp_path / name, tmp_path / "o.npy", radius=0.1)
+    np.save(tmp_path / "ok.npy", np.hstack([p, q]))
+    with pytest.raises(ValueError, match="exactly one"):
+        psc_dask.estimate_curvatures_file(client, tmp_path / "ok.npy", tmp_path / "o.npy")
+    with pytest.raises(ValueError):
+        psc_dask.estimate_curvatures_file(client, tmp_path / "ok.npy", tmp_path / "o.npy", radius=0.5,
+                                          no_such_option=1)
