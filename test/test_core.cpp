@@ -1211,6 +1211,53 @@ TEST_CASE("callback reports non-decreasing progress in [0,1] ending at 1, and re
   }
 }
 
+// The default ASO with normal_refinement(1) runs three passes (sample weights, the refinement's
+// sphere fit, the estimation), sharing [0, 1] as 0.25, 0.25, 0.5. Cancelled before the last
+// pass, no point may carry a value: the earlier passes' values are not curvature estimates.
+TEST_CASE("cancelled in the sample-weight or the refinement pass, every point is NOT_COMPUTED, in the estimation pass the points reached are the full run's", "[aso][callback][robust]")
+{
+  const auto pts = sphere(50000, 1);
+  const double r = 0.05;  // about 30 neighbours
+  const auto np = PSC::parameters::normal_refinement(1, maps());
+  const auto full = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, r, np);
+  REQUIRE(count_invalid(full) == 0);
+  for(const double cancel_above : {0.0, 0.3, 0.7})
+  {
+    INFO("cancel at the first report above " << cancel_above);
+    double cancelled_at = -1;
+    const std::function<bool(double)> cb = [&](double x) {
+      if(cancelled_at < 0 && x > cancel_above)
+      {
+        cancelled_at = x;
+        return false;
+      }
+      return true;
+    };
+    const auto est = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, r, PSC::parameters::normal_refinement(1, maps().callback(cb)));
+    REQUIRE(cancelled_at > cancel_above);
+    std::size_t computed = 0, not_computed = 0, bad = 0;
+    for(std::size_t i = 0; i < pts.size(); ++i)
+      if(est[i].status == Status::NOT_COMPUTED)
+      {
+        ++not_computed;
+        bad += every_numeric_field_nan(est[i]) ? 0 : 1;
+      }
+      else
+      {
+        ++computed;
+        bad += same_estimate(est[i], full[i]) ? 0 : 1;
+      }
+    CHECK(bad == 0);
+    if(cancelled_at < 0.5)
+      CHECK(computed == 0);
+    else
+    {
+      CHECK(computed > 0);
+      CHECK(not_computed > 0);
+    }
+  }
+}
+
 // The documented rule: callback(fraction done) at least every 1% of the points, whatever
 // the driver, the concurrency tag, and however many points share a grid cell.
 TEST_CASE("callback comes at most 1% of the points apart on 100K points, by radius, by count and with one cell holding everything", "[aso][callback]")

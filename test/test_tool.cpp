@@ -1045,7 +1045,7 @@ std::pair<double, std::size_t> normal_agreement(const std::vector<Position_and_n
 
 } // namespace
 
-TEST_CASE("estimate_oriented_normals: spheres and a terrain, by spanning tree, vector and point; sequential == parallel")
+TEST_CASE("estimate_oriented_normals: spheres and a terrain, by spanning tree, vector and point, sequential == parallel")
 {
   // Two spheres far apart (two connected parts of the graph), exact outward normals as truth.
   std::vector<Oriented_point> two = sphere(20000, 1.0);
@@ -1229,7 +1229,7 @@ std::vector<std::array<double, 3> > write_las(const std::string& path, const std
 
 } // namespace
 
-TEST_CASE("tool: LAS 1.2-1.4 point formats 0-10 with their fields as attributes; refused and suspicious LAS files")
+TEST_CASE("tool: LAS 1.2-1.4 point formats 0-10 with their fields as attributes, refused and suspicious LAS files")
 {
   // a sphere of radius 2 in LiDAR coordinates (offset 1e6, 2e6, 100; millimetre scale)
   const double offset[3] = {1e6, 2e6, 100};
@@ -1341,7 +1341,7 @@ TEST_CASE("tool: LAS 1.2-1.4 point formats 0-10 with their fields as attributes;
   CHECK(w.err.find("is not within the header's bounds") != std::string::npos);
 }
 
-TEST_CASE("tool: input attributes carried in their types, renamed on a clash; --fields, --float, --drop-attributes")
+TEST_CASE("tool: input attributes carried in their types, renamed on a clash, --fields, --float, --drop-attributes")
 {
   const std::vector<Oriented_point> pts = sphere(800, 1.0);
   std::ostringstream ply;

@@ -16,6 +16,7 @@
 
 #include <functional>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -159,11 +160,33 @@ std::vector<double> tangent_voronoi_areas(const PointRange& points, bool radius_
   return areas;
 }
 
+// The normal fit of a refinement pass: estimator.refinement_fit(nb) where the estimator has
+// one (the ASO: its APSS sphere with the wider kernel), else the estimator itself.
+template <class Estimator, class = void>
+struct Has_refinement_fit : std::false_type
+{
+};
+template <class Estimator>
+struct Has_refinement_fit<Estimator, std::void_t<decltype(std::declval<const Estimator&>().refinement_fit(
+                                         std::declval<const Neighborhood&>()))> > : std::true_type
+{
+};
+template <class Estimator>
+Local_estimate refinement_estimate(const Estimator& estimator, const Neighborhood& nb)
+{
+  if constexpr(Has_refinement_fit<Estimator>::value)
+    return estimator.refinement_fit(nb);
+  else
+    return estimator(nb);
+}
+
 // Per-point curvature estimation, from `estimator` (a copyable, stateless
 // Local_estimate(const Neighborhood&) functor deriving from Estimator_base). With
 // estimator.sample_weights, a first pass computes the tangent Voronoi areas; with
-// estimator.refinement = n, the estimation runs n more times on its own corrected normals.
-// The callback sees the passes as consecutive shares of [0, 1].
+// estimator.refinement = n, n passes of its normal fit (refinement_estimate()) each replace
+// the input normals by their corrected normals before the estimation. The callback sees the
+// passes as consecutive shares of [0, 1]; cancelled before the estimation pass, every point
+// is NOT_COMPUTED (a refinement pass's values are not the estimator's).
 template <class ConcurrencyTag, class PointRange, class NamedParameters, class Estimator>
 std::vector<Curvature_estimate<
   typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
@@ -177,16 +200,18 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
   const std::size_t k = checked_scale<PointRange>(radius, radius_given, np, function_name);
   const std::size_t min_neighbors = min_neighbors_parameter(np, estimator.min_neighbors);
   Neighborhood_options options = neighborhood_options(np, function_name, estimator.normalize_normals);
-  const auto evaluate = [&estimator, min_neighbors](const Neighborhood& nb) {
+  const auto evaluate_as = [&estimator, min_neighbors](const Neighborhood& nb, bool refinement) {
     if(nb.size < min_neighbors)
       return to_curvature_estimate<Geom_traits>(
         Local_estimate::invalid(Curvature_estimate_status::TOO_FEW_NEIGHBORS), nb.size);
-    Local_estimate e = estimator(nb);
+    Local_estimate e = refinement ? refinement_estimate(estimator, nb) : estimator(nb);
     if(e.status == Curvature_estimate_status::VALID && estimator.check_tangent_spread &&
        neighborhood_lacks_tangent_spread(nb))
       e = Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
     return to_curvature_estimate<Geom_traits>(e, nb.size);
   };
+  const auto evaluate = [&evaluate_as](const Neighborhood& nb) { return evaluate_as(nb, false); };
+  const auto evaluate_refinement = [&evaluate_as](const Neighborhood& nb) { return evaluate_as(nb, true); };
   const auto point_map = NP_helper::get_const_point_map(points, np);
   const auto normal_map = NP_helper::get_normal_map(points, np);
   if(!estimator.sample_weights && estimator.refinement == 0)
@@ -197,15 +222,16 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
     throw std::invalid_argument(std::string(function_name) + ": parameter 'tile' is not supported with "
                                 "normal_refinement, nor with sample weights and neighbourhoods by count");
   // Progress over the passes, each a share of [0, 1] in proportion to its cost: the area
-  // pass (a quarter of the neighbours) costs about half an estimation pass (measured with
-  // benchmark/aso_speed).
+  // pass (a quarter of the neighbours) and a refinement pass (a sphere fit) cost about half
+  // an estimation pass (measured with benchmark/aso_speed).
   std::vector<double> share_start, share_size;
   {
     std::vector<double> cost;
     if(estimator.sample_weights)
       cost.push_back(0.5);
-    for(std::size_t r = 0; r <= estimator.refinement; ++r)
-      cost.push_back(1.0);
+    for(std::size_t r = 0; r < estimator.refinement; ++r)
+      cost.push_back(Has_refinement_fit<Estimator>::value ? 0.5 : 1.0);
+    cost.push_back(1.0);
     double total = 0;
     for(double c : cost)
       total += c;
@@ -244,24 +270,37 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
     options.sample_weights = &areas;
     options.reach = 2;
   }
-  Neighborhood_options o = share(pass++);
-  std::vector<Estimate> result =
-    evaluate_with_maps<Estimate, ConcurrencyTag>(points, radius_given, radius, k, point_map, normal_map, o, evaluate);
-
-  // Refinement: the same estimation with the corrected normals as input normals.
+  // Refinement: each pass's corrected normals are the next pass's input normals (the input
+  // normal where a pass has no estimate); the last pass is the estimation.
   typedef std::pair<typename Geom_traits::Point_3, typename Geom_traits::Vector_3> Oriented;
-  for(std::size_t r = 0; r < estimator.refinement && !cancelled; ++r)
+  std::vector<Estimate> result;
+  for(std::size_t r = 0; r <= estimator.refinement; ++r)
   {
-    std::vector<Oriented> refined;
-    refined.reserve(result.size());
-    std::size_t i = 0;
-    for(auto it = points.begin(); it != points.end(); ++it, ++i)
-      refined.emplace_back(get(point_map, *it), result[i].is_valid() ? result[i].normal : get(normal_map, *it));
-    o = share(pass++);
-    // (cancelled: the points not reached are NOT_COMPUTED, as in a single pass)
-    result = evaluate_with_maps<Estimate, ConcurrencyTag>(
-      refined, radius_given, radius, k, CGAL::First_of_pair_property_map<Oriented>(),
-      CGAL::Second_of_pair_property_map<Oriented>(), o, evaluate);
+    const bool last = r == estimator.refinement;
+    Neighborhood_options o = share(pass++);
+    if(r == 0)
+      result = last ? evaluate_with_maps<Estimate, ConcurrencyTag>(points, radius_given, radius, k, point_map,
+                                                                   normal_map, o, evaluate)
+                    : evaluate_with_maps<Estimate, ConcurrencyTag>(points, radius_given, radius, k, point_map,
+                                                                   normal_map, o, evaluate_refinement);
+    else
+    {
+      std::vector<Oriented> refined;
+      refined.reserve(result.size());
+      std::size_t i = 0;
+      for(auto it = points.begin(); it != points.end(); ++it, ++i)
+        refined.emplace_back(get(point_map, *it), result[i].is_valid() ? result[i].normal : get(normal_map, *it));
+      const CGAL::First_of_pair_property_map<Oriented> refined_points;
+      const CGAL::Second_of_pair_property_map<Oriented> refined_normals;
+      result = last ? evaluate_with_maps<Estimate, ConcurrencyTag>(refined, radius_given, radius, k, refined_points,
+                                                                   refined_normals, o, evaluate)
+                    : evaluate_with_maps<Estimate, ConcurrencyTag>(refined, radius_given, radius, k, refined_points,
+                                                                   refined_normals, o, evaluate_refinement);
+    }
+    if(cancelled && !last)
+      return std::vector<Estimate>(result.size());  // every point NOT_COMPUTED
+    if(cancelled)
+      break;  // (the points not reached are NOT_COMPUTED, as in a single pass)
   }
   return result;
 }
