@@ -39,6 +39,18 @@ _FIELDS3 = ("normal", "min_direction", "max_direction")
 _FIELDS1 = ("k_min", "k_max", "mean", "gaussian")
 
 
+
+def _first_halo(radius, neighbors, initial_halo, lo, hi, finite_count):
+    """The halo the tiles start with: twice the radius (sample weights reach two radii), the
+    caller's initial_halo, or for neighbourhoods by count a first guess from the density (the
+    radius of `neighbors` points on a surface spanning the two largest extents of the box)."""
+    if radius is not None:
+        return 2.0 * float(radius)
+    if initial_halo is not None:
+        return float(initial_halo)
+    area = max(float(np.prod(np.sort(hi - lo)[1:])), 1e-300)
+    return 2.0 * math.sqrt(area * neighbors / (math.pi * finite_count))
+
 def estimate_tile(points, normals, core_min, core_max, halo, *, method="aso", radius=None, neighbors=None,
                   threads=1, **options):
     """Estimates one tile: ``points`` and ``normals`` hold every point of the cloud within
@@ -124,14 +136,7 @@ def estimate_curvatures(client, points, normals, *, method="aso", radius=None, n
     grid = TileGrid(lo, hi, float(tile_size))
     owner = grid.tile_of(points)
     counts = np.bincount(owner, minlength=len(grid) + 1)
-    if radius is not None:
-        halo = 2.0 * float(radius)
-    elif initial_halo is not None:
-        halo = float(initial_halo)
-    else:
-        # a first guess from the density: the radius of `neighbors` points on a surface
-        area = max(float(np.prod(np.sort(hi - lo)[1:])), 1e-300)
-        halo = 2.0 * math.sqrt(area * neighbors / (math.pi * max(finite.sum(), 1)))
+    halo = _first_halo(radius, neighbors, initial_halo, lo, hi, max(int(finite.sum()), 1))
 
     kwargs = dict(method=method, radius=radius, neighbors=neighbors, threads=threads, **options)
 
@@ -564,13 +569,7 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
     if int(counts.sum()) != finite or len(nonfinite) != n - finite:
         raise RuntimeError("point_set_curvatures.dask: the passes over the files disagree (files modified?)")
 
-    if radius is not None:
-        halo = 2.0 * float(radius)
-    elif initial_halo is not None:
-        halo = float(initial_halo)
-    else:
-        area = max(float(np.prod(np.sort(hi - lo)[1:])), 1e-300)
-        halo = 2.0 * math.sqrt(area * neighbors / (math.pi * finite))
+    halo = _first_halo(radius, neighbors, initial_halo, lo, hi, finite)
 
     def submit(i, h):
         tile = grid.tile(i, h)
