@@ -1562,12 +1562,24 @@ TEST_CASE("Tiles: every point estimated once, bitwise as in the whole-cloud run,
   const PSC::Tile_grid tiles(CGAL::Bbox_3(-1, -0.8, -0.6, 1, 0.8, 0.6), {{3, 2, 2}});
   REQUIRE(tiles.size() == 12);
   const auto whole_radius = aso(pts, r);  // the default variant: sample weights, reach 2 r
-  // by count, tiles take the paper's variant (sample weights by count are not tiled)
+  // by count: the paper's variant, and the default (sample weights: the areas of the own
+  // points' neighbours must be exact too)
   const auto paper = PSC::parameters::aso_variant(CGAL::Aso_variant::PAPER, maps());
   const auto whole_count = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, PSC::parameters::neighbor_count(k, paper));
+  const auto whole_count_weighted =
+    CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, PSC::parameters::neighbor_count(k, maps()));
+  // the tile of all space is no tile, whatever the options
+  {
+    const auto all = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
+      pts, PSC::parameters::neighbor_count(k, PSC::parameters::tile(PSC::Tile::whole_space(), maps())));
+    std::size_t differ_all = 0;
+    for(std::size_t i = 0; i < pts.size(); ++i)
+      differ_all += !same_estimate(all[i], whole_count_weighted[i]);
+    CHECK(differ_all == 0);
+  }
   const auto whole_apss = apss<CGAL::Parallel_tag>(pts, r);
   std::vector<int> owned(pts.size(), 0);
-  std::size_t differ = 0, retried = 0, differ_count = 0;
+  std::size_t differ = 0, retried = 0, differ_count = 0, retried_weighted = 0, compared_weighted = 0;
   for(std::size_t i = 0; i < tiles.size(); ++i)
   {
     std::vector<std::size_t> origin;
@@ -1614,16 +1626,43 @@ TEST_CASE("Tiles: every point estimated once, bitwise as in the whole-cloud run,
         ++retried;
       }
     }
+    // by count with sample weights, from the halo the paper's variant needed: the areas
+    // may ask for more
+    for(;;)
+    {
+      const PSC::Tile tk = tiles.tile(i, halo);
+      const auto range_k = tile_range(pts, tk, origin);
+      try
+      {
+        const auto ek = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
+          range_k, PSC::parameters::neighbor_count(k, PSC::parameters::tile(tk, maps())));
+        for(std::size_t j = 0; j < range_k.size(); ++j)
+          if(tk.owns(range_k[j].first.x(), range_k[j].first.y(), range_k[j].first.z()))
+          {
+            differ_count += !same_estimate(ek[j], whole_count_weighted[origin[j]]);
+            ++compared_weighted;
+          }
+        break;
+      }
+      catch(const PSC::Halo_too_small& too_small)
+      {
+        REQUIRE(too_small.required_halo() > halo);
+        halo = too_small.required_halo();
+        ++retried_weighted;
+      }
+    }
   }
   CHECK(differ == 0);
   CHECK(differ_count == 0);
+  CHECK(compared_weighted == pts.size() - 1);
+  CHECK(retried_weighted > 0);  // the areas asked for a larger halo than the estimation alone
   std::size_t once = 0;
   for(std::size_t i = 0; i < pts.size(); ++i)
     once += owned[i] == (i == 5 ? 0 : 1);
   CHECK(once == pts.size());
   CHECK(retried > 0);  // the small first halo was refused at least once (the retry path is tested)
   // a halo smaller than the reach is refused by radius: one radius for the paper's variant,
-  // two with sample weights (the default); by count, sample weights refuse tiles
+  // two with sample weights (the default); normal_refinement refuses tiles
   CHECK_THROWS_AS(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
                     pts, r, PSC::parameters::tile(tiles.tile(0, 0.5 * r), paper)),
                   std::invalid_argument);
@@ -1633,7 +1672,7 @@ TEST_CASE("Tiles: every point estimated once, bitwise as in the whole-cloud run,
   CHECK_NOTHROW(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
     pts, r, PSC::parameters::tile(tiles.tile(0, 1.5 * r), paper)));
   CHECK_THROWS_AS(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
-                    pts, PSC::parameters::neighbor_count(k, PSC::parameters::tile(tiles.tile(0, r), maps()))),
+                    pts, r, PSC::parameters::normal_refinement(1, PSC::parameters::tile(tiles.tile(0, 3 * r), maps()))),
                   std::invalid_argument);
 }
 

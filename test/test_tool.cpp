@@ -1403,3 +1403,128 @@ TEST_CASE("tool: input attributes carried in their types, renamed on a clash, --
   CHECK(out.substr(0, out.find('\n')) == "x,y,z,mean,reflectance");
   CHECK(out.find(",199.75\n") != std::string::npos);  // the last point's reflectance
 }
+
+// ---------------------------------------------------------------------------------------
+// Inputs larger than --memory-limit: estimated in tiles, bitwise as in memory (issue 12)
+
+TEST_CASE("tool: --memory-limit tiles give the in-memory output bitwise, by radius and by count, PLY CSV and ASCII, attributes, invalid points, colours")
+{
+  // density varying 1:10 (the halo by count differs across the cloud), an attribute, a
+  // point far away (too few neighbours), a zero normal, a NaN coordinate
+  std::vector<Oriented_point> pts = varying_density(6000, 11);
+  std::ostringstream ply;
+  ply.precision(17);
+  ply << "ply\nformat ascii 1.0\nelement vertex " << pts.size() + 3
+      << "\nproperty double x\nproperty double y\nproperty double z\nproperty double nx\nproperty double ny\n"
+         "property double nz\nproperty ushort intensity\nend_header\n";
+  for(std::size_t i = 0; i < pts.size(); ++i)
+  {
+    ply << pts[i].first.x() << " " << pts[i].first.y() << " " << pts[i].first.z() << " " << pts[i].second.x()
+        << " " << pts[i].second.y() << " " << pts[i].second.z() << " " << i % 65536 << "\n";
+    if(i == 1000)
+      ply << "40 40 40 0 0 1 7\n";
+    if(i == 2000)
+      ply << "1 1 0.1 0 0 0 8\n";
+    if(i == 3000)
+      ply << "nan 1 0.1 0 0 1 9\n";
+  }
+  write_text(file("big.ply"), ply.str());
+  // 6003 points of about 366 bytes (one attribute): 2.2 MB in memory; 300K: tiles
+  const std::string in = q(file("big.ply"));
+  struct Case
+  {
+    std::string options, output;
+  };
+  const Case cases[] = {
+    {"--radius 0.12 --color mean", "r.ply"},                           // robust ASO, sample weights
+    {"--radius 0.12 --method apss --ascii", "apss.ply"},
+    {"--neighbors 30 --variant paper --fields mean,k_min,valid --float", "k.ply"},
+    {"--neighbors 30 --color gaussian", "kw.ply"},                      // robust ASO by count
+    {"--neighbors 20 --method apss --color k_max", "k.csv"},
+  };
+  for(const Case& c : cases)
+  {
+    INFO(c.options);
+    const Run memory = run_tool(in + " " + q(file("memory_" + c.output)) + " " + c.options);
+    REQUIRE(memory.status == 0);
+    CHECK(memory.out.find("  tiles") == std::string::npos);
+    const Run tiled = run_tool(in + " " + q(file("tiled_" + c.output)) + " " + c.options + " --memory-limit 300K");
+    REQUIRE(tiled.status == 0);
+    INFO(tiled.out);
+    // several tiles, each with fewer points than the cloud
+    std::size_t tiles = 0, largest = 0;
+    const std::size_t at = tiled.out.find("  tiles       ");
+    REQUIRE(at != std::string::npos);
+    std::istringstream(tiled.out.substr(at + 14)) >> tiles;
+    const std::size_t most = tiled.out.find("at most ", at);
+    REQUIRE(most != std::string::npos);
+    std::istringstream(tiled.out.substr(most + 8)) >> largest;
+    CHECK(tiles >= 4);
+    // by count, the far point's tile reaches its 30 nearest: most of the cloud
+    if(c.options.find("--radius") != std::string::npos)
+      CHECK(largest < pts.size() / 2);
+    const std::string a = read_text(file("memory_" + c.output)), b = read_text(file("tiled_" + c.output));
+    CHECK(a.size() > 6000 * 30);
+    CHECK(a == b);
+    // the same report: counts of valid and invalid points, neighbours, H and K
+    auto report = [](const std::string& out) {
+      const std::size_t v = out.find("  valid"), t = out.find("  time"), h = out.find("  H (mean)");
+      return out.substr(v, t - v) + out.substr(h);
+    };
+    CHECK(report(memory.out) == report(tiled.out));
+  }
+  // the invalid rows are there, in place: the far point, the zero normal, the NaN
+  {
+    const std::string csv = read_text(file("tiled_k.csv"));
+    std::istringstream lines(csv);
+    std::string line;
+    std::vector<std::string> rows;
+    while(std::getline(lines, line))
+      rows.push_back(line);
+    REQUIRE(rows.size() == pts.size() + 4);
+    auto ends_with = [](const std::string& s, const std::string& end) {
+      return s.size() >= end.size() && s.compare(s.size() - end.size(), end.size(), end) == 0;
+    };
+    CHECK(rows[1002].rfind("40,40,40,", 0) == 0);
+    CHECK(ends_with(rows[1002], ",7"));  // intensity
+    // neighbors 0, valid 0, grey, the intensity
+    CHECK(rows[2003].rfind("1,1,0.10000000000000001,nan,", 0) == 0);
+    CHECK(ends_with(rows[2003], ",0,0,128,128,128,8"));
+    CHECK(rows[3004].rfind("nan,1,", 0) == 0);
+    CHECK(ends_with(rows[3004], ",0,0,128,128,128,9"));
+  }
+  // no temporary file is left
+  CHECK(files_starting_with(".tiled_") == 0);
+
+  // without normals, each tile estimates those its curvatures need (a local orientation)
+  write_xyz(file("no_normals.xyz"), pts, false);
+  for(const std::string scale : {"--radius 0.12", "--neighbors 30"})
+  {
+    INFO(scale);
+    const std::string options = " " + scale + " --orient +z --normal-neighbors 12 --fields normal,mean,valid";
+    const Run memory = run_tool(q(file("no_normals.xyz")) + " " + q(file("nn_memory.ply")) + options);
+    const Run tiled = run_tool(q(file("no_normals.xyz")) + " " + q(file("nn_tiled.ply")) + options + " --memory-limit 300K");
+    REQUIRE(memory.status == 0);
+    REQUIRE(tiled.status == 0);
+    CHECK(tiled.out.find("  tiles") != std::string::npos);
+    CHECK(tiled.out.find("(normals estimated)") != std::string::npos);
+    CHECK(tiled.err.find("has no normals: estimating them") != std::string::npos);
+    const std::string a = read_text(file("nn_memory.ply")), b = read_text(file("nn_tiled.ply"));
+    CHECK(a.size() > 6000 * 40);
+    CHECK(a == b);
+  }
+
+  // what cannot be tiled is refused with the reason and what to do
+  {
+    const Run r = run_tool(q(file("no_normals.xyz")) + " " + q(file("x.ply")) + " --radius 0.12 --memory-limit 300K");
+    CHECK(r.status == 2);
+    CHECK(r.err.find("which needs a local orientation, --orient +z") != std::string::npos);
+    const Run s = run_tool(in + " " + q(file("x.ply")) + " --radius 3x --memory-limit 300K");
+    CHECK(s.status == 2);
+    CHECK(s.err.find("--radius 3x needs the whole cloud") != std::string::npos);
+    const Run u = run_tool(in + " " + q(file("x.ply")) + " --memory-limit 12Q");
+    CHECK(u.status == 2);
+    CHECK(u.err.find("--memory-limit expects a positive size") != std::string::npos);
+    CHECK(files_starting_with("x.ply") == 0);
+  }
+}

@@ -222,11 +222,25 @@ inline bool parse_count(std::string_view t, std::uint64_t& v)
 inline std::string quoted(std::string_view t) { return in_quotes(std::string(t.substr(0, 60))); }
 
 
+// Chunked reading (Read_options::chunk): hands the points held over once there are
+// chunk_points of them, or at the end, and keeps the cloud's description.
+inline void hand_over(Point_cloud& cloud, const Read_options& options, bool at_end = false)
+{
+  if(!options.chunk || cloud.size() == 0 || (!at_end && cloud.size() < options.chunk_points))
+    return;
+  options.chunk(cloud);
+  cloud.first += cloud.size();
+  cloud.xyz.clear();
+  cloud.normals.clear();
+  for(Attribute& a : cloud.attributes)
+    a.values.clear();
+}
+
 // The PLY reader (read_ply.cpp): the file after its first byte.
-Point_cloud read_ply(Byte_source& bytes, const std::string& path, bool keep_attributes);
+Point_cloud read_ply(Byte_source& bytes, const std::string& path, const Read_options& options);
 
 // The LAS reader (read_las.cpp).
-Point_cloud read_las(Byte_source& bytes, const std::string& path, bool keep_attributes);
+Point_cloud read_las(Byte_source& bytes, const std::string& path, const Read_options& options);
 
 } // namespace input
 } // namespace psc_tool

@@ -47,6 +47,8 @@
 #include <tbb/global_control.h>
 
 #include "read_point_cloud.h"
+#include "run_summary.h"
+#include "tiled_run.h"
 #include "tool_support.h"
 #include "write_point_cloud.h"
 
@@ -103,7 +105,8 @@ struct Scale
   CGAL::Aso_variant variant = CGAL::Aso_variant::ROBUST;  // --variant (aso)
 };
 
-typedef Estimates (*Run_method)(const Point_set&, const Scale&, const Callback&);
+// Every point is estimated with PSC::Tile::whole_space(), a tile's own points otherwise.
+typedef Estimates (*Run_method)(const Point_set&, const Scale&, const Callback&, const PSC::Tile&);
 
 struct Method
 {
@@ -121,10 +124,12 @@ struct Method
 // One table entry per estimator; the Point_set_3's point and normal maps are the defaults.
 #define PSC_TOOL_METHOD(NAME, DESCRIPTION, GOOD)                                               \
   Method{#NAME, DESCRIPTION,                                                                   \
-         [](const Point_set& points, const Scale& scale, const Callback& callback) -> Estimates { \
+         [](const Point_set& points, const Scale& scale, const Callback& callback,             \
+            const PSC::Tile& tile) -> Estimates {                                               \
            const auto np = PSC::parameters::min_neighbors(                                      \
              scale.min_neighbors ? scale.min_neighbors : PSC::internal::default_min_neighbors::NAME, \
-             PSC::parameters::aso_variant(scale.variant, CGAL::parameters::callback(callback))); \
+             PSC::parameters::aso_variant(scale.variant, PSC::parameters::tile(                 \
+               tile, CGAL::parameters::callback(callback))));                                   \
            if(scale.by_count)                                                                   \
              return CGAL::estimate_##NAME##_curvatures<CGAL::Parallel_tag>(                    \
                points, PSC::parameters::neighbor_count(scale.neighbors, np));                   \
@@ -178,12 +183,10 @@ std::string method_names()
 // ---------------------------------------------------------------------------------------
 // Command line
 
-// Quantities that --color can show, and how to read them from an estimate.
-const std::map<std::string, double Estimate::*>& color_quantities()
+// Quantities that --color can show: their index in Row_summary (Output_row::value[6 + q]).
+const std::map<std::string, int>& color_quantities()
 {
-  static const std::map<std::string, double Estimate::*> q = {
-    {"mean", &Estimate::mean_curvature},     {"gaussian", &Estimate::gaussian_curvature},
-    {"k_min", &Estimate::min_curvature},     {"k_max", &Estimate::max_curvature}};
+  static const std::map<std::string, int> q = {{"k_min", 0}, {"k_max", 1}, {"mean", 2}, {"gaussian", 3}};
   return q;
 }
 
@@ -202,6 +205,7 @@ struct Options
   CGAL::Normal_orientation orientation;  // --orient
   std::string orientation_text = "mst";
   std::size_t normal_neighbors = 18;     // --normal-neighbors
+  double memory_limit = 0;               // --memory-limit in bytes; 0: a quarter of the RAM
 };
 
 void print_usage(std::ostream& os)
@@ -255,6 +259,11 @@ void print_usage(std::ostream& os)
      << "                     spanning tree, default), +z, -z, +x, -x, +y, -y (airborne scans:\n"
      << "                     +z), or viewpoint:X,Y,Z (towards the scanner at X,Y,Z)\n"
      << "  --normal-neighbors K  neighbours of the normal estimation (default 18)\n"
+     << "  --memory-limit M   memory for the points, in bytes or with a unit: 500M, 8G (default:\n"
+     << "                     a quarter of the machine's RAM). A larger input is estimated in\n"
+     << "                     spatial tiles, each read again from INPUT with a halo around it,\n"
+     << "                     the rows written in input order: the same output, bitwise, in\n"
+     << "                     bounded memory (INPUT must have normals; --radius as a length)\n"
      << "  --threads N        use at most N threads (default: every core)\n"
      << "  --quiet            print errors only (no progress bar, warnings or summary)\n"
      << "  --help             print this help\n"
@@ -283,6 +292,27 @@ bool parse_positive_integer(const std::string& s, std::size_t& value)
       return false;
   value = static_cast<std::size_t>(std::stoull(s));
   return value > 0;
+}
+
+// "8G", "500M", "1.5g", "64k", "123456" (bytes): units are powers of 1024.
+bool parse_memory_size(const std::string& text, double& bytes)
+{
+  if(text.empty())
+    return false;
+  double unit = 1;
+  std::string number = text;
+  const char last = static_cast<char>(std::toupper(static_cast<unsigned char>(text.back())));
+  const std::string units = "KMGT";
+  if(units.find(last) != std::string::npos)
+  {
+    unit = std::pow(1024.0, double(units.find(last) + 1));
+    number.pop_back();
+  }
+  double v = 0;
+  if(!parse_double(number, v) || !(v > 0) || !std::isfinite(v * unit))
+    return false;
+  bytes = v * unit;
+  return true;
 }
 
 void parse_radius(const std::string& text, Scale& scale)
@@ -430,6 +460,13 @@ Options parse_command_line(int argc, char** argv)
         throw Error(cat(name, ": unknown quantity ", in_quotes(o.color),
                         " (available: mean|gaussian|k_min|k_max)"));
     }
+    else if(name == "--memory-limit")
+    {
+      const std::string v = take_value();
+      if(!parse_memory_size(v, o.memory_limit))
+        throw Error(cat("--memory-limit expects a positive size in bytes or with a unit (500M, 8G), got ",
+                        in_quotes(v)));
+    }
     else if(name == "--ascii")
       flag(o.ascii);
     else if(name == "--float")
@@ -572,7 +609,7 @@ public:
   explicit Progress_bar(bool enabled) : m_enabled(enabled) {}
 
   // Starts a phase (ending the previous one) and returns its callback.
-  Callback phase(const char* name)
+  Callback phase(const std::string& name)
   {
     finish();
     m_name = name;
@@ -604,14 +641,14 @@ private:
     m_last = percent;
     const int width = 30, filled = percent * width / 100;
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
-    std::fprintf(stderr, "\r%-12s [%s%s] %3d%% %7.1f s", m_name, std::string(filled, '#').c_str(),
+    std::fprintf(stderr, "\r%-12s [%s%s] %3d%% %7.1f s", m_name.c_str(), std::string(filled, '#').c_str(),
                  std::string(width - filled, '.').c_str(), percent, seconds);
     std::fflush(stderr);
     m_drawn = true;
   }
 
   bool m_enabled;
-  const char* m_name = "";
+  std::string m_name;
   std::chrono::steady_clock::time_point m_start;
   int m_last = -1;
   bool m_drawn = false;
@@ -705,45 +742,27 @@ std::array<unsigned char, 3> diverging_color(double v, double range)
   return c;
 }
 
-// Value at fraction q of the sorted values (nearest rank).
-double percentile(std::vector<double> values, double q)
-{
-  const std::size_t i = std::min(values.size() - 1, static_cast<std::size_t>(q * values.size()));
-  std::nth_element(values.begin(), values.begin() + i, values.end());
-  return values[i];
-}
-
-std::vector<double> finite_values(const Estimates& estimates, double Estimate::*field)
-{
-  std::vector<double> v;
-  for(const Estimate& e : estimates)
-    if(e.is_valid() && std::isfinite(e.*field))
-      v.push_back(e.*field);
-  return v;
-}
-
-// Symmetric colour range: the larger magnitude of the 2nd and 98th percentiles.
-double robust_range(const std::vector<double>& values)
-{
-  if(values.empty())
-    return 0;
-  return std::max(std::abs(percentile(values, 0.02)), std::abs(percentile(values, 0.98)));
-}
-
 // ---------------------------------------------------------------------------------------
 // Summary
 
-std::string min_median_max(const std::vector<double>& v, std::size_t valid)
+std::string min_median_max(const Row_summary& s, int q)
 {
-  if(v.empty())
-    return valid ? "n/a (not estimated by this method)" : "n/a (no valid estimate)";
-  const auto mm = std::minmax_element(v.begin(), v.end());
-  return cat("min ", *mm.first, "  median ", percentile(v, 0.5), "  max ", *mm.second);
+  if(s.count(q) == 0)
+    return s.valid() ? "n/a (not estimated by this method)" : "n/a (no valid estimate)";
+  return cat("min ", s.min(q), "  median ", percentile(s.sample(q), 0.5), "  max ", s.max(q));
 }
 
 double seconds_since(std::chrono::steady_clock::time_point t)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// "1.234": seconds in the report
+std::string s3(double seconds)
+{
+  char text[64];
+  std::snprintf(text, sizeof text, "%.3f", seconds);
+  return text;
 }
 
 std::string scale_description(const Scale& s)
@@ -757,19 +776,11 @@ std::string scale_description(const Scale& s)
 
 // The warning when neighbourhoods are small: empty if the median count of the estimated
 // points reaches the method's measured `good_neighbors`.
-std::string small_neighborhood_warning(const Method& m, const Scale& scale, const Estimates& estimates)
+std::string small_neighborhood_warning(const Method& m, const Scale& scale, const Row_summary& summary)
 {
-  std::vector<double> counts;
-  std::size_t too_few = 0;
-  for(const Estimate& e : estimates)
-    if(e.is_valid() || e.status == CGAL::Curvature_estimate_status::TOO_FEW_NEIGHBORS)
-    {
-      counts.push_back(double(e.neighbor_count));
-      too_few += !e.is_valid();
-    }
-  if(counts.empty())
+  if(summary.neighbor_sample().empty())
     return "";
-  const double median = percentile(counts, 0.5);
+  const double median = percentile(summary.neighbor_sample(), 0.5);
   if(median >= double(m.good_neighbors))
     return "";
   // counts grow like the radius squared on a surface
@@ -784,8 +795,283 @@ std::string small_neighborhood_warning(const Method& m, const Scale& scale, cons
   }
   return cat("the median neighbourhood holds ", median, " points, fewer than the ", m.good_neighbors,
              " from which ", m.name, "'s errors stay within twice those at 40 neighbours (measured, see the "
-             "manual); ", too_few, " points have fewer than ", scale.min_neighbors ? scale.min_neighbors : m.min_neighbors,
+             "manual); ", summary.too_few(), " points have fewer than ",
+             scale.min_neighbors ? scale.min_neighbors : m.min_neighbors,
              " and are invalid (too_few_neighbors). For about 40 neighbours, try ", suggestion);
+}
+
+// Row i of the output from the point set and its estimates (without colour).
+void estimate_row(const Point_set& ps, const Estimates& estimates, std::size_t i, Output_row& r)
+{
+  const Point& p = ps.point(*(ps.begin() + i));
+  const Estimate& e = estimates[i];
+  const double v[16] = {p.x(), p.y(), p.z(), e.normal.x(), e.normal.y(), e.normal.z(),
+                        e.min_curvature, e.max_curvature, e.mean_curvature, e.gaussian_curvature,
+                        e.min_direction.x(), e.min_direction.y(), e.min_direction.z(),
+                        e.max_direction.x(), e.max_direction.y(), e.max_direction.z()};
+  std::copy(v, v + 16, r.value);
+  r.neighbors = static_cast<std::int32_t>(std::min<std::size_t>(e.neighbor_count, INT32_MAX));
+  r.valid = e.is_valid() ? 1 : 0;
+  r.status = static_cast<int>(e.status);
+}
+
+// A point set of the given points and normals (none if `normals` is empty).
+void fill_point_set(Point_set& ps, const std::vector<double>& xyz, const std::vector<double>& normals)
+{
+  const std::size_t n = xyz.size() / 3;
+  ps.reserve(n);
+  if(!normals.empty())
+    ps.add_normal_map();
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const double* p = &xyz[3 * i];
+    const auto it = ps.insert(Point(p[0], p[1], p[2]));
+    if(!normals.empty())
+    {
+      const double* nv = &normals[3 * i];
+      ps.normal(*it) = Vector(nv[0], nv[1], nv[2]);
+    }
+  }
+}
+
+// What the writing and the report share between in-memory and tiled runs.
+struct Run_context
+{
+  const Options& o;
+  Progress_bar& progress;
+  std::vector<std::string>& warnings;
+  std::chrono::steady_clock::time_point start;
+  std::string method_label;
+};
+
+// Writes the n rows of `rows` (asked for in input order), coloured from the summary.
+void write_output(const Run_context& c, Temporary_output& output, const Scale& scale,
+                  const std::vector<Attribute>& attributes, std::size_t n, const Row_summary& summary,
+                  const Row_source& rows)
+{
+  const Options& o = c.o;
+  Output_layout layout;
+  layout.format = lower_extension(o.output) == ".csv" ? Output_layout::CSV
+                  : o.ascii                           ? Output_layout::ASCII_PLY
+                                                      : Output_layout::BINARY_PLY;
+  layout.comments.push_back(cat("point_set_curvatures method ", c.method_label, ", ", scale_description(scale)));
+  layout.comments.push_back(cat("input ", o.input));
+  int color_quantity = -1;
+  double color_range = 0;
+  if(!o.color.empty())
+  {
+    color_quantity = color_quantities().at(o.color);
+    if(summary.count(color_quantity) == 0)
+      c.warnings.push_back(cat("--color ", o.color, ": no valid value (not estimated by method ", o.method->name,
+                               "?); every point is grey"));
+    color_range = summary.color_range(color_quantity);
+    layout.comments.push_back(
+      cat("colors: ", o.color, ", blue -", color_range, " white 0 red +", color_range, ", grey invalid"));
+  }
+  layout.fields = output_fields(o.fields, o.float32, color_quantity >= 0, attributes);
+  layout.attributes = &attributes;
+  if(!attributes.empty())
+  {
+    std::string kept;
+    for(const Attribute& a : attributes)
+      kept += (kept.empty() ? "" : " ") + a.name;
+    layout.comments.push_back(cat("input attributes: ", kept));
+  }
+  write_point_cloud(output.file(), layout, n, [&](std::size_t i, Output_row& r) {
+    rows(i, r);
+    if(color_quantity >= 0)
+    {
+      const std::array<unsigned char, 3> rgb =
+        diverging_color(r.valid ? r.value[6 + color_quantity] : std::nan(""), color_range);
+      std::copy(rgb.begin(), rgb.end(), r.color);
+    }
+  }, c.progress.phase("writing"));
+  c.progress.finish();
+  if(interrupted)
+    throw Cancelled();
+  output.commit();
+}
+
+// The report on standard output, and the warnings (after the output is written, so that a
+// failure prints one line only).
+void print_report(const Run_context& c, const Scale& scale, std::size_t n, bool had_normals,
+                  const Row_summary& summary, const std::string& times, const std::string& tiles)
+{
+  const Options& o = c.o;
+  const std::string small = small_neighborhood_warning(*o.method, scale, summary);
+  if(!small.empty())
+    c.warnings.push_back(small);
+  if(o.quiet)
+    return;
+  for(const std::string& w : c.warnings)
+    std::fprintf(stderr, "%s: warning: %s\n", program, w.c_str());
+  std::string why;
+  for(const auto& s : summary.invalid())
+    why += cat(why.empty() ? "; " : ", ", s.second, " ",
+               CGAL::to_string(static_cast<CGAL::Curvature_estimate_status>(s.first)));
+  const std::size_t valid = summary.valid();
+  std::printf("%s: %s -> %s\n", program, o.input.c_str(), o.output.c_str());
+  std::printf("  method      %s: %s\n", c.method_label.c_str(), o.method->description);
+  std::printf("  scale       %s\n", scale_description(scale).c_str());
+  std::printf("  points      %zu%s\n", n, had_normals ? "" : " (normals estimated)");
+  if(!tiles.empty())
+    std::printf("  tiles       %s\n", tiles.c_str());
+  std::printf("  valid       %zu (%.2f %%)%s\n", valid, 100.0 * double(valid) / double(n), why.c_str());
+  std::printf("  neighbours  %.2f on average (valid estimates)\n",
+              valid ? double(summary.neighbors()) / double(valid) : 0.0);
+  std::printf("  time        %s s: %s\n", s3(seconds_since(c.start)).c_str(), times.c_str());
+  std::printf("  H (mean)    %s\n", min_median_max(summary, 2).c_str());
+  std::printf("  K (Gauss)   %s\n", min_median_max(summary, 3).c_str());
+}
+
+// The physical memory of the machine, in bytes (0 if unknown).
+double physical_memory()
+{
+  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
+  return pages > 0 && page > 0 ? double(pages) * double(page) : 0.0;
+}
+
+// The run on an input that does not fit in the memory limit: estimated in tiles
+// (tiled_run.h), bitwise as in memory.
+int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_options& read_options,
+                    const Scanned_input& input, double memory_limit)
+{
+  const double count_seconds = seconds_since(c.start);
+  const Options& o = c.o;
+  const std::size_t n = std::size_t(input.points);
+  const std::string too_large = cat(in_quotes(o.input), " holds ", n, " points, more than fit in the memory limit (",
+                                    memory_limit / (1 << 20), " MB, --memory-limit)");
+  // Without normals, each tile estimates those of the points its curvatures need: the points
+  // within the curvature halo H of its core, whose own neighbours lie within H + normal_halo.
+  const bool with_normals = input.cloud.has_normals();
+  if(!with_normals)
+  {
+    if(o.require_normals)
+      throw Error(cat(in_quotes(o.input), " has no normals (nx ny nz) and --require-normals was given"));
+    if(o.orientation.kind == CGAL::Normal_orientation::MINIMUM_SPANNING_TREE)
+      throw Error(cat(too_large, " and has no normals: they are estimated tile by tile, which needs a local "
+                      "orientation, --orient +z (airborne scans), another axis, or viewpoint:X,Y,Z (a spanning "
+                      "tree spans the whole cloud); or raise --memory-limit"));
+    c.warnings.push_back(cat(in_quotes(o.input), " has no normals: estimating them (PCA of the ", o.normal_neighbors,
+                             " nearest neighbours, oriented by --orient ", o.orientation_text, "); a wrong "
+                             "orientation flips the sign of the curvatures"));
+  }
+  if(!o.scale.by_count && o.scale.spacing_multiple > 0)
+    throw Error(cat(too_large, ": --radius ", o.scale.spacing_multiple, "x needs the whole cloud for the average "
+                    "spacing; give the radius as a length, or raise --memory-limit"));
+  const Scale& scale = o.scale;
+  Tiling tiling;
+  tiling.memory_limit = memory_limit;
+  if(scale.by_count)
+    tiling.neighbors = scale.neighbors;
+  else
+    tiling.halo = 2 * scale.radius;  // the reach of the sample weights' areas
+  {
+    const std::size_t slash = o.output.find_last_of('/');
+    tiling.temporary_prefix = (slash == std::string::npos ? std::string() : o.output.substr(0, slash + 1)) + "." +
+                              (slash == std::string::npos ? o.output : o.output.substr(slash + 1)) + ".";
+  }
+  tiling.phase = [&c](const std::string& name) { return c.progress.phase(name); };
+  tiling.interrupted = []() { return interrupted != 0; };
+  // the normals' share of a tile's halo: first guessed from the density, then grown to what
+  // the normal estimation asks for (per tile)
+  const double normal_halo_guess = with_normals ? 0.0 : density_halo(input, o.normal_neighbors);
+  tiling.extra_halo = normal_halo_guess;
+  // the current tile's two halos, tracked apart (not recovered by a subtraction that could
+  // round below what was asked for)
+  const double curvature_halo_guess = scale.by_count ? density_halo(input, scale.neighbors) : tiling.halo;
+  double normal_halo = normal_halo_guess, curvature_halo = curvature_halo_guess;
+  CGAL::Bbox_3 last_core;
+
+  const Tile_estimator estimate = [&](Tile_points& points, const PSC::Tile& tile,
+                                      const Progress& progress) -> Row_source {
+    auto ps = std::make_shared<Point_set>();
+    fill_point_set(*ps, points.xyz, points.normals);
+    std::vector<double>().swap(points.xyz);
+    std::vector<double>().swap(points.normals);
+    std::shared_ptr<Estimates> estimates;
+    if(!(tile.core == last_core))
+    {
+      // a new tile
+      normal_halo = normal_halo_guess;
+      curvature_halo = curvature_halo_guess;
+    }
+    last_core = tile.core;
+    const PSC::Tile curvature_tile(tile.core, with_normals ? tile.halo : curvature_halo);
+    if(!with_normals)
+    {
+      const double h = curvature_halo;
+      const CGAL::Bbox_3& b = tile.core;
+      const PSC::Tile normal_tile(CGAL::Bbox_3(b.xmin() - h, b.ymin() - h, b.zmin() - h, b.xmax() + h, b.ymax() + h,
+                                               b.zmax() + h),
+                                  normal_halo);
+      ps->add_normal_map();
+      try
+      {
+        CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
+          *ps, PSC::parameters::neighbor_count(
+                 o.normal_neighbors, PSC::parameters::normal_orientation(
+                                       o.orientation, PSC::parameters::tile(normal_tile, CGAL::parameters::callback(
+                                                                                          progress)))));
+      }
+      catch(const PSC::Halo_too_small& e)
+      {
+        normal_halo = e.required_halo();
+        throw PSC::Halo_too_small(curvature_halo + normal_halo, tile.halo);
+      }
+      if(interrupted)
+        throw Cancelled();
+    }
+    try
+    {
+      estimates = std::make_shared<Estimates>(o.method->run(*ps, scale, progress, curvature_tile));
+    }
+    catch(const PSC::Halo_too_small& e)
+    {
+      if(with_normals)
+        throw;
+      curvature_halo = e.required_halo();
+      throw PSC::Halo_too_small(curvature_halo + normal_halo, tile.halo);
+    }
+    catch(const std::invalid_argument& e)
+    {
+      throw Error(cat(e.what(), " (", too_large, ", so it is estimated in tiles: give --radius, or raise "
+                      "--memory-limit)"));
+    }
+    if(interrupted)
+      throw Cancelled();
+    return [ps, estimates](std::size_t k, Output_row& r) { estimate_row(*ps, *estimates, k, r); };
+  };
+  Row_summary summary(n, static_cast<int>(CGAL::Curvature_estimate_status::TOO_FEW_NEIGHBORS));
+  double write_seconds = 0;
+  const Tiled_report report = run_tiled(
+    o.input, read_options, input, tiling, estimate,
+    [&summary](std::size_t i, const Output_row& r) { summary.add(i, r); },
+    [&](const Row_source& rows) {
+      const auto write_start = std::chrono::steady_clock::now();
+      write_output(c, output, scale, input.cloud.attributes, n, summary, rows);
+      write_seconds = seconds_since(write_start);
+    });
+  if(!with_normals)
+  {
+    std::size_t without = 0;
+    for(const auto& s : summary.invalid())
+      if(s.first == int(CGAL::Curvature_estimate_status::INVALID_NORMAL) ||
+         s.first == int(CGAL::Curvature_estimate_status::NON_FINITE_POINT))
+        without += s.second;
+    if(without > 0)
+      c.warnings.push_back(cat(without, " points got no normal (coincident or collinear neighbours, non-finite "
+                               "coordinates) and are invalid_normal"));
+  }
+  print_report(c, scale, n, with_normals, summary,
+               cat("count ", s3(count_seconds), ", density ", s3(report.density_seconds), ", tile reads ",
+                   s3(report.read_seconds), ", curvatures ", s3(report.estimate_seconds), ", tile rows ",
+                   s3(report.rows_seconds),
+                   ", merge and write ", s3(write_seconds)),
+               cat(report.tiles, " (memory limit ", memory_limit / (1 << 20), " MB; at most ", report.largest_range,
+                   " points with a halo of ", report.halo, report.halo_growths
+                     ? cat("; ", report.halo_growths, " tiles read again with a larger halo") : std::string(), ")"));
+  return 0;
 }
 
 int run(const Options& o)
@@ -819,35 +1105,31 @@ int run(const Options& o)
   // Warnings are printed once the output is written, so that a failure prints one line only.
   std::vector<std::string> warnings;
   auto warn = [&](const std::string& message) { warnings.push_back(message); };
+  const Run_context context{o, progress, warnings, start,
+                            std::string(o.method->name) +
+                              (std::string(o.method->name) == "aso"
+                                 ? (o.scale.variant == CGAL::Aso_variant::PAPER ? " (paper's variant)" : " (robust variant)")
+                                 : "")};
 
-  // 1. Read.
-  Point_set ps;
-  std::vector<Attribute> attributes;  // the input's other values, written after the estimates
-  bool had_normals = false;
+  // 1. Read, or count the points of a file too large for the memory limit.
+  const double memory_limit = o.memory_limit > 0 ? o.memory_limit : 0.25 * physical_memory();
+  Read_options read_options;
+  read_options.columns = o.columns;
+  read_options.keep_attributes = !o.drop_attributes;
+  read_options.progress = progress.phase("reading");
+  Scanned_input input = read_or_scan(o.input, read_options, memory_limit > 0 ? memory_limit : HUGE_VAL);
+  for(const std::string& w : input.cloud.warnings)
+    warn(w);
+  if(!input.fits)
   {
-    Read_options read_options;
-    read_options.columns = o.columns;
-    read_options.keep_attributes = !o.drop_attributes;
-    read_options.progress = progress.phase("reading");
-    Point_cloud cloud = read_point_cloud(o.input, read_options);
-    for(const std::string& w : cloud.warnings)
-      warn(w);
-    attributes = std::move(cloud.attributes);
-    had_normals = cloud.has_normals();
-    ps.reserve(cloud.size());
-    if(had_normals)
-      ps.add_normal_map();
-    for(std::size_t i = 0; i < cloud.size(); ++i)
-    {
-      const double* p = &cloud.xyz[3 * i];
-      const auto it = ps.insert(Point(p[0], p[1], p[2]));
-      if(had_normals)
-      {
-        const double* n = &cloud.normals[3 * i];
-        ps.normal(*it) = Vector(n[0], n[1], n[2]);
-      }
-    }
+    read_options.progress = Progress();
+    return run_tiled_input(context, output, read_options, input, memory_limit);
   }
+  Point_set ps;
+  const std::vector<Attribute> attributes = std::move(input.cloud.attributes);  // written after the estimates
+  const bool had_normals = input.cloud.has_normals();
+  fill_point_set(ps, input.cloud.xyz, input.cloud.normals);
+  input.cloud = Point_cloud();
   const double read_seconds = seconds_since(start);
   check_interrupted();
 
@@ -888,101 +1170,30 @@ int run(const Options& o)
 
   // 4. Curvatures.
   const auto estimation_start = std::chrono::steady_clock::now();
-  const Estimates estimates = o.method->run(ps, scale, progress.phase("curvatures"));
+  const Estimates estimates = o.method->run(ps, scale, progress.phase("curvatures"), PSC::Tile::whole_space());
   const double estimation_seconds = seconds_since(estimation_start);
   check_interrupted();
 
   // 5. Write.
-  Output_layout layout;
-  layout.format = out_ext == ".csv" ? Output_layout::CSV : o.ascii ? Output_layout::ASCII_PLY : Output_layout::BINARY_PLY;
-  const std::string method_label = std::string(o.method->name) +
-    (std::string(o.method->name) == "aso" ? (scale.variant == CGAL::Aso_variant::PAPER ? " (paper's variant)" : " (robust variant)") : "");
-  layout.comments.push_back(cat("point_set_curvatures method ", method_label, ", ", scale_description(scale)));
-  layout.comments.push_back(cat("input ", o.input));
-  double Estimate::*color_field = nullptr;
-  double color_range = 0;
-  bool with_color = false;
-  if(!o.color.empty())
-  {
-    color_field = color_quantities().at(o.color);
-    const std::vector<double> values = finite_values(estimates, color_field);
-    if(values.empty())
-      warn(cat("--color ", o.color, ": no valid value (not estimated by method ", o.method->name,
-                             "?); every point is grey"));
-    color_range = robust_range(values);
-    with_color = true;
-    layout.comments.push_back(
-      cat("colors: ", o.color, ", blue -", color_range, " white 0 red +", color_range, ", grey invalid"));
-  }
-  layout.fields = output_fields(o.fields, o.float32, with_color, attributes);
-  layout.attributes = &attributes;
-  if(!attributes.empty())
-  {
-    std::string kept;
-    for(const Attribute& a : attributes)
-      kept += (kept.empty() ? "" : " ") + a.name;
-    layout.comments.push_back(cat("input attributes: ", kept));
-  }
   const auto write_start = std::chrono::steady_clock::now();
-  write_point_cloud(output.file(), layout, ps.size(), [&](std::size_t i, Output_row& r) {
-    const Point& p = ps.point(*(ps.begin() + i));
-    const Estimate& e = estimates[i];
-    const double v[16] = {p.x(), p.y(), p.z(), e.normal.x(), e.normal.y(), e.normal.z(),
-                          e.min_curvature, e.max_curvature, e.mean_curvature, e.gaussian_curvature,
-                          e.min_direction.x(), e.min_direction.y(), e.min_direction.z(),
-                          e.max_direction.x(), e.max_direction.y(), e.max_direction.z()};
-    std::copy(v, v + 16, r.value);
-    r.neighbors = static_cast<std::int32_t>(std::min<std::size_t>(e.neighbor_count, INT32_MAX));
-    r.valid = e.is_valid() ? 1 : 0;
-    if(color_field)
-    {
-      const std::array<unsigned char, 3> c = diverging_color(e.is_valid() ? e.*color_field : std::nan(""), color_range);
-      std::copy(c.begin(), c.end(), r.color);
-    }
-  }, progress.phase("writing"));
-  progress.finish();
-  check_interrupted();
-  output.commit();
-  const double write_seconds = seconds_since(write_start);
-
-  const std::string small = small_neighborhood_warning(*o.method, scale, estimates);
-  if(!small.empty())
-    warn(small);
-  if(!o.quiet)
+  Row_summary summary(ps.size(), static_cast<int>(CGAL::Curvature_estimate_status::TOO_FEW_NEIGHBORS));
   {
-    for(const std::string& w : warnings)
-      std::fprintf(stderr, "%s: warning: %s\n", program, w.c_str());
-    std::size_t valid = 0, neighbors = 0;
-    std::map<std::string, std::size_t> invalid;
-    for(const Estimate& e : estimates)
-      if(e.is_valid())
-      {
-        ++valid;
-        neighbors += e.neighbor_count;
-      }
-      else
-        ++invalid[CGAL::to_string(e.status)];
-    std::string why;
-    for(const auto& s : invalid)
-      why += cat(why.empty() ? "; " : ", ", s.second, " ", s.first);
-    std::printf("%s: %s -> %s\n", program, o.input.c_str(), o.output.c_str());
-    std::printf("  method      %s: %s\n", method_label.c_str(), o.method->description);
-    std::printf("  scale       %s\n", scale_description(scale).c_str());
-    std::printf("  points      %zu%s\n", ps.size(), had_normals ? "" : " (normals estimated)");
-    std::printf("  valid       %zu (%.2f %%)%s\n", valid, 100.0 * valid / ps.size(), why.c_str());
-    std::printf("  neighbours  %.2f on average (valid estimates)\n",
-                valid ? double(neighbors) / valid : 0.0);
-    std::printf("  time        %.3f s: read %.3f, normals %.3f, spacing %.3f, curvatures %.3f, "
-                "write %.3f\n", seconds_since(start), read_seconds, normals_seconds, spacing_seconds,
-                estimation_seconds, write_seconds);
-    std::printf("  H (mean)    %s\n",
-                min_median_max(finite_values(estimates, &Estimate::mean_curvature), valid).c_str());
-    std::printf("  K (Gauss)   %s\n",
-                min_median_max(finite_values(estimates, &Estimate::gaussian_curvature), valid).c_str());
+    Output_row r;
+    for(std::size_t i = 0; i < ps.size(); ++i)
+    {
+      estimate_row(ps, estimates, i, r);
+      summary.add(i, r);
+    }
   }
+  write_output(context, output, scale, attributes, ps.size(), summary,
+               [&](std::size_t i, Output_row& r) { estimate_row(ps, estimates, i, r); });
+  const double write_seconds = seconds_since(write_start);
+  print_report(context, scale, ps.size(), had_normals, summary,
+               cat("read ", s3(read_seconds), ", normals ", s3(normals_seconds), ", spacing ", s3(spacing_seconds),
+                   ", curvatures ", s3(estimation_seconds), ", write ", s3(write_seconds)),
+               "");
   return 0;
 }
-
 } // namespace
 
 int main(int argc, char** argv)

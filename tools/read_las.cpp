@@ -73,8 +73,9 @@ std::size_t rgb_offset(int f) { return f == 2 ? 20 : f < 6 ? 28 : 30; }
 
 } // namespace
 
-Point_cloud read_las(Byte_source& bytes, const std::string& path, bool keep_attributes)
+Point_cloud read_las(Byte_source& bytes, const std::string& path, const Read_options& options)
 {
+  const bool keep_attributes = options.keep_attributes;
   auto fail = [&](const std::string& what) { throw Error(cat(in_quotes(path), ": ", what)); };
   const std::uint64_t file_size = bytes.remaining();
   if(bytes.fill(227) < 227)
@@ -143,7 +144,6 @@ Point_cloud read_las(Byte_source& bytes, const std::string& path, bool keep_attr
 
   Point_cloud cloud;
   const std::size_t n = std::size_t(count);
-  cloud.xyz.resize(3 * n);
   // the attributes of the format, in the order above
   enum Field
   {
@@ -171,27 +171,38 @@ Point_cloud read_las(Byte_source& bytes, const std::string& path, bool keep_attr
     present[RED] = present[GREEN] = present[BLUE] = has_rgb(format);
     present[NIR] = has_nir(format);
   }
-  double* column[FIELD_COUNT] = {};
   for(int f = 0; f < FIELD_COUNT; ++f)
     if(present[f])
-      cloud.attributes.push_back(Attribute{names[f], types[f], std::vector<double>(n)});
-  {
-    std::size_t a = 0;
-    for(int f = 0; f < FIELD_COUNT; ++f)
-      if(present[f])
-        column[f] = cloud.attributes[a++].values.data();
-  }
+      cloud.attributes.push_back(Attribute{names[f], types[f], {}});
+  // the points held: all of them, or a chunk at a time (Read_options::chunk)
+  const std::size_t held = options.chunk ? std::min(n, options.chunk_points) : n;
+  cloud.xyz.reserve(3 * held);
+  for(Attribute& a : cloud.attributes)
+    a.values.reserve(held);
 
   const std::size_t block = std::max<std::size_t>(1, (1u << 20) / record_length);
   double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
   const std::size_t rgb = rgb_offset(format);
+  double* column[FIELD_COUNT] = {};
   for(std::size_t first = 0; first < n;)
   {
     const std::size_t m = std::min(block, n - first);
     if(bytes.fill(m * record_length) < m * record_length)
       fail(cat("truncated: the file ends in point ", first + 1, " of the ", count, " declared in the header"));
+    // the block's points are held from index `local` on
+    const std::size_t local = cloud.size();
+    cloud.xyz.resize(3 * (local + m));
+    {
+      std::size_t a = 0;
+      for(int f = 0; f < FIELD_COUNT; ++f)
+        if(present[f])
+        {
+          cloud.attributes[a].values.resize(local + m);
+          column[f] = cloud.attributes[a++].values.data();
+        }
+    }
     const char* r = bytes.data();
-    for(std::size_t i = first; i < first + m; ++i, r += record_length)
+    for(std::size_t i = local; i < local + m; ++i, r += record_length)
     {
       for(int a = 0; a < 3; ++a)
       {
@@ -248,6 +259,7 @@ Point_cloud read_las(Byte_source& bytes, const std::string& path, bool keep_attr
     }
     bytes.advance(m * record_length);
     first += m;
+    hand_over(cloud, options);
   }
   // the header's bounds against the data, to half a unit of the scale (rounding)
   for(int a = 0; a < 3 && n > 0; ++a)
@@ -258,6 +270,7 @@ Point_cloud read_las(Byte_source& bytes, const std::string& path, bool keep_attr
                                    "] is not within the header's bounds [", min_bound[a], ", ", max_bound[a],
                                    "] (a corrupted header, or a writer that did not update it)"));
   }
+  hand_over(cloud, options, true);
   return cloud;  // the rest of the file (waveforms, extended records) is not read
 }
 

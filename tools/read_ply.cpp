@@ -245,7 +245,8 @@ std::string item_text(const Ply_element& e, std::uint64_t item)
   return cat(e.name, " ", item + 1, " of the ", e.count, " declared in the header");
 }
 
-void read_ply_binary(Byte_source& bytes, const Ply_header& h, Point_cloud& cloud, const std::string& path)
+void read_ply_binary(Byte_source& bytes, const Ply_header& h, Point_cloud& cloud, const std::string& path,
+                     const Read_options& options)
 {
   const std::uint16_t one = 1;
   unsigned char first_byte;
@@ -300,6 +301,8 @@ void read_ply_binary(Byte_source& bytes, const Ply_header& h, Point_cloud& cloud
         }
         bytes.advance(n * size);
         item += n;
+        if(is_vertex)
+          hand_over(cloud, options);
       }
       continue;
     }
@@ -348,6 +351,7 @@ void read_ply_binary(Byte_source& bytes, const Ply_header& h, Point_cloud& cloud
         cloud.xyz.insert(cloud.xyz.end(), values, values + 3);
         if(normals)
           cloud.normals.insert(cloud.normals.end(), values + 3, values + 6);
+        hand_over(cloud, options);
       }
     }
   }
@@ -382,7 +386,8 @@ private:
   std::size_t m_next = 0;
 };
 
-void read_ply_ascii(Line_source& lines, const Ply_header& h, Point_cloud& cloud, const std::string& path)
+void read_ply_ascii(Line_source& lines, const Ply_header& h, Point_cloud& cloud, const std::string& path,
+                    const Read_options& options)
 {
   Ascii_values values(lines);
   const bool normals = h.role_property[3] >= 0;
@@ -442,6 +447,7 @@ void read_ply_ascii(Line_source& lines, const Ply_header& h, Point_cloud& cloud,
         cloud.xyz.insert(cloud.xyz.end(), point, point + 3);
         if(normals)
           cloud.normals.insert(cloud.normals.end(), point + 3, point + 6);
+        hand_over(cloud, options);
       }
     }
   }
@@ -457,7 +463,7 @@ void read_ply_ascii(Line_source& lines, const Ply_header& h, Point_cloud& cloud,
 
 } // namespace
 
-Point_cloud read_ply(Byte_source& bytes, const std::string& path, bool keep_attributes)
+Point_cloud read_ply(Byte_source& bytes, const std::string& path, const Read_options& options)
 {
   Line_source lines(bytes);
   Ply_header h = read_ply_header(lines, path);
@@ -467,9 +473,11 @@ Point_cloud read_ply(Byte_source& bytes, const std::string& path, bool keep_attr
   // file's size bounds what is reserved; a count beyond what the file holds ends in a
   // "truncated" error when the data runs out.
   const std::uint64_t most = bytes.remaining() / (h.format == Ply_format::ASCII ? 6 : 3);
-  const std::size_t reserved = std::size_t(std::min(v.count, most));
+  std::uint64_t reserved = std::min(v.count, most);
+  if(options.chunk)
+    reserved = std::min<std::uint64_t>(reserved, options.chunk_points + (1u << 20) / 3);
   cloud.xyz.reserve(3 * reserved);
-  add_attributes(h, cloud, keep_attributes, reserved);
+  add_attributes(h, cloud, options.keep_attributes, std::size_t(reserved));
   if(h.role_property[3] >= 0)
   {
     cloud.normals.reserve(3 * reserved);
@@ -477,10 +485,10 @@ Point_cloud read_ply(Byte_source& bytes, const std::string& path, bool keep_attr
                                v.properties[h.role_property[4]].name, " ", v.properties[h.role_property[5]].name);
   }
   if(h.format == Ply_format::ASCII)
-    read_ply_ascii(lines, h, cloud, path);
+    read_ply_ascii(lines, h, cloud, path, options);
   else
   {
-    read_ply_binary(bytes, h, cloud, path);
+    read_ply_binary(bytes, h, cloud, path, options);
     // a line break some writers append after the data is not data
     for(int i = 0; i < 2 && bytes.fill(1) == 1 && (*bytes.data() == '\n' || *bytes.data() == '\r'); ++i)
       bytes.advance(1);
@@ -489,6 +497,7 @@ Point_cloud read_ply(Byte_source& bytes, const std::string& path, bool keep_attr
                       h.elements.size() > 1 ? " and other elements" : "",
                       " declared in the header (wrong vertex count?)"));
   }
+  hand_over(cloud, options, true);
   return cloud;
 }
 

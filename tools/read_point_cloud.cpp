@@ -79,23 +79,48 @@ double median(std::vector<double> v)
 }
 
 // Normals read from unnamed values: refused when they are not unit vectors (median length
-// outside [0.5, 2]: colours, intensities), never silently used as normals.
-void check_unit_normals(const Point_cloud& cloud, const std::string& path, const char* what)
+// outside [0.5, 2]: colours, intensities), never silently used as normals. Streaming: the
+// decision comes from counts (the median is below 0.5 when more than half the lengths are,
+// above 2 when at least the other half are), the same whether the points come in one piece
+// or in chunks; the message quotes the median of the first 65536 lengths.
+class Unit_normal_check
 {
-  std::vector<double> lengths;
-  for(std::size_t i = 0; i < cloud.size(); ++i)
+public:
+  void add(const Point_cloud& cloud)
   {
-    const double* n = &cloud.normals[3 * i];
-    const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    if(std::isfinite(l))
-      lengths.push_back(l);
+    for(std::size_t i = 0; i < cloud.size(); ++i)
+    {
+      const double* n = &cloud.normals[3 * i];
+      const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      if(!std::isfinite(l))
+        continue;
+      ++m_count;
+      m_below += l < 0.5;
+      m_above += l > 2;
+      if(m_sample.size() < 65536)
+        m_sample.push_back(l);
+    }
   }
-  const double m = median(lengths);
-  if(!(m >= 0.5 && m <= 2))
-    throw Error(cat(in_quotes(path), ": ", what, " are not unit normals (median length ", m,
+  void check(const std::string& path, const char* what) const
+  {
+    if(m_count > 0 && m_below <= m_count / 2 && m_above < m_count - m_count / 2)
+      return;
+    throw Error(cat(in_quotes(path), ": ", what, " are not unit normals (median length ", median(m_sample),
                     "): if they are colours or other values, give --columns to name the columns, for "
                     "example --columns x,y,z,r,g,b (normals are then estimated), or --columns "
                     "x,y,z,nx,ny,nz to use them as normals"));
+  }
+
+private:
+  std::uint64_t m_count = 0, m_below = 0, m_above = 0;
+  std::vector<double> m_sample;
+};
+
+void check_unit_normals(const Point_cloud& cloud, const std::string& path, const char* what)
+{
+  Unit_normal_check check;
+  check.add(cloud);
+  check.check(path, what);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -134,6 +159,19 @@ Point_cloud read_xyz(Byte_source& bytes, const std::string& path, const Read_opt
   }
   auto fail = [&](const std::string& what) {
     throw Error(cat(in_quotes(path), " line ", lines.line_number(), ": ", what));
+  };
+  // Names the normals' source and counts the lengths of unnamed normals before the points are
+  // handed over; they are checked at the end (an Error after chunks were handed over is
+  // allowed).
+  Unit_normal_check unit_normals;
+  auto hand_over_checked = [&](bool at_end) {
+    if(std::count(roles.begin(), roles.end(), 3) == 1)
+      cloud.normals_source = automatic_six ? "columns 4-6" : cat("the columns named by ", layout_origin);
+    if(automatic_six)
+      unit_normals.add(cloud);
+    if(at_end && automatic_six && cloud.total() > 0)
+      unit_normals.check(path, "its columns 4-6");
+    hand_over(cloud, options, at_end);
   };
   while(lines.next(line))
   {
@@ -208,17 +246,14 @@ Point_cloud read_xyz(Byte_source& bytes, const std::string& path, const Read_opt
         cloud.attributes[attribute_of[c]].values.push_back(v);
     }
     cloud.xyz.insert(cloud.xyz.end(), p, p + 3);
-    cloud.normals.insert(cloud.normals.end(), p + 3, p + 6);
+    if(roles.size() >= 6 && std::count(roles.begin(), roles.end(), 3) == 1)
+      cloud.normals.insert(cloud.normals.end(), p + 3, p + 6);
+    if(options.chunk && cloud.size() >= options.chunk_points)
+      hand_over_checked(false);
   }
-  if(has_count && declared != cloud.size())
-    throw Error(cat(in_quotes(path), ": its first line declares ", declared, " points but it has ", cloud.size()));
-  const bool with_normals = std::count(roles.begin(), roles.end(), 3) == 1;
-  if(!with_normals)
-    cloud.normals.clear();
-  else
-    cloud.normals_source = automatic_six ? "columns 4-6" : cat("the columns named by ", layout_origin);
-  if(automatic_six && cloud.size() > 0)
-    check_unit_normals(cloud, path, "its columns 4-6");
+  if(has_count && declared != cloud.total())
+    throw Error(cat(in_quotes(path), ": its first line declares ", declared, " points but it has ", cloud.total()));
+  hand_over_checked(true);
   return cloud;
 }
 
@@ -297,7 +332,7 @@ Point_cloud read_off(Byte_source& bytes, const std::string& path)
                     cloud.size()));
   if(faces != declared_faces)
     throw Error(cat(in_quotes(path), ": the header declares ", declared_faces, " faces but the file has ", faces));
-  if(cloud.has_normals())
+  if(!cloud.normals.empty())
   {
     cloud.normals_source = "the vertex lines (x y z nx ny nz)";
     check_unit_normals(cloud, path, "the 4th to 6th values of its vertex lines");
@@ -358,10 +393,12 @@ Point_cloud read_point_cloud(const std::string& path, const Read_options& option
     throw Error(cat("--columns applies to text point files (.xyz, .pwn, .txt, .csv), not to ", in_quotes(path)));
   Byte_source bytes(path, std::uint64_t(st.st_size), options.progress);
   Point_cloud cloud = text            ? read_xyz(bytes, path, options)
-                      : ext == ".ply" ? read_ply(bytes, path, options.keep_attributes)
-                      : ext == ".las" ? read_las(bytes, path, options.keep_attributes)
+                      : ext == ".ply" ? read_ply(bytes, path, options)
+                      : ext == ".las" ? read_las(bytes, path, options)
                                       : read_off(bytes, path);
-  if(cloud.size() == 0)
+  if(ext == ".off")
+    hand_over(cloud, options, true);
+  if(cloud.total() == 0)
     throw Error(cat(in_quotes(path), " contains no points"));
   if(options.progress && !options.progress(1.0))
     throw Cancelled();

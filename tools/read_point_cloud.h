@@ -29,6 +29,7 @@
 #include "tool_support.h"
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -57,9 +58,15 @@ struct Point_cloud
   std::string normals_source;   // where the normals came from, for messages
   std::vector<Attribute> attributes;  // empty unless Read_options::keep_attributes
   std::vector<std::string> warnings;  // file problems that do not prevent reading it
+  // With Read_options::chunk: the input index of the first point held (the points before it
+  // were handed over); 0 otherwise.
+  std::size_t first = 0;
 
+  // the points held
   std::size_t size() const { return xyz.size() / 3; }
-  bool has_normals() const { return !normals.empty(); }
+  // the points read so far: those handed over in chunks and those held
+  std::size_t total() const { return first + size(); }
+  bool has_normals() const { return !normals_source.empty(); }
 };
 
 struct Read_options
@@ -71,6 +78,14 @@ struct Read_options
   bool keep_attributes = true;
   // Called with the fraction of the file read, about every 1%; false cancels (Cancelled).
   Progress progress;
+  // Reading in chunks (the tool's tiles, for files larger than memory): when set, the points
+  // are handed to `chunk` in input order, `chunk_points` at a time or more (the last chunk
+  // fewer), and removed from the cloud; the cloud that read_point_cloud() returns then holds
+  // no points but the file's description (normals_source, attribute names and types,
+  // warnings; total() is the point count). The file is still checked completely: an Error
+  // may come after chunks were handed over. .off files come in one chunk.
+  std::function<void(const Point_cloud&)> chunk;
+  std::size_t chunk_points = std::size_t(1) << 20;
 };
 
 // The formats read_point_cloud() understands, for messages: ".xyz, .pwn, .txt, .csv, .ply, .off or .las".

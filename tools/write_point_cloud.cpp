@@ -197,6 +197,7 @@ void write_point_cloud(std::FILE* f, const Output_layout& layout, std::size_t n,
                        : s == Output_field::NEIGHBORS       ? double(r.neighbors)
                        : s == Output_field::VALID           ? double(r.valid)
                        : s < Output_field::ATTRIBUTE        ? double(r.color[s - Output_field::COLOR])
+                       : r.attributes                       ? r.attributes[s - Output_field::ATTRIBUTE]
                                                             : (*layout.attributes)[s - Output_field::ATTRIBUTE].values[i];
       if(layout.format == Output_layout::BINARY_PLY)
         put_binary_value(chunk, field.type, v, swap);

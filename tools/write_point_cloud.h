@@ -31,6 +31,10 @@ struct Output_row
   std::int32_t neighbors = 0;
   unsigned char valid = 0;
   unsigned char color[3] = {0, 0, 0};
+  int status = 0;  // the estimate's status (CGAL::Curvature_estimate_status), for the summary
+  // The row's attribute values in the order of Output_layout::attributes, or null: then
+  // value i of each attribute is row i's (the tool's tiled runs give each row its own).
+  const double* attributes = nullptr;
 };
 
 // One column of the output: its name, its type, and where its value comes from.

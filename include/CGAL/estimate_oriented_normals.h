@@ -267,6 +267,11 @@ std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, dou
   // 1. PCA normals and nearest neighbours, on the driver (the input normals are not read).
   Neighborhood_options options;
   options.function_name = name;
+  options.tile = choose_parameter(get_parameter(np, internal_np::tile), Tile::whole_space());
+  options.has_tile = !options.tile.is_whole_space();
+  if(options.has_tile && tree)
+    throw std::invalid_argument("estimate_oriented_normals: parameter 'tile' needs an orientation along a vector "
+                                "or towards a point: a spanning tree spans the whole cloud");
   bool cancelled = false;
   if(callback)
     options.callback = [&callback, &cancelled, tree](double f) {
@@ -279,8 +284,9 @@ std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, dou
   const CGAL::Constant_property_map<Key, Vector_3> no_normal(Vector_3(0, 0, 1));
   const std::vector<Pca_normal_record> records = evaluate_with_maps<Pca_normal_record, ConcurrencyTag>(
     points, radius_given, radius, k, point_map, no_normal, options, &pca_normal_record);
-  for(const Pca_normal_record& r : records)
-    cancelled = cancelled || r.status == Curvature_estimate_status::NOT_COMPUTED;
+  if(!options.has_tile)  // (with a tile, the other points are not computed)
+    for(const Pca_normal_record& r : records)
+      cancelled = cancelled || r.status == Curvature_estimate_status::NOT_COMPUTED;
 
   // 2. Orientation.
   const std::size_t count = records.size();
@@ -313,7 +319,7 @@ std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, dou
   }
 
   // 3. Output: the normals, zero where there is none (those points are then INVALID_NORMAL
-  // for the estimators) or if the run was cancelled.
+  // for the estimators), if the run was cancelled, or outside the tile's core.
   const auto normal_map = NP_helper::get_normal_map(points, np);
   std::size_t without = 0;
   i = 0;
@@ -374,6 +380,15 @@ std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, dou
 ///     \cgalParamType{`CGAL::Normal_orientation`}
 ///     \cgalParamDefault{`CGAL::Normal_orientation::minimum_spanning_tree()`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{Point_set_curvatures::parameters::tile}
+///     \cgalParamDescription{normals of the tile's own points only, bitwise as for the whole
+///       cloud (`CGAL::Point_set_curvatures::Tile`; the other points get a zero normal); with
+///       an orientation along a vector or towards a point only (the spanning tree spans the
+///       cloud: `std::invalid_argument`). By count, a halo too small for a point's `k` nearest
+///       throws `CGAL::Point_set_curvatures::Halo_too_small`.}
+///     \cgalParamType{`CGAL::Point_set_curvatures::Tile`}
+///     \cgalParamDefault{no tile: every point}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{callback}
 ///     \cgalParamDescription{called from the calling thread with the fraction done, at least
 ///       every 1% of the points (the PCA is the first 70% with the spanning tree); returning
@@ -388,7 +403,8 @@ std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, dou
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
-/// \throws std::invalid_argument for a `neighbor_count` of 0 or a non-finite orientation target.
+/// \throws std::invalid_argument for a `neighbor_count` of 0, a non-finite orientation target,
+/// or a tile with the spanning tree.
 template <typename ConcurrencyTag, typename PointRange,
           typename NamedParameters = parameters::Default_named_parameters>
 std::size_t estimate_oriented_normals(PointRange& points,

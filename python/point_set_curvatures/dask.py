@@ -11,9 +11,8 @@ the single-process run (the library's guarantee, tested in ``tests/test_dask.py`
 The halo is two radii with a radius (the default ASO's sample weights need two; one would do
 for the other estimators). By neighbour count a point's radius is only known once its
 neighbours are found: a tile whose halo is too small fails with
-:class:`point_set_curvatures.HaloTooSmall`, and is resubmitted with the halo it asks for.
-The ASO's default sample weights are not supported by count on tiles: use
-``aso_variant="paper"`` or ``sample_weights="uniform"`` there.
+:class:`point_set_curvatures.HaloTooSmall`, and is resubmitted with the halo it asks for
+(with the ASO's default sample weights, also when its neighbours' areas need a larger one).
 
 :func:`estimate_curvatures` takes arrays held by the client and scatters each tile's points;
 :func:`estimate_curvatures_file` takes PLY / .npy files that the workers read themselves, tile

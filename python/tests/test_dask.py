@@ -55,6 +55,10 @@ def test_dask_by_count_and_methods(client, cloud):
     # a small first halo: the tiles that need more are resubmitted (HaloTooSmall)
     assert_same(single, psc_dask.estimate_curvatures(client, points, normals, neighbors=30, aso_variant="paper",
                                                      tile_size=0.5, initial_halo=1e-3))
+    # the default ASO (sample weights) by count: the areas may ask for a larger halo too
+    default = psc.estimate_curvatures(points, normals, neighbors=30)
+    assert_same(default, psc_dask.estimate_curvatures(client, points, normals, neighbors=30, tile_size=0.5,
+                                                      initial_halo=1e-3))
     apss = psc.estimate_curvatures(points, normals, method="pss", radius=0.03)
     assert_same(apss, psc_dask.estimate_curvatures(client, points, normals, method="pss", radius=0.03))
 

@@ -48,6 +48,23 @@ struct Tile
   Tile() = default;
   Tile(const Bbox_3& core_box, double halo_distance) : core(core_box), halo(halo_distance) {}
 
+  /// The tile whose core is all of space: every point is own, the same as passing no tile
+  /// (a driver can then always pass a tile, for example the whole cloud when it fits in
+  /// memory, and pieces of it when it does not).
+  static Tile whole_space()
+  {
+    const double inf = std::numeric_limits<double>::infinity();
+    return Tile(Bbox_3(-inf, -inf, -inf, inf, inf, inf), inf);
+  }
+
+  /// `true` for a tile whose core is all of space (see `whole_space()`)
+  bool is_whole_space() const
+  {
+    const double inf = std::numeric_limits<double>::infinity();
+    return core.xmin() == -inf && core.ymin() == -inf && core.zmin() == -inf && core.xmax() == inf &&
+           core.ymax() == inf && core.zmax() == inf;
+  }
+
   /// `true` if the point `(x, y, z)` is one of the tile's own points (never for NaN)
   bool owns(double x, double y, double z) const
   {

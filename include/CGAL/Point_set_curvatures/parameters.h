@@ -134,10 +134,10 @@ accept_unnormalized_normals(bool accept, const NamedParameters& np = CGAL::param
 /// keep `NON_FINITE_POINT` or `INVALID_NORMAL`). With a halo too small for that,
 /// the function throws `CGAL::Point_set_curvatures::Halo_too_small` (neighbourhoods by count)
 /// or `std::invalid_argument` (by radius: the halo must be at least the radius, twice the
-/// radius with sample weights, the default of `estimate_aso_curvatures()`). Not supported
-/// with `normal_refinement`, nor with sample weights and neighbourhoods by count
-/// (`std::invalid_argument`: use `sample_weights(Sample_weights::UNIFORM)` or
-/// `aso_variant(Aso_variant::PAPER)` there).
+/// radius with sample weights, the default of `estimate_aso_curvatures()`; by count with
+/// sample weights, the areas of the own points' neighbours must also be exact, which is
+/// checked after the estimation). Not supported with `normal_refinement`
+/// (`std::invalid_argument`). `Tile::whole_space()` is the same as no tile (no restriction).
 template <class NamedParameters = CGAL::parameters::Default_named_parameters>
 CGAL::Named_function_parameters<Tile, internal_np::tile_t, NamedParameters>
 tile(const Tile& t, const NamedParameters& np = CGAL::parameters::default_values())

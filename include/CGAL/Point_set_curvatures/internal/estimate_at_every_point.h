@@ -14,6 +14,8 @@
 #include <CGAL/Point_set_curvatures/parameters.h>
 #include <CGAL/property_map.h>
 
+#include <algorithm>
+#include <atomic>
 #include <functional>
 #include <type_traits>
 #include <utility>
@@ -59,8 +61,9 @@ Neighborhood_options neighborhood_options(const NamedParameters& np, const char*
   options.function_name = function_name;
   options.check_normal_length =
     !choose_parameter(get_parameter(np, internal_np::accept_unnormalized_normals), false);
-  options.has_tile = !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::tile_t>::value;
-  options.tile = choose_parameter(get_parameter(np, internal_np::tile), Tile());
+  // a tile whose core is all of space is the whole cloud: no tile
+  options.tile = choose_parameter(get_parameter(np, internal_np::tile), Tile::whole_space());
+  options.has_tile = !options.tile.is_whole_space();
   return options;
 }
 
@@ -135,30 +138,62 @@ std::vector<Result> evaluate_at_every_point(const PointRange& points, bool radiu
 // square that bounds it (half-side a quarter of the estimation's radius) is reached only
 // where samples are sparse. 5 times cheaper than the estimation's neighbourhoods for the same
 // areas to 1e-3 on the Goursat clouds (measured in the session that introduced them).
+//
+// With `tile` (neighbourhoods by count on a tile's range), `reach` receives per point the
+// distance from the core to the farthest point its area depends on (its distance to the
+// core plus its neighbourhood's radius; 0 for unusable points): the area is the whole-cloud
+// one wherever that reach is within the halo.
 template <class ConcurrencyTag, class PointRange, class PointMap, class NormalMap>
 std::vector<double> tangent_voronoi_areas(const PointRange& points, bool radius_given, double radius,
                                           std::size_t k, PointMap point_map, NormalMap normal_map,
-                                          const Neighborhood_options& options)
+                                          const Neighborhood_options& options, const Tile* tile = nullptr,
+                                          std::vector<double>* reach = nullptr)
 {
   struct Area
   {
     double value = 0;
+    double reach = 0;
     Curvature_estimate_status status = Curvature_estimate_status::NOT_COMPUTED;
   };
   const std::vector<Area> records = evaluate_with_maps<Area, ConcurrencyTag>(
     points, radius_given, 0.5 * radius, std::max<std::size_t>(6, k / 4), point_map, normal_map, options,
-    [](const Neighborhood& nb) {
+    [tile](const Neighborhood& nb) {
       thread_local Tangent_cell_scratch scratch;
       Area a;
       a.value = tangent_voronoi_area(nb, 0.5, scratch);
+      if(tile)
+        a.reach = tile->distance_to_core(nb.center[0], nb.center[1], nb.center[2]) + nb.radius;
       a.status = Curvature_estimate_status::VALID;
       return a;
     });
   std::vector<double> areas(records.size());
   for(std::size_t i = 0; i < records.size(); ++i)
     areas[i] = records[i].status == Curvature_estimate_status::VALID ? records[i].value : 0.0;
+  if(reach)
+  {
+    reach->resize(records.size());
+    for(std::size_t i = 0; i < records.size(); ++i)
+      (*reach)[i] = records[i].status == Curvature_estimate_status::VALID ? records[i].reach : 0.0;
+  }
   return areas;
 }
+
+// The largest value given to update(), from any thread.
+class Atomic_max
+{
+public:
+  void update(double v)
+  {
+    double current = m_value.load();
+    while(v > current && !m_value.compare_exchange_weak(current, v))
+    {
+    }
+  }
+  double value() const { return m_value.load(); }
+
+private:
+  std::atomic<double> m_value{0.0};
+};
 
 // The normal fit of a refinement pass: estimator.refinement_fit(nb) where the estimator has
 // one (the ASO: its APSS sphere with the wider kernel), else the estimator itself.
@@ -200,7 +235,14 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
   const std::size_t k = checked_scale<PointRange>(radius, radius_given, np, function_name);
   const std::size_t min_neighbors = min_neighbors_parameter(np, estimator.min_neighbors);
   Neighborhood_options options = neighborhood_options(np, function_name, estimator.normalize_normals);
-  const auto evaluate_as = [&estimator, min_neighbors](const Neighborhood& nb, bool refinement) {
+  // With a tile, sample weights and neighbourhoods by count: how far from the core the
+  // neighbours of the own points lie (see below).
+  Atomic_max* neighbor_extent = nullptr;
+  const auto evaluate_as = [&estimator, min_neighbors, &neighbor_extent, &options](const Neighborhood& nb,
+                                                                                  bool refinement) {
+    if(neighbor_extent)
+      neighbor_extent->update(nb.radius -
+                              options.tile.distance_inside_core(nb.center[0], nb.center[1], nb.center[2]));
     if(nb.size < min_neighbors)
       return to_curvature_estimate<Geom_traits>(
         Local_estimate::invalid(Curvature_estimate_status::TOO_FEW_NEIGHBORS), nb.size);
@@ -218,9 +260,9 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
     return evaluate_with_maps<Estimate, ConcurrencyTag>(points, radius_given, radius, k, point_map,
                                                         normal_map, options, evaluate);
 
-  if(options.has_tile && (estimator.refinement > 0 || !radius_given))
+  if(options.has_tile && estimator.refinement > 0)
     throw std::invalid_argument(std::string(function_name) + ": parameter 'tile' is not supported with "
-                                "normal_refinement, nor with sample weights and neighbourhoods by count");
+                                "normal_refinement");
   // Progress over the passes, each a share of [0, 1] in proportion to its cost: the area
   // pass (a quarter of the neighbours) and a refinement pass (a sphere fit) cost about half
   // an estimation pass (measured with benchmark/aso_speed).
@@ -258,17 +300,28 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
   };
 
   std::vector<double> areas;
+  // By count on a tile: per point of the range, how far from the core its area reaches.
+  std::vector<double> area_reach;
+  Atomic_max own_neighbor_extent;
+  const bool tile_by_count = options.has_tile && !radius_given;
   if(estimator.sample_weights)
   {
     // The areas of the neighbours of a tile's own points need their own neighbours: every
-    // point of the range is weighted, and the halo must reach two radii.
+    // point of the range is weighted. By radius, the halo must reach two radii (a neighbour's
+    // area reaches r/2 beyond it). By count, the estimation records how far from the core
+    // the own points' neighbours lie, and the areas of the points that close to the core must
+    // reach no farther than the halo (checked after the estimation).
     Neighborhood_options o = share(pass++);
     o.has_tile = false;
-    areas = tangent_voronoi_areas<ConcurrencyTag>(points, radius_given, radius, k, point_map, normal_map, o);
+    areas = tangent_voronoi_areas<ConcurrencyTag>(points, radius_given, radius, k, point_map, normal_map, o,
+                                                  tile_by_count ? &options.tile : nullptr,
+                                                  tile_by_count ? &area_reach : nullptr);
     if(cancelled)
       return std::vector<Estimate>(areas.size());  // every point NOT_COMPUTED
     options.sample_weights = &areas;
-    options.reach = 2;
+    options.reach = radius_given ? 2 : 1;
+    if(tile_by_count)
+      neighbor_extent = &own_neighbor_extent;
   }
   // Refinement: each pass's corrected normals are the next pass's input normals (the input
   // normal where a pass has no estimate); the last pass is the estimation.
@@ -301,6 +354,26 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
       return std::vector<Estimate>(result.size());  // every point NOT_COMPUTED
     if(cancelled)
       break;  // (the points not reached are NOT_COMPUTED, as in a single pass)
+  }
+  if(neighbor_extent && !cancelled)
+  {
+    // A neighbour p_j of an own point x_i (|p_j - x_i| <= r_i) is within r_i minus x_i's depth
+    // in the core of the core, hence within `extent` of it; its area is the whole-cloud one
+    // if the points it depends on are within the halo. Otherwise the halo must grow to the
+    // farthest such reach (the reach of an area computed in a truncated range only
+    // overestimates the true one).
+    const double extent = neighbor_extent->value();
+    double required = 0;
+    std::size_t i = 0;
+    for(auto it = points.begin(); it != points.end(); ++it, ++i)
+    {
+      const auto& p = get(point_map, *it);
+      const double d = options.tile.distance_to_core(to_double(p.x()), to_double(p.y()), to_double(p.z()));
+      if(d <= extent && area_reach[i] > options.tile.halo)
+        required = (std::max)(required, area_reach[i]);
+    }
+    if(required > options.tile.halo)
+      throw Halo_too_small(required, options.tile.halo);
   }
   return result;
 }

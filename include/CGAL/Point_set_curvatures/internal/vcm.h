@@ -158,7 +158,7 @@ estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double 
   };
   // CGAL's VCM integrates over Voronoi cells, which depend on points beyond any fixed halo:
   // tiles cannot give the whole-cloud result, so they are refused rather than approximated.
-  if(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::tile_t>::value)
+  if(!choose_parameter(get_parameter(np, internal_np::tile), Tile::whole_space()).is_whole_space())
     throw std::invalid_argument(std::string(function_name) + ": parameter 'tile' is not supported by VCM");
   const std::size_t min_count =
     (std::max)(vcm_min_neighbors, min_neighbors_parameter(np, default_min_neighbors::vcm));

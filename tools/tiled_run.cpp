@@ -1,0 +1,497 @@
+// Copyright (c) 2026 The Point_set_curvatures authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The tool's tiled runs (see tiled_run.h).
+
+#include "tiled_run.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <queue>
+#include <utility>
+
+namespace psc_tool {
+
+namespace PSC = CGAL::Point_set_curvatures;
+
+double bytes_per_point(std::size_t attributes) { return 300.0 + 16.0 * double(attributes); }
+
+namespace {
+
+bool finite_point(const double* p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
+
+double seconds_since(std::chrono::steady_clock::time_point t)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// Appends point k of `from` to `to` (coordinates, normal, attribute values).
+void append_point(const Point_cloud& from, std::size_t k, std::vector<double>& xyz, std::vector<double>& normals,
+                  std::vector<std::vector<double>>& attributes)
+{
+  xyz.insert(xyz.end(), &from.xyz[3 * k], &from.xyz[3 * k] + 3);
+  if(!from.normals.empty())
+    normals.insert(normals.end(), &from.normals[3 * k], &from.normals[3 * k] + 3);
+  attributes.resize(from.attributes.size());
+  for(std::size_t a = 0; a < from.attributes.size(); ++a)
+    attributes[a].push_back(from.attributes[a].values[k]);
+}
+
+// Counts of the finite points per cell of a grid of at most 128 cells per axis over the
+// bounds, with prefix sums: the number of points in any box of cells in constant time.
+class Density_grid
+{
+public:
+  Density_grid(const double lo[3], const double hi[3])
+  {
+    double longest = 0;
+    for(int a = 0; a < 3; ++a)
+      longest = std::max(longest, hi[a] - lo[a]);
+    for(int a = 0; a < 3; ++a)
+    {
+      m_lo[a] = lo[a];
+      const double extent = hi[a] - lo[a];
+      m_dims[a] = extent > 0 && longest > 0
+                    ? std::size_t(std::max(1.0, std::min(128.0, std::ceil(128.0 * extent / longest))))
+                    : 1;
+      m_cell[a] = extent > 0 ? extent / double(m_dims[a]) : 1.0;
+    }
+    m_count.assign(m_dims[0] * m_dims[1] * m_dims[2], 0);
+  }
+
+  void add(const double* p) { ++m_count[cell(0, p[0]) + m_dims[0] * (cell(1, p[1]) + m_dims[1] * cell(2, p[2]))]; }
+
+  // after the last add()
+  void finish()
+  {
+    const std::size_t d0 = m_dims[0] + 1, d1 = m_dims[1] + 1, d2 = m_dims[2] + 1;
+    m_sum.assign(d0 * d1 * d2, 0);
+    for(std::size_t k = 1; k < d2; ++k)
+      for(std::size_t j = 1; j < d1; ++j)
+        for(std::size_t i = 1; i < d0; ++i)
+          m_sum[i + d0 * (j + d1 * k)] = m_count[(i - 1) + m_dims[0] * ((j - 1) + m_dims[1] * (k - 1))] +
+                                         m_sum[(i - 1) + d0 * (j + d1 * k)] + m_sum[i + d0 * ((j - 1) + d1 * k)] +
+                                         m_sum[i + d0 * (j + d1 * (k - 1))] - m_sum[(i - 1) + d0 * ((j - 1) + d1 * k)] -
+                                         m_sum[(i - 1) + d0 * (j + d1 * (k - 1))] -
+                                         m_sum[i + d0 * ((j - 1) + d1 * (k - 1))] +
+                                         m_sum[(i - 1) + d0 * ((j - 1) + d1 * (k - 1))];
+  }
+
+  // An upper bound of the points in the box [lo, hi] (the cells it meets).
+  std::uint64_t at_most(const double lo[3], const double hi[3]) const
+  {
+    std::size_t b[3], e[3];
+    for(int a = 0; a < 3; ++a)
+    {
+      if(hi[a] < m_lo[a] || lo[a] > m_lo[a] + m_cell[a] * double(m_dims[a]))
+        return 0;
+      b[a] = cell(a, lo[a]);
+      e[a] = cell(a, hi[a]) + 1;
+    }
+    const std::size_t d0 = m_dims[0] + 1, d1 = m_dims[1] + 1;
+    auto s = [&](std::size_t i, std::size_t j, std::size_t k) { return m_sum[i + d0 * (j + d1 * k)]; };
+    return s(e[0], e[1], e[2]) - s(b[0], e[1], e[2]) - s(e[0], b[1], e[2]) - s(e[0], e[1], b[2]) +
+           s(b[0], b[1], e[2]) + s(b[0], e[1], b[2]) + s(e[0], b[1], b[2]) - s(b[0], b[1], b[2]);
+  }
+
+private:
+  std::size_t cell(int a, double v) const
+  {
+    const double c = std::floor((v - m_lo[a]) / m_cell[a]);
+    return c <= 0 ? 0 : c >= double(m_dims[a] - 1) ? m_dims[a] - 1 : std::size_t(c);
+  }
+  double m_lo[3], m_cell[3];
+  std::size_t m_dims[3];
+  std::vector<std::uint64_t> m_count, m_sum;
+};
+
+// The most points of one tile with its halo, bounded from the density grid.
+std::uint64_t largest_tile(const PSC::Tile_grid& grid, const Density_grid& density, const double lo[3],
+                           const double hi[3], double halo)
+{
+  std::uint64_t most = 0;
+  for(std::size_t t = 0; t < grid.size(); ++t)
+  {
+    const PSC::Tile tile = grid.tile(t, halo);
+    double b[3], e[3];
+    for(int a = 0; a < 3; ++a)
+    {
+      b[a] = std::max(tile.core.min(a), lo[a]) - halo;
+      e[a] = std::min(tile.core.max(a), hi[a]) + halo;
+    }
+    most = std::max(most, density.at_most(b, e));
+  }
+  return most;
+}
+
+// A temporary file of records (input index, row, attribute values), unlinked as soon as it
+// is created: it disappears with the process, however the process ends.
+class Row_file
+{
+public:
+  Row_file(const std::string& prefix, std::size_t attributes) : m_attributes(attributes)
+  {
+    std::string pattern = prefix + "XXXXXX";
+    std::vector<char> name(pattern.begin(), pattern.end());
+    name.push_back('\0');
+    const int fd = ::mkstemp(name.data());
+    if(fd < 0)
+      throw Error(cat("cannot create a temporary file ", in_quotes(pattern), ": ", std::strerror(errno)));
+    ::unlink(name.data());
+    m_name = name.data();
+    m_file = ::fdopen(fd, "w+b");
+    if(!m_file)
+    {
+      ::close(fd);
+      throw Error(cat("cannot create a temporary file ", in_quotes(m_name), ": ", std::strerror(errno)));
+    }
+    m_buffer.reset(new char[1 << 20]);
+    std::setvbuf(m_file, m_buffer.get(), _IOFBF, 1 << 20);
+  }
+  ~Row_file()
+  {
+    if(m_file)
+      std::fclose(m_file);
+  }
+  Row_file(const Row_file&) = delete;
+  Row_file& operator=(const Row_file&) = delete;
+
+  void put(std::uint64_t index, const Output_row& row, const double* attributes)
+  {
+    Output_row r = row;
+    r.attributes = nullptr;
+    std::fwrite(&index, sizeof index, 1, m_file);
+    std::fwrite(&r, sizeof r, 1, m_file);
+    if(m_attributes)
+      std::fwrite(attributes, sizeof(double), m_attributes, m_file);
+  }
+
+  // after the last put(): reading from the first record
+  void rewind()
+  {
+    if(std::fflush(m_file) != 0 || std::ferror(m_file))
+      throw Error(cat("cannot write the temporary file ", in_quotes(m_name), ": ", std::strerror(errno)));
+    std::rewind(m_file);
+  }
+
+  // false at the end
+  bool get(std::uint64_t& index, Output_row& row, std::vector<double>& attributes)
+  {
+    attributes.resize(m_attributes);
+    if(std::fread(&index, sizeof index, 1, m_file) != 1)
+      return false;
+    if(std::fread(&row, sizeof row, 1, m_file) != 1 ||
+       (m_attributes && std::fread(attributes.data(), sizeof(double), m_attributes, m_file) != m_attributes))
+      throw Error(cat("cannot read the temporary file ", in_quotes(m_name)));
+    row.attributes = nullptr;
+    return true;
+  }
+
+private:
+  std::size_t m_attributes;
+  std::string m_name;
+  std::FILE* m_file = nullptr;
+  std::unique_ptr<char[]> m_buffer;
+};
+
+// The box of the tiles: the 0.1% and 99.9% quantiles of the sample on each axis, so that a
+// few outliers do not stretch the tiles (the outer tiles reach to infinity: they own them).
+void tile_box(const Scanned_input& input, double lo[3], double hi[3])
+{
+  for(int a = 0; a < 3; ++a)
+  {
+    lo[a] = hi[a] = 0;
+    if(input.sample.empty())
+      continue;
+    std::vector<double> v;
+    v.reserve(input.sample.size() / 3);
+    for(std::size_t i = a; i < input.sample.size(); i += 3)
+      v.push_back(input.sample[i]);
+    std::sort(v.begin(), v.end());
+    lo[a] = v[std::size_t(0.001 * double(v.size() - 1))];
+    hi[a] = v[std::size_t(std::ceil(0.999 * double(v.size() - 1)))];
+  }
+}
+
+} // namespace
+
+double density_halo(const Scanned_input& input, std::size_t k)
+{
+  double lo[3], hi[3];
+  tile_box(input, lo, hi);
+  double e[3] = {hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]};
+  std::sort(e, e + 3);
+  const double area = std::max(e[1] * e[2], 1e-300);
+  return 2 * std::sqrt(area * double(k) / (3.14159265358979 * double(std::max<std::uint64_t>(1, input.finite))));
+}
+
+Scanned_input read_or_scan(const std::string& path, const Read_options& options, double memory_limit)
+{
+  Scanned_input s;
+  for(int a = 0; a < 3; ++a)
+  {
+    s.lo[a] = HUGE_VAL;
+    s.hi[a] = -HUGE_VAL;
+  }
+  bool keeping = true;
+  std::size_t stride = 1, seen = 0;  // every stride-th finite point is sampled
+  std::vector<double> xyz, normals;
+  std::vector<std::vector<double>> attributes;
+  Read_options o = options;
+  o.chunk_points = 1 << 16;
+  o.chunk = [&](const Point_cloud& c) {
+    for(std::size_t k = 0; k < c.size(); ++k)
+    {
+      const double* p = &c.xyz[3 * k];
+      if(!finite_point(p))
+        continue;
+      ++s.finite;
+      for(int a = 0; a < 3; ++a)
+      {
+        s.lo[a] = std::min(s.lo[a], p[a]);
+        s.hi[a] = std::max(s.hi[a], p[a]);
+      }
+      if(seen++ % stride != 0)
+        continue;
+      s.sample.insert(s.sample.end(), p, p + 3);
+      if(s.sample.size() > 3 * (std::size_t(1) << 20))
+      {
+        // keep every other sampled point
+        std::size_t m = 0;
+        for(std::size_t i = 0; 3 * i < s.sample.size(); i += 2, ++m)
+          std::copy(&s.sample[3 * i], &s.sample[3 * i] + 3, &s.sample[3 * m]);
+        s.sample.resize(3 * m);
+        stride *= 2;
+      }
+    }
+    s.points += c.size();
+    if(!keeping)
+      return;
+    if(double(s.points) * bytes_per_point(c.attributes.size()) > memory_limit)
+    {
+      keeping = false;
+      std::vector<double>().swap(xyz);
+      std::vector<double>().swap(normals);
+      std::vector<std::vector<double>>().swap(attributes);
+      return;
+    }
+    xyz.insert(xyz.end(), c.xyz.begin(), c.xyz.end());
+    normals.insert(normals.end(), c.normals.begin(), c.normals.end());
+    attributes.resize(c.attributes.size());
+    for(std::size_t a = 0; a < c.attributes.size(); ++a)
+      attributes[a].insert(attributes[a].end(), c.attributes[a].values.begin(), c.attributes[a].values.end());
+  };
+  s.cloud = read_point_cloud(path, o);
+  s.fits = keeping;
+  if(keeping)
+  {
+    s.cloud.first = 0;
+    s.cloud.xyz = std::move(xyz);
+    s.cloud.normals = std::move(normals);
+    for(std::size_t a = 0; a < s.cloud.attributes.size() && a < attributes.size(); ++a)
+      s.cloud.attributes[a].values = std::move(attributes[a]);
+  }
+  return s;
+}
+
+Tiled_report run_tiled(const std::string& path, const Read_options& options, const Scanned_input& input,
+                       const Tiling& tiling, const Tile_estimator& estimate,
+                       const std::function<void(std::size_t, const Output_row&)>& own_row,
+                       const std::function<void(const Row_source&)>& write)
+{
+  Tiled_report report;
+  const std::size_t attribute_count = input.cloud.attributes.size();
+  const bool with_normals = input.cloud.has_normals();
+  double lo[3], hi[3];
+  tile_box(input, lo, hi);
+  const double first_halo = (tiling.neighbors > 0 ? density_halo(input, tiling.neighbors) : tiling.halo) +
+                            tiling.extra_halo;
+  double halo = first_halo;
+
+  // 1. The density, and the tiles: the largest tiles whose points with their halo fit.
+  Density_grid density(lo, hi);
+  const auto density_start = std::chrono::steady_clock::now();
+  {
+    Read_options o = options;
+    o.chunk_points = 1 << 16;
+    o.progress = tiling.phase("density");
+    o.chunk = [&](const Point_cloud& c) {
+      for(std::size_t k = 0; k < c.size(); ++k)
+        if(finite_point(&c.xyz[3 * k]))
+          density.add(&c.xyz[3 * k]);
+    };
+    read_point_cloud(path, o);
+  }
+  density.finish();
+  report.density_seconds = seconds_since(density_start);
+  const double budget = tiling.memory_limit / bytes_per_point(attribute_count);
+  const CGAL::Bbox_3 box(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
+  double longest = 0;
+  for(int a = 0; a < 3; ++a)
+    longest = std::max(longest, hi[a] - lo[a]);
+  PSC::Tile_grid grid(box, std::array<std::size_t, 3>{{1, 1, 1}});
+  for(double side = longest; side > 0;)
+  {
+    side *= 0.8;
+    if(largest_tile(grid, density, lo, hi, halo) <= budget)
+      break;
+    std::array<std::size_t, 3> counts;
+    for(int a = 0; a < 3; ++a)
+      counts[a] = hi[a] > lo[a] ? std::size_t(std::ceil((hi[a] - lo[a]) / side)) : 1;
+    if(counts[0] * counts[1] * counts[2] > 4096)
+      break;  // the halos dominate: as good as it gets
+    grid = PSC::Tile_grid(box, counts);
+  }
+
+  // 2. The tiles, each read from the file with its halo, estimated, and its own rows written
+  // to a temporary file. Non-finite points are nobody's own: the first tile writes their rows.
+  std::vector<std::unique_ptr<Row_file>> files;
+  for(std::size_t t = 0; t < grid.size(); ++t)
+  {
+    {
+      const PSC::Tile core = grid.tile(t, 0);
+      double b[3], e[3];
+      for(int a = 0; a < 3; ++a)
+      {
+        b[a] = std::max(core.core.min(a), lo[a]);
+        e[a] = std::min(core.core.max(a), hi[a]);
+      }
+      if(t > 0 && density.at_most(b, e) == 0)
+        continue;  // no own point
+    }
+    const std::string name = cat("tile ", t + 1, "/", grid.size());
+    halo = first_halo;  // each tile grows its own (by count: an outlier needs a large one)
+    for(;;)
+    {
+      const PSC::Tile tile = grid.tile(t, halo);
+      Tile_points points;
+      std::vector<char> own;
+      std::size_t own_count = 0;
+      const auto read_start = std::chrono::steady_clock::now();
+      {
+        // reserved from the density (an upper bound), the chunks small: the tile's points
+        // are most of the memory
+        double b[3], e[3];
+        for(int a = 0; a < 3; ++a)
+        {
+          b[a] = std::max(tile.core.min(a), lo[a]) - halo;
+          e[a] = std::min(tile.core.max(a), hi[a]) + halo;
+        }
+        const std::size_t expected = std::size_t(density.at_most(b, e)) + (t == 0 ? input.points - input.finite : 0);
+        points.xyz.reserve(3 * expected);
+        if(with_normals)
+          points.normals.reserve(3 * expected);
+        points.index.reserve(expected);
+        own.reserve(expected);
+        points.attributes.resize(attribute_count);
+        for(std::vector<double>& a : points.attributes)
+          a.reserve(expected);
+        Read_options o = options;
+        o.chunk_points = 1 << 16;
+        o.progress = tiling.phase(name + " read");
+        o.chunk = [&](const Point_cloud& c) {
+          points.attributes.resize(c.attributes.size());
+          for(std::size_t k = 0; k < c.size(); ++k)
+          {
+            const double* p = &c.xyz[3 * k];
+            const bool finite = finite_point(p);
+            if(finite ? !(tile.distance_to_core(p[0], p[1], p[2]) <= halo) : t != 0)
+              continue;
+            append_point(c, k, points.xyz, points.normals, points.attributes);
+            points.index.push_back(c.first + k);
+            const bool is_own = finite ? tile.owns(p[0], p[1], p[2]) : true;
+            own.push_back(is_own ? 1 : 0);
+            own_count += is_own;
+          }
+        };
+        read_point_cloud(path, o);
+      }
+      report.read_seconds += seconds_since(read_start);
+      if(own_count == 0)
+        break;
+      if(with_normals && points.normals.size() != points.xyz.size())
+        throw Error(cat(in_quotes(path), ": internal error: normals missing in a tile"));
+      const auto estimate_start = std::chrono::steady_clock::now();
+      const std::size_t range = points.size();
+      Row_source rows;
+      try
+      {
+        rows = estimate(points, tile, tiling.phase(name + " curvatures"));
+      }
+      catch(const PSC::Halo_too_small& e)
+      {
+        if(!(e.required_halo() > halo))
+          throw;
+        halo = e.required_halo();
+        ++report.halo_growths;
+        report.estimate_seconds += seconds_since(estimate_start);
+        continue;  // read the tile again with the larger halo
+      }
+      report.estimate_seconds += seconds_since(estimate_start);
+      report.largest_range = std::max(report.largest_range, range);
+      report.halo = std::max(report.halo, halo);
+      ++report.tiles;
+      const auto rows_start = std::chrono::steady_clock::now();
+      files.emplace_back(new Row_file(tiling.temporary_prefix + cat("tile", t + 1, "-"), attribute_count));
+      Output_row r;
+      std::vector<double> values(attribute_count);
+      for(std::size_t k = 0; k < points.size(); ++k)
+      {
+        if(!own[k])
+          continue;
+        rows(k, r);
+        for(std::size_t a = 0; a < attribute_count; ++a)
+          values[a] = points.attributes[a][k];
+        files.back()->put(points.index[k], r, values.data());
+        own_row(points.index[k], r);
+      }
+      files.back()->rewind();
+      report.rows_seconds += seconds_since(rows_start);
+      break;
+    }
+    if(tiling.interrupted && tiling.interrupted())
+      throw Cancelled();
+  }
+
+  // 3. The rows in input order: a merge of the tiles' files, each sorted by input index.
+  struct Head
+  {
+    std::uint64_t index;
+    std::size_t file;
+    bool operator<(const Head& h) const { return index > h.index; }  // smallest on top
+  };
+  std::priority_queue<Head> heads;
+  std::vector<Output_row> head_row(files.size());
+  std::vector<std::vector<double>> head_values(files.size());
+  for(std::size_t f = 0; f < files.size(); ++f)
+  {
+    std::uint64_t index;
+    if(files[f]->get(index, head_row[f], head_values[f]))
+      heads.push(Head{index, f});
+  }
+  std::vector<double> current_values(attribute_count);
+  write([&](std::size_t i, Output_row& r) {
+    if(heads.empty() || heads.top().index != i)
+      throw Error(cat("internal error: row ", i, " is missing from the tiles"));
+    const std::size_t f = heads.top().file;
+    heads.pop();
+    r = head_row[f];
+    current_values.swap(head_values[f]);
+    r.attributes = current_values.data();
+    std::uint64_t index;
+    if(files[f]->get(index, head_row[f], head_values[f]))
+      heads.push(Head{index, f});
+  });
+  return report;
+}
+
+} // namespace psc_tool

@@ -1,0 +1,113 @@
+// Copyright (c) 2026 The Point_set_curvatures authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The tool on files larger than its memory limit (--memory-limit). The input is read once
+// in chunks (read_or_scan): if its points fit, they are kept and the run is the usual
+// in-memory one; otherwise the read only counts them and bounds them. Then (run_tiled) a
+// second read counts the points per cell of a fine grid, from which a
+// CGAL::Point_set_curvatures::Tile_grid is chosen whose tiles, with their halos, fit the
+// limit; each tile reads the file again, keeping the points within its halo in input order,
+// is estimated with the library's `tile` parameter (bitwise as in one piece), and writes the
+// rows of its own points to a temporary file, sorted by input index. A final merge of these
+// files gives the rows in input order to the writer. Neighbourhoods by count start from a
+// halo guessed from the density and grow it when the library says it is too small
+// (Halo_too_small), which it does before estimating.
+
+#ifndef POINT_SET_CURVATURES_TOOL_TILED_RUN_H
+#define POINT_SET_CURVATURES_TOOL_TILED_RUN_H
+
+#include "read_point_cloud.h"
+#include "tool_support.h"
+#include "write_point_cloud.h"
+
+#include <CGAL/Point_set_curvatures/Tile.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace psc_tool {
+
+// The input's points within a tile's halo, in input order.
+struct Tile_points
+{
+  std::vector<double> xyz, normals;               // 3 per point; normals empty without
+  std::vector<std::uint64_t> index;               // each point's index in the input
+  std::vector<std::vector<double>> attributes;    // per attribute of the input, a value per point
+  std::size_t size() const { return index.size(); }
+};
+
+// What read_or_scan() found.
+struct Scanned_input
+{
+  bool fits = false;           // the whole cloud is in `cloud`
+  Point_cloud cloud;           // all the points if `fits`; otherwise only the description
+  std::uint64_t points = 0;    // every point of the file
+  std::uint64_t finite = 0;    // those with finite coordinates
+  double lo[3], hi[3];         // the bounds of the finite points
+  // a sample of the finite points (x y z, at most 2^20 of them, evenly spaced in input
+  // order), for bounds that ignore outliers
+  std::vector<double> sample;
+};
+
+// The memory an in-memory run takes per point with `attributes` input attributes (measured
+// with /usr/bin/time -v, see the README).
+double bytes_per_point(std::size_t attributes);
+
+// The radius holding `k` points on a surface spanning the two largest extents of the box of
+// the 0.1% to 99.9% quantiles of the sample (the box of the tiles), twice that: a first halo
+// for neighbourhoods of `k` nearest.
+double density_halo(const Scanned_input& input, std::size_t k);
+
+// Reads `path` in chunks; keeps the points as long as their estimated memory stays within
+// `memory_limit` bytes.
+Scanned_input read_or_scan(const std::string& path, const Read_options& options, double memory_limit);
+
+// Row i of the output (i in increasing order).
+typedef std::function<void(std::size_t, Output_row&)> Row_source;
+
+struct Tiling
+{
+  double memory_limit = 0;     // bytes
+  double halo = 0;             // the halo of the tiles by radius
+  std::size_t neighbors = 0;   // by count (halo unused): the tiles start with density_halo()
+  double extra_halo = 0;       // added to the first halo (the estimator's own needs)
+  // A tile's halo grows when the estimator throws Halo_too_small (by count, or an estimator
+  // with needs of its own such as normals).
+  std::string temporary_prefix;  // the temporary files are named prefix + "tileN-XXXXXX"
+  // starts a progress phase (the reads, the estimations) and returns its callback
+  std::function<Progress(const std::string&)> phase;
+  // called after every tile; true to cancel (Cancelled is thrown)
+  std::function<bool()> interrupted;
+};
+
+// Estimates the points of a tile, reporting to `progress`, and returns the source of their
+// rows (k: the point's rank in `points`). May free the points' coordinates and normals.
+// Throws CGAL::Point_set_curvatures::Halo_too_small when the halo must grow.
+typedef std::function<Row_source(Tile_points& points, const CGAL::Point_set_curvatures::Tile& tile,
+                                 const Progress& progress)>
+  Tile_estimator;
+
+struct Tiled_report
+{
+  std::size_t tiles = 0;       // tiles with own points
+  std::size_t halo_growths = 0;  // tiles read again with a larger halo
+  double halo = 0;             // the largest halo of a tile
+  std::size_t largest_range = 0;  // the most points of one tile with its halo
+  double density_seconds = 0;  // the pass that chooses the tiles
+  double read_seconds = 0, estimate_seconds = 0;  // of all tiles
+  double rows_seconds = 0;  // the tiles' rows to their temporary files
+};
+
+// Runs the tiles and then `write(rows)`, where rows(i, r) gives row i in input order; every
+// row also goes to `own_row(i, r)` once, as soon as its tile is estimated (for a summary).
+Tiled_report run_tiled(const std::string& path, const Read_options& options, const Scanned_input& input,
+                       const Tiling& tiling, const Tile_estimator& estimate,
+                       const std::function<void(std::size_t, const Output_row&)>& own_row,
+                       const std::function<void(const Row_source&)>& write);
+
+} // namespace psc_tool
+
+#endif
