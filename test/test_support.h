@@ -277,9 +277,12 @@ inline void put_le(std::string& s, std::size_t at, T v)
     s[at + k] = char(b[k]);
 }
 
+// With `beam_from` (formats 4, 5, 9, 10), the wave packets' pulse directions x(t) y(t) z(t)
+// point from that position (the scanner) to each point, 1e-3 times their difference.
 inline std::string las_file(const std::vector<Oriented_point>& pts, int format, int minor, double scale,
                             const double offset[3], std::size_t extra = 0,
-                            std::vector<std::array<double, 3> >* quantised = nullptr)
+                            std::vector<std::array<double, 3> >* quantised = nullptr,
+                            const double* beam_from = nullptr)
 {
   static const std::size_t sizes[11] = {20, 28, 26, 34, 57, 63, 30, 36, 38, 59, 67};
   const std::size_t header = minor >= 4 ? 375 : minor == 3 ? 235 : 227;
@@ -333,6 +336,15 @@ inline std::string las_file(const std::vector<Oriented_point>& pts, int format, 
         put_le<std::uint16_t>(body, o + 30, las_red(i));
       if(format == 8 || format == 10)
         put_le<std::uint16_t>(body, o + 36, 4242);
+    }
+    if(beam_from && (format == 4 || format == 5 || format == 9 || format == 10))
+    {
+      const std::size_t w = o + (format == 4 ? 28 : format == 5 ? 34 : format == 9 ? 30 : 38);
+      put_le<std::uint8_t>(body, w, 1);
+      put_le<std::uint32_t>(body, w + 9, 256);
+      put_le<float>(body, w + 13, 1000.0f);
+      for(int a = 0; a < 3; ++a)
+        put_le<float>(body, w + 17 + 4 * a, float(1e-3 * (pts[i].first[a] - beam_from[a])));
     }
   }
   for(int a = 0; a < 3; ++a)

@@ -1220,10 +1220,10 @@ namespace {
 
 std::vector<std::array<double, 3> > write_las(const std::string& path, const std::vector<Oriented_point>& pts,
                                               int format, int minor, double scale, const double offset[3],
-                                              std::size_t extra = 0)
+                                              std::size_t extra = 0, const double* beam_from = nullptr)
 {
   std::vector<std::array<double, 3> > quantised;
-  write_text(path, las_file(pts, format, minor, scale, offset, extra, &quantised));
+  write_text(path, las_file(pts, format, minor, scale, offset, extra, &quantised, beam_from));
   return quantised;
 }
 
@@ -1332,6 +1332,36 @@ TEST_CASE("tool: LAS 1.2-1.4 point formats 0-10 with their fields as attributes,
     CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
     CHECK(!fs::exists(file("refused.ply")));
   }
+  // --orient scanner: each normal towards the origin of its pulse (the wave packets' x(t) y(t)
+  // z(t) of formats 4, 5, 9, 10), here the sphere's centre: the same normals, so the same
+  // output, as --orient viewpoint at the centre; in memory and in tiles
+  const double centre[3] = {1e6 + 3, 2e6 + 4, 105};
+  for(int format : {4, 9, 10})
+  {
+    INFO("point format " << format);
+    const std::string las = file("w" + std::to_string(format) + ".las");
+    write_las(las, pts, format, format == 4 ? 3 : 4, 0.001, offset, 0, centre);
+    const Run scanner = run_tool(q(las) + " " + q(file("scanner.ply")) + " --radius 0.5 --orient scanner");
+    const Run view = run_tool(q(las) + " " + q(file("view.ply")) + " --radius 0.5" + viewpoint);
+    REQUIRE(scanner.status == 0);
+    REQUIRE(view.status == 0);
+    CHECK(scanner.out.find("valid       3000 (100.00 %)") != std::string::npos);
+    const std::string a = read_text(file("scanner.ply")), b = read_text(file("view.ply"));
+    CHECK(a.substr(a.find("end_header")) == b.substr(b.find("end_header")));
+    CHECK(a.find("property float wave_x_t\nproperty float wave_y_t\nproperty float wave_z_t\n") != std::string::npos);
+    const Run tiled =
+      run_tool(q(las) + " " + q(file("scanner_tiled.ply")) + " --radius 0.5 --orient scanner --memory-limit 400K");
+    REQUIRE(tiled.status == 0);
+    CHECK(tiled.out.find("  tiles") != std::string::npos);
+    CHECK(read_text(file("scanner_tiled.ply")) == a);
+  }
+  {
+    const Run r = run_tool(q(file("f3.las")) + " " + q(file("x.ply")) + " --radius 0.5 --orient scanner");
+    CHECK(r.status == 2);
+    CHECK(r.err.find("--orient scanner: ") != std::string::npos);
+    CHECK(r.err.find("holds no pulse directions") != std::string::npos);
+  }
+
   // header bounds that do not hold the points: read, with a warning
   std::string wrong_bounds = good;
   put_le<double>(wrong_bounds, 179, 1e6 + 4.0);  // max x below the sphere's 1e6 + 5

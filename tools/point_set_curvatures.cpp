@@ -204,6 +204,7 @@ struct Options
   std::vector<std::string> columns;  // --columns, empty: automatic
   CGAL::Normal_orientation orientation;  // --orient
   std::string orientation_text = "mst";
+  bool orient_scanner = false;           // --orient scanner
   std::size_t normal_neighbors = 18;     // --normal-neighbors
   double memory_limit = 0;               // --memory-limit in bytes; 0: a quarter of the RAM
 };
@@ -257,7 +258,9 @@ void print_usage(std::ostream& os)
      << "  --require-normals  fail if INPUT has no normals instead of estimating them\n"
      << "  --orient O         orientation of estimated normals: mst (propagated along a minimum\n"
      << "                     spanning tree, default), +z, -z, +x, -x, +y, -y (airborne scans:\n"
-     << "                     +z), or viewpoint:X,Y,Z (towards the scanner at X,Y,Z)\n"
+     << "                     +z), viewpoint:X,Y,Z (towards the scanner at X,Y,Z), or scanner\n"
+     << "                     (LAS point formats 4, 5, 9, 10: towards the origin of each\n"
+     << "                     point's pulse, its wave packet's x(t) y(t) z(t))\n"
      << "  --normal-neighbors K  neighbours of the normal estimation (default 18)\n"
      << "  --memory-limit M   memory for the points, in bytes or with a unit: 500M, 8G (default:\n"
      << "                     a quarter of the machine's RAM). A larger input is estimated in\n"
@@ -336,6 +339,8 @@ CGAL::Normal_orientation parse_orientation(const std::string& text)
 {
   if(text == "mst")
     return CGAL::Normal_orientation::minimum_spanning_tree();
+  if(text == "scanner")  // +z, then each normal towards its pulse's origin (orient_towards_scanner())
+    return CGAL::Normal_orientation::along_vector(0, 0, 1);
   if(text.size() == 2 && (text[0] == '+' || text[0] == '-') && text[1] >= 'x' && text[1] <= 'z')
   {
     double v[3] = {0, 0, 0};
@@ -357,7 +362,7 @@ CGAL::Normal_orientation parse_orientation(const std::string& text)
     return CGAL::Normal_orientation::towards_point(v[0], v[1], v[2]);
   }
   throw Error(cat("--orient: unknown orientation ", in_quotes(text),
-                  " (mst, +z, -z, +x, -x, +y, -y or viewpoint:X,Y,Z)"));
+                  " (mst, +z, -z, +x, -x, +y, -y, viewpoint:X,Y,Z or scanner)"));
 }
 
 Options parse_command_line(int argc, char** argv)
@@ -438,6 +443,7 @@ Options parse_command_line(int argc, char** argv)
     {
       o.orientation_text = take_value();
       o.orientation = parse_orientation(o.orientation_text);
+      o.orient_scanner = o.orientation_text == "scanner";
     }
     else if(name == "--normal-neighbors" || name == "--normal-neighbours")
     {
@@ -501,6 +507,43 @@ Options parse_command_line(int argc, char** argv)
   o.input = positional[0];
   o.output = positional[1];
   return o;
+}
+
+// ---------------------------------------------------------------------------------------
+// --orient scanner
+
+// The attributes holding the pulse directions x(t) y(t) z(t) of LAS wave packets (read_las.cpp).
+std::array<int, 3> pulse_attributes(const std::vector<Attribute>& attributes)
+{
+  std::array<int, 3> found = {{-1, -1, -1}};
+  for(std::size_t j = 0; j < attributes.size(); ++j)
+    for(int a = 0; a < 3; ++a)
+      if(attributes[j].name == std::string("wave_") + "xyz"[a] + "_t")
+        found[a] = int(j);
+  return found;
+}
+
+// Turns each normal towards the origin of its point's pulse: against the pulse's direction
+// (x(t), y(t), z(t): from the scanner to the point). Points without a direction (zero or not
+// finite) keep the +z orientation; returns their number.
+template <class Normal_of, class Pulse_of>
+std::size_t orient_towards_scanner(std::size_t n, const Normal_of& normal, const Pulse_of& pulse)
+{
+  std::size_t without = 0;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const std::array<double, 3> d = pulse(i);
+    const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    if(!(dd > 0) || !std::isfinite(dd))
+    {
+      ++without;
+      continue;
+    }
+    Vector& v = normal(i);
+    if(v.x() * d[0] + v.y() * d[1] + v.z() * d[2] > 0)
+      v = -v;
+  }
+  return without;
 }
 
 // ---------------------------------------------------------------------------------------
@@ -1021,6 +1064,16 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
       }
       if(interrupted)
         throw Cancelled();
+      if(o.orient_scanner)
+      {
+        const std::array<int, 3> pulse = pulse_attributes(input.cloud.attributes);
+        orient_towards_scanner(
+          ps->size(), [&ps](std::size_t i) -> Vector& { return ps->normal(*(ps->begin() + i)); },
+          [&](std::size_t i) {
+            return std::array<double, 3>{{points.attributes[pulse[0]][i], points.attributes[pulse[1]][i],
+                                          points.attributes[pulse[2]][i]}};
+          });
+      }
     }
     try
     {
@@ -1049,7 +1102,8 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
     [&summary](std::size_t i, const Output_row& r) { summary.add(i, r); },
     [&](const Row_source& rows) {
       const auto write_start = std::chrono::steady_clock::now();
-      write_output(c, output, scale, input.cloud.attributes, n, summary, rows);
+      write_output(c, output, scale, o.drop_attributes ? std::vector<Attribute>() : input.cloud.attributes, n,
+                   summary, rows);
       write_seconds = seconds_since(write_start);
     });
   if(!with_normals)
@@ -1115,11 +1169,15 @@ int run(const Options& o)
   const double memory_limit = o.memory_limit > 0 ? o.memory_limit : 0.25 * physical_memory();
   Read_options read_options;
   read_options.columns = o.columns;
-  read_options.keep_attributes = !o.drop_attributes;
+  read_options.keep_attributes = !o.drop_attributes || o.orient_scanner;  // the pulses of --orient scanner
   read_options.progress = progress.phase("reading");
   Scanned_input input = read_or_scan(o.input, read_options, memory_limit > 0 ? memory_limit : HUGE_VAL);
   for(const std::string& w : input.cloud.warnings)
     warn(w);
+  const std::array<int, 3> pulse = pulse_attributes(input.cloud.attributes);
+  if(o.orient_scanner && !input.cloud.has_normals() && *std::min_element(pulse.begin(), pulse.end()) < 0)
+    throw Error(cat("--orient scanner: ", in_quotes(o.input), " holds no pulse directions (the wave packets of LAS point "
+                    "formats 4, 5, 9 and 10); use --orient +z (airborne scans) or viewpoint:X,Y,Z"));
   if(!input.fits)
   {
     read_options.progress = Progress();
@@ -1127,6 +1185,7 @@ int run(const Options& o)
   }
   Point_set ps;
   const std::vector<Attribute> attributes = std::move(input.cloud.attributes);  // written after the estimates
+  const std::vector<Attribute> no_attributes;
   const bool had_normals = input.cloud.has_normals();
   fill_point_set(ps, input.cloud.xyz, input.cloud.normals);
   input.cloud = Point_cloud();
@@ -1146,6 +1205,17 @@ int run(const Options& o)
     if(without > 0)
       warn(cat(without, " points got no normal (coincident or collinear neighbours, non-finite "
                "coordinates) and are invalid_normal"));
+    if(o.orient_scanner)
+    {
+      const std::size_t undirected = orient_towards_scanner(
+        ps.size(), [&ps](std::size_t i) -> Vector& { return ps.normal(*(ps.begin() + i)); },
+        [&](std::size_t i) {
+          return std::array<double, 3>{{attributes[pulse[0]].values[i], attributes[pulse[1]].values[i],
+                                        attributes[pulse[2]].values[i]}};
+        });
+      if(undirected > 0)
+        warn(cat("--orient scanner: ", undirected, " points have no pulse direction and keep normals oriented to +z"));
+    }
   }
   const double normals_seconds = seconds_since(start) - read_seconds;
   check_interrupted();
@@ -1185,7 +1255,7 @@ int run(const Options& o)
       summary.add(i, r);
     }
   }
-  write_output(context, output, scale, attributes, ps.size(), summary,
+  write_output(context, output, scale, o.drop_attributes ? no_attributes : attributes, ps.size(), summary,
                [&](std::size_t i, Output_row& r) { estimate_row(ps, estimates, i, r); });
   const double write_seconds = seconds_since(write_start);
   print_report(context, scale, ps.size(), had_normals, summary,

@@ -70,6 +70,11 @@ bool has_nir(int f) { return f == 8 || f == 10; }
 // offset of red (formats 2, 3, 5: after the legacy fields or the GPS time; 7, 8, 10: after
 // the 30 bytes of format 6)
 std::size_t rgb_offset(int f) { return f == 2 ? 20 : f < 6 ? 28 : 30; }
+bool has_wave_packet(int f) { return f == 4 || f == 5 || f == 9 || f == 10; }
+// where the wave packet fields start: descriptor index (uchar), byte offset to the waveform
+// (uint64), packet size (uint32), return point location (float, picoseconds), then the
+// parametric line of the pulse x(t) y(t) z(t) (floats, coordinate units per picosecond)
+std::size_t wave_offset(int f) { return f == 4 ? 28 : f == 5 ? 34 : f == 9 ? 30 : 38; }
 
 } // namespace
 
@@ -149,17 +154,19 @@ Point_cloud read_las(Byte_source& bytes, const std::string& path, const Read_opt
   {
     INTENSITY, RETURN_NUMBER, NUMBER_OF_RETURNS, SCAN_DIRECTION, EDGE, CLASSIFICATION, SYNTHETIC, KEY_POINT,
     WITHHELD, OVERLAP, SCANNER_CHANNEL, SCAN_ANGLE, USER_DATA, POINT_SOURCE, GPS_TIME, RED, GREEN, BLUE, NIR,
-    FIELD_COUNT
+    WAVE_DESCRIPTOR, WAVE_SIZE, WAVE_LOCATION, WAVE_X_T, WAVE_Y_T, WAVE_Z_T, FIELD_COUNT
   };
   static const char* const names[FIELD_COUNT] = {
     "intensity", "return_number", "number_of_returns", "scan_direction_flag", "edge_of_flight_line",
     "classification", "synthetic", "key_point", "withheld", "overlap", "scanner_channel", "scan_angle",
-    "user_data", "point_source_id", "gps_time", "red", "green", "blue", "nir"};
+    "user_data", "point_source_id", "gps_time", "red", "green", "blue", "nir", "wave_descriptor",
+    "wave_packet_size", "wave_return_location", "wave_x_t", "wave_y_t", "wave_z_t"};
   static const Scalar_type types[FIELD_COUNT] = {
     Scalar_type::UINT16, Scalar_type::UINT8, Scalar_type::UINT8, Scalar_type::UINT8, Scalar_type::UINT8,
     Scalar_type::UINT8, Scalar_type::UINT8, Scalar_type::UINT8, Scalar_type::UINT8, Scalar_type::UINT8,
     Scalar_type::UINT8, Scalar_type::FLOAT32, Scalar_type::UINT8, Scalar_type::UINT16, Scalar_type::FLOAT64,
-    Scalar_type::UINT16, Scalar_type::UINT16, Scalar_type::UINT16, Scalar_type::UINT16};
+    Scalar_type::UINT16, Scalar_type::UINT16, Scalar_type::UINT16, Scalar_type::UINT16, Scalar_type::UINT8,
+    Scalar_type::UINT32, Scalar_type::FLOAT32, Scalar_type::FLOAT32, Scalar_type::FLOAT32, Scalar_type::FLOAT32};
   const bool extended = format >= 6;
   bool present[FIELD_COUNT];
   for(int f = 0; f < FIELD_COUNT; ++f)
@@ -170,6 +177,8 @@ Point_cloud read_las(Byte_source& bytes, const std::string& path, const Read_opt
     present[GPS_TIME] = has_gps_time(format);
     present[RED] = present[GREEN] = present[BLUE] = has_rgb(format);
     present[NIR] = has_nir(format);
+    for(int f = WAVE_DESCRIPTOR; f <= WAVE_Z_T; ++f)
+      present[f] = has_wave_packet(format);
   }
   for(int f = 0; f < FIELD_COUNT; ++f)
     if(present[f])
@@ -256,6 +265,16 @@ Point_cloud read_las(Byte_source& bytes, const std::string& path, const Read_opt
       }
       if(present[NIR])
         column[NIR][i] = little<std::uint16_t>(r + rgb + 6);
+      if(present[WAVE_DESCRIPTOR])
+      {
+        const char* w = r + wave_offset(format);
+        column[WAVE_DESCRIPTOR][i] = little<std::uint8_t>(w);
+        column[WAVE_SIZE][i] = little<std::uint32_t>(w + 9);
+        column[WAVE_LOCATION][i] = little<float>(w + 13);
+        column[WAVE_X_T][i] = little<float>(w + 17);
+        column[WAVE_Y_T][i] = little<float>(w + 21);
+        column[WAVE_Z_T][i] = little<float>(w + 25);
+      }
     }
     bytes.advance(m * record_length);
     first += m;
