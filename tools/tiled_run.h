@@ -11,7 +11,8 @@
 // rows of its own points to a temporary file, sorted by input index. A final merge of these
 // files gives the rows in input order to the writer. Neighbourhoods by count start from a
 // halo guessed from the density and grow it when the library says it is too small
-// (Halo_too_small), which it does before estimating.
+// (Halo_too_small: before estimating, or after it when the sample weights' areas need more),
+// as do the normals estimated per tile (the tool's estimator, point_set_curvatures.cpp).
 
 #ifndef POINT_SET_CURVATURES_TOOL_TILED_RUN_H
 #define POINT_SET_CURVATURES_TOOL_TILED_RUN_H
