@@ -986,7 +986,7 @@ TEST_CASE("tool: 3-neighbour estimates are invalid, with one warning suggesting 
   INFO(r.err);
   REQUIRE(r.status == 0);
   CHECK(r.out.find("valid       0 (0.00 %)") != std::string::npos);
-  CHECK(r.err.find("warning: the median neighbourhood holds 3 points, fewer than the 15") != std::string::npos);
+  CHECK(r.err.find("warning: the median neighbourhood holds 3 points, fewer than the 12") != std::string::npos);
   CHECK(r.err.find("try --radius ") != std::string::npos);
   CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
   const std::string rows = read_text(file("lidar.csv"));

@@ -140,7 +140,7 @@ struct Method
 const std::vector<Method>& methods()
 {
   static const std::vector<Method> table = {
-    PSC_TOOL_METHOD(aso, "Algebraic Shape Operator (Lejemble et al. 2021): full curvature tensor", 15),
+    PSC_TOOL_METHOD(aso, "Algebraic Shape Operator (Lejemble et al. 2021): full curvature tensor", 12),
     PSC_TOOL_METHOD(apss, "APSS algebraic sphere: corrected normal and mean curvature only", 20),
 #ifdef PSC_TOOL_HAS_BARYCENTER
     PSC_TOOL_METHOD(barycenter, "baseline: distance to the barycentre", 25),
@@ -232,8 +232,9 @@ void print_usage(std::ostream& os)
      << "options:\n"
      << "  --method M         estimator: " << method_names() << " (default aso)\n"
      << "  --variant V        aso: robust (default: kernel (1-d^2/r^2)^3, tangent Voronoi area\n"
-     << "                     weights, neighbours' normals oriented by their majority) or paper\n"
-     << "                     (the estimator of Lejemble et al. 2021 exactly)\n"
+     << "                     weights, neighbours' normals oriented by their majority, a fit of\n"
+     << "                     the normal field blended in at borders) or paper (the estimator\n"
+     << "                     of Lejemble et al. 2021 exactly)\n"
      << "  --neighbors K      neighbourhoods by count: each point's radius is the distance to its\n"
      << "                     K-th nearest neighbour, itself counted (default: --neighbors 40)\n"
      << "  --radius R         neighbourhoods of radius R, in the unit of the coordinates; or Nx\n"
@@ -707,12 +708,9 @@ class Temporary_output
 public:
   explicit Temporary_output(const std::string& output) : m_output(output)
   {
-    const std::size_t slash = output.find_last_of('/');
-    const std::string folder = slash == std::string::npos ? "" : output.substr(0, slash + 1);
-    const std::string name = slash == std::string::npos ? output : output.substr(slash + 1);
-    if(name.empty())
+    const std::string pattern = hidden_sibling(output, ".tmp-XXXXXX");
+    if(pattern.empty())
       throw Error(cat("invalid output file name ", in_quotes(output)));
-    std::string pattern = folder + "." + name + ".tmp-XXXXXX";
     std::vector<char> buffer(pattern.begin(), pattern.end());
     buffer.push_back('\0');
     const int fd = ::mkstemp(buffer.data());
@@ -793,11 +791,6 @@ std::string min_median_max(const Row_summary& s, int q)
   if(s.count(q) == 0)
     return s.valid() ? "n/a (not estimated by this method)" : "n/a (no valid estimate)";
   return cat("min ", s.min(q), "  median ", percentile(s.sample(q), 0.5), "  max ", s.max(q));
-}
-
-double seconds_since(std::chrono::steady_clock::time_point t)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
 // "1.234": seconds in the report
@@ -1009,11 +1002,7 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
     tiling.neighbors = scale.neighbors;
   else
     tiling.halo = 2 * scale.radius;  // the reach of the sample weights' areas
-  {
-    const std::size_t slash = o.output.find_last_of('/');
-    tiling.temporary_prefix = (slash == std::string::npos ? std::string() : o.output.substr(0, slash + 1)) + "." +
-                              (slash == std::string::npos ? o.output : o.output.substr(slash + 1)) + ".";
-  }
+  tiling.temporary_prefix = hidden_sibling(o.output, ".");
   tiling.phase = [&c](const std::string& name) { return c.progress.phase(name); };
   tiling.interrupted = []() { return interrupted != 0; };
   // the normals' share of a tile's halo: first guessed from the density, then grown to what

@@ -29,11 +29,6 @@ namespace {
 
 bool finite_point(const double* p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
 
-double seconds_since(std::chrono::steady_clock::time_point t)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
-
 // Appends point k of `from` to `to` (coordinates, normal, attribute values).
 void append_point(const Point_cloud& from, std::size_t k, std::vector<double>& xyz, std::vector<double>& normals,
                   std::vector<std::vector<double>>& attributes)
@@ -114,6 +109,20 @@ private:
   std::vector<std::uint64_t> m_count, m_sum;
 };
 
+// The box [b, e] where the points of tile t with its halo are counted in the density grid:
+// the tile's core clamped to the box of the tiles [lo, hi] (the outer tiles are infinite),
+// grown by the halo.
+void tile_box(const PSC::Tile_grid& grid, std::size_t t, const double lo[3], const double hi[3], double halo,
+              double b[3], double e[3])
+{
+  const PSC::Tile tile = grid.tile(t, halo);
+  for(int a = 0; a < 3; ++a)
+  {
+    b[a] = std::max(tile.core.min(a), lo[a]) - halo;
+    e[a] = std::min(tile.core.max(a), hi[a]) + halo;
+  }
+}
+
 // The most points of one tile with its halo, bounded from the density grid.
 std::uint64_t largest_tile(const PSC::Tile_grid& grid, const Density_grid& density, const double lo[3],
                            const double hi[3], double halo)
@@ -121,13 +130,8 @@ std::uint64_t largest_tile(const PSC::Tile_grid& grid, const Density_grid& densi
   std::uint64_t most = 0;
   for(std::size_t t = 0; t < grid.size(); ++t)
   {
-    const PSC::Tile tile = grid.tile(t, halo);
     double b[3], e[3];
-    for(int a = 0; a < 3; ++a)
-    {
-      b[a] = std::max(tile.core.min(a), lo[a]) - halo;
-      e[a] = std::min(tile.core.max(a), hi[a]) + halo;
-    }
+    tile_box(grid, t, lo, hi, halo, b, e);
     most = std::max(most, density.at_most(b, e));
   }
   return most;
@@ -358,13 +362,8 @@ Tiled_report run_tiled(const std::string& path, const Read_options& options, con
   for(std::size_t t = 0; t < grid.size(); ++t)
   {
     {
-      const PSC::Tile core = grid.tile(t, 0);
       double b[3], e[3];
-      for(int a = 0; a < 3; ++a)
-      {
-        b[a] = std::max(core.core.min(a), lo[a]);
-        e[a] = std::min(core.core.max(a), hi[a]);
-      }
+      tile_box(grid, t, lo, hi, 0, b, e);
       if(t > 0 && density.at_most(b, e) == 0)
         continue;  // no own point
     }
@@ -381,11 +380,7 @@ Tiled_report run_tiled(const std::string& path, const Read_options& options, con
         // reserved from the density (an upper bound), the chunks small: the tile's points
         // are most of the memory
         double b[3], e[3];
-        for(int a = 0; a < 3; ++a)
-        {
-          b[a] = std::max(tile.core.min(a), lo[a]) - halo;
-          e[a] = std::min(tile.core.max(a), hi[a]) + halo;
-        }
+        tile_box(grid, t, lo, hi, halo, b, e);
         const std::size_t expected = std::size_t(density.at_most(b, e)) + (t == 0 ? input.points - input.finite : 0);
         points.xyz.reserve(3 * expected);
         if(with_normals)

@@ -9,6 +9,7 @@
 #define POINT_SET_CURVATURES_TOOL_SUPPORT_H
 
 #include <cctype>
+#include <chrono>
 #include <functional>
 #include <sstream>
 #include <stdexcept>
@@ -47,6 +48,22 @@ inline std::string lower_case(std::string s)
   for(char& c : s)
     c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return s;
+}
+
+// Seconds elapsed since `t`.
+inline double seconds_since(std::chrono::steady_clock::time_point t)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// The hidden name of a temporary file beside `path`: "a/.b.ply" + suffix for "a/b.ply" (an
+// empty file name gives an empty result).
+inline std::string hidden_sibling(const std::string& path, const std::string& suffix)
+{
+  const std::size_t slash = path.find_last_of('/');
+  const std::string folder = slash == std::string::npos ? "" : path.substr(0, slash + 1);
+  const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+  return name.empty() ? std::string() : folder + "." + name + suffix;
 }
 
 // ".ply" for "a/b.PLY", "" without an extension.
