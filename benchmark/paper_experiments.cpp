@@ -1655,28 +1655,33 @@ void experiment_variants(Context& ctx)
   namespace P = CGAL::Point_set_curvatures::parameters;
   const auto maps = CGAL::parameters::point_map(Point_map()).normal_map(Normal_map());
   auto aso_with = [maps](CGAL::Apss_weight_kernel kernel, CGAL::Sample_weights weights, bool robust,
-                         std::size_t refinement) {
+                         std::size_t refinement, bool blend) {
     return [=](const Cloud& c, double r) {
       return CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
         c, r, P::aso_variant(CGAL::Aso_variant::PAPER,
                              P::weight_kernel(kernel, P::sample_weights(weights, P::robust_orientation(
-                                                                                    robust, P::normal_refinement(refinement, maps))))));
+                                                                                    robust, P::normal_refinement(refinement,
+                                                                                    P::normal_field_blend(blend, maps)))))));
     };
   };
   typedef CGAL::Apss_weight_kernel W;
   typedef CGAL::Sample_weights S;
+  const W P3 = W::SMOOTH_CUBIC;
+  const S areas = S::TANGENT_VORONOI_AREA;
   std::vector<Variant> variants = {
-    {"ASO, paper", aso_with(W::SMOOTH, S::UNIFORM, false, 0)},
-    {"ASO, P=3", aso_with(W::SMOOTH_CUBIC, S::UNIFORM, false, 0)},
-    {"ASO, areas", aso_with(W::SMOOTH, S::TANGENT_VORONOI_AREA, false, 0)},
-    {"ASO, orientation", aso_with(W::SMOOTH, S::UNIFORM, true, 0)},
-    {"ASO, P=3 + areas", aso_with(W::SMOOTH_CUBIC, S::TANGENT_VORONOI_AREA, false, 0)},
-    {"ASO, P=3 + areas + orientation (ROBUST)", aso_with(W::SMOOTH_CUBIC, S::TANGENT_VORONOI_AREA, true, 0)},
-    {"ASO, ROBUST at matched width", aso_with(W::SMOOTH_CUBIC, S::TANGENT_VORONOI_AREA, true, 0), std::sqrt(1.5)},
-    {"ASO, P=4 + areas + orientation", aso_with(W::SMOOTH_QUARTIC, S::TANGENT_VORONOI_AREA, true, 0)},
-    {"ASO, ROBUST + normal_refinement(1)", aso_with(W::SMOOTH_CUBIC, S::TANGENT_VORONOI_AREA, true, 1)},
-    {"ASO, ROBUST + normal_refinement(2)", aso_with(W::SMOOTH_CUBIC, S::TANGENT_VORONOI_AREA, true, 2)},
-    {"ASO, ROBUST at matched width + normal_refinement(1)", aso_with(W::SMOOTH_CUBIC, S::TANGENT_VORONOI_AREA, true, 1), std::sqrt(1.5)},
+    {"ASO, paper", aso_with(W::SMOOTH, S::UNIFORM, false, 0, false)},
+    {"ASO, P=3", aso_with(P3, S::UNIFORM, false, 0, false)},
+    {"ASO, areas", aso_with(W::SMOOTH, areas, false, 0, false)},
+    {"ASO, orientation", aso_with(W::SMOOTH, S::UNIFORM, true, 0, false)},
+    {"ASO, normal-field blend", aso_with(W::SMOOTH, S::UNIFORM, false, 0, true)},
+    {"ASO, P=3 + areas", aso_with(P3, areas, false, 0, false)},
+    {"ASO, P=3 + areas + orientation", aso_with(P3, areas, true, 0, false)},
+    {"ASO, P=3 + areas + orientation + blend (ROBUST)", aso_with(P3, areas, true, 0, true)},
+    {"ASO, ROBUST at matched width", aso_with(P3, areas, true, 0, true), std::sqrt(1.5)},
+    {"ASO, P=4 + areas + orientation + blend", aso_with(W::SMOOTH_QUARTIC, areas, true, 0, true)},
+    {"ASO, ROBUST + normal_refinement(1)", aso_with(P3, areas, true, 1, true)},
+    {"ASO, ROBUST + normal_refinement(2)", aso_with(P3, areas, true, 2, true)},
+    {"ASO, ROBUST at matched width + normal_refinement(1)", aso_with(P3, areas, true, 1, true), std::sqrt(1.5)},
   };
   for(const char* name : {"PSS", "OJets"})
     for(const Estimator& e : ctx.estimators)

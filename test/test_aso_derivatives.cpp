@@ -179,3 +179,60 @@ TEST_CASE("ASO gradient and Hessian equal finite differences of the APSS field")
     CHECK(line_angle_degrees(e.max_direction, fd.d_max) < 1e-4);
   }
 }
+
+// The robust orientation takes its reference from the first pass's sum C and runs the
+// orientation test and an oriented first pass only where some normal disagrees with it. That
+// must be the estimator that flips from the start: majority_orientation(), then both passes on
+// the flipped normals (the code before the shortcut), bitwise, with and without flips.
+TEST_CASE("Robust orientation: the shortcut through the first pass equals orienting first, bitwise")
+{
+  namespace PSCi = CGAL::Point_set_curvatures::internal;
+  typedef PSCi::Power_kernel<3> K3;
+  const double r = 0.3;
+  for(double flipped : {0.0, 0.3})
+    for(unsigned seed : {1u, 2u, 3u})
+    {
+      INFO("flipped fraction " << flipped << ", seed " << seed);
+      std::vector<Sample> samples = patch(seed, r, 80);
+      std::mt19937 rng(seed + 200);
+      std::uniform_real_distribution<double> u(0, 1);
+      std::vector<double> col[7];
+      for(std::size_t i = 0; i < samples.size(); ++i)
+      {
+        if(i > 0 && u(rng) < flipped)
+          for(double& x : samples[i].n)
+            x = -x;
+        for(int a = 0; a < 3; ++a)
+        {
+          col[a].push_back(samples[i].p[a] / r);
+          col[3 + a].push_back(samples[i].n[a]);
+        }
+        col[6].push_back(0.5 + u(rng));
+      }
+      PSCi::Neighborhood nb;
+      nb.size = samples.size();
+      nb.qx = col[0].data(); nb.qy = col[1].data(); nb.qz = col[2].data();
+      nb.nx = col[3].data(); nb.ny = col[4].data(); nb.nz = col[5].data();
+      nb.sample_weight = col[6].data();
+      nb.radius = r;
+      for(int a = 0; a < 3; ++a)
+        nb.query_normal[a] = samples[0].n[a];
+      PSCi::Aso_settings settings;
+      settings.kernel_exponent = 3;
+      settings.orient_neighbors = true;
+      for(bool blend : {false, true})
+      {
+        settings.normal_field_blend = blend;
+        const PSCi::Local_estimate shortcut = PSCi::algebraic_shape_operator(nb, settings);
+        double ref[3];
+        REQUIRE(PSCi::majority_orientation<K3>(nb, ref));
+        const PSCi::Local_estimate first = PSCi::aso_from_first_pass<K3, true, true>(
+          nb, PSCi::aso_first_pass<K3, true, true>(nb, ref), ref, settings);
+        REQUIRE(shortcut.status == CGAL::Curvature_estimate_status::VALID);
+        CHECK(shortcut.k_min == first.k_min);
+        CHECK(shortcut.k_max == first.k_max);
+        for(int a = 0; a < 3; ++a)
+          CHECK(shortcut.normal[a] == first.normal[a]);
+      }
+    }
+}

@@ -120,7 +120,7 @@ public:
     Point_set_curvatures::internal::check_radius(radius, "Algebraic_point_set_surface");
     m_radius = radius;
     m_tolerance = 1e-10 * radius;
-    m_constant = Point_set_curvatures::internal::constant_kernel_parameter(np, "Algebraic_point_set_surface");
+    m_kernel = Point_set_curvatures::internal::weight_kernel_parameter(np);
     const auto point_map = NP_helper::get_const_point_map(points, np);
     const auto normal_map = NP_helper::get_normal_map(points, np);
     std::vector<std::size_t> ids;
@@ -248,8 +248,8 @@ public:
     nb.radius = m_radius;
     for(int a = 0; a < 3; ++a)
       nb.center[a] = y[a];
-    const PSCI::Local_sphere_features f = m_constant ? PSCI::sphere_features<PSCI::Constant_kernel>(nb)
-                                                     : PSCI::sphere_features<PSCI::Smooth_kernel>(nb);
+    const PSCI::Local_sphere_features f =
+      PSCI::with_weight_kernel(m_kernel, [&](auto k) { return PSCI::sphere_features<decltype(k)>(nb); });
     return PSCI::to_sphere_features<GeomTraits>(f, y);
   }
 
@@ -267,10 +267,8 @@ private:
   Apss_projection_status fit(const double y[3], Point_set_curvatures::internal::Algebraic_sphere& sphere,
                              std::size_t& count) const
   {
-    namespace PSCI = Point_set_curvatures::internal;
-    if(m_constant)
-      return fit<PSCI::Constant_kernel>(y, sphere, count);
-    return fit<PSCI::Smooth_kernel>(y, sphere, count);
+    return Point_set_curvatures::internal::with_weight_kernel(
+      m_kernel, [&](auto k) { return fit<decltype(k)>(y, sphere, count); });
   }
 
   template <class WeightKernel>
@@ -295,7 +293,7 @@ private:
   double m_radius = 1;
   double m_tolerance = 1e-10;
   std::size_t m_max_iterations = 30;
-  bool m_constant = false;
+  Apss_weight_kernel m_kernel = Apss_weight_kernel::SMOOTH;
   std::vector<double> m_position, m_normal;  // usable points, in the index's order
   Point_set_curvatures::internal::Position_index m_index;
 };

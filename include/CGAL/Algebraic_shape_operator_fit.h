@@ -40,14 +40,16 @@ public:
   /// the tangent plane chosen by `projection` (see `CGAL::Aso_projection`): the paper's
   /// estimator. `kernel` (`SMOOTH`, `SMOOTH_CUBIC` or `SMOOTH_QUARTIC`) and
   /// `robust_orientation` (neighbours' normals flipped against their weighted majority,
-  /// `TWO_SHEETS` when they form a second sheet) select the variants of
+  /// `TWO_SHEETS` when they form a second sheet) and `normal_field_blend` (a least-squares fit
+  /// of the normal field blended in where the neighbourhood is one-sided, see
+  /// `CGAL::Point_set_curvatures::parameters::normal_field_blend()`) select the variants of
   /// `estimate_aso_curvatures()`; sample weights are given per neighbour to `add_neighbor()`.
   /// \throws std::invalid_argument if `radius` is not positive and finite, the evaluation
   /// point is not finite, or `kernel` is `CONSTANT`.
   Algebraic_shape_operator_fit(const Point_3& evaluation_point, FT radius,
                                Aso_projection projection = Aso_projection::CORRECTED_NORMAL,
                                Apss_weight_kernel kernel = Apss_weight_kernel::SMOOTH,
-                               bool robust_orientation = false)
+                               bool robust_orientation = false, bool normal_field_blend = false)
     : m_frame(evaluation_point, CGAL::to_double(radius), "Algebraic_shape_operator_fit",
               projection == Aso_projection::CORRECTED_NORMAL)
   {
@@ -56,6 +58,7 @@ public:
     m_settings.projection = projection;
     m_settings.kernel_exponent = Point_set_curvatures::internal::kernel_exponent(kernel);
     m_settings.orient_neighbors = robust_orientation;
+    m_settings.normal_field_blend = normal_field_blend;
   }
 
   /// Adds the oriented point `(p, n)` with the quadrature weight `sample_weight` (positive:

@@ -185,7 +185,7 @@ apss_smooth_point_set(PointRange& points, double radius,
   const std::size_t iterations = static_cast<std::size_t>(asked_iterations);
   const bool update_normals =
     choose_parameter(get_parameter(np, PSC::internal_np::update_normals), false);
-  const bool constant = PSC::internal::constant_kernel_parameter(np, "apss_smooth_point_set");
+  const Apss_weight_kernel kernel = PSC::internal::weight_kernel_parameter(np);
   const std::function<bool(double)> callback =
     choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
   constexpr bool normals_writable = PSC::internal::is_writable_map<Normal_map>();
@@ -227,8 +227,8 @@ apss_smooth_point_set(PointRange& points, double radius,
       };
     auto visit = [&](std::size_t i, const PSC::internal::Neighborhood& nb) {
       double d[3], normal[3];
-      fit_status[i] = constant ? PSC::internal::apss_flow_step<PSC::internal::Constant_kernel>(nb, d, normal)
-                               : PSC::internal::apss_flow_step<PSC::internal::Smooth_kernel>(nb, d, normal);
+      fit_status[i] = PSC::internal::with_weight_kernel(
+        kernel, [&](auto k) { return PSC::internal::apss_flow_step<decltype(k)>(nb, d, normal); });
       if(fit_status[i] == Curvature_estimate_status::VALID)
         next[i] = Oriented(K::Point_3(nb.center[0] + d[0], nb.center[1] + d[1], nb.center[2] + d[2]),
                            update_normals ? K::Vector_3(normal[0], normal[1], normal[2])

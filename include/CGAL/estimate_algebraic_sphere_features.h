@@ -89,8 +89,8 @@ struct Algebraic_sphere_features
   /// Mellado et al. 2012), dimensionless. The derivatives with respect to the kernel radius
   /// `r` (evaluation point fixed) are taken analytically through the kernel, in the same
   /// pass as the fit, never by finite differences:
-  /// - smooth kernel: the exact derivative of the fit to the given samples (`r ∂w/∂r`
-  ///   replaces `w` in the sums);
+  /// - smooth kernels (`SMOOTH`, `SMOOTH_CUBIC`, `SMOOTH_QUARTIC`): the exact derivative of
+  ///   the fit to the given samples (`r ∂w/∂r` replaces `w` in the sums);
   /// - constant kernel: the sums only change when a neighbour enters the ball, so their
   ///   derivative is the boundary term of the continuum sums (a Dirac on the sphere of
   ///   radius `r`). It is estimated from the neighbours inside with the polynomial weight
@@ -196,7 +196,7 @@ sphere_features_at_every_point(const PointRange& points, bool radius_given, doub
 {
   typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
   typedef typename NP_helper::Geom_traits Geom_traits;
-  const bool constant = constant_kernel_parameter(np, function_name);
+  const Apss_weight_kernel kernel = weight_kernel_parameter(np);
   const std::size_t min_count = min_neighbors_parameter(np, default_min_neighbors::sphere_features);
   Neighborhood_options options = neighborhood_options(np, function_name, true);
   // Sample weights (the quadrature argument of the ASO holds for the sums of the sphere): the
@@ -218,9 +218,10 @@ sphere_features_at_every_point(const PointRange& points, bool radius_given, doub
   }
   return evaluate_at_every_point<Algebraic_sphere_features<Geom_traits>, ConcurrencyTag>(
     points, radius_given, radius, np, options,
-    [constant, min_count](const Neighborhood& nb) {
-      const Local_sphere_features f = constant ? sphere_features<Constant_kernel>(nb, min_count)
-                                               : sphere_features<Smooth_kernel>(nb, min_count);
+    [kernel, min_count](const Neighborhood& nb) {
+      const Local_sphere_features f = with_weight_kernel(kernel, [&](auto k) {
+        return sphere_features<decltype(k)>(nb, min_count);
+      });
       return to_sphere_features<Geom_traits>(f, nb.center);
     });
 }
@@ -232,14 +233,14 @@ struct Multiscale_visitor
 {
   std::vector<std::vector<Algebraic_sphere_features<GeomTraits> > >* results;
   const std::vector<double>* radii;
-  bool constant;
+  Apss_weight_kernel kernel;
   std::size_t min_count;
   Multiscale_sphere_features scales;
   std::vector<Local_sphere_features> local;
 
   Multiscale_visitor(std::vector<std::vector<Algebraic_sphere_features<GeomTraits> > >* results,
-                     const std::vector<double>* radii, bool constant, std::size_t min_count)
-    : results(results), radii(radii), constant(constant), min_count(min_count)
+                     const std::vector<double>* radii, Apss_weight_kernel kernel, std::size_t min_count)
+    : results(results), radii(radii), kernel(kernel), min_count(min_count)
   {
     scales.set_radii(*radii);
     local.resize(radii->size());
@@ -247,10 +248,7 @@ struct Multiscale_visitor
 
   void operator()(std::size_t i, const Neighborhood& nb)
   {
-    if(constant)
-      scales.compute<Constant_kernel>(nb, local.data(), min_count);
-    else
-      scales.compute<Smooth_kernel>(nb, local.data(), min_count);
+    with_weight_kernel(kernel, [&](auto k) { scales.compute<decltype(k)>(nb, local.data(), min_count); });
     for(std::size_t k = 0; k < local.size(); ++k)
       (*results)[k][i] = to_sphere_features<GeomTraits>(local[k], nb.center);
   }
@@ -307,12 +305,13 @@ struct Multiscale_visitor
 ///     \cgalParamDefault{no callback}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Point_set_curvatures::parameters::weight_kernel}
-///     \cgalParamDescription{the weight kernel of the fit: `SMOOTH` `(1 - d²/r²)²` or
+///     \cgalParamDescription{the weight kernel of the fit: `SMOOTH` `(1 - d²/r²)²`,
 ///       `CONSTANT` (the paper's asymptotic analysis; see `geometric_variation` for how
-///       its scale derivatives are obtained)}
+///       its scale derivatives are obtained), `SMOOTH_CUBIC` `(1 - d²/r²)³` or `SMOOTH_QUARTIC`
+///       `(1 - d²/r²)⁴` (exact scale derivatives; the asymptotic constants documented in
+///       `CGAL::Algebraic_sphere_features` are those of the first two)}
 ///     \cgalParamType{`CGAL::Apss_weight_kernel`}
-///     \cgalParamDefault{`CGAL::Apss_weight_kernel::SMOOTH`; `SMOOTH_CUBIC` and `SMOOTH_QUARTIC`
-///       throw `std::invalid_argument`}
+///     \cgalParamDefault{`CGAL::Apss_weight_kernel::SMOOTH`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Point_set_curvatures::parameters::sample_weights}
 ///     \cgalParamDescription{the quadrature weights of the samples, as for
@@ -449,13 +448,13 @@ estimate_multiscale_algebraic_sphere_features(const PointRange& points,
                                         Sample_weights::UNIFORM) != Sample_weights::UNIFORM)
     throw std::invalid_argument(std::string(name) + ": parameter 'sample_weights' is not supported by the "
                                 "multi-scale features (the areas depend on the scale); use the single-scale function");
-  const bool constant = PSC::internal::constant_kernel_parameter(np, name);
+  const Apss_weight_kernel kernel = PSC::internal::weight_kernel_parameter(np);
 
   const std::size_t n = static_cast<std::size_t>(std::distance(points.begin(), points.end()));
   std::vector<std::vector<Algebraic_sphere_features<Geom_traits> > > results(
     radii.size(), std::vector<Algebraic_sphere_features<Geom_traits> >(n));
   PSC::internal::Multiscale_visitor<Geom_traits> visit(
-    &results, &radii, constant,
+    &results, &radii, kernel,
     PSC::internal::min_neighbors_parameter(np, PSC::internal::default_min_neighbors::sphere_features));
   const double max_radius = *std::max_element(radii.begin(), radii.end());
   const std::vector<Curvature_estimate_status> status = PSC::internal::for_each_neighborhood<ConcurrencyTag>(

@@ -52,13 +52,7 @@ struct Apss_estimator : Estimator_base
 
   Local_estimate operator()(const Neighborhood& nb) const
   {
-    switch(kernel)
-    {
-      case Apss_weight_kernel::CONSTANT: return fit<Constant_kernel>(nb);
-      case Apss_weight_kernel::SMOOTH_CUBIC: return fit<Power_kernel<3> >(nb);
-      case Apss_weight_kernel::SMOOTH_QUARTIC: return fit<Power_kernel<4> >(nb);
-      default: return fit<Smooth_kernel>(nb);
-    }
+    return with_weight_kernel(kernel, [&](auto k) { return fit<decltype(k)>(nb); });
   }
 };
 

@@ -93,6 +93,7 @@ _METHOD_OPTIONS = {
         "weight_kernel",
         "sample_weights",
         "robust_orientation",
+        "normal_field_blend",
         "normal_refinement",
         "aso_projection",
     ),
@@ -205,6 +206,8 @@ def _options(method, allowed, given):
             o.sample_weights = _choice(name, value, _SAMPLE_WEIGHTS)
         elif name == "robust_orientation":
             o.robust_orientation = int(_bool(name, value))
+        elif name == "normal_field_blend":
+            o.normal_field_blend = int(_bool(name, value))
         elif name == "normal_refinement":
             o.normal_refinement = _int(name, value, 0)
         elif name == "aso_projection":
@@ -283,8 +286,9 @@ def estimate_curvatures(
         - ``"aso"``: ``aso_variant`` (``"robust"`` default, ``"paper"``), ``weight_kernel``
           (``"smooth"``, ``"smooth_cubic"``, ``"smooth_quartic"``; default per variant),
           ``sample_weights`` (``"uniform"``, ``"tangent_voronoi_area"``),
-          ``robust_orientation`` (bool), ``normal_refinement`` (int), ``aso_projection``
-          (``"corrected_normal"`` default, ``"authors_implementation"``);
+          ``robust_orientation`` (bool), ``normal_field_blend`` (bool), ``normal_refinement``
+          (int), ``aso_projection`` (``"corrected_normal"`` default,
+          ``"authors_implementation"``);
         - ``"apss"``: ``weight_kernel`` (also ``"constant"``), ``sample_weights``,
           ``robust_orientation``;
         - ``"jet"``: ``degree_fitting`` (default 2), ``degree_monge`` (default 2);
@@ -333,7 +337,8 @@ def estimate_sphere_features(
     (``CGAL::estimate_algebraic_sphere_features``, Sections 3-4 of Lejemble et al. 2021).
 
     Arguments as for :func:`estimate_curvatures`; options: ``weight_kernel`` (``"smooth"``
-    default, or ``"constant"``, the kernel of the paper's analysis), ``sample_weights``,
+    default, ``"constant"``, the kernel of the paper's analysis, ``"smooth_cubic"`` or
+    ``"smooth_quartic"``), ``sample_weights``,
     ``min_neighbors``, ``accept_unnormalized_normals``, ``tile``.
 
     Returns
@@ -393,7 +398,7 @@ class AlgebraicPointSetSurface:
     radius : float
         Kernel radius; positions farther than it from every point cannot be projected.
     weight_kernel : str
-        ``"smooth"`` (default) or ``"constant"``.
+        ``"smooth"`` (default), ``"constant"``, ``"smooth_cubic"`` or ``"smooth_quartic"``.
     """
 
     def __init__(self, points, normals, radius, *, weight_kernel="smooth"):

@@ -54,6 +54,7 @@ def estimate_curvatures(
     weight_kernel: Optional[WeightKernel] = None,
     sample_weights: Optional[SampleWeights] = None,
     robust_orientation: Optional[bool] = None,
+    normal_field_blend: Optional[bool] = None,
     normal_refinement: Optional[int] = None,
     aso_projection: Optional[Literal["corrected_normal", "authors_implementation"]] = None,
     degree_fitting: Optional[int] = None,

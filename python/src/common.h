@@ -42,6 +42,7 @@ struct Options
   int weight_kernel = -1;       // CGAL::Apss_weight_kernel: 0 SMOOTH, 1 CONSTANT, 2 CUBIC, 3 QUARTIC
   int sample_weights = -1;      // CGAL::Sample_weights: 0 UNIFORM, 1 TANGENT_VORONOI_AREA
   int robust_orientation = -1;  // 0 / 1
+  int normal_field_blend = -1;  // 0 / 1
   long long normal_refinement = 0;
   int aso_projection = 0;       // CGAL::Aso_projection: 0 CORRECTED_NORMAL, 1 AUTHORS_IMPLEMENTATION
   // jets

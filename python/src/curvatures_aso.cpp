@@ -22,14 +22,16 @@ std::vector<Estimate> estimate_aso(const Cloud& cloud, const Scale& s, const Opt
     o.sample_weights >= 0 ? CGAL::Sample_weights(o.sample_weights)
                           : (paper ? CGAL::Sample_weights::UNIFORM : CGAL::Sample_weights::TANGENT_VORONOI_AREA);
   const bool robust = o.robust_orientation >= 0 ? o.robust_orientation != 0 : !paper;
+  const bool blend = o.normal_field_blend >= 0 ? o.normal_field_blend != 0 : !paper;
   const auto np = common_parameters(s, o, cb, CGAL::Point_set_curvatures::internal::default_min_neighbors::aso,
     [&](const auto& base) {
       return P::aso_variant(paper ? CGAL::Aso_variant::PAPER : CGAL::Aso_variant::ROBUST,
              P::weight_kernel(kernel,
              P::sample_weights(weights,
              P::robust_orientation(robust,
+             P::normal_field_blend(blend,
              P::normal_refinement(static_cast<std::size_t>(o.normal_refinement),
-             P::aso_projection(CGAL::Aso_projection(o.aso_projection), base))))));
+             P::aso_projection(CGAL::Aso_projection(o.aso_projection), base)))))));
     });
   return dispatch(cloud, s, t, parallel, np, PSC_PY_FUNCTION(estimate_aso_curvatures));
 }

@@ -96,6 +96,9 @@ int main(int argc, char** argv)
                                          cloud, 1.5, np.callback(std::function<bool(double)>([](double) { return true; }))));
   write_estimates("aso_paper_r1.5", CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
                                       cloud, 1.5, P::aso_variant(CGAL::Aso_variant::PAPER, np)));
+  write_estimates("aso_paper_blend_r1.5", CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
+                                            cloud, 1.5, P::aso_variant(CGAL::Aso_variant::PAPER,
+                                                          P::normal_field_blend(true, np))));
   write_estimates("aso_k30", CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(cloud, P::neighbor_count(30, np)));
   write_estimates("aso_quartic_authors_r1.5",
                   CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(

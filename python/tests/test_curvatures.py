@@ -69,6 +69,7 @@ def test_sphere_unsigned_baselines(sphere, method):
 CPP_CASES = [
     ("aso_r1.5", dict(radius=1.5)),
     ("aso_paper_r1.5", dict(radius=1.5, threads=1, aso_variant="paper")),
+    ("aso_paper_blend_r1.5", dict(radius=1.5, aso_variant="paper", normal_field_blend=True)),
     ("aso_k30", dict(neighbors=30)),
     ("aso_quartic_authors_r1.5", dict(radius=1.5, weight_kernel="smooth_quartic",
                                       aso_projection="authors_implementation", min_neighbors=20)),
@@ -90,6 +91,14 @@ def test_same_as_cpp(reference, name, kwargs):
     }
     assert (r["status"] == psc.Status.VALID).sum() > 9000
     assert_same(r, {k: np.ascontiguousarray(v) for k, v in expected.items()})
+
+
+def test_normal_field_blend_option(reference):
+    points, normals, load = reference
+    paper = load("aso_paper_r1.5", 15)
+    blended = load("aso_paper_blend_r1.5", 15)
+    # the option reaches the C++ function: on the paper's variant it changes some estimates
+    assert (paper[:, 4] != blended[:, 4]).sum() > 100
 
 
 def test_same_as_cpp_features_and_normals(reference):

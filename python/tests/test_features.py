@@ -23,8 +23,9 @@ def test_sphere_features(sphere):
         assert np.array_equal(seq[k], par[k], equal_nan=True), k
     knn = psc.estimate_sphere_features(points, normals, neighbors=40)
     assert np.allclose(knn["mean"], 0.5, atol=1e-10)
-    with pytest.raises(ValueError):
-        psc.estimate_sphere_features(points, normals, radius=0.25, weight_kernel="smooth_cubic")
+    for kernel in ("smooth_cubic", "smooth_quartic"):  # every kernel is exact on a sphere
+        f = psc.estimate_sphere_features(points, normals, radius=0.25, weight_kernel=kernel)
+        assert np.allclose(f["mean"], 0.5, atol=1e-10) and np.abs(f["geometric_variation"]).max() < 1e-10, kernel
     with pytest.raises(ValueError):
         psc.estimate_sphere_features(points, normals, radius=0.25, aso_variant="paper")
 

@@ -158,7 +158,7 @@ enum class Sample_weights
   /// Every neighbour counts once (the paper).
   UNIFORM,
   /// Every neighbour's kernel weight is multiplied by the area of its Voronoi cell taken in
-  /// its own tangent plane (among its neighbours, clipped to a square of side `r`): the sums
+  /// its own tangent plane (among its neighbours, within a disk of radius `r/4`): the sums
   /// become a quadrature of the surface integrals that does not depend on how evenly the
   /// samples are spread (i.i.d. samples, scan lines, density varying with range). Computed in
   /// one more pass of the neighbourhood driver; it does not depend on the evaluation point,
@@ -172,12 +172,12 @@ enum class Sample_weights
 enum class Aso_variant
 {
   /// The estimator of Lejemble et al. 2021: kernel `(1 - d²/r²)²`, uniform sample weights,
-  /// input normals used as given. With `aso_projection(Aso_projection::AUTHORS_IMPLEMENTATION)`
+  /// input normals used as given, no normal-field blend. With `aso_projection(Aso_projection::AUTHORS_IMPLEMENTATION)`
   /// it reproduces the authors' published values.
   PAPER,
   /// The package's default, chosen by measurement (user manual, "Beyond the paper"): kernel
   /// `(1 - d²/r²)³`, tangent Voronoi area weights, neighbours' normals oriented by the
-  /// weighted majority.
+  /// weighted majority, a normal-field fit blended in where the neighbourhood is one-sided.
   ROBUST
 };
 
@@ -188,6 +188,7 @@ enum sample_weights_t { sample_weights };
 enum robust_orientation_t { robust_orientation };
 enum normal_refinement_t { normal_refinement };
 enum aso_variant_t { aso_variant };
+enum normal_field_blend_t { normal_field_blend };
 
 } // namespace internal_np
 
@@ -220,6 +221,25 @@ robust_orientation(bool robust, const NamedParameters& np = CGAL::parameters::de
 }
 
 /// \ingroup PkgPointSetCurvaturesRef
+/// Named parameter of `estimate_aso_curvatures()`: if `true`, where the neighbourhood is
+/// one-sided (the border of a scan, the silhouette seen from a scanner, very irregular
+/// sampling), the ASO's tensor is blended with a weighted least-squares fit of the normal
+/// field, `n_t = n_0 + S (u, v)` in the tangent plane of the corrected normal, exact on spheres
+/// and not biased by one-sided neighbourhoods, where the ASO underestimates the curvature
+/// across the border. The blend weight is a smooth step of the tangential offset of the
+/// weighted centroid of the neighbourhood: 0 below 0.02 r, 1 above 0.06 r. Measured mean error
+/// of `H` (×1e-3): simulated LiDAR scan of the Goursat surface 3.35 without, 1.30 with; i.i.d.
+/// samples 2.79 and 2.28; blue noise unchanged (0.255). Ignored with
+/// `aso_projection(AUTHORS_IMPLEMENTATION)`. Default: that of the variant (`true` for
+/// `Aso_variant::ROBUST`, `false` for `PAPER`).
+template <class NamedParameters = CGAL::parameters::Default_named_parameters>
+CGAL::Named_function_parameters<bool, internal_np::normal_field_blend_t, NamedParameters>
+normal_field_blend(bool blend, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return CGAL::Named_function_parameters<bool, internal_np::normal_field_blend_t, NamedParameters>(blend, np);
+}
+
+/// \ingroup PkgPointSetCurvaturesRef
 /// Named parameter of `estimate_aso_curvatures()`: before the estimation, `iterations`
 /// passes each replace the input normals by corrected normals (points without a valid fit
 /// keep their input normal): those of the APSS sphere fitted with the paper's kernel
@@ -239,8 +259,8 @@ normal_refinement(std::size_t iterations, const NamedParameters& np = CGAL::para
 
 /// \ingroup PkgPointSetCurvaturesRef
 /// Named parameter of `estimate_aso_curvatures()`: a preset of the kernel, the sample
-/// weights and the orientation (`CGAL::Aso_variant`); `weight_kernel`, `sample_weights` and
-/// `robust_orientation` given explicitly override it. `Aso_variant::PAPER` restores the
+/// weights, the orientation and the blend (`CGAL::Aso_variant`); `weight_kernel`,
+/// `sample_weights`, `robust_orientation` and `normal_field_blend` given explicitly override it. `Aso_variant::PAPER` restores the
 /// paper's estimator exactly. Default: `Aso_variant::ROBUST`.
 template <class NamedParameters = CGAL::parameters::Default_named_parameters>
 CGAL::Named_function_parameters<Aso_variant, internal_np::aso_variant_t, NamedParameters>
@@ -298,10 +318,11 @@ enum class Apss_weight_kernel
   /// term, estimated as documented in `Algebraic_sphere_features::geometric_variation`.
   CONSTANT,
   /// `(1 - d²/r²)³`: its Hessian vanishes at `d = r`, so points entering the ball do not make
-  /// the ASO jump. Default of `Aso_variant::ROBUST`. For `estimate_aso_curvatures()` and
-  /// `estimate_apss_curvatures()`.
+  /// the ASO jump. Default of `Aso_variant::ROBUST`. Accepted by every function that takes a
+  /// kernel, with exact derivatives (spatial for the ASO, in the scale for the sphere
+  /// features).
   SMOOTH_CUBIC,
-  /// `(1 - d²/r²)⁴`. For `estimate_aso_curvatures()` and `estimate_apss_curvatures()`.
+  /// `(1 - d²/r²)⁴`, narrower still. Accepted by every function that takes a kernel.
   SMOOTH_QUARTIC
 };
 
@@ -351,19 +372,6 @@ Apss_weight_kernel weight_kernel_parameter(const NamedParameters& np)
 {
   return CGAL::parameters::choose_parameter(
     CGAL::parameters::get_parameter(np, internal_np::weight_kernel), Apss_weight_kernel::SMOOTH);
-}
-
-// For the sphere features, the projection and the flow, whose scale derivatives and
-// multi-scale moments are written for the paper's two kernels: true for CONSTANT, false for
-// SMOOTH; the kernels (1 - d^2/r^2)^3 and ^4 are refused rather than silently replaced.
-template <class NamedParameters>
-bool constant_kernel_parameter(const NamedParameters& np, const char* function_name)
-{
-  const Apss_weight_kernel k = weight_kernel_parameter(np);
-  if(k == Apss_weight_kernel::SMOOTH_CUBIC || k == Apss_weight_kernel::SMOOTH_QUARTIC)
-    throw std::invalid_argument(std::string(function_name) + ": parameter 'weight_kernel': only "
-                                "Apss_weight_kernel::SMOOTH and CONSTANT are supported here");
-  return k == Apss_weight_kernel::CONSTANT;
 }
 
 } // namespace internal

@@ -55,6 +55,7 @@
 #include <CGAL/Curvature_estimate.h>
 #include <CGAL/Point_set_curvatures/parameters.h>
 #include <CGAL/Point_set_curvatures/internal/local_estimate.h>
+#include <CGAL/Point_set_curvatures/internal/normal_field_fit.h>
 #include <CGAL/Point_set_curvatures/internal/second_order_jet.h>
 #include <CGAL/Point_set_curvatures/internal/weight_kernel.h>
 
@@ -88,8 +89,10 @@ struct Aso_first_order_sums
 // - Oriented: every neighbour's normal is used flipped if it disagrees with the reference
 //   orientation `ref` (the weighted sum of the neighbourhood's normals), so that a few
 //   flipped input normals do not bias the fit.
-// With the paper's choices (P = 2, no weights, no orientation) the arithmetic is the one
-// of the original code, bitwise.
+// - Blended: where the neighbourhood is one-sided, the tensor is blended with a least-squares
+//   fit of the normal field (normal_field_fit.h), accumulated in pass 2.
+// With the paper's choices (P = 2, no weights, no orientation, no blend) the arithmetic is the
+// one of the original code, bitwise.
 
 // The normal of neighbour i, flipped (Oriented) to agree with `ref`.
 template <bool Oriented>
@@ -221,11 +224,16 @@ inline Sums_adjoint u_c_adjoint(const Aso_first_order_sums& m)
 
 // Pass 2: sum_k F_k Hess S_k = sum_i gamma_i (c1 t^(P-2) q q^T + c2 t^(P-1) I) (times the
 // sample weight), packed xx xy xz yy yz zz; for P = 2, 8 q q^T - 4 t I.
-template <class Kernel, bool Weighted, bool Oriented>
+// With Fit, the same loop also accumulates the normal-field fit (normal_field_fit.h) in the
+// tangent basis (t1, t2), with the fit's weights.
+template <class Kernel, bool Weighted, bool Oriented, bool Fit = false>
 inline void aso_second_pass(const Neighborhood& nb, const Sums_adjoint& F, const double ref[3],
-                            double hessian[6])
+                            double hessian[6], const double* t1 = nullptr,
+                            const double* t2 = nullptr, Normal_field_sums* fit = nullptr)
 {
   double gxx = 0, gxy = 0, gxz = 0, gyy = 0, gyz = 0, gzz = 0, gt = 0;
+  // the fit's sums (Normal_field_sums), in locals so that the compiler keeps them in registers
+  double fw = 0, fu = 0, fv = 0, fuu = 0, fuv = 0, fvv = 0, fa = 0, fb = 0, fau = 0, fav = 0, fbu = 0, fbv = 0;
   for(std::size_t i = 0; i < nb.size; ++i)
   {
     const double qx = nb.qx[i], qy = nb.qy[i], qz = nb.qz[i];
@@ -238,12 +246,25 @@ inline void aso_second_pass(const Neighborhood& nb, const Sums_adjoint& F, const
                    F.E * s;
     if constexpr(Weighted)
       gamma *= nb.sample_weight[i];
+    if constexpr(Fit)
+    {
+      double w = Kernel::weight(t);
+      if constexpr(Weighted)
+        w *= nb.sample_weight[i];
+      const double u = qx * t1[0] + qy * t1[1] + qz * t1[2], v = qx * t2[0] + qy * t2[1] + qz * t2[2];
+      const double a = n[0] * t1[0] + n[1] * t1[1] + n[2] * t1[2], b = n[0] * t2[0] + n[1] * t2[1] + n[2] * t2[2];
+      const double wu = w * u, wv = w * v;
+      fw += w; fu += wu; fv += wv; fuu += wu * u; fuv += wu * v; fvv += wv * v;
+      fa += w * a; fb += w * b; fau += wu * a; fav += wv * a; fbu += wu * b; fbv += wv * b;
+    }
     const double gh = gamma * Kernel::hessian_weight(t);
     const double gx = gh * qx, gy = gh * qy, gz = gh * qz;
     gxx += gx * qx; gxy += gx * qy; gxz += gx * qz;
     gyy += gy * qy; gyz += gy * qz; gzz += gz * qz;
     gt += gamma * Kernel::gradient_weight(t);
   }
+  if constexpr(Fit)
+    *fit = Normal_field_sums{fw, fu, fv, fuu, fuv, fvv, fa, fb, fau, fav, fbu, fbv};
   const double g[6] = {gxx, gxy, gxz, gyy, gyz, gzz};
   for(int k = 0; k < 6; ++k)
     hessian[k] = Kernel::hessian_qq_factor * g[k];
@@ -294,15 +315,23 @@ inline bool set_authors_shape_operator(const double gradient[3], const double he
   return std::isfinite(e.k_min) && std::isfinite(e.k_max);
 }
 
-// The ASO of one neighbourhood with a kernel and a variant fixed at compile time.
-template <class Kernel, bool Weighted, bool Oriented>
-inline Local_estimate algebraic_shape_operator_variant(const Neighborhood& nb, Aso_projection projection)
+// The choices of an ASO run (the named parameters of estimate_aso_curvatures()).
+struct Aso_settings
 {
-  double ref[3] = {0, 0, 0};
-  if constexpr(Oriented)
-    if(!majority_orientation<Kernel>(nb, ref))
-      return Local_estimate::invalid(Curvature_estimate_status::TWO_SHEETS);
-  const Aso_first_order_sums m = aso_first_pass<Kernel, Weighted, Oriented>(nb, ref);
+  Aso_projection projection = Aso_projection::CORRECTED_NORMAL;
+  int kernel_exponent = 2;       // P of (1 - d^2/r^2)^P: 2, 3 or 4
+  bool orient_neighbors = false;  // flip neighbour normals against the majority
+  // blend in the normal-field fit where the neighbourhood is one-sided (normal_field_fit.h);
+  // with the CORRECTED_NORMAL projection only
+  bool normal_field_blend = false;
+};
+
+// The ASO from the first-pass sums `m` of a neighbourhood (normals flipped against `ref` if
+// Oriented), with a kernel and a variant fixed at compile time.
+template <class Kernel, bool Weighted, bool Oriented>
+inline Local_estimate aso_from_first_pass(const Neighborhood& nb, const Aso_first_order_sums& m,
+                                          const double ref[3], const Aso_settings& settings)
+{
   // Degenerate fit: the weighted variance of the positions, (A E - B.B) / A^2, vanishes
   // when the neighbours coincide (relative to r^2, as q is scaled by 1/r); neighbours
   // without tangent spread (a line, a planar curve) leave a curvature unmeasured.
@@ -333,14 +362,38 @@ inline Local_estimate algebraic_shape_operator_variant(const Neighborhood& nb, A
     u_l[a] = (C[a] - 2.0 * (u_q * B[a])) * inv_A;
   const Jet u_c = -1.0 * ((u_l[0] * B[0] + u_l[1] * B[1] + u_l[2] * B[2] + u_q * E) * inv_A);
 
-  // Pass 2: the part of Hess u_c linear in the sums' Hessians.
-  double linear_part[6];
-  aso_second_pass<Kernel, Weighted, Oriented>(nb, u_c_adjoint(m), ref, linear_part);
-
-  // Equations 28-29 at the evaluation point (the origin of the frame).
-  double gradient[3], hessian[6];
+  // Equation 28 at the evaluation point (the origin of the frame): the gradient, hence the
+  // corrected normal, is known before pass 2.
+  double gradient[3];
   for(int i = 0; i < 3; ++i)
     gradient[i] = u_c.g[i] + u_l[i].v;
+  Local_estimate e;
+  double t1[3], t2[3];
+  const bool corrected_normal = settings.projection == Aso_projection::CORRECTED_NORMAL;
+  if(corrected_normal && !gradient_frame(gradient, e.normal, t1, t2))
+    return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
+
+  // How one-sided the neighbourhood is: the tangential offset of the weighted centroid B / A
+  // (units of r), hence the weight of the normal-field fit.
+  double blend = 0;
+  if(corrected_normal && settings.normal_field_blend)
+  {
+    const double c[3] = {m.B[0] / m.A, m.B[1] / m.A, m.B[2] / m.A};
+    const double cu = c[0] * t1[0] + c[1] * t1[1] + c[2] * t1[2];
+    const double cv = c[0] * t2[0] + c[1] * t2[1] + c[2] * t2[2];
+    blend = normal_field_blend_weight(std::sqrt(cu * cu + cv * cv));
+  }
+
+  // Pass 2: the part of Hess u_c linear in the sums' Hessians (and the normal-field fit).
+  double linear_part[6];
+  Normal_field_sums fit;
+  if(blend > 0)
+    aso_second_pass<Kernel, Weighted, Oriented, true>(nb, u_c_adjoint(m), ref, linear_part, t1, t2, &fit);
+  else
+    aso_second_pass<Kernel, Weighted, Oriented>(nb, u_c_adjoint(m), ref, linear_part);
+
+  // Equation 29 at the evaluation point.
+  double hessian[6];
   for(int i = 0; i < 3; ++i)
     for(int j = i; j < 3; ++j)
     {
@@ -349,35 +402,62 @@ inline Local_estimate algebraic_shape_operator_variant(const Neighborhood& nb, A
                    (i == j ? 2.0 * u_q.v : 0.0);
     }
 
-  Local_estimate e;
   // Equations 27 and 31-35; derivatives are per unit of the scaled frame, hence 1/r.
-  const double u_l_value[3] = {u_l[0].v, u_l[1].v, u_l[2].v};
-  const bool ok = (projection == Aso_projection::CORRECTED_NORMAL)
-                    ? set_shape_operator(gradient, hessian, 1.0 / nb.radius, e)
-                    : set_authors_shape_operator(gradient, hessian, u_l_value, 1.0 / nb.radius, e);
-  if(!ok)
-    return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
+  if(corrected_normal)
+  {
+    double W[3], S[3];
+    shape_operator_in_basis(gradient, hessian, 1.0 / nb.radius, t1, t2, W);
+    if(blend > 0 && fit.solve(S))
+    {
+      // S is signed by the neighbours' normals, W by grad f: they agree unless the corrected
+      // normal opposes the normals' weighted sum C (a degenerate fit; then S is turned)
+      const double side = e.normal[0] * m.C[0] + e.normal[1] * m.C[1] + e.normal[2] * m.C[2] < 0 ? -1.0 : 1.0;
+      for(int k = 0; k < 3; ++k)
+        W[k] = (1 - blend) * W[k] + blend * side * S[k] / nb.radius;
+    }
+    set_principal_curvatures(W[0], W[1], W[2], t1, t2, e);
+    if(!std::isfinite(e.k_min) || !std::isfinite(e.k_max))
+      return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
+  }
+  else
+  {
+    const double u_l_value[3] = {u_l[0].v, u_l[1].v, u_l[2].v};
+    if(!set_authors_shape_operator(gradient, hessian, u_l_value, 1.0 / nb.radius, e))
+      return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
+  }
   e.status = Curvature_estimate_status::VALID;
   return e;
 }
 
-// The choices of an ASO run (the named parameters of estimate_aso_curvatures()).
-struct Aso_settings
+// The ASO of one neighbourhood with a kernel and sample weights fixed at compile time. With
+// the robust orientation, the reference (the weighted sum of the normals) is the first pass's
+// sum C, so the first pass runs on the normals as given; only if some neighbour disagrees with
+// it (rare: flipped normals, two sheets) are the orientation test and the first pass run again
+// on the flipped normals. The result is the same as flipping from the start.
+template <class Kernel, bool Weighted>
+inline Local_estimate aso_with_kernel(const Neighborhood& nb, const Aso_settings& s)
 {
-  Aso_projection projection = Aso_projection::CORRECTED_NORMAL;
-  int kernel_exponent = 2;       // P of (1 - d^2/r^2)^P: 2, 3 or 4
-  bool orient_neighbors = false;  // flip neighbour normals against the majority
-};
+  const double none[3] = {0, 0, 0};
+  const Aso_first_order_sums m = aso_first_pass<Kernel, Weighted, false>(nb, none);
+  if(s.orient_neighbors)
+  {
+    double ref[3];
+    orientation_reference(m.C, nb.query_normal, ref);
+    if(has_disagreeing_normal(nb, ref))
+    {
+      if(!majority_orientation<Kernel>(nb, ref))
+        return Local_estimate::invalid(Curvature_estimate_status::TWO_SHEETS);
+      return aso_from_first_pass<Kernel, Weighted, true>(nb, aso_first_pass<Kernel, Weighted, true>(nb, ref),
+                                                          ref, s);
+    }
+  }
+  return aso_from_first_pass<Kernel, Weighted, false>(nb, m, none, s);
+}
 
 template <class Kernel>
 inline Local_estimate algebraic_shape_operator_kernel(const Neighborhood& nb, const Aso_settings& s)
 {
-  const bool weighted = nb.sample_weight != nullptr;
-  if(weighted)
-    return s.orient_neighbors ? algebraic_shape_operator_variant<Kernel, true, true>(nb, s.projection)
-                              : algebraic_shape_operator_variant<Kernel, true, false>(nb, s.projection);
-  return s.orient_neighbors ? algebraic_shape_operator_variant<Kernel, false, true>(nb, s.projection)
-                            : algebraic_shape_operator_variant<Kernel, false, false>(nb, s.projection);
+  return nb.sample_weight != nullptr ? aso_with_kernel<Kernel, true>(nb, s) : aso_with_kernel<Kernel, false>(nb, s);
 }
 
 // ASO estimate (Equations 27-35) of a neighbourhood; sample weights where the neighbourhood

@@ -94,6 +94,7 @@
 #include <CGAL/Point_set_curvatures/internal/weight_kernel.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -105,18 +106,49 @@ namespace internal {
 
 // The kernels as polynomials of s = |q|^2 (scaled frame), w = sum_j c_j s^j, with their scale
 // derivative r dw/dr = sum_j dc_j s^j (degree <= kernel_degree): what the multi-scale
-// moments need.
-constexpr int kernel_degree = 3;
+// moments need. Degree 4: the kernel (1 - s)^4 and its derivative 8 s (1 - s)^3.
+constexpr int kernel_degree = 4;
+typedef std::array<double, kernel_degree + 1> Kernel_coefficients;
 
 template <class WeightKernel>
 struct Kernel_polynomial;
 
-template <>
-struct Kernel_polynomial<Smooth_kernel>
+// The binomial coefficient C(n, k), for the expansion of (1 - s)^P.
+constexpr double binomial(int n, int k)
 {
-  // w = (1 - s)^2 = 1 - 2 s + s^2;  r dw/dr = -2 s dw/ds = 4 s (1 - s)
-  static constexpr double weight[kernel_degree + 1] = {1.0, -2.0, 1.0, 0.0};
-  static constexpr double scale_derivative[kernel_degree + 1] = {0.0, 4.0, -4.0, 0.0};
+  double c = 1;
+  for(int j = 0; j < k; ++j)
+    c = c * double(n - j) / double(j + 1);
+  return c;
+}
+
+// w = (1 - s)^P = sum_j C(P, j) (-s)^j;
+// r dw/dr = -2 s dw/ds = 2 P s (1 - s)^(P-1) = sum_j 2 P C(P-1, j) (-1)^j s^(j+1).
+// For P = 2: 1 - 2 s + s^2 and 4 s - 4 s^2.
+template <int P>
+constexpr Kernel_coefficients power_kernel_weight()
+{
+  Kernel_coefficients c{};
+  for(int j = 0; j <= P; ++j)
+    c[j] = (j % 2 ? -1.0 : 1.0) * binomial(P, j);
+  return c;
+}
+template <int P>
+constexpr Kernel_coefficients power_kernel_scale_derivative()
+{
+  Kernel_coefficients c{};
+  for(int j = 0; j <= P - 1; ++j)
+    c[j + 1] = 2.0 * P * (j % 2 ? -1.0 : 1.0) * binomial(P - 1, j);
+  return c;
+}
+
+template <int P>
+struct Kernel_polynomial<Power_kernel<P> >
+{
+  static_assert(P <= kernel_degree, "raise kernel_degree for this kernel");
+  static constexpr int degree = P;  // of the weight and of its scale derivative
+  static constexpr Kernel_coefficients weight = power_kernel_weight<P>();
+  static constexpr Kernel_coefficients scale_derivative = power_kernel_scale_derivative<P>();
 };
 
 template <>
@@ -124,15 +156,16 @@ struct Kernel_polynomial<Constant_kernel>
 {
   // w = 1;  r dw/dr = 2 delta(s - 1), estimated by 2 phi(s) = 2 (1 - s)(12 - 120 s + 180 s^2)
   // = 24 - 264 s + 600 s^2 - 360 s^3 (see the header comment)
-  static constexpr double weight[kernel_degree + 1] = {1.0, 0.0, 0.0, 0.0};
-  static constexpr double scale_derivative[kernel_degree + 1] = {24.0, -264.0, 600.0, -360.0};
+  static constexpr int degree = 3;  // of the scale derivative
+  static constexpr Kernel_coefficients weight = {1.0, 0.0, 0.0, 0.0, 0.0};
+  static constexpr Kernel_coefficients scale_derivative = {24.0, -264.0, 600.0, -360.0, 0.0};
 };
 
 // r dw/dr of the kernel at s (Horner).
 template <class WeightKernel>
 double r_dw_dr(double s)
 {
-  const double* c = Kernel_polynomial<WeightKernel>::scale_derivative;
+  const double* c = Kernel_polynomial<WeightKernel>::scale_derivative.data();
   double value = c[kernel_degree];
   for(int j = kernel_degree - 1; j >= 0; --j)
     value = c[j] + s * value;
@@ -280,7 +313,7 @@ inline bool project_on_sphere(const Algebraic_sphere& s, const double x[3], doub
 // Multi-scale features: one neighbourhood gathered at the largest radius R, the features at
 // every radius r_k <= R of a list. With lambda = R / r_k and sigma = |q|^2 in the frame of R,
 // the kernel is a polynomial of lambda^2 sigma, so every sum at r_k is a combination of the
-// moments sum sigma^j g (j <= 3) over the neighbours at distance < r_k. The neighbours are
+// moments sum sigma^j g (j <= kernel_degree) over the neighbours at distance < r_k. The neighbours are
 // bucketed once by distance into the intervals between consecutive radii (a bucket sort:
 // all the prefix sums need), the moments accumulated per bucket and summed over the prefix:
 // one pass over the neighbourhood, O(n + number of radii), whatever the number of radii.
@@ -315,6 +348,8 @@ public:
   template <class WeightKernel>
   void compute(const Neighborhood& nb, Local_sphere_features* out, std::size_t min_count = apss_min_neighbors)
   {
+    // the moments up to the kernel's own degree (the coefficients above it are 0)
+    constexpr int degree = Kernel_polynomial<WeightKernel>::degree;
     const std::size_t n_radii = m_radii.size();
     m_buckets.assign(n_radii, Moments());
     for(std::size_t i = 0; i < nb.size; ++i)
@@ -326,22 +361,22 @@ public:
       const std::size_t j = std::upper_bound(m_bound.begin(), m_bound.end(), s1) - m_bound.begin();
       if(j == n_radii)
         continue;  // at distance >= R up to rounding: outside every ball
-      double s[kernel_degree + 2] = {1.0};
-      for(int k = 1; k < kernel_degree + 2; ++k)
+      double s[degree + 2] = {1.0};
+      for(int k = 1; k < degree + 2; ++k)
         s[k] = s[k - 1] * s1;
       const double qn = qx * nx + qy * ny + qz * nz;
       Moments& m = m_buckets[j];
       ++m.count;
       m.QQ[0] += qx * qx; m.QQ[1] += qx * qy; m.QQ[2] += qx * qz;
       m.QQ[3] += qy * qy; m.QQ[4] += qy * qz; m.QQ[5] += qz * qz;
-      for(int k = 0; k <= kernel_degree; ++k)
+      for(int k = 0; k <= degree; ++k)
       {
         m.P[k] += s[k];
         m.Q[0][k] += s[k] * qx; m.Q[1][k] += s[k] * qy; m.Q[2][k] += s[k] * qz;
         m.N[0][k] += s[k] * nx; m.N[1][k] += s[k] * ny; m.N[2][k] += s[k] * nz;
         m.QN[k] += s[k] * qn;
       }
-      m.P[kernel_degree + 1] += s[kernel_degree + 1];
+      m.P[degree + 1] += s[degree + 1];
     }
 
     Moments prefix;
@@ -357,8 +392,8 @@ public:
       // unweighted: only its rank matters (fit_algebraic_sphere's tangent spread test)
       std::copy(prefix.QQ, prefix.QQ + 6, sums.qq);
       Sphere_sums ds;
-      combine(prefix, lambda, Poly::weight, sums.A, sums.B, sums.C, sums.D, sums.E);
-      combine(prefix, lambda, Poly::scale_derivative, ds.A, ds.B, ds.C, ds.D, ds.E);
+      combine(prefix, lambda, degree, Poly::weight.data(), sums.A, sums.B, sums.C, sums.D, sums.E);
+      combine(prefix, lambda, degree, Poly::scale_derivative.data(), ds.A, ds.B, ds.C, ds.D, ds.E);
       out[k] = sphere_features(sums, ds, radius, min_count);
     }
   }
@@ -395,20 +430,20 @@ private:
     }
   };
 
-  // Sums of Equations 2-4 at the radius R / lambda for the weight sum_j c_j s^j with
-  // s = lambda^2 sigma, in the frame of that radius (q_k = lambda q).
-  static void combine(const Moments& m, double lambda, const double c[kernel_degree + 1], double& A,
-                      double B[3], double C[3], double& D, double& E)
+  // Sums of Equations 2-4 at the radius R / lambda for the weight sum_{j <= degree} c_j s^j
+  // with s = lambda^2 sigma, in the frame of that radius (q_k = lambda q).
+  static void combine(const Moments& m, double lambda, int degree, const double c[kernel_degree + 1],
+                      double& A, double B[3], double C[3], double& D, double& E)
   {
     const double l2 = lambda * lambda;
     double w[kernel_degree + 1];
     double power = 1;  // l2^j
-    for(int j = 0; j <= kernel_degree; ++j, power *= l2)
+    for(int j = 0; j <= degree; ++j, power *= l2)
       w[j] = c[j] * power;
     A = E = D = 0;
     for(int a = 0; a < 3; ++a)
       B[a] = C[a] = 0;
-    for(int j = 0; j <= kernel_degree; ++j)
+    for(int j = 0; j <= degree; ++j)
     {
       A += w[j] * m.P[j];
       E += w[j] * m.P[j + 1];

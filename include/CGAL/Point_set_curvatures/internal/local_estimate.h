@@ -58,12 +58,32 @@ struct Neighborhood
   const double* sample_weight = nullptr;
 };
 
-// The reference orientation of the estimators' robust orientation (ASO, APSS): the sum of
-// the neighbourhood's normals, weighted like the fit (so that the majority decides, and the
-// query's own normal is one vote); the query's normal if they cancel out.
-//
-// Returns false if the neighbours whose normals disagree with it form a second sheet rather
-// than flipped normals of the same one: they carry at least 10% of the weight and their
+// The reference orientation of the estimators' robust orientation (ASO, APSS) from the
+// weighted sum of the neighbourhood's normals (`sum`, the fits' sum C, weighted like the fit so
+// that the majority decides and the query's own normal is one vote): the sum itself, or the
+// query's normal when the normals cancel out.
+inline void orientation_reference(const double sum[3], const double query_normal[3], double ref[3])
+{
+  const double mm = sum[0] * sum[0] + sum[1] * sum[1] + sum[2] * sum[2];
+  const bool use_sum = mm > 1e-24 && std::isfinite(mm);
+  for(int a = 0; a < 3; ++a)
+    ref[a] = use_sum ? sum[a] : query_normal[a];
+}
+
+// True if the normal of some neighbour disagrees with `ref` (negative dot product): only then
+// does the robust orientation flip anything. No kernel weight is needed, so this test is much
+// cheaper than a pass of the fit.
+inline bool has_disagreeing_normal(const Neighborhood& nb, const double ref[3])
+{
+  bool any = false;
+  for(std::size_t i = 0; i < nb.size; ++i)
+    any |= nb.nx[i] * ref[0] + nb.ny[i] * ref[1] + nb.nz[i] * ref[2] < 0;
+  return any;
+}
+
+// Sets `ref` to the reference orientation (orientation_reference() of the weighted sum of the
+// normals). Returns false if the neighbours whose normals disagree with it form a second sheet
+// rather than flipped normals of the same one: they carry at least 10% of the weight and their
 // weighted mean offset along the reference differs from the others' by more than 0.05 r.
 // Flipped normals of one sheet sample the same disk (the same mean offset, up to noise); the
 // two sides of a thin plate, or two walls closer than r, are offset by their distance.
@@ -79,10 +99,7 @@ inline bool majority_orientation(const Neighborhood& nb, double ref[3])
       w *= nb.sample_weight[i];
     m[0] += w * nb.nx[i]; m[1] += w * nb.ny[i]; m[2] += w * nb.nz[i];
   }
-  const double mm = m[0] * m[0] + m[1] * m[1] + m[2] * m[2];
-  const bool use_sum = mm > 1e-24 && std::isfinite(mm);
-  for(int a = 0; a < 3; ++a)
-    ref[a] = use_sum ? m[a] : nb.query_normal[a];
+  orientation_reference(m, nb.query_normal, ref);
   const double rr = ref[0] * ref[0] + ref[1] * ref[1] + ref[2] * ref[2];
   if(!(rr > 0))
     return true;
@@ -214,21 +231,28 @@ inline void set_principal_curvatures(double a, double b, double c,
   }
 }
 
-// Shape operator of a scalar field from its gradient and Hessian (Equation 27 of
-// Lejemble et al. 2021): W = P Hess P / |grad|, with P the projection on the plane
-// orthogonal to grad. `hessian` is packed xx xy xz yy yz zz. Returns false when the
-// gradient vanishes (no normal, no tensor).
-inline bool set_shape_operator(const double gradient[3], const double hessian[6],
-                               double inverse_length_unit, Local_estimate& e)
+// The unit normal of a field's gradient and its tangent basis (tangent_basis()); false when
+// the gradient vanishes or is not finite.
+inline bool gradient_frame(const double gradient[3], double normal[3], double t1[3], double t2[3])
 {
   const double norm = std::sqrt(gradient[0] * gradient[0] + gradient[1] * gradient[1] +
                                 gradient[2] * gradient[2]);
   if(!(norm > 1e-12) || !std::isfinite(norm))
     return false;
   for(int i = 0; i < 3; ++i)
-    e.normal[i] = gradient[i] / norm;
-  double t1[3], t2[3];
-  tangent_basis(e.normal, t1, t2);
+    normal[i] = gradient[i] / norm;
+  tangent_basis(normal, t1, t2);
+  return true;
+}
+
+// The shape operator W = P Hess P / |grad| of a field in the tangent basis (t1, t2) of its
+// gradient_frame(): W = [[W[0], W[1]], [W[1], W[2]]], times `inverse_length_unit`.
+inline void shape_operator_in_basis(const double gradient[3], const double hessian[6],
+                                    double inverse_length_unit, const double t1[3],
+                                    const double t2[3], double W[3])
+{
+  const double norm = std::sqrt(gradient[0] * gradient[0] + gradient[1] * gradient[1] +
+                                gradient[2] * gradient[2]);
   auto quadratic_form = [&](const double u[3], const double v[3]) {
     const double* h = hessian;
     return u[0] * (h[0] * v[0] + h[1] * v[1] + h[2] * v[2]) +
@@ -236,8 +260,23 @@ inline bool set_shape_operator(const double gradient[3], const double hessian[6]
            u[2] * (h[2] * v[0] + h[4] * v[1] + h[5] * v[2]);
   };
   const double s = inverse_length_unit / norm;
-  set_principal_curvatures(s * quadratic_form(t1, t1), s * quadratic_form(t1, t2),
-                           s * quadratic_form(t2, t2), t1, t2, e);
+  W[0] = s * quadratic_form(t1, t1);
+  W[1] = s * quadratic_form(t1, t2);
+  W[2] = s * quadratic_form(t2, t2);
+}
+
+// Shape operator of a scalar field from its gradient and Hessian (Equation 27 of
+// Lejemble et al. 2021): W = P Hess P / |grad|, with P the projection on the plane
+// orthogonal to grad. `hessian` is packed xx xy xz yy yz zz. Returns false when the
+// gradient vanishes (no normal, no tensor).
+inline bool set_shape_operator(const double gradient[3], const double hessian[6],
+                               double inverse_length_unit, Local_estimate& e)
+{
+  double t1[3], t2[3], W[3];
+  if(!gradient_frame(gradient, e.normal, t1, t2))
+    return false;
+  shape_operator_in_basis(gradient, hessian, inverse_length_unit, t1, t2, W);
+  set_principal_curvatures(W[0], W[1], W[2], t1, t2, e);
   return std::isfinite(e.k_min) && std::isfinite(e.k_max);
 }
 

@@ -20,6 +20,8 @@
 #ifndef CGAL_POINT_SET_CURVATURES_INTERNAL_WEIGHT_KERNEL_H
 #define CGAL_POINT_SET_CURVATURES_INTERNAL_WEIGHT_KERNEL_H
 
+#include <CGAL/Point_set_curvatures/parameters.h>
+
 #include <cstddef>
 
 namespace CGAL {
@@ -74,6 +76,20 @@ struct Constant_kernel
 {
   static double weight(double /* t */) { return 1.0; }
 };
+
+// Calls f(Kernel()) with the kernel type of `kernel` (CONSTANT, SMOOTH, SMOOTH_CUBIC,
+// SMOOTH_QUARTIC) and returns its result: the one switch of the sphere fits' kernel.
+template <class Function>
+decltype(auto) with_weight_kernel(Apss_weight_kernel kernel, Function&& f)
+{
+  switch(kernel)
+  {
+    case Apss_weight_kernel::CONSTANT: return f(Constant_kernel());
+    case Apss_weight_kernel::SMOOTH_CUBIC: return f(Power_kernel<3>());
+    case Apss_weight_kernel::SMOOTH_QUARTIC: return f(Power_kernel<4>());
+    default: return f(Smooth_kernel());
+  }
+}
 
 } // namespace internal
 } // namespace Point_set_curvatures
