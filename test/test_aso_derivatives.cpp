@@ -236,3 +236,51 @@ TEST_CASE("Robust orientation: the shortcut through the first pass equals orient
       }
     }
 }
+
+// The normal-field fit of the blend (normal_field_fit.h): S = I / R on a sphere from one side
+// only (a cap cut through its centre), in a tilted frame too; refused without spread across.
+TEST_CASE("Normal-field fit: exact on a one-sided sphere cap, refused on a line")
+{
+  namespace PSCi = CGAL::Point_set_curvatures::internal;
+  const double R = 2.0;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-0.5, 0.5);
+  for(double tilt : {0.0, 0.3})
+  {
+    // frame: t1 = (cos, 0, sin) tilted about y, t2 = (0, 1, 0); the sphere's centre (0, 0, -R)
+    const double t1[3] = {std::cos(tilt), 0, std::sin(tilt)}, t2[3] = {0, 1, 0};
+    PSCi::Normal_field_sums f;
+    for(int i = 0; i < 200; ++i)
+    {
+      const double x = std::abs(u(rng)), y = u(rng);  // one side: x >= 0
+      const double p[3] = {x, y, std::sqrt(R * R - x * x - y * y) - R};
+      const double n[3] = {p[0] / R, p[1] / R, (p[2] + R) / R};
+      auto dot = [](const double* a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+      const double w = 0.5 + std::abs(u(rng));
+      f.w += w; f.u += w * dot(p, t1); f.v += w * dot(p, t2);
+      f.uu += w * dot(p, t1) * dot(p, t1); f.uv += w * dot(p, t1) * dot(p, t2); f.vv += w * dot(p, t2) * dot(p, t2);
+      f.a += w * dot(n, t1); f.b += w * dot(n, t2);
+      f.au += w * dot(n, t1) * dot(p, t1); f.av += w * dot(n, t1) * dot(p, t2);
+      f.bu += w * dot(n, t2) * dot(p, t1); f.bv += w * dot(n, t2) * dot(p, t2);
+    }
+    double S[3];
+    REQUIRE(f.solve(S));
+    INFO("tilt " << tilt);
+    CHECK(std::abs(S[0] - 1 / R) < 1e-12);
+    CHECK(std::abs(S[1]) < 1e-12);
+    CHECK(std::abs(S[2] - 1 / R) < 1e-12);
+  }
+  // points along a line (v = 0), then with a spread across of 1e-4 and 1e-2 of the length
+  for(double across : {0.0, 1e-4, 1e-2})
+  {
+    PSCi::Normal_field_sums f;
+    for(int i = 0; i < 50; ++i)
+    {
+      const double pu = 0.02 * i, pv = across * (i % 2 ? 1 : -1);
+      f.w += 1; f.u += pu; f.v += pv; f.uu += pu * pu; f.uv += pu * pv; f.vv += pv * pv;
+      f.a += pu; f.au += pu * pu; f.av += pu * pv;
+    }
+    double S[3];
+    CHECK(f.solve(S) == (across > 1e-3));
+  }
+}

@@ -79,7 +79,9 @@ struct Normal_field_sums
   //   s11 Cuu + s12 Cuv             = Cau
   //   s11 Cuv + s12 (Cuu + Cvv) + s22 Cuv = Cav + Cbu
   //             s12 Cuv + s22 Cvv   = Cbv
-  // with C the centred moments. False if the positions do not spread in two directions.
+  // with C the centred moments. False if the positions do not spread well in two directions:
+  // the ratio of the axes of their weighted spread below 1e-3 (then the slope across is ill
+  // conditioned and the ASO is kept alone).
   bool solve(double S[3]) const
   {
     if(!(w > 0))
@@ -89,7 +91,7 @@ struct Normal_field_sums
     const double cau = au - a * mu, cav = av - a * mv, cbu = bu - b * mu, cbv = bv - b * mv;
     // the determinant factors: (Cuu + Cvv) (Cuu Cvv - Cuv²)
     const double spread = cuu * cvv - cuv * cuv, trace = cuu + cvv;
-    if(!(spread > 1e-12 * trace * trace) || !std::isfinite(spread))
+    if(!(spread > 1e-6 * trace * trace) || !std::isfinite(spread))
       return false;
     const double r1 = cau, r2 = cav + cbu, r3 = cbv;
     // Cramer's rule on the 3x3 system above, with its determinant trace * spread
