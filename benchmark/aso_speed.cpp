@@ -10,6 +10,8 @@
 //     fixed-radius estimator,
 //   - CGAL Kd_tree + Fuzzy_sphere visiting the same pairs (why the package uses a grid),
 //   - APSS and ASO, sequential and parallel,
+//   - the default's sample weights alone (estimate_tangent_voronoi_areas) and the default ASO
+//     reading them (sample_weight_map): the cost of an area pass shared by several estimators,
 //   - ASO with neighbourhoods by count (neighbor_count = the mean number of neighbours of
 //     the radius runs, rounded), sequential and parallel: the cost of a per-point radius.
 // Prints a Markdown table with seconds, ns per (point, neighbour) pair and ratios to the
@@ -24,6 +26,7 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/estimate_apss_curvatures.h>
 #include <CGAL/estimate_aso_curvatures.h>
+#include <CGAL/estimate_tangent_voronoi_areas.h>
 
 #include <CGAL/Fuzzy_sphere.h>
 #include <CGAL/Kd_tree.h>
@@ -37,6 +40,7 @@
 #include <cstring>
 #include <functional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 using namespace psc_test;
@@ -161,10 +165,20 @@ int main(int argc, char** argv)
 
   double t_bare = 1e300, t_kd = 1e300, t_apss_s = 1e300, t_apss_p = 1e300, t_aso_s = 1e300,
          t_aso_p = 1e300, t_knn_s = 1e300, t_knn_p = 1e300, t_paper_s = 1e300, t_paper_p = 1e300,
-         t_uniform_s = 1e300;
+         t_uniform_s = 1e300, t_areas_s = 1e300, t_given_s = 1e300;
   namespace P = CGAL::Point_set_curvatures::parameters;
   const auto paper = P::aso_variant(CGAL::Aso_variant::PAPER, params);
   const auto uniform = P::sample_weights(CGAL::Sample_weights::UNIFORM, params);
+  // the same cloud with a column for the shared sample weights
+  typedef std::tuple<Point, Vector, double> Weighted_point;
+  std::vector<Weighted_point> weighted;
+  weighted.reserve(n);
+  for(const auto& p : pts)
+    weighted.emplace_back(p.first, p.second, 0.0);
+  const auto weighted_params = P::sample_weight_map(
+    CGAL::Nth_of_tuple_property_map<2, Weighted_point>(),
+    CGAL::parameters::point_map(CGAL::Nth_of_tuple_property_map<0, Weighted_point>())
+      .normal_map(CGAL::Nth_of_tuple_property_map<1, Weighted_point>()));
   std::size_t pairs = 0;
   long long aso_peak_extra = 0;
   double checksum = 0;
@@ -226,6 +240,16 @@ int main(int argc, char** argv)
     t_uniform_s = std::min(t_uniform_s, seconds_since(t0));
     decltype(aso)().swap(aso);
 
+    // one area pass shared: the areas alone, then the ASO reading them
+    t0 = std::chrono::steady_clock::now();
+    CGAL::estimate_tangent_voronoi_areas<CGAL::Sequential_tag>(weighted, r, weighted_params);
+    t_areas_s = std::min(t_areas_s, seconds_since(t0));
+    t0 = std::chrono::steady_clock::now();
+    aso = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(weighted, r, weighted_params);
+    t_given_s = std::min(t_given_s, seconds_since(t0));
+    checksum += aso[n / 9].max_curvature;
+    decltype(aso)().swap(aso);
+
     const std::size_t k = static_cast<std::size_t>(std::lround(double(pairs) / double(n)));
     const auto by_count = CGAL::Point_set_curvatures::parameters::neighbor_count(k, params);
     t0 = std::chrono::steady_clock::now();
@@ -254,6 +278,8 @@ int main(int argc, char** argv)
   row("ASO (default: Aso_variant::ROBUST), Sequential_tag", t_aso_s);
   row("ASO (default: Aso_variant::ROBUST), Parallel_tag", t_aso_p);
   row("ASO, default without sample weights (kernel ^3, orientation), Sequential_tag", t_uniform_s);
+  row("sample weights alone (estimate_tangent_voronoi_areas), Sequential_tag", t_areas_s);
+  row("ASO (default) reading the weights (sample_weight_map), Sequential_tag", t_given_s);
   row("ASO, Aso_variant::PAPER, Sequential_tag", t_paper_s);
   row("ASO, Aso_variant::PAPER, Parallel_tag", t_paper_p);
   row("ASO by count (neighbor_count), Sequential_tag", t_knn_s);

@@ -5,7 +5,8 @@
 // Shape Operator with the point set's own point and normal maps, store the results as
 // property maps of the point set and write everything as a binary PLY: x y z, the corrected
 // normal nx ny nz (the input normal where the estimate is invalid), k_min k_max mean gaussian,
-// the principal directions dmin_x dmin_y dmin_z dmax_x dmax_y dmax_z, valid.
+// the principal directions dmin_x dmin_y dmin_z dmax_x dmax_y dmax_z, valid; and the sample
+// weights (area), computed once and shared by the ASO and the APSS sphere fit (apss_mean).
 //
 // usage: point_set_3_curvatures INPUT OUTPUT.ply RADIUS
 
@@ -13,6 +14,7 @@
 #include <CGAL/Point_set_3.h>
 #include <CGAL/Point_set_3/IO.h>
 #include <CGAL/estimate_aso_curvatures.h>
+#include <CGAL/estimate_tangent_voronoi_areas.h>
 
 #include <cstdint>
 #include <cstdlib>
@@ -38,13 +40,23 @@ int main(int argc, char** argv)
     return EXIT_FAILURE;
   }
 
-  // The point set's point and normal maps are the defaults: no named parameter needed.
+  // The point set's point and normal maps are the defaults (points.parameters()). The default
+  // ASO weights every neighbour by the area of its tangent Voronoi cell: computed once here,
+  // into a property of the point set, and read by both estimators below instead of computing
+  // it twice (the estimates are bitwise those of each function with
+  // sample_weights(TANGENT_VORONOI_AREA), the ASO's default; APSS's default is UNIFORM).
   const double radius = std::atof(argv[3]);
+  Point_set::Property_map<double> area = points.add_property_map<double>("area", 0.0).first;
+  const auto with_areas = CGAL::Point_set_curvatures::parameters::sample_weight_map(area, points.parameters());
+  CGAL::estimate_tangent_voronoi_areas<CGAL::Parallel_tag>(points, radius, with_areas);
   const std::vector<CGAL::Curvature_estimate<Kernel> > estimates =
-    CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(points, radius);
+    CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(points, radius, with_areas);
+  const std::vector<CGAL::Curvature_estimate<Kernel> > sphere =
+    CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(points, radius, with_areas);
 
   // One property map per quantity; the PLY writer saves every scalar property map.
   const double nan = std::numeric_limits<double>::quiet_NaN();
+  Point_set::Property_map<double> apss_mean = points.add_property_map<double>("apss_mean", nan).first;
   Point_set::Property_map<double> k_min = points.add_property_map<double>("k_min", nan).first;
   Point_set::Property_map<double> k_max = points.add_property_map<double>("k_max", nan).first;
   Point_set::Property_map<double> mean = points.add_property_map<double>("mean", nan).first;
@@ -58,6 +70,7 @@ int main(int argc, char** argv)
   std::size_t i = 0, n_valid = 0;
   for(Point_set::Index p : points)
   {
+    apss_mean[p] = sphere[i].mean_curvature;
     const CGAL::Curvature_estimate<Kernel>& e = estimates[i++];  // same order as the point set
     k_min[p] = e.min_curvature;
     k_max[p] = e.max_curvature;

@@ -15,11 +15,13 @@
 #include "../benchmark/goursat_sampler.h"  // area-uniform i.i.d. samples of the Goursat surface
 
 #include <CGAL/Algebraic_shape_operator_fit.h>
+#include <CGAL/estimate_algebraic_sphere_features.h>
 #include <CGAL/estimate_aso_curvatures.h>
 #include <CGAL/estimate_barycenter_curvatures.h>
 #include <CGAL/estimate_jet_curvatures.h>
 #include <CGAL/estimate_pca_plane_curvatures.h>
 #include <CGAL/estimate_pss_curvatures.h>
+#include <CGAL/estimate_tangent_voronoi_areas.h>
 #include <CGAL/estimate_vcm_curvatures.h>
 #include <CGAL/estimate_wavejet_curvatures.h>
 
@@ -1601,4 +1603,239 @@ TEST_CASE("Thin plate: the robust orientation reports TWO_SHEETS where both side
     same += with[i].status == without[i].status &&
             (!with[i].is_valid() || with[i].mean_curvature == without[i].mean_curvature);
   CHECK(same == cube.size());
+}
+
+namespace {
+
+// Bitwise equality of two estimates (NaN fields equal to NaN).
+bool same_estimate(const CGAL::Curvature_estimate<Kernel>& a, const CGAL::Curvature_estimate<Kernel>& b)
+{
+  auto same = [](double x, double y) { return (std::isnan(x) && std::isnan(y)) || x == y; };
+  return a.status == b.status && a.neighbor_count == b.neighbor_count && same(a.mean_curvature, b.mean_curvature) &&
+         same(a.gaussian_curvature, b.gaussian_curvature) && same(a.min_curvature, b.min_curvature) &&
+         same(a.max_curvature, b.max_curvature) && same(a.normal.x(), b.normal.x()) &&
+         same(a.normal.y(), b.normal.y()) && same(a.normal.z(), b.normal.z()) &&
+         same(a.min_direction.x(), b.min_direction.x()) && same(a.min_direction.y(), b.min_direction.y()) &&
+         same(a.min_direction.z(), b.min_direction.z()) && same(a.max_direction.x(), b.max_direction.x()) &&
+         same(a.max_direction.y(), b.max_direction.y()) && same(a.max_direction.z(), b.max_direction.z());
+}
+
+template <class Range>
+std::size_t count_different(const Range& a, const Range& b)
+{
+  REQUIRE(a.size() == b.size());
+  std::size_t d = 0;
+  for(std::size_t i = 0; i < a.size(); ++i)
+    d += same_estimate(a[i], b[i]) ? 0 : 1;
+  return d;
+}
+
+} // namespace
+
+// The area pass shared by several estimators of one run (issue 11's speed target: "the areas
+// pass can be shared by every estimator of one run").
+TEST_CASE("estimate_tangent_voronoi_areas + sample_weight_map: one area pass gives every estimator's area-weighted result bitwise", "[aso][robust][weights]")
+{
+  // a unit sphere sampled i.i.d. with a 1:10 density ramp, a point with a zero normal
+  typedef std::tuple<Point, Vector, double> Item;
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<Item> items;
+  std::vector<Oriented_point> pts;
+  for(const Oriented_point& p : ellipsoid(12000, 1, 1, 1, 4))
+    if(u(rng) * 10 < 1 + 9 * (p.first.x() + 1) / 2)
+    {
+      items.emplace_back(p.first, p.second, -1.0);
+      pts.push_back(p);
+    }
+  std::get<1>(items[7]) = Vector(0, 0, 0);
+  pts[7].second = Vector(0, 0, 0);
+  const double r = 0.3;
+  const auto np = CGAL::parameters::point_map(CGAL::Nth_of_tuple_property_map<0, Item>())
+                    .normal_map(CGAL::Nth_of_tuple_property_map<1, Item>());
+  const auto wnp = PSC::parameters::sample_weight_map(CGAL::Nth_of_tuple_property_map<2, Item>(), np);
+  REQUIRE(CGAL::estimate_tangent_voronoi_areas<CGAL::Parallel_tag>(items, r, wnp));
+
+  // Real values: the unusable point weighs 0; the areas are a quadrature of the sphere: on the
+  // dense half (x > 0, spacing about 0.04) they sum to its area 2 pi; on the whole sphere to
+  // less than 4 pi, as the sparsest cells (spacing 0.1 at x = -1) are cut by the disk of
+  // radius r/4 = 0.075.
+  double total = 0, dense = 0;
+  for(const Item& it : items)
+  {
+    total += std::get<2>(it);
+    dense += std::get<0>(it).x() > 0 ? std::get<2>(it) : 0.0;
+  }
+  measured("sum of the tangent Voronoi areas on the half sphere x > 0 / 2 pi - 1", dense / (2 * M_PI) - 1);
+  measured("sum of the tangent Voronoi areas on the unit sphere / 4 pi - 1", total / (4 * M_PI) - 1);
+  CHECK(std::get<2>(items[7]) == 0);
+  CHECK(std::abs(dense / (2 * M_PI) - 1) < 0.005);
+  CHECK(total < 4 * M_PI);
+  CHECK(total > 0.95 * 4 * M_PI);
+  // the sequential pass gives the same areas
+  std::vector<Item> sequential = items;
+  for(Item& it : sequential)
+    std::get<2>(it) = -1;
+  REQUIRE(CGAL::estimate_tangent_voronoi_areas<CGAL::Sequential_tag>(sequential, r, wnp));
+  std::size_t area_differences = 0;
+  for(std::size_t i = 0; i < items.size(); ++i)
+    area_differences += std::get<2>(items[i]) != std::get<2>(sequential[i]);
+  CHECK(area_differences == 0);
+
+  // the ASO (default, and the paper's variant with area weights), APSS and the sphere
+  // features, each with its own area pass and with the shared areas
+  const auto area = CGAL::Sample_weights::TANGENT_VORONOI_AREA;
+  CHECK(count_different(CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, r, maps()),
+                        CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(items, r, wnp)) == 0);
+  CHECK(count_different(
+          CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, r, PSC::parameters::sample_weights(area, paper_maps())),
+          CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(items, r, PSC::parameters::aso_variant(CGAL::Aso_variant::PAPER, wnp))) == 0);
+  CHECK(count_different(CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(pts, r, PSC::parameters::sample_weights(area, maps())),
+                        CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(items, r, wnp)) == 0);
+  {
+    const auto own = CGAL::estimate_algebraic_sphere_features<CGAL::Parallel_tag>(
+      pts, r, PSC::parameters::sample_weights(area, maps()));
+    const auto shared = CGAL::estimate_algebraic_sphere_features<CGAL::Parallel_tag>(items, r, wnp);
+    std::size_t different = 0;
+    for(std::size_t i = 0; i < pts.size(); ++i)
+      different += (own[i].status != shared[i].status || !(own[i].mean_curvature == shared[i].mean_curvature ||
+                                                            (std::isnan(own[i].mean_curvature) && std::isnan(shared[i].mean_curvature))));
+    CHECK(different == 0);
+  }
+  // normals of length 2.5 and the authors' projection, which uses them unnormalised: the areas
+  // still match (they always take the query's unit normal)
+  {
+    auto long_pts = pts;
+    auto long_items = items;
+    for(std::size_t i = 0; i < pts.size(); ++i)
+    {
+      long_pts[i].second = 2.5 * pts[i].second;
+      std::get<1>(long_items[i]) = 2.5 * std::get<1>(items[i]);
+    }
+    REQUIRE(CGAL::estimate_tangent_voronoi_areas<CGAL::Sequential_tag>(long_items, r, wnp));
+    const auto authors = CGAL::Aso_projection::AUTHORS_IMPLEMENTATION;
+    CHECK(count_different(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(long_pts, r, PSC::parameters::aso_projection(authors, maps())),
+                          CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(long_items, r, PSC::parameters::aso_projection(authors, wnp))) == 0);
+  }
+  // the weights change the estimates (the test would pass trivially otherwise)
+  CHECK(count_different(CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(pts, r, maps()),
+                        CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(items, r, wnp)) > pts.size() / 2);
+
+  // by count: the areas of the estimators' k/4 nearest
+  const std::size_t k = 40;
+  std::vector<Item> by_count = items;
+  REQUIRE(CGAL::estimate_tangent_voronoi_areas<CGAL::Parallel_tag>(by_count, PSC::parameters::neighbor_count(k, wnp)));
+  CHECK(count_different(CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, PSC::parameters::neighbor_count(k, maps())),
+                        CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(by_count, PSC::parameters::neighbor_count(k, wnp))) == 0);
+
+  // CGAL::Point_set_3 with a property of its own
+  CGAL::Point_set_3<Point, Vector> ps;
+  ps.add_normal_map();
+  for(const auto& p : pts)
+    ps.insert(p.first, p.second);
+  auto ps_area = ps.add_property_map<double>("area", -1.0).first;
+  REQUIRE(CGAL::estimate_tangent_voronoi_areas<CGAL::Sequential_tag>(ps, r, PSC::parameters::sample_weight_map(ps_area, ps.parameters())));
+  CHECK(count_different(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(ps, r, ps.parameters()),
+                        CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(ps, r, PSC::parameters::sample_weight_map(ps_area, ps.parameters()))) == 0);
+
+  // The map is read, not recomputed: weights of 1 give the unweighted estimator bitwise (w
+  // times 1.0 is exact), by radius, by count and through a refinement pass; sequential and
+  // parallel runs reading the map agree.
+  {
+    auto ones = items;
+    for(Item& it : ones)
+      std::get<2>(it) = 1.0;
+    const auto uniform = PSC::parameters::sample_weights(CGAL::Sample_weights::UNIFORM, maps());
+    CHECK(count_different(CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, r, uniform),
+                          CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(ones, r, wnp)) == 0);
+    CHECK(count_different(CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, PSC::parameters::neighbor_count(k, uniform)),
+                          CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(ones, PSC::parameters::neighbor_count(k, wnp))) == 0);
+    CHECK(count_different(CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, r, PSC::parameters::normal_refinement(1, uniform)),
+                          CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(ones, r, PSC::parameters::normal_refinement(1, wnp))) == 0);
+    CHECK(count_different(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(items, r, wnp),
+                          CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(items, r, wnp)) == 0);
+  }
+
+  // A tile reads the whole cloud's weights from the map: its own points get the whole-cloud
+  // estimates, by radius (halo r) and by count.
+  {
+    const PSC::Tile tile(CGAL::Bbox_3(0.2, -2, 0, 0.5, 2, 2), 0.5);
+    std::vector<Item> range;
+    std::vector<std::size_t> from;
+    for(std::size_t i = 0; i < items.size(); ++i)
+    {
+      const Point& p = std::get<0>(items[i]);
+      if(tile.distance_to_core(p.x(), p.y(), p.z()) <= tile.halo)
+      {
+        range.push_back(items[i]);
+        from.push_back(i);
+      }
+    }
+    REQUIRE(range.size() < items.size());
+    for(bool by_radius : {true, false})
+    {
+      INFO("by radius " << by_radius);
+      const auto whole = by_radius ? CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(items, r, wnp)
+                                   : CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(by_count, PSC::parameters::neighbor_count(k, wnp));
+      std::vector<Item> tile_range = range;
+      if(!by_radius)
+        for(std::size_t j = 0; j < range.size(); ++j)
+          std::get<2>(tile_range[j]) = std::get<2>(by_count[from[j]]);
+      const auto part = by_radius
+                          ? CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(tile_range, r, PSC::parameters::tile(tile, wnp))
+                          : CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
+                              tile_range, PSC::parameters::neighbor_count(k, PSC::parameters::tile(tile, wnp)));
+      std::size_t own = 0, different = 0;
+      for(std::size_t j = 0; j < range.size(); ++j)
+      {
+        const Point& p = std::get<0>(range[j]);
+        if(!tile.owns(p.x(), p.y(), p.z()))
+          continue;
+        ++own;
+        different += same_estimate(part[j], whole[from[j]]) ? 0 : 1;
+      }
+      CHECK(own > 500);  // 682 own points of 6610
+      CHECK(different == 0);
+    }
+  }
+
+  // Cancelled: false, and the map is left as it was.
+  {
+    auto untouched = items;
+    for(Item& it : untouched)
+      std::get<2>(it) = -7;
+    const std::function<bool(double)> stop = [](double) { return false; };
+    CHECK_FALSE(CGAL::estimate_tangent_voronoi_areas<CGAL::Sequential_tag>(untouched, r, wnp.callback(stop)));
+    std::size_t written = 0;
+    for(const Item& it : untouched)
+      written += std::get<2>(it) != -7;
+    CHECK(written == 0);
+  }
+
+  // Bad weights: a clear exception, never NaN sums; weights that are all 0 are no fit.
+  auto bad = items;
+  std::get<2>(bad[3]) = -1;
+  CHECK_THROWS_AS(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(bad, r, wnp), std::invalid_argument);
+  std::get<2>(bad[3]) = std::numeric_limits<double>::quiet_NaN();
+  CHECK_THROWS_AS(CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(bad, r, wnp), std::invalid_argument);
+  // an estimator without sample weights ignores the map
+  CHECK_NOTHROW(CGAL::estimate_pss_curvatures<CGAL::Sequential_tag>(bad, r, wnp));
+  for(Item& it : bad)
+    std::get<2>(it) = 0;
+  const auto zero = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(bad, r, wnp);
+  std::size_t degenerate = 0;
+  for(const auto& e : zero)
+    degenerate += e.status == Status::DEGENERATE_FIT && std::isnan(e.mean_curvature);
+  CHECK(degenerate + 1 == zero.size());  // the point with a zero normal is INVALID_NORMAL
+  degenerate = 0;
+  for(const auto& e : CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(bad, r, wnp))
+    degenerate += e.status == Status::DEGENERATE_FIT && std::isnan(e.mean_curvature);
+  CHECK(degenerate + 1 == zero.size());
+  // not supported: the multi-scale features, a tile
+  const std::vector<double> radii{0.2, 0.3};
+  CHECK_THROWS_AS(CGAL::estimate_multiscale_algebraic_sphere_features<CGAL::Sequential_tag>(items, radii, wnp),
+                  std::invalid_argument);
+  CHECK_THROWS_AS(CGAL::estimate_tangent_voronoi_areas<CGAL::Sequential_tag>(
+                    items, r, PSC::parameters::tile(PSC::Tile(CGAL::Bbox_3(0, 0, 0, 1, 1, 1), 0.6), wnp)),
+                  std::invalid_argument);
 }

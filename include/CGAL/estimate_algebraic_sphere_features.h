@@ -202,9 +202,12 @@ sphere_features_at_every_point(const PointRange& points, bool radius_given, doub
   // Sample weights (the quadrature argument of the ASO holds for the sums of the sphere): the
   // areas of the tangent Voronoi cells, computed first; they are taken as constant in the
   // scale r for the scale derivatives (exact where no cell reaches its bound, r/4).
-  std::vector<double> areas;
-  if(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::sample_weights),
-                                        Sample_weights::UNIFORM) == Sample_weights::TANGENT_VORONOI_AREA)
+  // Weights given with sample_weight_map replace them.
+  std::vector<double> areas = given_sample_weights(points, np, function_name);
+  if(has_sample_weight_map<NamedParameters>())
+    options.sample_weights = &areas;
+  else if(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::sample_weights),
+                                             Sample_weights::UNIFORM) == Sample_weights::TANGENT_VORONOI_AREA)
   {
     const std::size_t k = checked_scale<PointRange>(radius, radius_given, np, function_name);
     if(options.has_tile)
@@ -320,6 +323,15 @@ struct Multiscale_visitor
 ///       (`std::invalid_argument`)}
 ///     \cgalParamType{`CGAL::Sample_weights`}
 ///     \cgalParamDefault{`CGAL::Sample_weights::UNIFORM`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Point_set_curvatures::parameters::sample_weight_map}
+///     \cgalParamDescription{the quadrature weights of the samples given per point (for
+///       instance the areas of `estimate_tangent_voronoi_areas()`, computed once for several
+///       estimators): read instead of computed, whatever `sample_weights` says;
+///       finite and non-negative (`std::invalid_argument` otherwise)}
+///     \cgalParamType{a model of `ReadablePropertyMap` whose key type is the value type of the
+///       iterator of `PointRange` and whose value type converts to `double`}
+///     \cgalParamDefault{none: the weights of `sample_weights`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Point_set_curvatures::parameters::min_neighbors}
 ///     \cgalParamDescription{the least number of neighbours (query included) of a valid
@@ -448,6 +460,9 @@ estimate_multiscale_algebraic_sphere_features(const PointRange& points,
                                         Sample_weights::UNIFORM) != Sample_weights::UNIFORM)
     throw std::invalid_argument(std::string(name) + ": parameter 'sample_weights' is not supported by the "
                                 "multi-scale features (the areas depend on the scale); use the single-scale function");
+  if(PSC::internal::has_sample_weight_map<NamedParameters>())
+    throw std::invalid_argument(std::string(name) + ": parameter 'sample_weight_map' is not supported by the "
+                                "multi-scale features; use the single-scale function");
   const Apss_weight_kernel kernel = PSC::internal::weight_kernel_parameter(np);
 
   const std::size_t n = static_cast<std::size_t>(std::distance(points.begin(), points.end()));

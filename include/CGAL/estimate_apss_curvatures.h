@@ -26,6 +26,7 @@ struct Apss_estimator : Estimator_base
   {
     check_tangent_spread = false;  // tested by fit_algebraic_sphere
     min_neighbors = default_min_neighbors::apss;
+    reads_sample_weights = true;
   }
   template <class NamedParameters>
   explicit Apss_estimator(const NamedParameters& np)
@@ -116,6 +117,15 @@ struct Apss_estimator : Estimator_base
 ///       `estimate_aso_curvatures()`}
 ///     \cgalParamType{`CGAL::Sample_weights`}
 ///     \cgalParamDefault{`CGAL::Sample_weights::UNIFORM`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Point_set_curvatures::parameters::sample_weight_map}
+///     \cgalParamDescription{the quadrature weights of the samples given per point (for
+///       instance the areas of `estimate_tangent_voronoi_areas()`, computed once for several
+///       estimators): read instead of computed, whatever `sample_weights` says;
+///       finite and non-negative (`std::invalid_argument` otherwise)}
+///     \cgalParamType{a model of `ReadablePropertyMap` whose key type is the value type of the
+///       iterator of `PointRange` and whose value type converts to `double`}
+///     \cgalParamDefault{none: the weights of `sample_weights`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Point_set_curvatures::parameters::robust_orientation}
 ///     \cgalParamDescription{neighbours' normals oriented by their weighted majority, as for

@@ -28,6 +28,7 @@ struct Aso_estimator : Estimator_base
   {
     normalize_normals = (s.projection == Aso_projection::CORRECTED_NORMAL);
     check_tangent_spread = false;  // tested on the first pass's moments
+    reads_sample_weights = true;
     min_neighbors = default_min_neighbors::aso;
   }
 
@@ -197,6 +198,15 @@ Aso_estimator aso_estimator_from(const NamedParameters& np)
 ///       neighbourhoods of radius `radius/2` (or the `k/4` nearest)}
 ///     \cgalParamType{`CGAL::Sample_weights`}
 ///     \cgalParamDefault{`TANGENT_VORONOI_AREA` (`UNIFORM` with `Aso_variant::PAPER`)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Point_set_curvatures::parameters::sample_weight_map}
+///     \cgalParamDescription{the quadrature weights of the samples given per point (for
+///       instance the areas of `estimate_tangent_voronoi_areas()`, computed once for several
+///       estimators): read instead of computed, whatever `sample_weights` or `aso_variant` says;
+///       finite and non-negative (`std::invalid_argument` otherwise)}
+///     \cgalParamType{a model of `ReadablePropertyMap` whose key type is the value type of the
+///       iterator of `PointRange` and whose value type converts to `double`}
+///     \cgalParamDefault{none: the weights of `sample_weights`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Point_set_curvatures::parameters::robust_orientation}
 ///     \cgalParamDescription{neighbours whose normals disagree with the weighted majority of

@@ -189,6 +189,7 @@ enum robust_orientation_t { robust_orientation };
 enum normal_refinement_t { normal_refinement };
 enum aso_variant_t { aso_variant };
 enum normal_field_blend_t { normal_field_blend };
+enum sample_weight_map_t { sample_weight_map };
 
 } // namespace internal_np
 
@@ -204,6 +205,26 @@ sample_weights(Sample_weights weights, const NamedParameters& np = CGAL::paramet
 {
   return CGAL::Named_function_parameters<Sample_weights, internal_np::sample_weights_t,
                                          NamedParameters>(weights, np);
+}
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// Named parameter: a property map whose value type converts to `double`, the quadrature
+/// weight of every point of the range (its key type is the range's value type).
+/// `estimate_tangent_voronoi_areas()` writes the areas into it; `estimate_aso_curvatures()`,
+/// `estimate_apss_curvatures()` and `estimate_algebraic_sphere_features()` read the weights
+/// from it instead of computing them, whatever `sample_weights` and `aso_variant` say, so that
+/// one area pass serves every estimator of a run. Weights must be finite and non-negative
+/// (`std::invalid_argument` otherwise); an estimate whose neighbours all weigh 0 is
+/// `DEGENERATE_FIT`. With the areas of `estimate_tangent_voronoi_areas()` at the same scale,
+/// the estimates are bitwise those the functions give with `TANGENT_VORONOI_AREA` alone. With
+/// `tile`, the map must hold the whole cloud's weights (the halo then needs one radius, not the
+/// area pass's reach): areas computed on the tile's range alone are not the whole cloud's near
+/// the halo's edge. The other estimators ignore the map.
+template <class PropertyMap, class NamedParameters = CGAL::parameters::Default_named_parameters>
+CGAL::Named_function_parameters<PropertyMap, internal_np::sample_weight_map_t, NamedParameters>
+sample_weight_map(const PropertyMap& map, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return CGAL::Named_function_parameters<PropertyMap, internal_np::sample_weight_map_t, NamedParameters>(map, np);
 }
 
 /// \ingroup PkgPointSetCurvaturesRef

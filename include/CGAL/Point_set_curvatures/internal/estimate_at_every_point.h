@@ -16,7 +16,11 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <functional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -178,6 +182,39 @@ std::vector<double> tangent_voronoi_areas(const PointRange& points, bool radius_
   return areas;
 }
 
+// Whether the named parameters hold sample_weight_map (weights given by the user).
+template <class NamedParameters>
+constexpr bool has_sample_weight_map()
+{
+  return !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::sample_weight_map_t>::value;
+}
+
+// The weights of the named parameter sample_weight_map, in range order (empty without it).
+// Throws std::invalid_argument for a weight that is not finite and non-negative.
+template <class PointRange, class NamedParameters>
+std::vector<double> given_sample_weights(const PointRange& points, const NamedParameters& np,
+                                         const char* function_name)
+{
+  std::vector<double> weights;
+  if constexpr(has_sample_weight_map<NamedParameters>())
+  {
+    const auto map = CGAL::parameters::get_parameter(np, internal_np::sample_weight_map);
+    for(auto it = points.begin(); it != points.end(); ++it)
+    {
+      const double a = CGAL::to_double(get(map, *it));
+      if(!(a >= 0) || !std::isfinite(a))
+      {
+        std::ostringstream msg;
+        msg << function_name << ": parameter 'sample_weight_map': the weight of point " << weights.size()
+            << " is " << a << ", weights must be finite and non-negative";
+        throw std::invalid_argument(msg.str());
+      }
+      weights.push_back(a);
+    }
+  }
+  return weights;
+}
+
 // The largest value given to update(), from any thread.
 class Atomic_max
 {
@@ -217,7 +254,8 @@ Local_estimate refinement_estimate(const Estimator& estimator, const Neighborhoo
 
 // Per-point curvature estimation, from `estimator` (a copyable, stateless
 // Local_estimate(const Neighborhood&) functor deriving from Estimator_base). With
-// estimator.sample_weights, a first pass computes the tangent Voronoi areas; with
+// estimator.sample_weights, a first pass computes the tangent Voronoi areas (the weights of
+// the named parameter sample_weight_map, if given, replace it, whatever the estimator); with
 // estimator.refinement = n, n passes of its normal fit (refinement_estimate()) each replace
 // the input normals by their corrected normals before the estimation. The callback sees the
 // passes as consecutive shares of [0, 1]; cancelled before the estimation pass, every point
@@ -256,7 +294,16 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
   const auto evaluate_refinement = [&evaluate_as](const Neighborhood& nb) { return evaluate_as(nb, true); };
   const auto point_map = NP_helper::get_const_point_map(points, np);
   const auto normal_map = NP_helper::get_normal_map(points, np);
-  if(!estimator.sample_weights && estimator.refinement == 0)
+  // Weights given (sample_weight_map) replace the area pass of the estimators that use sample
+  // weights; they are read here, in range order. With a tile they are taken as the whole
+  // cloud's (the halo needs one radius): the caller's responsibility (documented).
+  const bool weights_given = has_sample_weight_map<NamedParameters>() && estimator.reads_sample_weights;
+  const std::vector<double> given_weights =
+    weights_given ? given_sample_weights(points, np, function_name) : std::vector<double>();
+  if(weights_given)
+    options.sample_weights = &given_weights;
+  const bool area_pass = estimator.sample_weights && !weights_given;
+  if(!area_pass && estimator.refinement == 0)
     return evaluate_with_maps<Estimate, ConcurrencyTag>(points, radius_given, radius, k, point_map,
                                                         normal_map, options, evaluate);
 
@@ -269,7 +316,7 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
   std::vector<double> share_start, share_size;
   {
     std::vector<double> cost;
-    if(estimator.sample_weights)
+    if(area_pass)
       cost.push_back(0.5);
     for(std::size_t r = 0; r < estimator.refinement; ++r)
       cost.push_back(Has_refinement_fit<Estimator>::value ? 0.5 : 1.0);
@@ -304,7 +351,7 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
   std::vector<double> area_reach;
   Atomic_max own_neighbor_extent;
   const bool tile_by_count = options.has_tile && !radius_given;
-  if(estimator.sample_weights)
+  if(area_pass)
   {
     // The areas of the neighbours of a tile's own points need their own neighbours: every
     // point of the range is weighted. By radius, the halo must reach two radii (a neighbour's
@@ -313,6 +360,9 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
     // reach no farther than the halo (checked after the estimation).
     Neighborhood_options o = share(pass++);
     o.has_tile = false;
+    // the areas use the query's normal direction only: unit normals whatever the estimator
+    // wants, so that they are bitwise those of estimate_tangent_voronoi_areas()
+    o.normalize_normals = true;
     areas = tangent_voronoi_areas<ConcurrencyTag>(points, radius_given, radius, k, point_map, normal_map, o,
                                                   tile_by_count ? &options.tile : nullptr,
                                                   tile_by_count ? &area_reach : nullptr);

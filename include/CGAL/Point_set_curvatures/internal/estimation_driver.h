@@ -81,6 +81,9 @@ struct Estimator_base
   // (nb.sample_weight), and how many times the estimation reruns on its own normals.
   bool sample_weights = false;
   std::size_t refinement = 0;
+  // Whether the estimator multiplies its weights by nb.sample_weight, so that weights given
+  // with the named parameter sample_weight_map are read (and checked) for it.
+  bool reads_sample_weights = false;
 };
 
 template <class ConcurrencyTag>
