@@ -1607,19 +1607,7 @@ TEST_CASE("Thin plate: the robust orientation reports TWO_SHEETS where both side
 
 namespace {
 
-// Bitwise equality of two estimates (NaN fields equal to NaN).
-bool same_estimate(const CGAL::Curvature_estimate<Kernel>& a, const CGAL::Curvature_estimate<Kernel>& b)
-{
-  auto same = [](double x, double y) { return (std::isnan(x) && std::isnan(y)) || x == y; };
-  return a.status == b.status && a.neighbor_count == b.neighbor_count && same(a.mean_curvature, b.mean_curvature) &&
-         same(a.gaussian_curvature, b.gaussian_curvature) && same(a.min_curvature, b.min_curvature) &&
-         same(a.max_curvature, b.max_curvature) && same(a.normal.x(), b.normal.x()) &&
-         same(a.normal.y(), b.normal.y()) && same(a.normal.z(), b.normal.z()) &&
-         same(a.min_direction.x(), b.min_direction.x()) && same(a.min_direction.y(), b.min_direction.y()) &&
-         same(a.min_direction.z(), b.min_direction.z()) && same(a.max_direction.x(), b.max_direction.x()) &&
-         same(a.max_direction.y(), b.max_direction.y()) && same(a.max_direction.z(), b.max_direction.z());
-}
-
+// How many estimates differ (same_estimate() above: bitwise, NaN equal to NaN).
 template <class Range>
 std::size_t count_different(const Range& a, const Range& b)
 {
@@ -1698,8 +1686,7 @@ TEST_CASE("estimate_tangent_voronoi_areas + sample_weight_map: one area pass giv
     const auto shared = CGAL::estimate_algebraic_sphere_features<CGAL::Parallel_tag>(items, r, wnp);
     std::size_t different = 0;
     for(std::size_t i = 0; i < pts.size(); ++i)
-      different += (own[i].status != shared[i].status || !(own[i].mean_curvature == shared[i].mean_curvature ||
-                                                            (std::isnan(own[i].mean_curvature) && std::isnan(shared[i].mean_curvature))));
+      different += (own[i].status != shared[i].status || !same_number(own[i].mean_curvature, shared[i].mean_curvature));
     CHECK(different == 0);
   }
   // normals of length 2.5 and the authors' projection, which uses them unnormalised: the areas

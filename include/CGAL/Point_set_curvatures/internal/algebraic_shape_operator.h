@@ -370,7 +370,8 @@ inline Local_estimate aso_from_first_pass(const Neighborhood& nb, const Aso_firs
   Local_estimate e;
   double t1[3], t2[3];
   const bool corrected_normal = settings.projection == Aso_projection::CORRECTED_NORMAL;
-  if(corrected_normal && !gradient_frame(gradient, e.normal, t1, t2))
+  const double gradient_norm = corrected_normal ? gradient_frame(gradient, e.normal, t1, t2) : 0.0;
+  if(corrected_normal && gradient_norm == 0)
     return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
 
   // How one-sided the neighbourhood is: the tangential offset of the weighted centroid B / A
@@ -406,7 +407,7 @@ inline Local_estimate aso_from_first_pass(const Neighborhood& nb, const Aso_firs
   if(corrected_normal)
   {
     double W[3], S[3];
-    shape_operator_in_basis(gradient, hessian, 1.0 / nb.radius, t1, t2, W);
+    shape_operator_in_basis(gradient_norm, hessian, 1.0 / nb.radius, t1, t2, W);
     if(blend > 0 && fit.solve(S))
     {
       // S is signed by the neighbours' normals, W by grad f: they agree unless the corrected

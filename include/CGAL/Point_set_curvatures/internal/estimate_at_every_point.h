@@ -254,8 +254,9 @@ Local_estimate refinement_estimate(const Estimator& estimator, const Neighborhoo
 
 // Per-point curvature estimation, from `estimator` (a copyable, stateless
 // Local_estimate(const Neighborhood&) functor deriving from Estimator_base). With
-// estimator.sample_weights, a first pass computes the tangent Voronoi areas (the weights of
-// the named parameter sample_weight_map, if given, replace it, whatever the estimator); with
+// estimator.sample_weights, a first pass computes the tangent Voronoi areas (for an
+// estimator with reads_sample_weights, the weights of the named parameter sample_weight_map,
+// if given, replace them, whatever estimator.sample_weights says); with
 // estimator.refinement = n, n passes of its normal fit (refinement_estimate()) each replace
 // the input normals by their corrected normals before the estimation. The callback sees the
 // passes as consecutive shares of [0, 1]; cancelled before the estimation pass, every point

@@ -231,35 +231,34 @@ inline void set_principal_curvatures(double a, double b, double c,
   }
 }
 
-// The unit normal of a field's gradient and its tangent basis (tangent_basis()); false when
-// the gradient vanishes or is not finite.
-inline bool gradient_frame(const double gradient[3], double normal[3], double t1[3], double t2[3])
+// The unit normal of a field's gradient and its tangent basis (tangent_basis()). Returns the
+// gradient's length, or 0 when the gradient vanishes or is not finite (no frame).
+inline double gradient_frame(const double gradient[3], double normal[3], double t1[3], double t2[3])
 {
   const double norm = std::sqrt(gradient[0] * gradient[0] + gradient[1] * gradient[1] +
                                 gradient[2] * gradient[2]);
   if(!(norm > 1e-12) || !std::isfinite(norm))
-    return false;
+    return 0;
   for(int i = 0; i < 3; ++i)
     normal[i] = gradient[i] / norm;
   tangent_basis(normal, t1, t2);
-  return true;
+  return norm;
 }
 
 // The shape operator W = P Hess P / |grad| of a field in the tangent basis (t1, t2) of its
-// gradient_frame(): W = [[W[0], W[1]], [W[1], W[2]]], times `inverse_length_unit`.
-inline void shape_operator_in_basis(const double gradient[3], const double hessian[6],
+// gradient_frame(), which also gives `gradient_norm`: W = [[W[0], W[1]], [W[1], W[2]]], times
+// `inverse_length_unit`.
+inline void shape_operator_in_basis(double gradient_norm, const double hessian[6],
                                     double inverse_length_unit, const double t1[3],
                                     const double t2[3], double W[3])
 {
-  const double norm = std::sqrt(gradient[0] * gradient[0] + gradient[1] * gradient[1] +
-                                gradient[2] * gradient[2]);
   auto quadratic_form = [&](const double u[3], const double v[3]) {
     const double* h = hessian;
     return u[0] * (h[0] * v[0] + h[1] * v[1] + h[2] * v[2]) +
            u[1] * (h[1] * v[0] + h[3] * v[1] + h[4] * v[2]) +
            u[2] * (h[2] * v[0] + h[4] * v[1] + h[5] * v[2]);
   };
-  const double s = inverse_length_unit / norm;
+  const double s = inverse_length_unit / gradient_norm;
   W[0] = s * quadratic_form(t1, t1);
   W[1] = s * quadratic_form(t1, t2);
   W[2] = s * quadratic_form(t2, t2);
@@ -273,9 +272,10 @@ inline bool set_shape_operator(const double gradient[3], const double hessian[6]
                                double inverse_length_unit, Local_estimate& e)
 {
   double t1[3], t2[3], W[3];
-  if(!gradient_frame(gradient, e.normal, t1, t2))
+  const double norm = gradient_frame(gradient, e.normal, t1, t2);
+  if(norm == 0)
     return false;
-  shape_operator_in_basis(gradient, hessian, inverse_length_unit, t1, t2, W);
+  shape_operator_in_basis(norm, hessian, inverse_length_unit, t1, t2, W);
   set_principal_curvatures(W[0], W[1], W[2], t1, t2, e);
   return std::isfinite(e.k_min) && std::isfinite(e.k_max);
 }
