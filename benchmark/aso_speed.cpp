@@ -7,7 +7,8 @@
 // run, each timed several times (best kept):
 //   - bare traversal: build the sorted uniform grid (keys, sort, sorted copy of the
 //     positions) and visit every pair within r, adding one coordinate: the floor of any
-//     fixed-radius estimator,
+//     fixed-radius estimator; and the same with std::sort instead of the estimators' radix
+//     sort (what the grid's sort saves),
 //   - CGAL Kd_tree + Fuzzy_sphere visiting the same pairs (why the package uses a grid),
 //   - APSS and ASO, sequential and parallel,
 //   - the default's sample weights alone (estimate_tangent_voronoi_areas) and the default ASO
@@ -49,10 +50,12 @@ using psc_bench::seconds_since;
 
 namespace PSCi = CGAL::Point_set_curvatures::internal;
 
-// Bare traversal: sorted grid built as the estimators build it, then every pair within r.
+// Bare traversal: sorted grid built as the estimators build it (radix sort of the cell keys;
+// with `std_sort`, std::sort as before it, for comparison), then every pair within r.
 // Returns the sum of the x coordinates of all neighbours (so nothing is optimised away)
 // and the number of pairs.
-std::pair<double, std::size_t> bare_traversal(const std::vector<Oriented_point>& pts, double r)
+std::pair<double, std::size_t> bare_traversal(const std::vector<Oriented_point>& pts, double r,
+                                              bool std_sort = false)
 {
   double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
   for(const auto& p : pts)
@@ -67,7 +70,13 @@ std::pair<double, std::size_t> bare_traversal(const std::vector<Oriented_point>&
   for(std::size_t i = 0; i < pts.size(); ++i)
     keyed[i] = {grid.key(pts[i].first.x(), pts[i].first.y(), pts[i].first.z()),
                 static_cast<std::uint32_t>(i)};
-  std::sort(keyed.begin(), keyed.end());
+  if(std_sort)
+    std::sort(keyed.begin(), keyed.end());
+  else
+  {
+    std::vector<PSCi::Neighbor_grid::Keyed_index> scratch;
+    PSCi::sort_by_key_then_index(keyed, scratch);
+  }
   grid.set_cells(keyed);
   std::vector<double> xyz(3 * pts.size());
   for(std::size_t k = 0; k < pts.size(); ++k)
@@ -163,7 +172,7 @@ int main(int argc, char** argv)
   const double r = std::sqrt(40.0 * ellipsoid_area(a, b, c) / (M_PI * double(n)));
   const auto params = CGAL::parameters::point_map(Point_map()).normal_map(Normal_map());
 
-  double t_bare = 1e300, t_kd = 1e300, t_apss_s = 1e300, t_apss_p = 1e300, t_aso_s = 1e300,
+  double t_bare = 1e300, t_bare_std = 1e300, t_kd = 1e300, t_apss_s = 1e300, t_apss_p = 1e300, t_aso_s = 1e300,
          t_aso_p = 1e300, t_knn_s = 1e300, t_knn_p = 1e300, t_paper_s = 1e300, t_paper_p = 1e300,
          t_uniform_s = 1e300, t_areas_s = 1e300, t_given_s = 1e300;
   namespace P = CGAL::Point_set_curvatures::parameters;
@@ -189,6 +198,9 @@ int main(int argc, char** argv)
     t_bare = std::min(t_bare, seconds_since(t0));
     pairs = bare.second;
     checksum += bare.first;
+    t0 = std::chrono::steady_clock::now();
+    checksum += bare_traversal(pts, r, true).first;
+    t_bare_std = std::min(t_bare_std, seconds_since(t0));
 
     if(kdtree && rep == 0)  // slow; once is enough to make the point
     {
@@ -271,6 +283,7 @@ int main(int argc, char** argv)
     std::printf("| %s | %.3f | %.1f | %.2f |\n", name, t, t * ns_pair, t / t_bare);
   };
   row("bare grid traversal (build + visit pairs)", t_bare);
+  row("bare grid traversal, grid sorted by std::sort instead of the radix sort", t_bare_std);
   if(kdtree)
     row("CGAL Kd_tree + Fuzzy_sphere (spatially sorted)", t_kd);
   row("APSS, Sequential_tag", t_apss_s);

@@ -512,6 +512,43 @@ TEST_CASE("neighbor_count: density varying 1:10, at least k neighbours everywher
                   std::invalid_argument);
 }
 
+TEST_CASE("grid sort: the radix sort orders (cell key, index) pairs exactly as std::sort")
+{
+  // The driver sorts the points into its grid with sort_by_key_then_index(); the neighbours'
+  // order, hence every sum, depends on it being the order of std::sort on the pairs (key, then
+  // input index). Small inputs (std::sort itself), few distinct keys (long runs of ties), keys
+  // of 20 bits (two digits) and of 62 bits (six digits, a very sparse cloud), unsorted keys;
+  // 300000 pairs make 5 chunks.
+  typedef PSC::internal::Neighbor_grid::Keyed_index Keyed;
+  std::mt19937_64 rng(7);
+  for(const std::size_t n : {std::size_t(0), std::size_t(1), std::size_t(100), std::size_t(2047),
+                             std::size_t(2048), std::size_t(50000), std::size_t(300000)})
+    for(const int bits : {1, 4, 20, 62})
+    {
+      std::vector<Keyed> keyed(n);
+      for(std::size_t i = 0; i < n; ++i)
+        keyed[i] = Keyed(rng() >> (64 - bits), static_cast<std::uint32_t>(i));
+      std::vector<Keyed> expected = keyed, scratch;
+      std::sort(expected.begin(), expected.end());
+      INFO("n = " << n << ", key bits = " << bits);
+      // chunks in order, in reverse order and on TBB's threads: the same order
+      std::vector<Keyed> reversed = keyed, parallel = keyed;
+      PSC::internal::sort_by_key_then_index(keyed, scratch);
+      CHECK(keyed == expected);
+      PSC::internal::sort_by_key_then_index(reversed, scratch, [](std::size_t chunks, const auto& f) {
+        for(std::size_t c = chunks; c > 0; --c)
+          f(c - 1);
+      });
+      CHECK(reversed == expected);
+#ifdef CGAL_LINKED_WITH_TBB
+      PSC::internal::sort_by_key_then_index(parallel, scratch, [](std::size_t chunks, const auto& f) {
+        tbb::parallel_for(std::size_t(0), chunks, [&f](std::size_t c) { f(c); });
+      });
+      CHECK(parallel == expected);
+#endif
+    }
+}
+
 // =======================================================================================
 // The tool
 

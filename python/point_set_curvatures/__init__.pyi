@@ -11,7 +11,7 @@ Vec3 = Sequence[float]
 Result = Dict[str, np.ndarray]
 Method = Literal["aso", "apss", "barycenter", "pca_plane", "pss", "jet", "wavejet", "vcm"]
 WeightKernel = Literal["smooth", "constant", "smooth_cubic", "smooth_quartic"]
-SampleWeights = Literal["uniform", "tangent_voronoi_area"]
+SampleWeights = Union[Literal["uniform", "tangent_voronoi_area"], npt.ArrayLike]
 TileSpec = Union["TileGrid.Tile", Tuple[Vec3, Vec3, float]]
 Orientation = Union[str, Tuple[Literal["along", "towards"], Vec3]]
 
@@ -79,6 +79,19 @@ def estimate_sphere_features(
     tile: Optional[TileSpec] = None,
 ) -> Result:
     """Algebraic sphere features at every point."""
+
+def estimate_tangent_voronoi_areas(
+    points: ArrayN3,
+    normals: ArrayN3,
+    *,
+    radius: Optional[float] = None,
+    neighbors: Optional[int] = None,
+    threads: Optional[int] = None,
+    progress: Progress = None,
+    accept_unnormalized_normals: bool = False,
+) -> np.ndarray:
+    """Per point, the default ASO's sample weight (tangent Voronoi area), to pass to several
+    estimators as sample_weights=..."""
 
 def estimate_multiscale_sphere_features(
     points: ArrayN3,

@@ -97,7 +97,8 @@ def estimate_curvatures(client, points, normals, *, method="aso", radius=None, n
     points, normals : array_like, shape (N, 3)
     method, radius, neighbors, **options
         As for :func:`point_set_curvatures.estimate_curvatures` (not ``tile``, nor ``method="vcm"``,
-        nor ``normal_refinement``).
+        nor ``normal_refinement``); ``sample_weights`` given as an array (one weight per point)
+        is sent to each tile with its rows.
     tile_size : float or None
         The side of the tiles; default: about 4 tiles per worker thread, and at most about
         500 000 points per tile.
@@ -137,14 +138,26 @@ def estimate_curvatures(client, points, normals, *, method="aso", radius=None, n
     counts = np.bincount(owner, minlength=len(grid) + 1)
     halo = _first_halo(radius, neighbors, initial_halo, lo, hi, max(int(finite.sum()), 1))
 
+    # sample weights given per point travel with their tile's rows (the whole cloud's weights)
+    weights = options.pop("sample_weights", None)
+    if weights is not None and not isinstance(weights, str):
+        weights = np.asarray(weights, dtype=np.float64)
+        if weights.shape != (n,):
+            raise ValueError(f"option 'sample_weights': expected an array of shape ({n},), got {weights.shape}")
+    elif weights is not None:
+        options["sample_weights"] = weights
+        weights = None
     kwargs = dict(method=method, radius=radius, neighbors=neighbors, threads=threads, **options)
 
     def submit(index, h):
         tile = grid.tile(index, h)
         sel = np.nonzero(tile.halo_mask(points))[0]
         p, q = client.scatter([np.ascontiguousarray(points[sel]), np.ascontiguousarray(normals[sel])])
+        extra = {}
+        if weights is not None:
+            extra["sample_weights"] = client.scatter(np.ascontiguousarray(weights[sel]))
         future = client.submit(estimate_tile, p, q, tile.core_min, tile.core_max, h, pure=False,
-                               retries=retries, **kwargs)
+                               retries=retries, **kwargs, **extra)
         return future, sel
 
     from distributed import as_completed
@@ -478,7 +491,7 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
         of :func:`point_set_curvatures.estimate_curvatures`), row i for input point i; read it
         with :func:`read_result` or ``np.load(path, mmap_mode="r")``.
     method, radius, neighbors, tile_size, threads, retries, initial_halo, **options
-        As for :func:`estimate_curvatures`.
+        As for :func:`estimate_curvatures` (``sample_weights`` not as an array).
     block_rows : int
         Rows read at a time, and the unit of spatial pruning.
 
@@ -512,6 +525,9 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
 
     if "tile" in options:
         raise ValueError("option 'tile' is chosen by point_set_curvatures.dask")
+    if options.get("sample_weights") is not None and not isinstance(options["sample_weights"], str):
+        raise ValueError("option 'sample_weights': per-point weights (an array) are not supported for "
+                         "clouds in files; use 'uniform' or 'tangent_voronoi_area'")
     if (radius is None) == (neighbors is None):
         raise ValueError("give exactly one of radius and neighbors")
     block_rows = int(block_rows)

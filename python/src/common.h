@@ -50,7 +50,37 @@ struct Options
   long long degree_monge = 2;
   // VCM (NaN: the C++ default, the radius or the median radius by count)
   double vcm_offset_radius = std::numeric_limits<double>::quiet_NaN();
+  // Sample weights given per point (ASO, APSS, sphere features: sample_weight_map), in cloud
+  // order, or null (set by the module from the sample_weights array; not an attribute).
+  const std::vector<double>* given_weights = nullptr;
 };
+
+// Per-point weights of a cloud through a property map on its elements: an element's index is
+// its position in the cloud (the functions are called on the cloud itself, never on a copy).
+// Readable (given weights) or, with double, writable too (the areas computed).
+template <class Value>
+struct Cloud_weight_map
+{
+  typedef Oriented key_type;
+  typedef double value_type;
+  typedef double reference;
+  typedef boost::read_write_property_map_tag category;
+  const Oriented* base = nullptr;
+  Value* weights = nullptr;
+
+  friend double get(const Cloud_weight_map& m, const Oriented& p) { return m.weights[&p - m.base]; }
+  friend void put(const Cloud_weight_map& m, const Oriented& p, double v) { m.weights[&p - m.base] = v; }
+};
+
+// `f(np)`, or with the given weights `f(sample_weight_map(their map, np))`.
+template <class NP, class F>
+auto with_given_weights(const Cloud& cloud, const Options& o, const NP& np, const F& f)
+{
+  if(o.given_weights)
+    return f(CGAL::Point_set_curvatures::parameters::sample_weight_map(
+      Cloud_weight_map<const double>{cloud.data(), o.given_weights->data()}, np));
+  return f(np);
+}
 
 // The scale: a radius, or a neighbour count.
 struct Scale
@@ -80,6 +110,10 @@ std::vector<Estimate> estimate_jet(const Cloud&, const Scale&, const Options&, c
                                    const Callback&);
 std::vector<Estimate> estimate_vcm(const Cloud&, const Scale&, const Options&, const Tile_arg&, bool parallel,
                                    const Callback&);
+// CGAL::estimate_tangent_voronoi_areas (in features.cpp): per point, 0 for unusable points;
+// false if the callback cancelled.
+bool tangent_voronoi_areas(Cloud&, const Scale&, bool accept_unnormalized_normals, bool parallel, const Callback&,
+                           std::vector<double>& areas);
 
 // The named parameters shared by every estimator: maps, callback, neighbour count (0 with
 // a radius), accept_unnormalized_normals and min_neighbors (the estimator's default if

@@ -22,7 +22,9 @@ std::vector<Estimate> estimate_apss(const Cloud& cloud, const Scale& s, const Op
     [&](const auto& base) {
       return P::weight_kernel(kernel, P::sample_weights(weights, P::robust_orientation(robust, base)));
     });
-  return dispatch(cloud, s, t, parallel, np, PSC_PY_FUNCTION(estimate_apss_curvatures));
+  return with_given_weights(cloud, o, np, [&](const auto& np2) {
+    return dispatch(cloud, s, t, parallel, np2, PSC_PY_FUNCTION(estimate_apss_curvatures));
+  });
 }
 
 } // namespace psc_py

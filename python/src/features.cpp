@@ -6,6 +6,7 @@
 #include "features.h"
 
 #include <CGAL/apss_smooth_point_set.h>
+#include <CGAL/estimate_tangent_voronoi_areas.h>
 #include <CGAL/estimate_oriented_normals.h>
 
 namespace psc_py {
@@ -28,7 +29,28 @@ std::vector<Features> sphere_features(const Cloud& cloud, const Scale& s, const 
   const auto np = common_parameters(s, o, cb,
     CGAL::Point_set_curvatures::internal::default_min_neighbors::sphere_features,
     [&](const auto& base) { return P::weight_kernel(sphere_kernel(o), P::sample_weights(weights, base)); });
-  return dispatch(cloud, s, t, parallel, np, PSC_PY_FUNCTION(estimate_algebraic_sphere_features));
+  return with_given_weights(cloud, o, np, [&](const auto& np2) {
+    return dispatch(cloud, s, t, parallel, np2, PSC_PY_FUNCTION(estimate_algebraic_sphere_features));
+  });
+}
+
+bool tangent_voronoi_areas(Cloud& cloud, const Scale& s, bool accept_unnormalized_normals, bool parallel,
+                           const Callback& cb, std::vector<double>& areas)
+{
+  namespace P = CGAL::Point_set_curvatures::parameters;
+  areas.assign(cloud.size(), 0.0);
+  const auto np = P::sample_weight_map(Cloud_weight_map<double>{cloud.data(), areas.data()},
+                                       P::accept_unnormalized_normals(accept_unnormalized_normals,
+                                       P::neighbor_count(s.by_count ? s.k : 0,
+                                         CGAL::parameters::point_map(CGAL::First_of_pair_property_map<Oriented>())
+                                           .normal_map(CGAL::Second_of_pair_property_map<Oriented>())
+                                           .callback(cb))));
+  auto go = [&](auto tag) {
+    typedef decltype(tag) Tag;
+    return s.by_count ? CGAL::estimate_tangent_voronoi_areas<Tag>(cloud, np)
+                      : CGAL::estimate_tangent_voronoi_areas<Tag>(cloud, s.radius, np);
+  };
+  return parallel ? go(CGAL::Parallel_tag()) : go(CGAL::Sequential_tag());
 }
 
 std::vector<std::vector<Features> > multiscale_sphere_features(const Cloud& cloud, const std::vector<double>& radii,

@@ -419,9 +419,25 @@ py::dict features_to_dict(const std::vector<const std::vector<Features>*>& scale
 
 // ---- The functions of _core ----
 
+// The per-point sample weights given as an array (None: none): N float values, in a copy.
+// Their values (finite, non-negative) are checked by the C++ functions.
+std::vector<double> read_weights(const py::object& weights, std::size_t n)
+{
+  std::vector<double> w;
+  if(weights.is_none())
+    return w;
+  const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(weights);
+  if(!a || a.ndim() != 1 || static_cast<std::size_t>(a.shape(0)) != n)
+    throw py::value_error("sample_weights: expected one weight per point, an array of shape (" + std::to_string(n) +
+                          ",), or one of 'uniform', 'tangent_voronoi_area'");
+  w.assign(a.data(), a.data() + n);
+  return w;
+}
+
 py::dict estimate_curvatures(const std::string& method, const py::handle& points, const py::handle& normals,
                              const py::object& radius, const py::object& neighbors, long long threads,
-                             const py::object& progress, const Options& options, const py::object& tile)
+                             const py::object& progress, const Options& options, const py::object& tile,
+                             const py::object& weights)
 {
   const Scale scale = read_scale(radius, neighbors);
   const Tile_arg t = read_tile(tile);
@@ -429,20 +445,24 @@ py::dict estimate_curvatures(const std::string& method, const py::handle& points
   if(std::find(std::begin(methods), std::end(methods), method) == std::end(methods))
     throw py::value_error("unknown method '" + method + "'");
   const Cloud cloud = read_cloud(points, normals);
+  const std::vector<double> given = read_weights(weights, cloud.size());
+  Options o = options;
+  if(!weights.is_none())
+    o.given_weights = &given;
   std::vector<Estimate> result;
   run([&](bool parallel, const Callback& cb) {
         if(method == "aso")
-          result = estimate_aso(cloud, scale, options, t, parallel, cb);
+          result = estimate_aso(cloud, scale, o, t, parallel, cb);
         else if(method == "apss")
-          result = estimate_apss(cloud, scale, options, t, parallel, cb);
+          result = estimate_apss(cloud, scale, o, t, parallel, cb);
         else if(method == "barycenter" || method == "pca_plane")
-          result = estimate_simple(method, cloud, scale, options, t, parallel, cb);
+          result = estimate_simple(method, cloud, scale, o, t, parallel, cb);
         else if(method == "pss" || method == "wavejet")
-          result = estimate_pss_wavejet(method, cloud, scale, options, t, parallel, cb);
+          result = estimate_pss_wavejet(method, cloud, scale, o, t, parallel, cb);
         else if(method == "jet")
-          result = estimate_jet(cloud, scale, options, t, parallel, cb);
+          result = estimate_jet(cloud, scale, o, t, parallel, cb);
         else
-          result = estimate_vcm(cloud, scale, options, t, parallel, cb);
+          result = estimate_vcm(cloud, scale, o, t, parallel, cb);
       },
       progress, threads);
   return estimates_to_dict(result);
@@ -450,15 +470,36 @@ py::dict estimate_curvatures(const std::string& method, const py::handle& points
 
 py::dict sphere_features_py(const py::handle& points, const py::handle& normals, const py::object& radius,
                             const py::object& neighbors, long long threads, const py::object& progress,
-                            const Options& options, const py::object& tile)
+                            const Options& options, const py::object& tile, const py::object& weights)
 {
   const Scale scale = read_scale(radius, neighbors);
   const Tile_arg t = read_tile(tile);
   const Cloud cloud = read_cloud(points, normals);
+  const std::vector<double> given = read_weights(weights, cloud.size());
+  Options o = options;
+  if(!weights.is_none())
+    o.given_weights = &given;
   std::vector<Features> result;
-  run([&](bool parallel, const Callback& cb) { result = sphere_features(cloud, scale, options, t, parallel, cb); },
+  run([&](bool parallel, const Callback& cb) { result = sphere_features(cloud, scale, o, t, parallel, cb); },
       progress, threads);
   return features_to_dict({&result}, true);
+}
+
+py::array_t<double> tangent_voronoi_areas_py(const py::handle& points, const py::handle& normals,
+                                             const py::object& radius, const py::object& neighbors, long long threads,
+                                             const py::object& progress, bool accept_unnormalized_normals)
+{
+  const Scale scale = read_scale(radius, neighbors);
+  Cloud cloud = read_cloud(points, normals);
+  std::vector<double> areas;
+  run([&](bool parallel, const Callback& cb) {
+        if(!tangent_voronoi_areas(cloud, scale, accept_unnormalized_normals, parallel, cb, areas))
+          throw Cancelled_error();
+      },
+      progress, threads);
+  auto out = array_1<double>(areas.size());
+  std::copy(areas.begin(), areas.end(), out.mutable_data());
+  return out;
 }
 
 py::dict multiscale_features_py(const py::handle& points, const py::handle& normals,
@@ -752,9 +793,13 @@ PYBIND11_MODULE(_core, m)
 
   m.def("estimate_curvatures", &estimate_curvatures, py::arg("method"), py::arg("points"), py::arg("normals"),
         py::arg("radius"), py::arg("neighbors"), py::arg("threads"), py::arg("progress"), py::arg("options"),
-        py::arg("tile"));
+        py::arg("tile"), py::arg("weights"));
   m.def("sphere_features", &sphere_features_py, py::arg("points"), py::arg("normals"), py::arg("radius"),
-        py::arg("neighbors"), py::arg("threads"), py::arg("progress"), py::arg("options"), py::arg("tile"));
+        py::arg("neighbors"), py::arg("threads"), py::arg("progress"), py::arg("options"), py::arg("tile"),
+        py::arg("weights"));
+  m.def("tangent_voronoi_areas", &tangent_voronoi_areas_py, py::arg("points"), py::arg("normals"),
+        py::arg("radius"), py::arg("neighbors"), py::arg("threads"), py::arg("progress"),
+        py::arg("accept_unnormalized_normals"));
   m.def("multiscale_sphere_features", &multiscale_features_py, py::arg("points"), py::arg("normals"),
         py::arg("radii"), py::arg("threads"), py::arg("progress"), py::arg("options"));
   m.def("smooth_point_set", &smooth_py, py::arg("points"), py::arg("normals"), py::arg("radius"),

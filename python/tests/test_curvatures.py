@@ -113,6 +113,80 @@ def test_same_as_cpp_features_and_normals(reference):
     assert np.array_equal(n, load("normals_k18", 3))
 
 
+# ---- sample weights computed once, shared by several runs ----
+
+def ramp_sphere(n=8000, seed=3):
+    """i.i.d. points on the unit sphere with a density rising 1:10 along x, unit normals."""
+    rng = np.random.default_rng(seed)
+    v = rng.normal(size=(4 * n, 3))
+    v /= np.linalg.norm(v, axis=1)[:, None]
+    keep = rng.random(len(v)) < 0.1 + 0.9 * (v[:, 0] + 1) / 2
+    v = np.ascontiguousarray(v[keep][:n])
+    return v, v.copy()
+
+
+def test_shared_sample_weights_bitwise():
+    points, normals = ramp_sphere()
+    normals[5] = 0.0  # an unusable point: area 0
+    areas = psc.estimate_tangent_voronoi_areas(points, normals, radius=0.2)
+    assert areas.shape == (len(points),) and areas.dtype == np.float64
+    assert areas[5] == 0 and (np.delete(areas, 5) > 0).all()
+    assert np.array_equal(areas, psc.estimate_tangent_voronoi_areas(points, normals, radius=0.2, threads=1))
+    # each estimator reading the array gives bitwise its own area run
+    default = psc.estimate_curvatures(points, normals, radius=0.2)
+    assert_same(default, psc.estimate_curvatures(points, normals, radius=0.2, sample_weights=areas))
+    assert_same(psc.estimate_curvatures(points, normals, method="apss", radius=0.2,
+                                        sample_weights="tangent_voronoi_area"),
+                psc.estimate_curvatures(points, normals, method="apss", radius=0.2, sample_weights=list(areas)))
+    own = psc.estimate_sphere_features(points, normals, radius=0.2, sample_weights="tangent_voronoi_area")
+    shared = psc.estimate_sphere_features(points, normals, radius=0.2, sample_weights=areas)
+    for k in own:
+        assert np.array_equal(own[k], shared[k], equal_nan=True), k
+    by_count = psc.estimate_tangent_voronoi_areas(points, normals, neighbors=30)
+    assert_same(psc.estimate_curvatures(points, normals, neighbors=30),
+                psc.estimate_curvatures(points, normals, neighbors=30, sample_weights=by_count))
+    # the array is what the estimator reads: weights of 1 give the uniform weights bitwise
+    ones = np.ones(len(points))
+    uniform = psc.estimate_curvatures(points, normals, radius=0.2, sample_weights="uniform")
+    assert_same(uniform, psc.estimate_curvatures(points, normals, radius=0.2, sample_weights=ones))
+    assert not np.array_equal(uniform["k_max"], default["k_max"], equal_nan=True)
+    # other dtypes are converted to float64
+    assert_same(psc.estimate_curvatures(points, normals, radius=0.2, sample_weights=areas.astype(np.float32)),
+                psc.estimate_curvatures(points, normals, radius=0.2,
+                                        sample_weights=areas.astype(np.float32).astype(np.float64)))
+
+
+def test_tangent_voronoi_areas_values(sphere):
+    # evenly spread points on a sphere of radius 2: the cells tile it, their areas sum to 16 pi
+    points, normals = sphere
+    areas = psc.estimate_tangent_voronoi_areas(points, normals, radius=0.25)
+    assert abs(areas.sum() / (16 * np.pi) - 1) < 2e-3
+    assert abs(np.median(areas) / (16 * np.pi / len(points)) - 1) < 0.05
+    # scale: areas in squared input units
+    big = psc.estimate_tangent_voronoi_areas(points * 10, normals, radius=2.5)
+    assert np.allclose(big, 100 * areas, rtol=1e-9)
+
+
+def test_bad_sample_weights():
+    points, normals = ramp_sphere(2000)
+    n = len(points)
+    for bad in (np.ones(n - 1), np.ones((n, 1)), "areas", np.full(n, -1.0)):
+        with pytest.raises(ValueError, match="sample_weight"):
+            psc.estimate_curvatures(points, normals, radius=0.3, sample_weights=bad)
+    w = np.ones(n)
+    w[7] = np.nan
+    with pytest.raises(ValueError, match="weight of point 7"):
+        psc.estimate_curvatures(points, normals, method="apss", radius=0.3, sample_weights=w)
+    with pytest.raises(ValueError, match="does not apply"):
+        psc.estimate_curvatures(points, normals, method="pss", radius=0.3, sample_weights=np.ones(n))
+    with pytest.raises(ValueError):
+        psc.estimate_tangent_voronoi_areas(points, normals, radius=-1.0)
+    with pytest.raises(ValueError):
+        psc.estimate_tangent_voronoi_areas(points, normals)
+    with pytest.raises(psc.Cancelled):
+        psc.estimate_tangent_voronoi_areas(points, normals, radius=0.3, progress=lambda f: False)
+
+
 # ---- dtypes and memory layouts ----
 
 def test_dtype_and_layout_variants(sphere):

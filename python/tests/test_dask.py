@@ -63,6 +63,17 @@ def test_dask_by_count_and_methods(client, cloud):
     assert_same(apss, psc_dask.estimate_curvatures(client, points, normals, method="pss", radius=0.03))
 
 
+def test_dask_shared_sample_weights(client, cloud):
+    # the whole cloud's areas, computed once, travel with each tile's rows: bitwise the default
+    points, normals = cloud
+    areas = psc.estimate_tangent_voronoi_areas(points, normals, radius=0.03)
+    single = psc.estimate_curvatures(points, normals, radius=0.03)
+    assert_same(single, psc_dask.estimate_curvatures(client, points, normals, radius=0.03, sample_weights=areas,
+                                                     tile_size=0.5))
+    with pytest.raises(ValueError, match="sample_weights"):
+        psc_dask.estimate_curvatures(client, points, normals, radius=0.03, sample_weights=areas[:-1])
+
+
 def test_estimate_tile_halo_too_small(cloud):
     points, normals = cloud
     grid = psc.TileGrid((2, -3, 0), (4, -1, 2), counts=(2, 2, 2))

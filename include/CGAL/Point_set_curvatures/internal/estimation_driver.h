@@ -40,7 +40,6 @@
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_sort.h>
 #include <tbb/task_arena.h>
 #endif
 
@@ -355,13 +354,25 @@ void read_and_sort(const PointRange& points, PointMap point_map, NormalMap norma
       keyed[i] = Neighbor_grid::Keyed_index(key, static_cast<std::uint32_t>(i));
     }
   });
+  // the usable points, in input order (so that the sort breaks ties by input position)
+  keyed.erase(std::remove_if(keyed.begin(), keyed.end(),
+                             [](const Neighbor_grid::Keyed_index& e) {
+                               return e.first == std::numeric_limits<Neighbor_grid::Key>::max();
+                             }),
+              keyed.end());
+  {
+    std::vector<Neighbor_grid::Keyed_index> scratch;
+    sort_by_key_then_index(keyed, scratch, [](std::size_t chunks, const auto& f) {
 #ifdef CGAL_LINKED_WITH_TBB
-  if(is_parallel<ConcurrencyTag>())
-    tbb::parallel_sort(keyed.begin(), keyed.end());
-  else
+      if(is_parallel<ConcurrencyTag>())
+      {
+        tbb::parallel_for(std::size_t(0), chunks, [&f](std::size_t c) { f(c); });
+        return;
+      }
 #endif
-    std::sort(keyed.begin(), keyed.end());
-  keyed.resize(n_usable);
+      Run_chunks_in_order()(chunks, f);
+    });
+  }
   cloud.grid.set_cells(keyed);
   cloud.input_index.resize(n_usable);
   for_index_chunks<ConcurrencyTag>(n_usable, [&](std::size_t first, std::size_t last) {
