@@ -235,7 +235,8 @@ def _weights(value):
     """Per-point sample weights given as an array: a float64 array of shape (N,) (the C++ side
     checks the length and that every weight is finite and non-negative)."""
     try:
-        w = np.asarray(value, dtype=np.float64)
+        w = np.asarray(value)
+        w = w.astype(np.float64) if w.dtype.kind in "biuf" else None
     except (TypeError, ValueError):
         w = None
     if w is None or w.ndim != 1:

@@ -30,7 +30,7 @@ import uuid
 
 import numpy as np
 
-from . import HaloTooSmall, Status, TileGrid, estimate_curvatures as _estimate_curvatures
+from . import HaloTooSmall, Status, TileGrid, _weights, estimate_curvatures as _estimate_curvatures
 
 __all__ = ["estimate_curvatures", "estimate_curvatures_file", "read_result", "estimate_tile", "RESULT_DTYPE"]
 
@@ -141,9 +141,16 @@ def estimate_curvatures(client, points, normals, *, method="aso", radius=None, n
     # sample weights given per point travel with their tile's rows (the whole cloud's weights)
     weights = options.pop("sample_weights", None)
     if weights is not None and not isinstance(weights, str):
-        weights = np.asarray(weights, dtype=np.float64)
+        # checked here, with the whole cloud's indices (a tile sees only its rows)
+        if method not in ("aso", "apss"):
+            raise ValueError(f"option 'sample_weights' does not apply to method {method!r}")
+        weights = _weights(weights)
         if weights.shape != (n,):
             raise ValueError(f"option 'sample_weights': expected an array of shape ({n},), got {weights.shape}")
+        bad = np.nonzero(~(np.isfinite(weights) & (weights >= 0)))[0]
+        if len(bad):
+            raise ValueError(f"option 'sample_weights': the weight of point {bad[0]} is {weights[bad[0]]}, "
+                             "weights must be finite and non-negative")
     elif weights is not None:
         options["sample_weights"] = weights
         weights = None

@@ -21,6 +21,7 @@
 #include <functional>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -57,18 +58,20 @@ struct Options
 
 // Per-point weights of a cloud through a property map on its elements: an element's index is
 // its position in the cloud (the functions are called on the cloud itself, never on a copy).
-// Readable (given weights) or, with double, writable too (the areas computed).
+// Readable (const double: given weights) or also writable (double: the areas computed).
 template <class Value>
 struct Cloud_weight_map
 {
   typedef Oriented key_type;
   typedef double value_type;
   typedef double reference;
-  typedef boost::read_write_property_map_tag category;
+  typedef std::conditional_t<std::is_const<Value>::value, boost::readable_property_map_tag,
+                             boost::read_write_property_map_tag> category;
   const Oriented* base = nullptr;
   Value* weights = nullptr;
 
   friend double get(const Cloud_weight_map& m, const Oriented& p) { return m.weights[&p - m.base]; }
+  // defined only where used: never for const double
   friend void put(const Cloud_weight_map& m, const Oriented& p, double v) { m.weights[&p - m.base] = v; }
 };
 

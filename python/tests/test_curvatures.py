@@ -145,11 +145,16 @@ def test_shared_sample_weights_bitwise():
     by_count = psc.estimate_tangent_voronoi_areas(points, normals, neighbors=30)
     assert_same(psc.estimate_curvatures(points, normals, neighbors=30),
                 psc.estimate_curvatures(points, normals, neighbors=30, sample_weights=by_count))
+    assert_same(psc.estimate_curvatures(points, normals, method="apss", neighbors=30,
+                                        sample_weights="tangent_voronoi_area"),
+                psc.estimate_curvatures(points, normals, method="apss", neighbors=30, sample_weights=by_count))
     # the array is what the estimator reads: weights of 1 give the uniform weights bitwise
     ones = np.ones(len(points))
     uniform = psc.estimate_curvatures(points, normals, radius=0.2, sample_weights="uniform")
     assert_same(uniform, psc.estimate_curvatures(points, normals, radius=0.2, sample_weights=ones))
     assert not np.array_equal(uniform["k_max"], default["k_max"], equal_nan=True)
+    assert_same(psc.estimate_curvatures(points, normals, neighbors=30, sample_weights="uniform"),
+                psc.estimate_curvatures(points, normals, neighbors=30, sample_weights=ones))
     # other dtypes are converted to float64
     assert_same(psc.estimate_curvatures(points, normals, radius=0.2, sample_weights=areas.astype(np.float32)),
                 psc.estimate_curvatures(points, normals, radius=0.2,
@@ -170,7 +175,7 @@ def test_tangent_voronoi_areas_values(sphere):
 def test_bad_sample_weights():
     points, normals = ramp_sphere(2000)
     n = len(points)
-    for bad in (np.ones(n - 1), np.ones((n, 1)), "areas", np.full(n, -1.0)):
+    for bad in (np.ones(n - 1), np.ones((n, 1)), "areas", np.full(n, -1.0), np.ones(n, dtype=complex)):
         with pytest.raises(ValueError, match="sample_weight"):
             psc.estimate_curvatures(points, normals, radius=0.3, sample_weights=bad)
     w = np.ones(n)

@@ -64,14 +64,28 @@ def test_dask_by_count_and_methods(client, cloud):
 
 
 def test_dask_shared_sample_weights(client, cloud):
-    # the whole cloud's areas, computed once, travel with each tile's rows: bitwise the default
+    # weights given per point travel with each tile's rows: bitwise the single-process run with
+    # them (random weights, which no tile could compute itself), by radius and by count
     points, normals = cloud
-    areas = psc.estimate_tangent_voronoi_areas(points, normals, radius=0.03)
-    single = psc.estimate_curvatures(points, normals, radius=0.03)
-    assert_same(single, psc_dask.estimate_curvatures(client, points, normals, radius=0.03, sample_weights=areas,
-                                                     tile_size=0.5))
+    w = np.random.default_rng(9).random(len(points)) + 0.5
+    for scale in (dict(radius=0.03), dict(neighbors=30)):
+        single = psc.estimate_curvatures(points, normals, sample_weights=w, **scale)
+        assert not np.array_equal(single["k_max"], psc.estimate_curvatures(points, normals, **scale)["k_max"],
+                                  equal_nan=True)
+        assert_same(single, psc_dask.estimate_curvatures(client, points, normals, sample_weights=w, tile_size=0.5,
+                                                         **scale))
+    apss = psc.estimate_curvatures(points, normals, method="apss", radius=0.03, sample_weights=w)
+    assert_same(apss, psc_dask.estimate_curvatures(client, points, normals, method="apss", radius=0.03,
+                                                   sample_weights=w))
+    # bad weights are reported with the whole cloud's index before any tile runs
     with pytest.raises(ValueError, match="sample_weights"):
-        psc_dask.estimate_curvatures(client, points, normals, radius=0.03, sample_weights=areas[:-1])
+        psc_dask.estimate_curvatures(client, points, normals, radius=0.03, sample_weights=w[:-1])
+    bad = w.copy()
+    bad[17] = np.nan  # point 17 is not finite: in no tile
+    with pytest.raises(ValueError, match="weight of point 17"):
+        psc_dask.estimate_curvatures(client, points, normals, radius=0.03, sample_weights=bad)
+    with pytest.raises(ValueError, match="does not apply"):
+        psc_dask.estimate_curvatures(client, points, normals, method="pss", radius=0.03, sample_weights=w)
 
 
 def test_estimate_tile_halo_too_small(cloud):

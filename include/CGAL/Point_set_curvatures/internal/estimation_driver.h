@@ -29,6 +29,7 @@
 #include <CGAL/Point_set_curvatures/Tile.h>
 #include <CGAL/Point_set_curvatures/parameters.h>
 
+#include <CGAL/assertions.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -360,6 +361,7 @@ void read_and_sort(const PointRange& points, PointMap point_map, NormalMap norma
                                return e.first == std::numeric_limits<Neighbor_grid::Key>::max();
                              }),
               keyed.end());
+  CGAL_assertion(keyed.size() == n_usable);
   {
     std::vector<Neighbor_grid::Keyed_index> scratch;
     sort_by_key_then_index(keyed, scratch, [](std::size_t chunks, const auto& f) {

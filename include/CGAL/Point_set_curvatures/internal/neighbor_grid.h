@@ -246,7 +246,8 @@ void sort_by_key_then_index(std::vector<Keyed>& v, std::vector<Keyed>& scratch,
     run_chunks(chunks, [&](std::size_t c) {
       std::size_t* count = &start[c * buckets];
       std::fill(count, count + buckets, std::size_t(0));
-      for(std::size_t i = chunk_begin(c); i < chunk_begin(c + 1); ++i)
+      const std::size_t end = chunk_begin(c + 1);
+      for(std::size_t i = chunk_begin(c); i < end; ++i)
         ++count[(v[i].first >> shift) & mask];
     });
     std::size_t sum = 0;  // digit by digit, and chunk by chunk within a digit: stable
@@ -259,7 +260,8 @@ void sort_by_key_then_index(std::vector<Keyed>& v, std::vector<Keyed>& scratch,
       }
     run_chunks(chunks, [&](std::size_t c) {
       std::size_t* next = &start[c * buckets];
-      for(std::size_t i = chunk_begin(c); i < chunk_begin(c + 1); ++i)
+      const std::size_t end = chunk_begin(c + 1);
+      for(std::size_t i = chunk_begin(c); i < end; ++i)
         scratch[next[(v[i].first >> shift) & mask]++] = v[i];
     });
     v.swap(scratch);
