@@ -39,6 +39,12 @@ _FIELDS1 = ("k_min", "k_max", "mean", "gaussian")
 
 
 
+def _weight_array(options):
+    """The option sample_weights if it is per-point weights (not None, not a name)."""
+    weights = options.get("sample_weights")
+    return None if weights is None or isinstance(weights, str) else weights
+
+
 def _first_halo(radius, neighbors, initial_halo, lo, hi, finite_count):
     """The halo the tiles start with: twice the radius (sample weights reach two radii), the
     caller's initial_halo, or for neighbourhoods by count a first guess from the density (the
@@ -139,9 +145,10 @@ def estimate_curvatures(client, points, normals, *, method="aso", radius=None, n
     halo = _first_halo(radius, neighbors, initial_halo, lo, hi, max(int(finite.sum()), 1))
 
     # sample weights given per point travel with their tile's rows (the whole cloud's weights)
-    weights = options.pop("sample_weights", None)
-    if weights is not None and not isinstance(weights, str):
+    weights = _weight_array(options)
+    if weights is not None:
         # checked here, with the whole cloud's indices (a tile sees only its rows)
+        del options["sample_weights"]
         if method not in ("aso", "apss"):
             raise ValueError(f"option 'sample_weights' does not apply to method {method!r}")
         weights = _weights(weights)
@@ -151,9 +158,6 @@ def estimate_curvatures(client, points, normals, *, method="aso", radius=None, n
         if len(bad):
             raise ValueError(f"option 'sample_weights': the weight of point {bad[0]} is {weights[bad[0]]}, "
                              "weights must be finite and non-negative")
-    elif weights is not None:
-        options["sample_weights"] = weights
-        weights = None
     kwargs = dict(method=method, radius=radius, neighbors=neighbors, threads=threads, **options)
 
     def submit(index, h):
@@ -532,7 +536,7 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
 
     if "tile" in options:
         raise ValueError("option 'tile' is chosen by point_set_curvatures.dask")
-    if options.get("sample_weights") is not None and not isinstance(options["sample_weights"], str):
+    if _weight_array(options) is not None:
         raise ValueError("option 'sample_weights': per-point weights (an array) are not supported for "
                          "clouds in files; use 'uniform' or 'tangent_voronoi_area'")
     if (radius is None) == (neighbors is None):

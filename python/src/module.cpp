@@ -434,6 +434,18 @@ std::vector<double> read_weights(const py::object& weights, std::size_t n)
   return w;
 }
 
+// `options` with the per-point weights of `weights` (None: `options` as they are), read into
+// `storage`, which must outlive the copy returned.
+Options options_with_weights(const Options& options, const py::object& weights, std::size_t n,
+                             std::vector<double>& storage)
+{
+  Options o = options;
+  storage = read_weights(weights, n);
+  if(!weights.is_none())
+    o.given_weights = &storage;
+  return o;
+}
+
 py::dict estimate_curvatures(const std::string& method, const py::handle& points, const py::handle& normals,
                              const py::object& radius, const py::object& neighbors, long long threads,
                              const py::object& progress, const Options& options, const py::object& tile,
@@ -445,10 +457,8 @@ py::dict estimate_curvatures(const std::string& method, const py::handle& points
   if(std::find(std::begin(methods), std::end(methods), method) == std::end(methods))
     throw py::value_error("unknown method '" + method + "'");
   const Cloud cloud = read_cloud(points, normals);
-  const std::vector<double> given = read_weights(weights, cloud.size());
-  Options o = options;
-  if(!weights.is_none())
-    o.given_weights = &given;
+  std::vector<double> given;
+  const Options o = options_with_weights(options, weights, cloud.size(), given);
   std::vector<Estimate> result;
   run([&](bool parallel, const Callback& cb) {
         if(method == "aso")
@@ -475,10 +485,8 @@ py::dict sphere_features_py(const py::handle& points, const py::handle& normals,
   const Scale scale = read_scale(radius, neighbors);
   const Tile_arg t = read_tile(tile);
   const Cloud cloud = read_cloud(points, normals);
-  const std::vector<double> given = read_weights(weights, cloud.size());
-  Options o = options;
-  if(!weights.is_none())
-    o.given_weights = &given;
+  std::vector<double> given;
+  const Options o = options_with_weights(options, weights, cloud.size(), given);
   std::vector<Features> result;
   run([&](bool parallel, const Callback& cb) { result = sphere_features(cloud, scale, o, t, parallel, cb); },
       progress, threads);

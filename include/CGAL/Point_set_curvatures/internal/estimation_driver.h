@@ -245,14 +245,15 @@ inline bool usable_normal(double squared_length, bool check_length)
   return !check_length || (squared_length >= 1e-6 && squared_length <= 1e6);
 }
 
-// Runs f(first, last) over [0, n): in one piece, or in chunks on TBB's threads.
+// Runs f(first, last) over [0, n): in one piece, or in chunks of about `grain` indices (at
+// least) on TBB's threads.
 template <class ConcurrencyTag, class Function>
-void for_index_chunks(std::size_t n, const Function& f)
+void for_index_chunks(std::size_t n, const Function& f, std::size_t grain = 4096)
 {
 #ifdef CGAL_LINKED_WITH_TBB
   if(is_parallel<ConcurrencyTag>())
   {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096),
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain),
                       [&](const tbb::blocked_range<std::size_t>& r) { f(r.begin(), r.end()); });
     return;
   }
@@ -364,15 +365,14 @@ void read_and_sort(const PointRange& points, PointMap point_map, NormalMap norma
   CGAL_assertion(keyed.size() == n_usable);
   {
     std::vector<Neighbor_grid::Keyed_index> scratch;
+    // the sort's chunks are few and large: one per task
     sort_by_key_then_index(keyed, scratch, [](std::size_t chunks, const auto& f) {
-#ifdef CGAL_LINKED_WITH_TBB
-      if(is_parallel<ConcurrencyTag>())
-      {
-        tbb::parallel_for(std::size_t(0), chunks, [&f](std::size_t c) { f(c); });
-        return;
-      }
-#endif
-      Run_chunks_in_order()(chunks, f);
+      for_index_chunks<ConcurrencyTag>(
+        chunks, [&f](std::size_t first, std::size_t last) {
+          for(std::size_t c = first; c < last; ++c)
+            f(c);
+        },
+        1);
     });
   }
   cloud.grid.set_cells(keyed);

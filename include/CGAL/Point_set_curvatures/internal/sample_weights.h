@@ -35,7 +35,8 @@ namespace Point_set_curvatures {
 namespace internal {
 
 // A convex polygon of at most `capacity` vertices, clipped by half-planes; it keeps the
-// squared distance of its farthest vertex from the origin.
+// squared distance of its farthest vertex from the origin. Two vertex buffers take turns:
+// a clip reads one and writes the other (no copy back).
 class Convex_cell
 {
 public:
@@ -45,10 +46,11 @@ public:
   {
     m_size = 4;
     const double x[4] = {-h, h, h, -h}, y[4] = {-h, -h, h, h};
+    m_front = 0;
     for(int i = 0; i < 4; ++i)
     {
-      m_x[i] = x[i];
-      m_y[i] = y[i];
+      m_xy[0][0][i] = x[i];
+      m_xy[0][1][i] = y[i];
     }
     m_farthest = 2 * h * h;
   }
@@ -57,35 +59,37 @@ public:
   // origin and a point u, with c = |u|^2 / 2).
   void clip(double ux, double uy, double c)
   {
-    double nx[capacity], ny[capacity];
+    const double* x = m_xy[m_front][0];
+    const double* y = m_xy[m_front][1];
+    double* nx = m_xy[1 - m_front][0];
+    double* ny = m_xy[1 - m_front][1];
     int n = 0;
     double farthest = 0;
-    auto keep = [&](double x, double y) {
+    auto keep = [&](double px, double py) {
       if(n < capacity)
       {
-        nx[n] = x;
-        ny[n] = y;
+        nx[n] = px;
+        ny[n] = py;
         ++n;
-        farthest = std::max(farthest, x * x + y * y);
+        farthest = std::max(farthest, px * px + py * py);
       }
     };
-    double di = ux * m_x[0] + uy * m_y[0] - c;
+    double di = ux * x[0] + uy * y[0] - c;
     for(int i = 0; i < m_size; ++i)
     {
       const int j = i + 1 == m_size ? 0 : i + 1;
-      const double dj = ux * m_x[j] + uy * m_y[j] - c;
+      const double dj = ux * x[j] + uy * y[j] - c;
       if(di <= 0)
-        keep(m_x[i], m_y[i]);
+        keep(x[i], y[i]);
       if((di < 0 && dj > 0) || (di > 0 && dj < 0))
       {
         const double t = di / (di - dj);
-        keep(m_x[i] + t * (m_x[j] - m_x[i]), m_y[i] + t * (m_y[j] - m_y[i]));
+        keep(x[i] + t * (x[j] - x[i]), y[i] + t * (y[j] - y[i]));
       }
       di = dj;
     }
     m_size = n;
-    std::copy(nx, nx + n, m_x);
-    std::copy(ny, ny + n, m_y);
+    m_front = 1 - m_front;
     m_farthest = farthest;
   }
 
@@ -94,6 +98,8 @@ public:
   // the parts of an edge outside the disk are replaced by arcs (circular sectors).
   double area_in_disk(double R) const
   {
+    const double* x = m_xy[m_front][0];
+    const double* y = m_xy[m_front][1];
     const double R2 = R * R;
     auto cross = [](double ax, double ay, double bx, double by) { return ax * by - ay * bx; };
     auto sector = [&](double ax, double ay, double bx, double by) {
@@ -106,39 +112,39 @@ public:
       for(int i = 0; i < m_size; ++i)
       {
         const int j = i + 1 == m_size ? 0 : i + 1;
-        total += cross(m_x[i], m_y[i], m_x[j], m_y[j]);
+        total += cross(x[i], y[i], x[j], y[j]);
       }
       return 0.5 * std::abs(total);
     }
     for(int i = 0; i < m_size; ++i)
     {
       const int j = i + 1 == m_size ? 0 : i + 1;
-      const double px = m_x[i], py = m_y[i], dx = m_x[j] - px, dy = m_y[j] - py;
+      const double px = x[i], py = y[i], dx = x[j] - px, dy = y[j] - py;
       const double A = dx * dx + dy * dy, B = px * dx + py * dy, C = px * px + py * py - R2;
       const double disc = B * B - A * C;
       if(!(A > 0))
         continue;
       if(disc <= 0)
       {
-        total += sector(px, py, m_x[j], m_y[j]);
+        total += sector(px, py, x[j], y[j]);
         continue;
       }
       const double root = std::sqrt(disc);
       const double t1 = std::max(0.0, (-B - root) / A), t2 = std::min(1.0, (-B + root) / A);
       if(t1 >= t2)
       {
-        total += sector(px, py, m_x[j], m_y[j]);
+        total += sector(px, py, x[j], y[j]);
         continue;
       }
       // the chord inside the disk, and arcs for the parts of the edge outside it (none at an
       // end inside the disk)
       const double ax = t1 > 0 ? px + t1 * dx : px, ay = t1 > 0 ? py + t1 * dy : py;
-      const double bx = t2 < 1 ? px + t2 * dx : m_x[j], by = t2 < 1 ? py + t2 * dy : m_y[j];
+      const double bx = t2 < 1 ? px + t2 * dx : x[j], by = t2 < 1 ? py + t2 * dy : y[j];
       total += 0.5 * cross(ax, ay, bx, by);
       if(t1 > 0)
         total += sector(px, py, ax, ay);
       if(t2 < 1)
-        total += sector(bx, by, m_x[j], m_y[j]);
+        total += sector(bx, by, x[j], y[j]);
     }
     return std::abs(total);
   }
@@ -147,8 +153,9 @@ public:
 
 private:
   int m_size = 0;
+  int m_front = 0;  // m_xy[m_front] holds the cell, the other buffer receives the next clip
   double m_farthest = 0;
-  double m_x[capacity], m_y[capacity];
+  double m_xy[2][2][capacity];
 };
 
 // Reusable scratch of tangent_voronoi_area(): the projected neighbours.
