@@ -70,6 +70,30 @@ constexpr bool is_writable_map()
                              boost::writable_property_map_tag>::value;
 }
 
+// The visitor of one iteration of apss_smooth_point_set(): per point, the status of the step
+// and, where valid, the moved point with its new normal (`update_normals`) or its old one.
+// A named type, so that the traversal is compiled once whatever the named parameters.
+struct Apss_flow_visitor
+{
+  typedef CGAL::Simple_cartesian<double> K;
+  typedef std::pair<K::Point_3, K::Vector_3> Oriented;
+  Apss_weight_kernel kernel;
+  bool update_normals;
+  const std::vector<Oriented>* state;
+  std::vector<Oriented>* next;
+  std::vector<Curvature_estimate_status>* fit_status;
+
+  void operator()(std::size_t i, const Neighborhood& nb) const
+  {
+    double d[3], normal[3];
+    (*fit_status)[i] =
+      with_weight_kernel(kernel, [&](auto k) { return apss_flow_step<decltype(k)>(nb, d, normal); });
+    if((*fit_status)[i] == Curvature_estimate_status::VALID)
+      (*next)[i] = Oriented(K::Point_3(nb.center[0] + d[0], nb.center[1] + d[1], nb.center[2] + d[2]),
+                            update_normals ? K::Vector_3(normal[0], normal[1], normal[2]) : (*state)[i].second);
+  }
+};
+
 } // namespace internal
 } // namespace Point_set_curvatures
 
@@ -197,8 +221,8 @@ apss_smooth_point_set(PointRange& points, double radius,
   Normal_map normal_map = NP_helper::get_normal_map(points, np);
 
   // The state of the flow, in double precision and input order.
-  typedef CGAL::Simple_cartesian<double> K;
-  typedef std::pair<K::Point_3, K::Vector_3> Oriented;
+  typedef PSC::internal::Apss_flow_visitor::K K;
+  typedef PSC::internal::Apss_flow_visitor::Oriented Oriented;
   std::vector<Oriented> state;
   for(auto it = points.begin(); it != points.end(); ++it)
   {
@@ -225,15 +249,7 @@ apss_smooth_point_set(PointRange& points, double radius,
         cancelled = cancelled || !go_on;
         return go_on;
       };
-    auto visit = [&](std::size_t i, const PSC::internal::Neighborhood& nb) {
-      double d[3], normal[3];
-      fit_status[i] = PSC::internal::with_weight_kernel(
-        kernel, [&](auto k) { return PSC::internal::apss_flow_step<decltype(k)>(nb, d, normal); });
-      if(fit_status[i] == Curvature_estimate_status::VALID)
-        next[i] = Oriented(K::Point_3(nb.center[0] + d[0], nb.center[1] + d[1], nb.center[2] + d[2]),
-                           update_normals ? K::Vector_3(normal[0], normal[1], normal[2])
-                                          : state[i].second);
-    };
+    const PSC::internal::Apss_flow_visitor visit{kernel, update_normals, &state, &next, &fit_status};
     const std::vector<Curvature_estimate_status> visited = PSC::internal::for_each_neighborhood<ConcurrencyTag>(
       state, CGAL::First_of_pair_property_map<Oriented>(), CGAL::Second_of_pair_property_map<Oriented>(),
       radius, options, visit);

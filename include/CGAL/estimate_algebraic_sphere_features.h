@@ -187,6 +187,21 @@ Algebraic_sphere_features<GeomTraits> to_sphere_features(const Local_sphere_feat
   return out;
 }
 
+// The evaluation of sphere_features_at_every_point() at one point (a named type: see
+// Store_results).
+template <class GeomTraits>
+struct Sphere_features_at_point
+{
+  Apss_weight_kernel kernel;
+  std::size_t min_count;
+  Algebraic_sphere_features<GeomTraits> operator()(const Neighborhood& nb) const
+  {
+    const Local_sphere_features f =
+      with_weight_kernel(kernel, [&](auto k) { return sphere_features<decltype(k)>(nb, min_count); });
+    return to_sphere_features<GeomTraits>(f, nb.center);
+  }
+};
+
 // The common body of the single-scale feature functions (with a radius or by count).
 template <class ConcurrencyTag, class PointRange, class NamedParameters>
 std::vector<Algebraic_sphere_features<
@@ -220,13 +235,7 @@ sphere_features_at_every_point(const PointRange& points, bool radius_given, doub
     options.sample_weights = &areas;
   }
   return evaluate_at_every_point<Algebraic_sphere_features<Geom_traits>, ConcurrencyTag>(
-    points, radius_given, radius, np, options,
-    [kernel, min_count](const Neighborhood& nb) {
-      const Local_sphere_features f = with_weight_kernel(kernel, [&](auto k) {
-        return sphere_features<decltype(k)>(nb, min_count);
-      });
-      return to_sphere_features<Geom_traits>(f, nb.center);
-    });
+    points, radius_given, radius, np, options, Sphere_features_at_point<Geom_traits>{kernel, min_count});
 }
 
 // The visitor of the multi-scale function: one Multiscale_sphere_features (scratch buckets)

@@ -23,6 +23,7 @@ across machines with ``dask-scheduler`` and ``dask-worker tcp://SCHEDULER:8786``
 worker must be able to import ``point_set_curvatures``).
 """
 
+import contextlib
 import math
 import os
 import time
@@ -178,19 +179,20 @@ def estimate_curvatures(client, points, normals, *, method="aso", radius=None, n
         if counts[i]:
             future, sel = submit(i, halo)
             pending[future] = (i, sel, halo)
-    done = as_completed(list(pending))
-    for future in done:
-        i, sel, h = pending.pop(future)
-        result = future.result()
-        if isinstance(result, tuple) and len(result) == 2 and isinstance(result[0], str):
-            new, sel = submit(i, max(result[1], 2 * h))
-            pending[new] = (i, sel, max(result[1], 2 * h))
-            done.add(new)
-            continue
-        own, r = result
-        rows = sel[own]
-        for k, v in r.items():
-            out[k][rows] = v
+    with _cancel_on_error(client, pending):
+        done = as_completed(list(pending))
+        for future in done:
+            i, sel, h = pending.pop(future)
+            result = future.result()
+            if isinstance(result, tuple) and len(result) == 2 and isinstance(result[0], str):
+                new, sel = submit(i, max(result[1], 2 * h))
+                pending[new] = (i, sel, max(result[1], 2 * h))
+                done.add(new)
+                continue
+            own, r = result
+            rows = sel[own]
+            for k, v in r.items():
+                out[k][rows] = v
     return out
 
 
@@ -469,6 +471,19 @@ def _file_tile_task(sources, blocks, core_min, core_max, halo, output, kwargs):
     }
 
 
+@contextlib.contextmanager
+def _cancel_on_error(client, pending):
+    """On an exception (a tile raised, KeyboardInterrupt), cancels the tiles still pending
+    so that the cluster does not go on computing them, then lets the exception through."""
+    try:
+        yield
+    except BaseException:
+        if pending:
+            client.cancel(list(pending))
+            pending.clear()
+        raise
+
+
 def _release(futures):
     for f in futures:
         f.release()
@@ -608,26 +623,27 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
     pending = {}
     for i in np.nonzero(counts)[0]:
         pending[submit(int(i), halo)] = (int(i), halo)
-    done = as_completed(list(pending))
     index_sum = index_square_sum = 0
-    for future in done:
-        i, h = pending.pop(future)
-        result = future.result()
-        future.release()
-        if isinstance(result, tuple):
-            h = max(result[1], 2 * h)
-            new = submit(i, h)
-            pending[new] = (i, h)
-            done.add(new)
-            report["resubmitted"] += 1
-            continue
-        if result["own"] != counts[i]:
-            raise RuntimeError(f"point_set_curvatures.dask: tile {i} wrote {result['own']} points, "
-                               f"{counts[i]} expected")
-        result["tile"] = i
-        report["tile_reports"].append(result)
-        index_sum += result["index_sum"]
-        index_square_sum += result["index_square_sum"]
+    with _cancel_on_error(client, pending):
+        done = as_completed(list(pending))
+        for future in done:
+            i, h = pending.pop(future)
+            result = future.result()
+            future.release()
+            if isinstance(result, tuple):
+                h = max(result[1], 2 * h)
+                new = submit(i, h)
+                pending[new] = (i, h)
+                done.add(new)
+                report["resubmitted"] += 1
+                continue
+            if result["own"] != counts[i]:
+                raise RuntimeError(f"point_set_curvatures.dask: tile {i} wrote {result['own']} points, "
+                                   f"{counts[i]} expected")
+            result["tile"] = i
+            report["tile_reports"].append(result)
+            index_sum += result["index_sum"]
+            index_square_sum += result["index_square_sum"]
     t_tiles = time.perf_counter()
     # every finite index exactly once: counts above, sums here (the squares modulo 2**64)
     bad = [int(v) for v in nonfinite]

@@ -63,6 +63,26 @@ def test_dask_by_count_and_methods(client, cloud):
     assert_same(apss, psc_dask.estimate_curvatures(client, points, normals, method="pss", radius=0.03))
 
 
+def test_dask_error_cancels_pending_tiles(client, cloud):
+    # A tile that raises stops the run and cancels the tiles still pending, so that the
+    # cluster does not go on with them (the traceback keeps the caller's frame, and with it the
+    # futures it held, alive): the scheduler keeps at most the tile that raised.
+    points, normals = cloud
+    with pytest.raises(Exception, match="no_such_option"):
+        psc_dask.estimate_curvatures(client, points, normals, radius=0.03, tile_size=0.2, no_such_option=1)
+
+    def tiles_held(dask_scheduler):
+        return sum(1 for key in dask_scheduler.tasks if "estimate_tile" in str(key))
+
+    import time
+    for _ in range(100):
+        held = client.run_on_scheduler(tiles_held)
+        if held <= 1:
+            break
+        time.sleep(0.05)
+    assert held <= 1
+
+
 def test_dask_shared_sample_weights(client, cloud):
     # weights given per point travel with each tile's rows: bitwise the single-process run with
     # them (random weights, which no tile could compute itself), by radius and by count

@@ -80,6 +80,19 @@ std::size_t min_neighbors_parameter(const NamedParameters& np, std::size_t estim
     CGAL::parameters::get_parameter(np, internal_np::min_neighbors), estimator_default);
 }
 
+// The visitor of evaluate_with_maps(): stores evaluate(nb) at the point's input index. A
+// named type, templated on the result and the evaluation only: the traversal it instantiates
+// (visit_sorted_cloud, visit_cloud_knn) is shared by every range, map and named-parameter
+// type of a translation unit. Evaluations should be named types too, for the same reason (a
+// lambda in a function templated on the named parameters is a new type for each of them).
+template <class Result, class Evaluate>
+struct Store_results
+{
+  std::vector<Result>* results;
+  const Evaluate* evaluate;
+  void operator()(std::size_t i, const Neighborhood& nb) const { (*results)[i] = (*evaluate)(nb); }
+};
+
 // The body of evaluate_at_every_point() below, with the maps and the scale given: balls of
 // `radius` if `radius_given`, else the `k` nearest.
 template <class Result, class ConcurrencyTag, class PointRange, class PointMap, class NormalMap, class Evaluate>
@@ -88,7 +101,7 @@ std::vector<Result> evaluate_with_maps(const PointRange& points, bool radius_giv
                                        const Neighborhood_options& options, const Evaluate& evaluate)
 {
   std::vector<Result> results(static_cast<std::size_t>(std::distance(points.begin(), points.end())));
-  auto visit = [&results, &evaluate](std::size_t i, const Neighborhood& nb) { results[i] = evaluate(nb); };
+  const Store_results<Result, Evaluate> visit{&results, &evaluate};
   const std::vector<Curvature_estimate_status> status =
     radius_given
       ? for_each_neighborhood<ConcurrencyTag>(points, point_map, normal_map, radius, options, visit)
@@ -136,6 +149,28 @@ std::vector<Result> evaluate_at_every_point(const PointRange& points, bool radiu
                                                     NP_helper::get_normal_map(points, np), options, evaluate);
 }
 
+// One point's record of tangent_voronoi_areas(), and its evaluation.
+struct Area_record
+{
+  double value = 0;
+  double reach = 0;
+  Curvature_estimate_status status = Curvature_estimate_status::NOT_COMPUTED;
+};
+struct Area_at_point
+{
+  const Tile* tile;  // with a tile by count, else null
+  Area_record operator()(const Neighborhood& nb) const
+  {
+    thread_local Tangent_cell_scratch scratch;
+    Area_record a;
+    a.value = tangent_voronoi_area(nb, 0.5, scratch);
+    if(tile)
+      a.reach = tile->distance_to_core(nb.center[0], nb.center[1], nb.center[2]) + nb.radius;
+    a.status = Curvature_estimate_status::VALID;
+    return a;
+  }
+};
+
 // Per input point, the area of its tangent Voronoi cell (sample_weights.h) among its
 // neighbours, 0 for unusable points. The neighbourhoods are a quarter of the estimation's
 // (radius r/2, or the k/4 nearest): a cell only depends on the nearest samples, and the
@@ -153,23 +188,9 @@ std::vector<double> tangent_voronoi_areas(const PointRange& points, bool radius_
                                           const Neighborhood_options& options, const Tile* tile = nullptr,
                                           std::vector<double>* reach = nullptr)
 {
-  struct Area
-  {
-    double value = 0;
-    double reach = 0;
-    Curvature_estimate_status status = Curvature_estimate_status::NOT_COMPUTED;
-  };
-  const std::vector<Area> records = evaluate_with_maps<Area, ConcurrencyTag>(
+  const std::vector<Area_record> records = evaluate_with_maps<Area_record, ConcurrencyTag>(
     points, radius_given, 0.5 * radius, std::max<std::size_t>(6, k / 4), point_map, normal_map, options,
-    [tile](const Neighborhood& nb) {
-      thread_local Tangent_cell_scratch scratch;
-      Area a;
-      a.value = tangent_voronoi_area(nb, 0.5, scratch);
-      if(tile)
-        a.reach = tile->distance_to_core(nb.center[0], nb.center[1], nb.center[2]) + nb.radius;
-      a.status = Curvature_estimate_status::VALID;
-      return a;
-    });
+    Area_at_point{tile});
   std::vector<double> areas(records.size());
   for(std::size_t i = 0; i < records.size(); ++i)
     areas[i] = records[i].status == Curvature_estimate_status::VALID ? records[i].value : 0.0;
@@ -252,6 +273,35 @@ Local_estimate refinement_estimate(const Estimator& estimator, const Neighborhoo
     return estimator(nb);
 }
 
+// The evaluation of estimate_at_every_point() at one point: TOO_FEW_NEIGHBORS below
+// `min_neighbors`, else the estimator (`refinement`: its normal fit, for a refinement pass),
+// DEGENERATE_FIT without tangent spread where the estimator asks for that test. With
+// `neighbor_extent` (a tile by count, with sample weights), records how far from the core of
+// `tile` the neighbours lie.
+template <class Estimator, class GeomTraits>
+struct Estimate_at_point
+{
+  const Estimator* estimator;
+  std::size_t min_neighbors;
+  bool refinement;
+  Atomic_max* neighbor_extent;
+  const Tile* tile;
+
+  Curvature_estimate<GeomTraits> operator()(const Neighborhood& nb) const
+  {
+    if(neighbor_extent)
+      neighbor_extent->update(nb.radius - tile->distance_inside_core(nb.center[0], nb.center[1], nb.center[2]));
+    if(nb.size < min_neighbors)
+      return to_curvature_estimate<GeomTraits>(Local_estimate::invalid(Curvature_estimate_status::TOO_FEW_NEIGHBORS),
+                                               nb.size);
+    Local_estimate e = refinement ? refinement_estimate(*estimator, nb) : (*estimator)(nb);
+    if(e.status == Curvature_estimate_status::VALID && estimator->check_tangent_spread &&
+       neighborhood_lacks_tangent_spread(nb))
+      e = Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
+    return to_curvature_estimate<GeomTraits>(e, nb.size);
+  }
+};
+
 // Per-point curvature estimation, from `estimator` (a copyable, stateless
 // Local_estimate(const Neighborhood&) functor deriving from Estimator_base). With
 // estimator.sample_weights, a first pass computes the tangent Voronoi areas (for an
@@ -277,22 +327,10 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
   // With a tile, sample weights and neighbourhoods by count: how far from the core the
   // neighbours of the own points lie (see below).
   Atomic_max* neighbor_extent = nullptr;
-  const auto evaluate_as = [&estimator, min_neighbors, &neighbor_extent, &options](const Neighborhood& nb,
-                                                                                  bool refinement) {
-    if(neighbor_extent)
-      neighbor_extent->update(nb.radius -
-                              options.tile.distance_inside_core(nb.center[0], nb.center[1], nb.center[2]));
-    if(nb.size < min_neighbors)
-      return to_curvature_estimate<Geom_traits>(
-        Local_estimate::invalid(Curvature_estimate_status::TOO_FEW_NEIGHBORS), nb.size);
-    Local_estimate e = refinement ? refinement_estimate(estimator, nb) : estimator(nb);
-    if(e.status == Curvature_estimate_status::VALID && estimator.check_tangent_spread &&
-       neighborhood_lacks_tangent_spread(nb))
-      e = Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
-    return to_curvature_estimate<Geom_traits>(e, nb.size);
+  const auto evaluation = [&](bool refinement) {
+    return Estimate_at_point<Estimator, Geom_traits>{&estimator, min_neighbors, refinement, neighbor_extent,
+                                                     &options.tile};
   };
-  const auto evaluate = [&evaluate_as](const Neighborhood& nb) { return evaluate_as(nb, false); };
-  const auto evaluate_refinement = [&evaluate_as](const Neighborhood& nb) { return evaluate_as(nb, true); };
   const auto point_map = NP_helper::get_const_point_map(points, np);
   const auto normal_map = NP_helper::get_normal_map(points, np);
   // Weights given (sample_weight_map) replace the area pass of the estimators that use sample
@@ -306,7 +344,7 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
   const bool area_pass = estimator.sample_weights && !weights_given;
   if(!area_pass && estimator.refinement == 0)
     return evaluate_with_maps<Estimate, ConcurrencyTag>(points, radius_given, radius, k, point_map,
-                                                        normal_map, options, evaluate);
+                                                        normal_map, options, evaluation(false));
 
   if(options.has_tile && estimator.refinement > 0)
     throw std::invalid_argument(std::string(function_name) + ": parameter 'tile' is not supported with "
@@ -383,10 +421,8 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
     const bool last = r == estimator.refinement;
     Neighborhood_options o = share(pass++);
     if(r == 0)
-      result = last ? evaluate_with_maps<Estimate, ConcurrencyTag>(points, radius_given, radius, k, point_map,
-                                                                   normal_map, o, evaluate)
-                    : evaluate_with_maps<Estimate, ConcurrencyTag>(points, radius_given, radius, k, point_map,
-                                                                   normal_map, o, evaluate_refinement);
+      result = evaluate_with_maps<Estimate, ConcurrencyTag>(points, radius_given, radius, k, point_map,
+                                                            normal_map, o, evaluation(!last));
     else
     {
       std::vector<Oriented> refined;
@@ -396,10 +432,8 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
         refined.emplace_back(get(point_map, *it), result[i].is_valid() ? result[i].normal : get(normal_map, *it));
       const CGAL::First_of_pair_property_map<Oriented> refined_points;
       const CGAL::Second_of_pair_property_map<Oriented> refined_normals;
-      result = last ? evaluate_with_maps<Estimate, ConcurrencyTag>(refined, radius_given, radius, k, refined_points,
-                                                                   refined_normals, o, evaluate)
-                    : evaluate_with_maps<Estimate, ConcurrencyTag>(refined, radius_given, radius, k, refined_points,
-                                                                   refined_normals, o, evaluate_refinement);
+      result = evaluate_with_maps<Estimate, ConcurrencyTag>(refined, radius_given, radius, k, refined_points,
+                                                            refined_normals, o, evaluation(!last));
     }
     if(cancelled && !last)
       return std::vector<Estimate>(result.size());  // every point NOT_COMPUTED

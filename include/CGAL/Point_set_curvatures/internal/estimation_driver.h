@@ -8,9 +8,14 @@
 //   3. sort the usable points into a Neighbor_grid (copies in sorted order, so the
 //      neighbour loops read contiguous memory),
 //   4. for every point, gather the points at distance < r into a small reusable buffer
-//      in the point's scaled centred frame and hand it to a visitor (for_each_neighborhood),
+//      in the point's scaled centred frame and hand it to a visitor (visit_sorted_cloud),
 //      sequentially or with TBB, reporting progress through `callback` between batches
 //      (for_each_batch: the batch rule is documented there).
+// Steps 1-3 are templated on the range and the maps, step 4 on the visitor alone (the
+// concurrency is a value there): a visitor of a named type, not a lambda defined in a
+// function templated on the named parameters, keeps the traversal and the estimator's
+// arithmetic compiled once per translation unit (test_core's objects: 124 copies of the
+// traversal before this rule, 5 after).
 // estimate_at_every_point() (estimate_at_every_point.h) builds the curvature functions on
 // it, with knn_neighborhoods.h for neighbourhoods by count.
 //
@@ -535,13 +540,15 @@ void visit_points(const Sorted_cloud& cloud, double radius, std::uint32_t first,
 }
 
 // Calls process(first, last) on ranges of positions covering [begin, end) of the grid order:
-// one range, or ranges processed concurrently by TBB's threads (Parallel_tag), small enough
-// that the points of one cell, however many, are shared between threads.
-template <class ConcurrencyTag, class Process>
-void process_in_parallel(std::size_t begin, std::size_t end, const Process& process)
+// one range, or (`parallel`: Parallel_tag) ranges processed concurrently by TBB's threads,
+// small enough that the points of one cell, however many, are shared between threads.
+// (The traversal takes the concurrency as a value, not as the tag: its code, with the
+// estimator's arithmetic inlined, is compiled once for both tags.)
+template <class Process>
+void process_in_parallel(bool parallel, std::size_t begin, std::size_t end, const Process& process)
 {
 #ifdef CGAL_LINKED_WITH_TBB
-  if(is_parallel<ConcurrencyTag>() && end - begin > 1)
+  if(parallel && end - begin > 1)
   {
     const std::size_t grain =
       std::max<std::size_t>(1, (end - begin) / (64 * std::size_t(std::max(1, tbb::this_task_arena::max_concurrency()))));
@@ -551,6 +558,8 @@ void process_in_parallel(std::size_t begin, std::size_t end, const Process& proc
                       });
     return;
   }
+#else
+  (void)parallel;
 #endif
   process(static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(end));
 }
@@ -566,8 +575,8 @@ void process_in_parallel(std::size_t begin, std::size_t end, const Process& proc
 // about every 0.25 s, whatever the cell sizes (a single point taking longer delays it). It
 // gets 1 after the last batch; returning false cancels, leaving the points not reached
 // NOT_COMPUTED.
-template <class ConcurrencyTag, class Process, class Finish>
-void for_each_batch(const Sorted_cloud& cloud, const std::function<bool(double)>& callback,
+template <class Process, class Finish>
+void for_each_batch(bool parallel, const Sorted_cloud& cloud, const std::function<bool(double)>& callback,
                     std::vector<Curvature_estimate_status>& status, Process process,
                     Finish finish)
 {
@@ -578,7 +587,7 @@ void for_each_batch(const Sorted_cloud& cloud, const std::function<bool(double)>
   const std::size_t max_batch = callback ? std::max<std::size_t>(1, (cloud.own_count + 99) / 100) : n_points;
   std::size_t min_batch = 1;
 #ifdef CGAL_LINKED_WITH_TBB
-  if(is_parallel<ConcurrencyTag>())
+  if(parallel)
     min_batch = std::size_t(std::max(1, tbb::this_task_arena::max_concurrency()));
 #endif
   std::size_t batch = callback ? std::min(max_batch, 64 * min_batch) : n_points;
@@ -597,7 +606,7 @@ void for_each_batch(const Sorted_cloud& cloud, const std::function<bool(double)>
     }
     const Clock::time_point start = Clock::now();
     const std::size_t own_before = own_done;
-    process_in_parallel<ConcurrencyTag>(first, last, process);
+    process_in_parallel(parallel, first, last, process);
     finish(static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(last));
     for(std::size_t k = first; k < last; ++k)
       if(cloud.is_own(k))
@@ -632,6 +641,34 @@ inline void check_tile_halo(const Neighborhood_options& options, double radius)
   }
 }
 
+// The traversal of the driver: calls `visit(input_index, nb)` for every own point of `cloud`
+// (sorted in a grid for `radius`) with its neighbours at distance < radius, from several
+// threads at once if `parallel` (a copy of `visit` per batch and thread); marks the points
+// visited VALID in `status`. Templated on the visitor only: every public function that uses
+// the same visitor type shares this code, whatever its ranges, maps and named parameters.
+template <class Visitor>
+void visit_sorted_cloud(const Sorted_cloud& cloud, double radius, bool parallel,
+                        const std::function<bool(double)>& callback,
+                        std::vector<Curvature_estimate_status>& status, const Visitor& visit)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::enumerable_thread_specific<Neighbor_buffer> buffers;
+#endif
+  Neighbor_buffer sequential_buffer;
+  for_each_batch(
+    parallel, cloud, callback, status,
+    [&](std::uint32_t first, std::uint32_t last) {
+      Visitor local = visit;
+#ifdef CGAL_LINKED_WITH_TBB
+      Neighbor_buffer& buffer = parallel ? buffers.local() : sequential_buffer;
+#else
+      Neighbor_buffer& buffer = sequential_buffer;
+#endif
+      visit_points(cloud, radius, first, last, buffer, local);
+    },
+    [](std::uint32_t, std::uint32_t) {});
+}
+
 // The driver. Calls `visit(input_index, nb)` for every usable point of `points` with the
 // points at distance < radius (itself included) in its scaled centred frame; with
 // Parallel_tag, from several threads at once (distinct indices). Returns, per input point,
@@ -643,7 +680,7 @@ inline void check_tile_halo(const Neighborhood_options& options, double radius)
 template <class ConcurrencyTag, class PointRange, class PointMap, class NormalMap, class Visitor>
 std::vector<Curvature_estimate_status>
 for_each_neighborhood(const PointRange& points, PointMap point_map, NormalMap normal_map,
-                      double radius, const Neighborhood_options& options, Visitor visit)
+                      double radius, const Neighborhood_options& options, const Visitor& visit)
 {
   check_concurrency_tag<ConcurrencyTag>();
   check_radius(radius, options.function_name);
@@ -655,22 +692,7 @@ for_each_neighborhood(const PointRange& points, PointMap point_map, NormalMap no
 
   Sorted_cloud cloud;
   read_and_sort<ConcurrencyTag>(points, point_map, normal_map, radius, options, status, cloud);
-#ifdef CGAL_LINKED_WITH_TBB
-  tbb::enumerable_thread_specific<Neighbor_buffer> buffers;
-#endif
-  Neighbor_buffer sequential_buffer;
-  for_each_batch<ConcurrencyTag>(
-    cloud, options.callback, status,
-    [&](std::uint32_t first, std::uint32_t last) {
-      Visitor local = visit;
-#ifdef CGAL_LINKED_WITH_TBB
-      Neighbor_buffer& buffer = is_parallel<ConcurrencyTag>() ? buffers.local() : sequential_buffer;
-#else
-      Neighbor_buffer& buffer = sequential_buffer;
-#endif
-      visit_points(cloud, radius, first, last, buffer, local);
-    },
-    [](std::uint32_t, std::uint32_t) {});
+  visit_sorted_cloud(cloud, radius, is_parallel<ConcurrencyTag>(), options.callback, status, visit);
   return status;
 }
 

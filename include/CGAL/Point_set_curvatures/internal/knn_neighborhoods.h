@@ -331,6 +331,71 @@ inline double knn_grid_side(const Point_kd_tree& tree, const double* xyz, std::s
   return side;
 }
 
+// The traversal of for_each_neighborhood_knn() (step 3): batches of the own points of
+// `cloud` (sorted in a grid of side cloud.grid.cell_size()), the grid part, then `tree`
+// (ids relabelled to grid positions) for the points it deferred (`use_grid` false: the tree
+// for all); from several threads at once if `parallel`. Marks the points visited VALID in
+// `status`; throws Halo_too_small if a tile's halo does not cover the neighbourhoods.
+// Templated on the visitor only, like visit_sorted_cloud().
+template <class Visitor>
+void visit_cloud_knn(const Sorted_cloud& cloud, const Point_kd_tree& tree, std::size_t k, bool use_grid,
+                     bool parallel, const Neighborhood_options& options,
+                     std::vector<Curvature_estimate_status>& status, const Visitor& visit)
+{
+  const std::size_t m = cloud.input_index.size();
+  std::vector<char> deferred(m, 0);
+  std::vector<std::uint32_t> batch_deferred;
+  Halo_requirement halo(options);
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::enumerable_thread_specific<Knn_scratch> scratches;
+#endif
+  Knn_scratch sequential_scratch;
+  auto scratch = [&]() -> Knn_scratch& {
+#ifdef CGAL_LINKED_WITH_TBB
+    if(parallel)
+      return scratches.local();
+#endif
+    return sequential_scratch;
+  };
+  auto from_tree = [&](std::uint32_t first, std::uint32_t last) {
+    Visitor local = visit;
+    Knn_scratch& s = scratch();
+    for(std::size_t d = first; d < last; ++d)
+    {
+      const std::uint32_t query = batch_deferred[d];
+      const double* x = &cloud.position[3 * std::size_t(query)];
+      const double radius = knn_neighborhood(tree, x, k, s.neighbors);
+      s.index.resize(s.neighbors.size());
+      for(std::size_t j = 0; j < s.neighbors.size(); ++j)
+        s.index[j] = s.neighbors[j].second;
+      halo.check(x, radius);
+      sort_by_input_index(cloud, s.index.data(), s.index.size(), s.order);
+      s.buffer.set_size(0);
+      s.buffer.reserve(s.index.size());
+      visit_neighborhood(cloud, query, radius, s.index.data(), s.index.size(), s.buffer, local);
+    }
+  };
+  for_each_batch(
+    parallel, cloud, options.callback, status,
+    [&](std::uint32_t first, std::uint32_t last) {
+      if(!use_grid)
+      {
+        std::fill(deferred.begin() + first, deferred.begin() + last, char(1));
+        return;
+      }
+      Visitor local = visit;
+      visit_points_knn(cloud, k, first, last, scratch(), deferred, halo, local);
+    },
+    [&](std::uint32_t first, std::uint32_t last) {
+      batch_deferred.clear();
+      for(std::uint32_t g = first; g < last; ++g)
+        if(deferred[g] && cloud.is_own(g))
+          batch_deferred.push_back(g);
+      process_in_parallel(parallel, 0, batch_deferred.size(), from_tree);
+    });
+  halo.enforce();
+}
+
 // Same contract as for_each_neighborhood() (validation, statuses, visitor, callback between
 // batches of about 1% of the points, identical results with either concurrency tag), with
 // a per-point radius: nb.radius is (1 + 2^-20) times the distance from the point to its
@@ -341,7 +406,7 @@ inline double knn_grid_side(const Point_kd_tree& tree, const double* xyz, std::s
 template <class ConcurrencyTag, class PointRange, class PointMap, class NormalMap, class Visitor>
 std::vector<Curvature_estimate_status>
 for_each_neighborhood_knn(const PointRange& points, PointMap point_map, NormalMap normal_map,
-                          std::size_t k, const Neighborhood_options& options, Visitor visit)
+                          std::size_t k, const Neighborhood_options& options, const Visitor& visit)
 {
   check_concurrency_tag<ConcurrencyTag>();
   if(k == 0)
@@ -407,57 +472,7 @@ for_each_neighborhood_knn(const PointRange& points, PointMap point_map, NormalMa
   }
 
   // 3. Batches of points: the grid part, then the tree for the points it deferred.
-  std::vector<char> deferred(m, 0);
-  std::vector<std::uint32_t> batch_deferred;
-  Halo_requirement halo(options);
-#ifdef CGAL_LINKED_WITH_TBB
-  tbb::enumerable_thread_specific<Knn_scratch> scratches;
-#endif
-  Knn_scratch sequential_scratch;
-  auto scratch = [&]() -> Knn_scratch& {
-#ifdef CGAL_LINKED_WITH_TBB
-    if(is_parallel<ConcurrencyTag>())
-      return scratches.local();
-#endif
-    return sequential_scratch;
-  };
-  auto from_tree = [&](std::uint32_t first, std::uint32_t last) {
-    Visitor local = visit;
-    Knn_scratch& s = scratch();
-    for(std::size_t d = first; d < last; ++d)
-    {
-      const std::uint32_t query = batch_deferred[d];
-      const double* x = &cloud.position[3 * std::size_t(query)];
-      const double radius = knn_neighborhood(tree, x, k, s.neighbors);
-      s.index.resize(s.neighbors.size());
-      for(std::size_t j = 0; j < s.neighbors.size(); ++j)
-        s.index[j] = s.neighbors[j].second;
-      halo.check(x, radius);
-      sort_by_input_index(cloud, s.index.data(), s.index.size(), s.order);
-      s.buffer.set_size(0);
-      s.buffer.reserve(s.index.size());
-      visit_neighborhood(cloud, query, radius, s.index.data(), s.index.size(), s.buffer, local);
-    }
-  };
-  for_each_batch<ConcurrencyTag>(
-    cloud, options.callback, status,
-    [&](std::uint32_t first, std::uint32_t last) {
-      if(!use_grid)
-      {
-        std::fill(deferred.begin() + first, deferred.begin() + last, char(1));
-        return;
-      }
-      Visitor local = visit;
-      visit_points_knn(cloud, k, first, last, scratch(), deferred, halo, local);
-    },
-    [&](std::uint32_t first, std::uint32_t last) {
-      batch_deferred.clear();
-      for(std::uint32_t g = first; g < last; ++g)
-        if(deferred[g] && cloud.is_own(g))
-          batch_deferred.push_back(g);
-      process_in_parallel<ConcurrencyTag>(0, batch_deferred.size(), from_tree);
-    });
-  halo.enforce();
+  visit_cloud_knn(cloud, tree, k, use_grid, is_parallel<ConcurrencyTag>(), options, status, visit);
   return status;
 }
 

@@ -117,6 +117,25 @@ bool spans_a_plane(const std::vector<Point>& points)
   return false;
 }
 
+// Step 1 of estimate_vcm_at_every_point() at one point: its neighbour count, radius, and
+// whether the neighbours lack tangent spread.
+struct Vcm_neighborhood_record
+{
+  std::uint32_t count = 0;
+  double radius = 0;
+  bool no_spread = false;
+  Curvature_estimate_status status = Curvature_estimate_status::NOT_COMPUTED;
+};
+inline Vcm_neighborhood_record vcm_neighborhood_record(const Neighborhood& nb)
+{
+  Vcm_neighborhood_record r;
+  r.count = static_cast<std::uint32_t>(nb.size);
+  r.radius = nb.radius;
+  r.no_spread = neighborhood_lacks_tangent_spread(nb);
+  r.status = Curvature_estimate_status::VALID;
+  return r;
+}
+
 // The whole estimate_vcm_curvatures(): the neighbourhood driver (statuses, counts, per-point
 // radii), CGAL's VCM on the usable points, then one diagonalisation per point.
 template <class ConcurrencyTag, class PointRange, class NamedParameters>
@@ -149,13 +168,6 @@ estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double 
   // 1. The package's neighbourhoods (the same driver as every estimator): statuses of
   // unusable points, counts, per-point radii, and whether they lack tangent spread (one
   // scan line: a curvature is not measured).
-  struct Record
-  {
-    std::uint32_t count = 0;
-    double radius = 0;
-    bool no_spread = false;
-    Curvature_estimate_status status = Curvature_estimate_status::NOT_COMPUTED;
-  };
   // CGAL's VCM integrates over Voronoi cells, which depend on points beyond any fixed halo:
   // tiles cannot give the whole-cloud result, so they are refused rather than approximated.
   if(!choose_parameter(get_parameter(np, internal_np::tile), Tile::whole_space()).is_whole_space())
@@ -165,16 +177,8 @@ estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double 
   Neighborhood_options options;  // the callback reports the VCM steps below, not this pass
   options.normalize_normals = false;
   options.function_name = function_name;
-  const std::vector<Record> records = evaluate_at_every_point<Record, ConcurrencyTag>(
-    points, radius_given, radius, np, options,
-    [](const Neighborhood& nb) {
-      Record r;
-      r.count = static_cast<std::uint32_t>(nb.size);
-      r.radius = nb.radius;
-      r.no_spread = neighborhood_lacks_tangent_spread(nb);
-      r.status = Curvature_estimate_status::VALID;
-      return r;
-    });
+  const std::vector<Vcm_neighborhood_record> records = evaluate_at_every_point<Vcm_neighborhood_record, ConcurrencyTag>(
+    points, radius_given, radius, np, options, &vcm_neighborhood_record);
   const std::size_t n = records.size();
   std::vector<Curvature_estimate<Geom_traits> > results(n);
   for(std::size_t i = 0; i < n; ++i)
@@ -330,7 +334,7 @@ estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double 
   for(std::size_t first = 0; first < m; first += batch)
   {
     const std::size_t last = std::min(m, first + batch);
-    process_in_parallel<ConcurrencyTag>(first, last, [&](std::uint32_t b, std::uint32_t e) {
+    process_in_parallel(is_parallel<ConcurrencyTag>(), first, last, [&](std::uint32_t b, std::uint32_t e) {
       for(std::size_t j = b; j < e; ++j)
         estimate(j);
     });
