@@ -212,11 +212,7 @@ void visit_points_knn(const Sorted_cloud& cloud, std::size_t k, std::uint32_t fi
   const std::size_t first_cell = cloud.grid.cell_of_point(first);
   const std::size_t last_cell = cloud.grid.cell_of_point(last - 1) + 1;
   cloud.grid.for_each_cell(first_cell, last_cell, [&](Index_range cell, const Index_range* rows) {
-    std::size_t n_candidates = 0;
-    for(int r = 0; r < 9; ++r)
-      n_candidates += rows[r].end - rows[r].begin;
-    scratch.buffer.set_size(0);
-    scratch.buffer.reserve(n_candidates);
+    const std::size_t n_candidates = prepare_for_candidates(scratch.buffer, rows);
     if(scratch.d2.size() < n_candidates)
       scratch.d2.resize(n_candidates);
     std::uint32_t* selected = scratch.buffer.candidates();
