@@ -85,12 +85,36 @@ std::size_t min_neighbors_parameter(const NamedParameters& np, std::size_t estim
 // (visit_sorted_cloud, visit_cloud_knn) is shared by every range, map and named-parameter
 // type of a translation unit. Evaluations should be named types too, for the same reason (a
 // lambda in a function templated on the named parameters is a new type for each of them).
+//
+// The results are staged and written to `results` a few dozen at a time (and at the end of
+// each range of points, end_of_range()): the traversal goes in grid order and the results
+// are stored in input order, so on a cloud in random order each write misses the cache, and
+// written one at a time it holds up the stores of the next point's gather; written together,
+// the misses overlap (an ASO pass 7-8% faster on aso_speed's cloud of 500K points, in paired
+// runs). A copy of the visitor is made per range of points; each flushes its own stage.
 template <class Result, class Evaluate>
 struct Store_results
 {
+  static constexpr std::size_t staged_capacity = 64;
   std::vector<Result>* results;
   const Evaluate* evaluate;
-  void operator()(std::size_t i, const Neighborhood& nb) const { (*results)[i] = (*evaluate)(nb); }
+  std::vector<std::pair<std::size_t, Result> > staged = {};
+
+  void operator()(std::size_t i, const Neighborhood& nb)
+  {
+    if(staged.capacity() == 0)
+      staged.reserve(staged_capacity);
+    staged.emplace_back(i, (*evaluate)(nb));
+    if(staged.size() == staged_capacity)
+      end_of_range();
+  }
+  void end_of_range()
+  {
+    Result* out = results->data();
+    for(std::pair<std::size_t, Result>& r : staged)
+      out[r.first] = std::move(r.second);
+    staged.clear();
+  }
 };
 
 // The body of evaluate_at_every_point() below, with the maps and the scale given: balls of

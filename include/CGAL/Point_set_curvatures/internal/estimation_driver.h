@@ -64,6 +64,7 @@
 #include <string>
 #include <type_traits>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -403,6 +404,30 @@ void process_in_parallel(bool parallel, std::size_t begin, std::size_t end, cons
   process(static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(end));
 }
 
+// Scratch of the traversals: one T per thread that asks for it when `parallel`, else a single
+// one.
+template <class T>
+class Per_thread
+{
+public:
+  explicit Per_thread(bool parallel) : m_parallel(parallel) {}
+  T& local()
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    if(m_parallel)
+      return m_per_thread.local();
+#endif
+    return m_sequential;
+  }
+
+private:
+  bool m_parallel;
+  T m_sequential;
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::enumerable_thread_specific<T> m_per_thread;
+#endif
+};
+
 // The batch loop of the drivers: runs `process(first, last)` over the grid positions of
 // cloud.grid, then `finish(first, last)` from the calling thread, batch after batch; marks
 // the own points of each batch VALID and reports progress. Without a callback, one batch.
@@ -480,6 +505,23 @@ inline void check_tile_halo(const Neighborhood_options& options, double radius)
   }
 }
 
+// A visitor may leave part of its work to the end of a range of points (Store_results
+// writes its results there, together): the traversals call end_of_range() on their copy of
+// the visitor after each range, when it has one.
+template <class Visitor, class = void>
+struct Has_end_of_range : std::false_type
+{};
+template <class Visitor>
+struct Has_end_of_range<Visitor, std::void_t<decltype(std::declval<Visitor&>().end_of_range())> >
+  : std::true_type
+{};
+template <class Visitor>
+void end_of_range(Visitor& visit)
+{
+  if constexpr(Has_end_of_range<Visitor>::value)
+    visit.end_of_range();
+}
+
 // The traversal of the driver: calls `visit(input_index, nb)` for every own point of `cloud`
 // (sorted in a grid for `radius`) with its neighbours at distance < radius, from several
 // threads at once if `parallel` (a copy of `visit` per batch and thread); marks the points
@@ -490,20 +532,13 @@ void visit_sorted_cloud(const Sorted_cloud& cloud, double radius, bool parallel,
                         const std::function<bool(double)>& callback,
                         std::vector<Curvature_estimate_status>& status, const Visitor& visit)
 {
-#ifdef CGAL_LINKED_WITH_TBB
-  tbb::enumerable_thread_specific<Neighbor_buffer> buffers;
-#endif
-  Neighbor_buffer sequential_buffer;
+  Per_thread<Neighbor_buffer> buffers(parallel);
   for_each_batch(
     parallel, cloud, callback, status,
     [&](std::uint32_t first, std::uint32_t last) {
       Visitor local = visit;
-#ifdef CGAL_LINKED_WITH_TBB
-      Neighbor_buffer& buffer = parallel ? buffers.local() : sequential_buffer;
-#else
-      Neighbor_buffer& buffer = sequential_buffer;
-#endif
-      visit_points(cloud, radius, first, last, buffer, local);
+      visit_points(cloud, radius, first, last, buffers.local(), local);
+      internal::end_of_range(local);
     },
     [](std::uint32_t, std::uint32_t) {});
 }

@@ -342,20 +342,10 @@ void visit_cloud_knn(const Sorted_cloud& cloud, const Point_kd_tree& tree, std::
   std::vector<char> deferred(m, 0);
   std::vector<std::uint32_t> batch_deferred;
   Halo_requirement halo(options);
-#ifdef CGAL_LINKED_WITH_TBB
-  tbb::enumerable_thread_specific<Knn_scratch> scratches;
-#endif
-  Knn_scratch sequential_scratch;
-  auto scratch = [&]() -> Knn_scratch& {
-#ifdef CGAL_LINKED_WITH_TBB
-    if(parallel)
-      return scratches.local();
-#endif
-    return sequential_scratch;
-  };
+  Per_thread<Knn_scratch> scratches(parallel);
   auto from_tree = [&](std::uint32_t first, std::uint32_t last) {
     Visitor local = visit;
-    Knn_scratch& s = scratch();
+    Knn_scratch& s = scratches.local();
     for(std::size_t d = first; d < last; ++d)
     {
       const std::uint32_t query = batch_deferred[d];
@@ -370,6 +360,7 @@ void visit_cloud_knn(const Sorted_cloud& cloud, const Point_kd_tree& tree, std::
       s.buffer.reserve(s.index.size());
       visit_neighborhood(cloud, query, radius, s.index.data(), s.index.size(), s.buffer, local);
     }
+    internal::end_of_range(local);
   };
   for_each_batch(
     parallel, cloud, options.callback, status,
@@ -380,7 +371,8 @@ void visit_cloud_knn(const Sorted_cloud& cloud, const Point_kd_tree& tree, std::
         return;
       }
       Visitor local = visit;
-      visit_points_knn(cloud, k, first, last, scratch(), deferred, halo, local);
+      visit_points_knn(cloud, k, first, last, scratches.local(), deferred, halo, local);
+      internal::end_of_range(local);
     },
     [&](std::uint32_t first, std::uint32_t last) {
       batch_deferred.clear();
