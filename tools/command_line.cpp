@@ -1,0 +1,331 @@
+// Copyright (c) 2026 The Point_set_curvatures authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The command line of the point_set_curvatures tool (command_line.h).
+
+#include "command_line.h"
+
+#include "read_point_cloud.h"
+#include "write_point_cloud.h"
+
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace psc_tool {
+
+const std::map<std::string, int>& color_quantities()
+{
+  static const std::map<std::string, int> q = {{"k_min", 0}, {"k_max", 1}, {"mean", 2}, {"gaussian", 3}};
+  return q;
+}
+
+void print_usage(std::ostream& os)
+{
+  os << "usage: " << program << " INPUT OUTPUT [options]\n"
+     << "\n"
+     << "Estimates curvatures at every point of a point cloud.\n"
+     << "  INPUT   .xyz, .pwn, .txt or .csv (one point per line, values separated by spaces or\n"
+     << "          commas: x y z, or x y z nx ny nz, or a header line naming the columns, or\n"
+     << "          --columns), .ply (ASCII or binary, normals nx ny nz or normal_x normal_y\n"
+     << "          normal_z), .off, .las (LAS 1.0-1.4 uncompressed, point formats 0-10; .laz:\n"
+     << "          decompress first). Without normals, they are estimated (PCA of the 18 nearest\n"
+     << "          neighbours, oriented along a minimum spanning tree; see --orient) with a warning.\n"
+     << "  OUTPUT  .ply (binary unless --ascii) or .csv (with a header line): every input point\n"
+     << "          in input order with x y z, the corrected normal nx ny nz, k_min k_max mean\n"
+     << "          gaussian, the principal directions dmin_x dmin_y dmin_z dmax_x dmax_y dmax_z\n"
+     << "          (doubles; NaN where the estimate is invalid or the method does not provide\n"
+     << "          the quantity), neighbors (int) and valid (0 or 1); then the input's other\n"
+     << "          values in their own types (PLY properties, named text columns, LAS fields\n"
+     << "          such as intensity, classification, gps_time, red green blue), renamed\n"
+     << "          input_NAME where NAME is one of the above.\n"
+     << "\n"
+     << "options:\n"
+     << "  --method M         estimator: " << method_names() << " (default aso)\n"
+     << "  --variant V        aso: robust (default: kernel (1-d^2/r^2)^3, tangent Voronoi area\n"
+     << "                     weights, neighbours' normals oriented by their majority, a fit of\n"
+     << "                     the normal field blended in at borders) or paper (the estimator\n"
+     << "                     of Lejemble et al. 2021 exactly)\n"
+     << "  --neighbors K      neighbourhoods by count: each point's radius is the distance to its\n"
+     << "                     K-th nearest neighbour, itself counted (default: --neighbors 40)\n"
+     << "  --radius R         neighbourhoods of radius R, in the unit of the coordinates; or Nx\n"
+     << "                     (e.g. 3.5x): N times the average spacing (CGAL::compute_average_\n"
+     << "                     spacing, 6 neighbours); on even samplings 3x gives about 27\n"
+     << "                     neighbours, 3.5x about 37, 4x about 47\n"
+     << "  --min-neighbors M  estimates with fewer than M neighbours are invalid\n"
+     << "                     (too_few_neighbors); default: the method's measured minimum\n"
+     << "                     (aso, apss, jet, wavejet 12; pca_plane 10; pss 15; barycenter, vcm 20)\n"
+     << "  --columns LIST     names of the values of a text line, comma-separated: x y z, nx ny nz\n"
+     << "                     (or normal_x ...), anything else skipped (e.g. x,y,z,r,g,b or\n"
+     << "                     x,y,z,_,_,_,nx,ny,nz)\n"
+     << "  --color Q          add red green blue (uchar) showing Q = mean|gaussian|k_min|k_max:\n"
+     << "                     blue < 0 < red, white at 0, saturated beyond the 2nd/98th\n"
+     << "                     percentiles; grey where invalid\n"
+     << "  --ascii            ASCII PLY output (NaN written as nan)\n"
+     << "  --fields LIST      estimator fields to write, comma-separated (x y z always): nx ny nz\n"
+     << "                     or normal, k_min, k_max, mean, gaussian, dmin, dmax (or dmin_x...),\n"
+     << "                     neighbors, valid (default: all)\n"
+     << "  --float            write the estimator fields as float32 (x y z stay double)\n"
+     << "  --drop-attributes  do not carry the input's other values to the output\n"
+     << "  --require-normals  fail if INPUT has no normals instead of estimating them\n"
+     << "  --orient O         orientation of estimated normals: mst (propagated along a minimum\n"
+     << "                     spanning tree, default), +z, -z, +x, -x, +y, -y (airborne scans:\n"
+     << "                     +z), viewpoint:X,Y,Z (towards the scanner at X,Y,Z), or scanner\n"
+     << "                     (LAS point formats 4, 5, 9, 10: towards the origin of each\n"
+     << "                     point's pulse, its wave packet's x(t) y(t) z(t))\n"
+     << "  --normal-neighbors K  neighbours of the normal estimation (default 18)\n"
+     << "  --memory-limit M   memory for the points, in bytes or with a unit: 500M, 8G (default:\n"
+     << "                     a quarter of the machine's RAM). A larger input is estimated in\n"
+     << "                     spatial tiles, each read again from INPUT with a halo around it,\n"
+     << "                     the rows written in input order: the same output, bitwise, in\n"
+     << "                     bounded memory (INPUT must have normals; --radius as a length)\n"
+     << "  --threads N        use at most N threads (default: every core)\n"
+     << "  --quiet            print errors only (no progress bar, warnings or summary)\n"
+     << "  --help             print this help\n"
+     << "\n"
+     << "Exit status: 0 on success, 2 on an invalid argument or an unreadable, malformed or\n"
+     << "unwritable file (nothing written), 130 if interrupted.\n";
+}
+
+namespace {
+
+// A finite number, the whole string (std::stod would accept "1.5abc").
+bool parse_double(const std::string& s, double& value)
+{
+  if(s.empty() || std::isspace(static_cast<unsigned char>(s[0])))
+    return false;
+  char* end = nullptr;
+  errno = 0;
+  value = std::strtod(s.c_str(), &end);
+  return end == s.c_str() + s.size() && errno == 0 && std::isfinite(value);
+}
+
+bool parse_positive_integer(const std::string& s, std::size_t& value)
+{
+  if(s.empty() || s.size() > 12)
+    return false;
+  for(char c : s)
+    if(!std::isdigit(static_cast<unsigned char>(c)))
+      return false;
+  value = static_cast<std::size_t>(std::stoull(s));
+  return value > 0;
+}
+
+// "8G", "500M", "1.5g", "64k", "123456" (bytes): units are powers of 1024.
+bool parse_memory_size(const std::string& text, double& bytes)
+{
+  if(text.empty())
+    return false;
+  double unit = 1;
+  std::string number = text;
+  const char last = static_cast<char>(std::toupper(static_cast<unsigned char>(text.back())));
+  const std::string units = "KMGT";
+  if(units.find(last) != std::string::npos)
+  {
+    unit = std::pow(1024.0, double(units.find(last) + 1));
+    number.pop_back();
+  }
+  double v = 0;
+  if(!parse_double(number, v) || !(v > 0) || !std::isfinite(v * unit))
+    return false;
+  bytes = v * unit;
+  return true;
+}
+
+void parse_radius(const std::string& text, Scale& scale)
+{
+  const bool multiple = !text.empty() && (text.back() == 'x' || text.back() == 'X');
+  double value = 0;
+  if(!parse_double(multiple ? text.substr(0, text.size() - 1) : text, value))
+    throw Error(cat("--radius expects a positive length or a multiple of the average spacing "
+                    "such as 4x, got ", in_quotes(text)));
+  if(!(value > 0))
+    throw Error(cat("--radius must be positive, got ", in_quotes(text)));
+  scale.by_count = false;
+  if(multiple)
+    scale.spacing_multiple = value;
+  else
+    scale.radius = value;
+}
+
+// --orient: mst, +z, -y, ..., or viewpoint:X,Y,Z.
+CGAL::Normal_orientation parse_orientation(const std::string& text)
+{
+  if(text == "mst")
+    return CGAL::Normal_orientation::minimum_spanning_tree();
+  if(text == "scanner")  // +z, then each normal towards its pulse's origin (orient_towards_scanner())
+    return CGAL::Normal_orientation::along_vector(0, 0, 1);
+  if(text.size() == 2 && (text[0] == '+' || text[0] == '-') && text[1] >= 'x' && text[1] <= 'z')
+  {
+    double v[3] = {0, 0, 0};
+    v[text[1] - 'x'] = text[0] == '+' ? 1 : -1;
+    return CGAL::Normal_orientation::along_vector(v[0], v[1], v[2]);
+  }
+  const std::string prefix = "viewpoint:";
+  if(text.compare(0, prefix.size(), prefix) == 0)
+  {
+    std::string rest = text.substr(prefix.size());
+    double v[3];
+    for(int a = 0; a < 3; ++a)
+    {
+      const std::size_t comma = a < 2 ? rest.find(',') : std::string::npos;
+      if((a < 2 && comma == std::string::npos) || !parse_double(rest.substr(0, comma), v[a]))
+        throw Error(cat("--orient ", in_quotes(text), ": expected viewpoint:X,Y,Z with three numbers"));
+      rest = a < 2 ? rest.substr(comma + 1) : "";
+    }
+    return CGAL::Normal_orientation::towards_point(v[0], v[1], v[2]);
+  }
+  throw Error(cat("--orient: unknown orientation ", in_quotes(text),
+                  " (mst, +z, -z, +x, -x, +y, -y, viewpoint:X,Y,Z or scanner)"));
+}
+
+} // namespace
+
+Options parse_command_line(int argc, char** argv)
+{
+  Options o;
+  std::vector<std::string> positional;
+  o.method = find_method("aso");
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    if(arg.size() < 2 || arg[0] != '-')
+    {
+      positional.push_back(arg);
+      continue;
+    }
+    std::string name = arg, value;
+    bool inline_value = false;
+    const std::size_t eq = arg.find('=');
+    if(arg.compare(0, 2, "--") == 0 && eq != std::string::npos)
+    {
+      name = arg.substr(0, eq);
+      value = arg.substr(eq + 1);
+      inline_value = true;
+    }
+    auto take_value = [&]() -> std::string {
+      if(inline_value)
+        return value;
+      if(i + 1 >= argc)
+        throw Error(cat("option ", name, " needs a value (see --help)"));
+      return argv[++i];
+    };
+    auto flag = [&](bool& b) {
+      if(inline_value)
+        throw Error(cat("option ", name, " takes no value"));
+      b = true;
+    };
+    if(name == "--help" || name == "-h")
+      flag(o.help);
+    else if(name == "--method")
+    {
+      const std::string m = take_value();
+      o.method = find_method(m);
+      if(!o.method)
+        throw Error(cat("--method: unknown method ", in_quotes(m), " (available: ", method_names(), ")"));
+    }
+    else if(name == "--radius")
+    {
+      parse_radius(take_value(), o.scale);
+      o.radius_given = true;
+    }
+    else if(name == "--neighbors" || name == "--neighbours")
+    {
+      const std::string v = take_value();
+      std::size_t k = 0;
+      if(!parse_positive_integer(v, k) || k < 3)
+        throw Error(cat(name, " must be an integer >= 3 (the fits need 3 points), got ", in_quotes(v)));
+      o.scale.neighbors = k;
+      o.neighbors_given = true;
+    }
+    else if(name == "--min-neighbors" || name == "--min-neighbours")
+    {
+      const std::string v = take_value();
+      std::size_t m = 0;
+      if(!parse_positive_integer(v, m))
+        throw Error(cat(name, " must be a positive integer, got ", in_quotes(v)));
+      o.scale.min_neighbors = m;
+    }
+    else if(name == "--columns")
+      o.columns = parse_columns(take_value());
+    else if(name == "--variant")
+    {
+      const std::string v = take_value();
+      if(v != "robust" && v != "paper")
+        throw Error(cat("--variant: unknown variant ", in_quotes(v), " (robust or paper)"));
+      o.scale.variant = v == "paper" ? CGAL::Aso_variant::PAPER : CGAL::Aso_variant::ROBUST;
+    }
+    else if(name == "--orient")
+    {
+      o.orientation_text = take_value();
+      o.orientation = parse_orientation(o.orientation_text);
+      o.orient_scanner = o.orientation_text == "scanner";
+    }
+    else if(name == "--normal-neighbors" || name == "--normal-neighbours")
+    {
+      const std::string v = take_value();
+      if(!parse_positive_integer(v, o.normal_neighbors) || o.normal_neighbors < 3)
+        throw Error(cat(name, " must be an integer >= 3, got ", in_quotes(v)));
+    }
+    else if(name == "--threads")
+    {
+      const std::string v = take_value();
+      std::size_t n = 0;
+      if(!parse_positive_integer(v, n) || n > 4096)
+        throw Error(cat("--threads must be a positive integer, got ", in_quotes(v)));
+      o.threads = static_cast<int>(n);
+    }
+    else if(name == "--color" || name == "--colour")
+    {
+      o.color = take_value();
+      if(!color_quantities().count(o.color))
+        throw Error(cat(name, ": unknown quantity ", in_quotes(o.color),
+                        " (available: mean|gaussian|k_min|k_max)"));
+    }
+    else if(name == "--memory-limit")
+    {
+      const std::string v = take_value();
+      if(!parse_memory_size(v, o.memory_limit))
+        throw Error(cat("--memory-limit expects a positive size in bytes or with a unit (500M, 8G), got ",
+                        in_quotes(v)));
+    }
+    else if(name == "--ascii")
+      flag(o.ascii);
+    else if(name == "--float")
+      flag(o.float32);
+    else if(name == "--drop-attributes")
+      flag(o.drop_attributes);
+    else if(name == "--fields")
+      o.fields = parse_fields(take_value());
+    else if(name == "--quiet")
+      flag(o.quiet);
+    else if(name == "--require-normals")
+      flag(o.require_normals);
+    else
+      throw Error(cat("unknown option ", in_quotes(arg), " (see --help)"));
+  }
+  if(o.help)
+    return o;
+  if(positional.size() < 2)
+    throw Error(cat("missing ", positional.empty() ? "INPUT and OUTPUT" : "OUTPUT", " (usage: ",
+                    program, " INPUT OUTPUT [options]; see --help)"));
+  if(positional.size() > 2)
+    throw Error(cat("unexpected argument ", in_quotes(positional[2]), " (usage: ", program,
+                    " INPUT OUTPUT [options])"));
+  if(o.radius_given && o.neighbors_given)
+    throw Error("give either --radius or --neighbors, not both");
+  const std::size_t least = o.scale.min_neighbors ? o.scale.min_neighbors : o.method->min_neighbors;
+  if(o.scale.by_count && o.scale.neighbors < least)
+    throw Error(cat("--neighbors ", o.scale.neighbors, " is below the ", least, " neighbours of a valid ", o.method->name,
+                    " estimate", o.scale.min_neighbors ? " (--min-neighbors)" : " (measured minimum, see the manual)",
+                    ": every estimate would be invalid; use --neighbors ", least,
+                    " or more, or lower the threshold with --min-neighbors"));
+  o.input = positional[0];
+  o.output = positional[1];
+  return o;
+}
+
+} // namespace psc_tool

@@ -1,0 +1,55 @@
+// Copyright (c) 2026 The Point_set_curvatures authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The command line of the point_set_curvatures tool: its options, their checks (an Error,
+// exit status 2, for anything invalid) and the --help text.
+
+#ifndef POINT_SET_CURVATURES_TOOL_COMMAND_LINE_H
+#define POINT_SET_CURVATURES_TOOL_COMMAND_LINE_H
+
+#include "methods.h"
+
+#include <CGAL/estimate_oriented_normals.h>
+
+#include <cstddef>
+#include <map>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace psc_tool {
+
+inline constexpr const char* program = "point_set_curvatures";
+
+// Quantities that --color can show: their index in Row_summary (Output_row::value[6 + q]).
+const std::map<std::string, int>& color_quantities();
+
+// The settings of one run, from the command line (see print_usage()).
+struct Options
+{
+  std::string input, output;
+  const Method* method = nullptr;
+  Scale scale;
+  bool radius_given = false, neighbors_given = false;
+  int threads = 0;  // 0: every core
+  bool quiet = false, ascii = false, require_normals = false, help = false;
+  bool float32 = false, drop_attributes = false;  // --float, --drop-attributes
+  std::vector<std::string> fields;                 // --fields, empty: all
+  std::string color;  // quantity to colour by, empty for none
+  std::vector<std::string> columns;  // --columns, empty: automatic
+  CGAL::Normal_orientation orientation;  // --orient
+  std::string orientation_text = "mst";
+  bool orient_scanner = false;           // --orient scanner
+  std::size_t normal_neighbors = 18;     // --normal-neighbors
+  double memory_limit = 0;               // --memory-limit in bytes; 0: a quarter of the RAM
+};
+
+// The --help text.
+void print_usage(std::ostream& os);
+
+// The options of the command line; throws Error for anything invalid.
+Options parse_command_line(int argc, char** argv);
+
+} // namespace psc_tool
+
+#endif

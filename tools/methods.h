@@ -1,0 +1,72 @@
+// Copyright (c) 2026 The Point_set_curvatures authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The estimators the point_set_curvatures tool can run: one entry per estimate_*_curvatures()
+// function of the package, with its run function and its neighbour-count thresholds; `Scale`
+// carries the neighbourhood size and the options every method reads. The curvature
+// estimators are instantiated in methods.cpp alone: the rest of the tool only sees this table.
+
+#ifndef POINT_SET_CURVATURES_TOOL_METHODS_H
+#define POINT_SET_CURVATURES_TOOL_METHODS_H
+
+#include "tool_support.h"
+
+#include <CGAL/Curvature_estimate.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Point_set_3.h>
+#include <CGAL/Point_set_curvatures/Tile.h>
+#include <CGAL/Point_set_curvatures/parameters.h>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace psc_tool {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+typedef Kernel::Point_3 Point;
+typedef Kernel::Vector_3 Vector;
+typedef CGAL::Point_set_3<Point, Vector> Point_set;
+typedef CGAL::Curvature_estimate<Kernel> Estimate;
+typedef std::vector<Estimate> Estimates;
+
+// The scale of the neighbourhoods and the options every method reads.
+struct Scale
+{
+  bool by_count = true;
+  std::size_t neighbors = 40;  // by count
+  double radius = 0;           // by radius, in the unit of the coordinates
+  double spacing_multiple = 0; // > 0 for "--radius Nx"
+  double spacing = 0;          // CGAL::compute_average_spacing, for "--radius Nx"
+  std::size_t min_neighbors = 0;  // --min-neighbors; 0: the method's default
+  CGAL::Aso_variant variant = CGAL::Aso_variant::ROBUST;  // --variant (aso)
+};
+
+// Every point is estimated with PSC::Tile::whole_space(), a tile's own points otherwise.
+typedef Estimates (*Run_method)(const Point_set&, const Scale&, const Progress&, const CGAL::Point_set_curvatures::Tile&);
+
+struct Method
+{
+  const char* name;
+  const char* description;
+  Run_method run;
+  // The least neighbour count of a valid estimate (the library's default min_neighbors), and
+  // the count from which the method's mean error stays within twice its error at 40
+  // neighbours: both measured with `paper_experiments --only neighbors` (user manual,
+  // "Neighbourhoods and scale"). Below `good`, the tool warns.
+  std::size_t min_neighbors;
+  std::size_t good_neighbors;
+};
+
+// Every method of the package, "aso" first.
+const std::vector<Method>& methods();
+
+// The method named `name`, null if there is none.
+const Method* find_method(const std::string& name);
+
+// "aso|apss|...": the names of every method.
+std::string method_names();
+
+} // namespace psc_tool
+
+#endif
