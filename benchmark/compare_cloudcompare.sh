@@ -49,41 +49,52 @@ mkdir -p "$out"
 out="$(cd "$out" && pwd)"
 export QT_QPA_PLATFORM=offscreen
 
+# least A B: the smaller of two numbers (A when B is empty)
+least() {
+  if [ -z "$2" ] || [ "$(echo "$1 < $2" | bc -l)" = 1 ]; then echo "$1"; else echo "$2"; fi
+}
+
 # best_of N COMMAND...: the least wall time of N runs, in seconds
 best_of() {
   local n="$1"; shift
-  local best=""
+  local best="" t0 t1
   for _ in $(seq "$n"); do
-    local t0 t1 t
     t0=$(date +%s.%N)
     "$@" >/dev/null 2>&1
     t1=$(date +%s.%N)
-    t=$(echo "$t1 - $t0" | bc -l)
-    if [ -z "$best" ] || [ "$(echo "$t < $best" | bc -l)" = 1 ]; then best="$t"; fi
+    best=$(least "$(echo "$t1 - $t0" | bc -l)" "$best")
   done
   echo "$best"
 }
 
-# cc_seconds CLOUD RADIUS: CloudCompare's -CURV MEAN step, the best of N runs with it less
-# the best of N runs without it
+# cc_seconds CLOUD RADIUS OUTPUT: CloudCompare's -CURV MEAN step, the best of N runs with it
+# (writing OUTPUT) less the best of N runs without it
 cc_seconds() {
   local cc=(CloudCompare -SILENT -AUTO_SAVE OFF -O "$1")
   local base with
   base=$(best_of "$repetitions" "${cc[@]}" -C_EXPORT_FMT ASC -SAVE_CLOUDS FILE "$out/plain.asc")
-  with=$(best_of "$repetitions" "${cc[@]}" -CURV MEAN "$2" -C_EXPORT_FMT ASC -SAVE_CLOUDS FILE "$out/plain.asc")
+  with=$(best_of "$repetitions" "${cc[@]}" -CURV MEAN "$2" -C_EXPORT_FMT ASC -SAVE_CLOUDS FILE "$3")
   # on small clouds the step is below the noise of two process times
   echo "d = $with - $base; if (d < 0) d = 0; d" | bc -l
 }
 
-# the tool's "curvatures" phase (seconds), the best of N runs
-tool_seconds() {
-  local best=""
-  for _ in $(seq "$repetitions"); do
-    local t
-    t=$("$tool" "$@" 2>&1 | sed -n 's/.*curvatures \([0-9.]*\),.*/\1/p' | head -1)
-    if [ -z "$best" ] || [ "$(echo "$t < $best" | bc -l)" = 1 ]; then best="$t"; fi
+# tool_steps INPUT PREFIX EXTENSION RADIUS CC_SECONDS: runs the tool's methods on INPUT (the
+# best of N runs each, written to PREFIX-METHOD.EXTENSION) and prints the time of their
+# curvature phases beside CloudCompare's
+tool_steps() {
+  local m t best times=()
+  for m in aso paper pss jet; do
+    local args=(--method "$m")
+    [ "$m" = paper ] && args=(--method aso --variant paper)
+    best=""
+    for _ in $(seq "$repetitions"); do
+      t=$("$tool" "$1" "$2-$m.$3" "${args[@]}" --radius "$4" 2>&1 | sed -n 's/.*curvatures \([0-9.]*\),.*/\1/p' | head -1)
+      best=$(least "$t" "$best")
+    done
+    times+=("$best")
   done
-  echo "$best"
+  printf 'curvature step (s): ASO default %s, paper %s, PSS %s, jets %s; CloudCompare (MEAN) %.3f\n' \
+    "${times[@]}" "$5"
 }
 
 for spec in "goursat_010000 1.5" "goursat_050000 1.0" "goursat_050000 1.5" "goursat-lidar 1.4"; do
@@ -91,17 +102,10 @@ for spec in "goursat_010000 1.5" "goursat_050000 1.0" "goursat_050000 1.5" "gour
   cloud="$1" r="$2"
   # CloudCompare's ASCII reader takes the comment line for a malformed point: drop it
   grep -v '^#' "$repo/data/$cloud.xyz" > "$out/$cloud.xyz"
-  cc=(CloudCompare -SILENT -AUTO_SAVE OFF -O "$out/$cloud.xyz")
-  for q in MEAN GAUSS; do
-    "${cc[@]}" -CURV "$q" "$r" -C_EXPORT_FMT ASC -SAVE_CLOUDS FILE "$out/$cloud-$r-cc-$q.asc" >/dev/null 2>&1
-  done
-  cc_time=$(cc_seconds "$out/$cloud.xyz" "$r")
-  declare -A seconds=()
-  for m in aso paper pss jet; do
-    args=(--method "$m")
-    [ "$m" = paper ] && args=(--method aso --variant paper)
-    seconds[$m]=$(tool_seconds "$repo/data/$cloud.xyz" "$out/$cloud-$r-$m.csv" "${args[@]}" --radius "$r")
-  done
+  CloudCompare -SILENT -AUTO_SAVE OFF -O "$out/$cloud.xyz" -CURV GAUSS "$r" -C_EXPORT_FMT ASC \
+    -SAVE_CLOUDS FILE "$out/$cloud-$r-cc-GAUSS.asc" >/dev/null 2>&1
+  cc_time=$(cc_seconds "$out/$cloud.xyz" "$r" "$out/$cloud-$r-cc-MEAN.asc")
+  steps=$(tool_steps "$repo/data/$cloud.xyz" "$out/$cloud-$r" csv "$r" "$cc_time")
   echo
   echo "### $cloud.xyz, r = $r (errors x1e-3)"
   echo
@@ -111,21 +115,12 @@ for spec in "goursat_010000 1.5" "goursat_050000 1.0" "goursat_050000 1.5" "gour
     "CloudCompare 2.11 -CURV=$out/$cloud-$r-cc-MEAN.asc:cc_mean" \
     "CloudCompare 2.11 -CURV=$out/$cloud-$r-cc-GAUSS.asc:cc_gauss"
   echo
-  printf 'curvature step (s): ASO default %s, paper %s, PSS %s, jets %s; CloudCompare (MEAN) %.3f\n' \
-    "${seconds[aso]}" "${seconds[paper]}" "${seconds[pss]}" "${seconds[jet]}" "$cc_time"
-  unset seconds
+  echo "$steps"
 done
 
 # timing on a large cloud (no analytic curvature: time only)
 "$build/benchmark/large_cloud" "$points" "$out/terrain.ply" >/dev/null
-declare -A seconds=()
-for m in aso paper pss jet; do
-  args=(--method "$m")
-  [ "$m" = paper ] && args=(--method aso --variant paper)
-  seconds[$m]=$(tool_seconds "$out/terrain.ply" "$out/terrain-$m.ply" "${args[@]}" --radius 3.5)
-done
 echo
 echo "### terrain of $points points (large_cloud), r = 3.5"
 echo
-printf 'curvature step (s): ASO default %s, paper %s, PSS %s, jets %s; CloudCompare (MEAN) %.3f\n' \
-  "${seconds[aso]}" "${seconds[paper]}" "${seconds[pss]}" "${seconds[jet]}" "$(cc_seconds "$out/terrain.ply" 3.5)"
+tool_steps "$out/terrain.ply" "$out/terrain" ply 3.5 "$(cc_seconds "$out/terrain.ply" 3.5 "$out/plain.asc")"
