@@ -5,7 +5,7 @@
 // sphere with normals written as .xyz (x y z nx ny nz, 9 significant digits, as scanners
 // export), binary PLY (6 doubles) and LAS 1.2 point format 3 (34 bytes, no normals); each file
 // read with read_point_cloud() (best of 3, one thread: the readers are sequential) and the
-// default output (binary PLY, 16 doubles, neighbors, valid) written with write_point_cloud().
+// default output (binary PLY, 17 doubles, neighbors, valid) written with write_point_cloud().
 // Then the share of reading and writing in a whole run as the tool does it on the binary PLY:
 // read + write against the default ASO by count (--neighbors 40, Parallel_tag), measured in
 // this process. Prints MB/s and the ratios; asserts nothing.
@@ -111,17 +111,17 @@ int main(int argc, char** argv)
     std::FILE* f = std::fopen(out.c_str(), "wb");
     psc_tool::write_point_cloud(f, layout, n, [&](std::size_t i, psc_tool::Output_row& r) {
       const auto& e = estimates[i];
-      const double v[16] = {pts[i].first.x(), pts[i].first.y(), pts[i].first.z(), e.normal.x(), e.normal.y(),
+      const double v[psc_tool::output_value_count] = {pts[i].first.x(), pts[i].first.y(), pts[i].first.z(), e.normal.x(), e.normal.y(),
                             e.normal.z(), e.min_curvature, e.max_curvature, e.mean_curvature, e.gaussian_curvature,
                             e.min_direction.x(), e.min_direction.y(), e.min_direction.z(), e.max_direction.x(),
-                            e.max_direction.y(), e.max_direction.z()};
-      std::copy(v, v + 16, r.value);
+                            e.max_direction.y(), e.max_direction.z(), e.normal_coherence};
+      std::copy(v, v + psc_tool::output_value_count, r.value);
       r.neighbors = std::int32_t(e.neighbor_count);
       r.valid = e.is_valid() ? 1 : 0;
     }, psc_tool::Progress());
     std::fclose(f);
   });
-  std::printf("| write binary PLY (16 doubles, int, uchar) | %.1f | %.3f | %.0f |\n", file_megabytes(out),
+  std::printf("| write binary PLY (17 doubles, int, uchar) | %.1f | %.3f | %.0f |\n", file_megabytes(out),
               write_seconds, file_megabytes(out) / write_seconds);
   const double io = ply_read + write_seconds;
   std::printf("\nbinary PLY in and out: read %.3f s + write %.3f s against ASO (--neighbors 40, Parallel_tag) "

@@ -16,6 +16,7 @@
 
 #include <CGAL/Algebraic_shape_operator_fit.h>
 #include <CGAL/estimate_algebraic_sphere_features.h>
+#include <CGAL/estimate_apss_curvatures.h>
 #include <CGAL/estimate_aso_curvatures.h>
 #include <CGAL/estimate_barycenter_curvatures.h>
 #include <CGAL/estimate_jet_curvatures.h>
@@ -1603,6 +1604,59 @@ TEST_CASE("Thin plate: the robust orientation reports TWO_SHEETS where both side
     same += with[i].status == without[i].status &&
             (!with[i].is_valid() || with[i].mean_curvature == without[i].mean_curvature);
   CHECK(same == cube.size());
+}
+
+// Foliage: points filling a volume with normals pointing anywhere (what the normal estimation
+// gives in a tree crown, oriented to +z as the tool does for airborne scans) are one noisy
+// surface, not two sheets: the estimate is given, with a low normal_coherence. A plane's
+// coherence is 1, a sphere's close to 1.
+TEST_CASE("Foliage is estimated with a low normal_coherence, not TWO_SHEETS, and smooth surfaces have a coherence near 1", "[aso][robust]")
+{
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<Oriented_point> crown;
+  while(crown.size() < 6000)
+  {
+    const Point p(u(rng), u(rng), u(rng));
+    Vector n(u(rng), u(rng), u(rng));
+    if(p.x() * p.x() + p.y() * p.y() + p.z() * p.z() > 1 || n.squared_length() > 1 || n.squared_length() < 1e-2)
+      continue;
+    crown.emplace_back(p, n.z() < 0 ? -n : n);
+  }
+  const auto k40 = PSC::parameters::neighbor_count(40, maps());
+  for(const auto& est : {CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(crown, k40),
+                         CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(
+                           crown, PSC::parameters::robust_orientation(true, k40))})
+  {
+    std::size_t valid = 0;
+    std::vector<double> coherence;
+    for(const auto& e : est)
+      if(e.is_valid())
+      {
+        ++valid;
+        coherence.push_back(e.normal_coherence);
+      }
+    std::sort(coherence.begin(), coherence.end());
+    measured("foliage: valid (of 6000)", double(valid));
+    measured("foliage: median normal_coherence", coherence[coherence.size() / 2]);
+    CHECK(valid > 0.95 * double(crown.size()));  // measured 6000 of 6000 (ASO and APSS)
+    CHECK(coherence[coherence.size() / 2] < 0.8);  // measured 0.61 (ASO), 0.57 (APSS)
+  }
+  // a plane: exactly 1; a unit sphere at r = 0.2: measured 0.996 and more
+  std::vector<Oriented_point> flat;
+  for(int i = 0; i < 2000; ++i)
+    flat.emplace_back(Point(u(rng), u(rng), 0), Vector(0, 0, 1));
+  for(const auto& e : CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(flat, k40))
+    if(e.is_valid())
+      CHECK(e.normal_coherence == Approx(1.0).epsilon(1e-12));
+  double least = 1;
+  for(const auto& e : CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(sphere(20000, 1.0), 0.2, maps()))
+    least = std::min(least, double(e.normal_coherence));
+  measured("sphere R = 1, r = 0.2: least normal_coherence", least);
+  CHECK(least > 0.99);
+  CHECK(least < 1.0);
+  // estimators without normal sums leave it NaN
+  CHECK(std::isnan(CGAL::estimate_pss_curvatures<CGAL::Sequential_tag>(flat, k40)[0].normal_coherence));
 }
 
 namespace {

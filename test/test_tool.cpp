@@ -7,12 +7,14 @@
 // files read back with CGAL's PLY reader, every error case (exit status 2, one line on
 // stderr naming the file or option, no output file), the normals estimated for files without.
 
+#include "scan_simulator.h"
 #include "test_support.h"
 
 #include <CGAL/Point_set_curvatures/internal/knn_neighborhoods.h>
 #include <CGAL/estimate_apss_curvatures.h>
 #include <CGAL/estimate_aso_curvatures.h>
 #include <CGAL/estimate_oriented_normals.h>
+#include <CGAL/estimate_pss_curvatures.h>
 
 #include <CGAL/Point_set_3.h>
 #include <CGAL/Point_set_3/IO.h>
@@ -684,7 +686,7 @@ TEST_CASE("tool: invalid rows are NaN with valid = 0, in PLY and CSV, with --nei
   std::string line;
   std::getline(csv, line);
   CHECK(line == "x,y,z,nx,ny,nz,k_min,k_max,mean,gaussian,dmin_x,dmin_y,dmin_z,dmax_x,dmax_y,"
-                "dmax_z,neighbors,valid");
+                "dmax_z,normal_coherence,neighbors,valid");
   std::size_t rows = 0, mismatches = 0;
   while(std::getline(csv, line))
   {
@@ -693,10 +695,11 @@ TEST_CASE("tool: invalid rows are NaN with valid = 0, in PLY and CSV, with --nei
     for(std::string f; std::getline(fields, f, ',');)
       v.push_back(f == "nan" ? std::numeric_limits<double>::quiet_NaN() : std::strtod(f.c_str(), nullptr));
     const Estimate& e = expected[rows];
-    const bool ok = v.size() == 18 && v[0] == pts[rows].first.x() && same(v[3], e.normal.x()) &&
+    const bool ok = v.size() == 19 && v[0] == pts[rows].first.x() && same(v[3], e.normal.x()) &&
                     same(v[6], e.min_curvature) && same(v[8], e.mean_curvature) &&
                     same(v[9], e.gaussian_curvature) && same(v[15], e.max_direction.z()) &&
-                    v[16] == double(e.neighbor_count) && v[17] == (e.is_valid() ? 1 : 0);
+                    same(v[16], e.normal_coherence) && v[17] == double(e.neighbor_count) &&
+                    v[18] == (e.is_valid() ? 1 : 0);
     mismatches += !ok;
     ++rows;
   }
@@ -717,8 +720,8 @@ TEST_CASE("tool: invalid rows are NaN with valid = 0, in PLY and CSV, with --nei
     std::vector<std::string> f;
     for(std::string w; fields >> w;)
       f.push_back(w);
-    nan_gaussian += (f.size() == 18 && f[9] == "nan");
-    finite_mean += (f.size() == 18 && f[17] == "1" && std::isfinite(std::strtod(f[8].c_str(), nullptr)));
+    nan_gaussian += (f.size() == 19 && f[9] == "nan");
+    finite_mean += (f.size() == 19 && f[18] == "1" && std::isfinite(std::strtod(f[8].c_str(), nullptr)));
   }
   CHECK(nan_gaussian == pts.size());
   CHECK(finite_mean == 2000);  // the sphere; radius 0.4 leaves the isolated point alone
@@ -1146,6 +1149,274 @@ TEST_CASE("estimate_oriented_normals: coincident, isolated and non-finite points
   auto cut = positions_of(sphere(3000, 1.0));
   CHECK(CGAL::estimate_oriented_normals<CGAL::Sequential_tag>(
           cut, tuple_maps.callback(std::function<bool(double)>([](double) { return false; }))) == 3000);
+}
+
+// Normals of clouds as scanners give them (test/scan_simulator.h), and their orientation
+
+namespace {
+
+namespace scan = psc_test::scan;
+
+// Mean |H - H*| over the valid estimates.
+double mean_h_error(const std::vector<Estimate>& est, const std::vector<scan::Sample>& s)
+{
+  double sum = 0;
+  std::size_t n = 0;
+  for(std::size_t i = 0; i < est.size(); ++i)
+    if(est[i].is_valid())
+    {
+      sum += std::abs(est[i].mean_curvature - s[i].truth.mean);
+      ++n;
+    }
+  return n ? sum / double(n) : HUGE_VAL;
+}
+
+// Share of the non-zero normals on the side of the true normal.
+double share_oriented(const std::vector<Oriented_point>& pts, const std::vector<Vector>& truth)
+{
+  std::size_t with = 0, right = 0;
+  for(std::size_t i = 0; i < pts.size(); ++i)
+    if(pts[i].second != CGAL::NULL_VECTOR)
+    {
+      ++with;
+      right += pts[i].second * truth[i] > 0;
+    }
+  return with ? double(right) / double(with) : 0.0;
+}
+
+// A torus of radii R and r around the z axis, area-uniform random points, outward normals.
+std::vector<Oriented_point> random_torus(std::size_t n, double R, double r, unsigned seed)
+{
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> angle(0, 2 * M_PI), keep(0, R + r);
+  std::vector<Oriented_point> pts;
+  while(pts.size() < n)
+  {
+    const double u = angle(rng), v = angle(rng);
+    if(keep(rng) > R + r * std::cos(v))
+      continue;
+    const Vector radial(std::cos(u), std::sin(u), 0);
+    const Vector normal = std::cos(v) * radial + Vector(0, 0, std::sin(v));
+    pts.emplace_back(CGAL::ORIGIN + R * radial + r * normal, normal);
+  }
+  return pts;
+}
+
+} // namespace
+
+// The pipeline for clouds without normals: quadric normals (the default of
+// estimate_oriented_normals) and the ASO with position_fit_blend(0.5), against the ASO with the
+// exact normals and against PSS (positions only), at 40 neighbours, on the three kinds of scan
+// of benchmark/scan_experiments at a lower density.
+TEST_CASE("scans without normals: quadric normals and the position blend as accurate as exact normals, ahead of PSS")
+{
+  const scan::Height_field terrain = scan::wavy_terrain();
+  const std::vector<std::pair<std::string, std::vector<scan::Sample> > > clouds = {
+    {"terrestrial torus", scan::terrestrial_torus(scan::Noise())},
+    {"airborne lines", scan::airborne_lines(terrain, 6, 0.1, 0.5)},
+    {"merged terrestrial", scan::merged_terrestrial(terrain, 12, 0.009, 12)}};
+  const auto by40 = PSC::parameters::neighbor_count(40, pair_maps);
+  for(const auto& c : clouds)
+  {
+    INFO(c.first);
+    const std::vector<Oriented_point> exact = scan::with_true_normals(c.second);
+    std::vector<Oriented_point> estimated = exact;
+    CHECK(CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(estimated, pair_maps) < exact.size() / 100);
+    std::vector<Vector> truth;
+    for(const Oriented_point& p : exact)
+      truth.push_back(p.second);
+    // the default orientation (spanning tree, open parts up) is right on these open surfaces
+    const double oriented = share_oriented(estimated, truth);
+    measured(c.first + ": estimated normals on the true side", oriented);
+    CHECK(oriented > 0.999);
+    const double with_exact = mean_h_error(CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(exact, by40), c.second);
+    const double blended = mean_h_error(
+      CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(estimated, PSC::parameters::position_fit_blend(0.5, by40)),
+      c.second);
+    const double pss = mean_h_error(CGAL::estimate_pss_curvatures<CGAL::Parallel_tag>(estimated, by40), c.second);
+    measured(c.first + ": mean |H error|, ASO with exact normals", with_exact);
+    measured(c.first + ": mean |H error|, quadric normals and position blend", blended);
+    measured(c.first + ": mean |H error|, PSS", pss);
+    // the targets of issue 31 (benchmark/README.md, "Scans without normals"). Measured, blended
+    // / exact / PSS (x1e-3): torus 2.50 / 1.85 / 3.38, airborne 1.40 / 1.22 / 22.5, merged
+    // 0.230 / 0.236 / 0.251 (the one close call: on smaller merged clouds PSS was 5% ahead)
+    CHECK(blended <= 1.5 * with_exact);
+    CHECK(blended <= pss);
+  }
+}
+
+TEST_CASE("estimate_oriented_normals: one scan line gives no normal, never a sideways one, and quadric normals on two or three lines")
+{
+  // Airborne lines 40 times farther apart than the spacing along a line: the 40 nearest of
+  // every point lie on its own line, where any normal about the line would fit.
+  const scan::Height_field plane = scan::tilted_plane();
+  const std::vector<scan::Sample> lines = scan::airborne_lines(plane, 6, 0.05, 2.0);
+  std::vector<Oriented_point> pts = scan::with_true_normals(lines);
+  for(CGAL::Normal_fit fit : {CGAL::Normal_fit::QUADRIC, CGAL::Normal_fit::PLANE})
+  {
+    INFO("fit " << int(fit));
+    const std::size_t without = CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
+      pts, PSC::parameters::neighbor_count(40, PSC::parameters::normal_fit(fit, pair_maps)));
+    double worst = 0;
+    for(std::size_t i = 0; i < pts.size(); ++i)
+      if(pts[i].second != CGAL::NULL_VECTOR)
+        worst = std::max(worst, line_angle_degrees(pts[i].second, lines[i].truth.normal));
+    measured("one scan line per neighbourhood: points without a normal (of " + std::to_string(pts.size()) + ")",
+             double(without));
+    CHECK(without > 0.99 * double(pts.size()));  // measured 1680 and 1673 of 1680
+    CHECK(worst < 1.0);  // the few with a normal see two lines
+    // 200 neighbours reach the next lines: every normal, and right
+    const std::size_t without_200 = CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
+      pts, PSC::parameters::neighbor_count(200, PSC::parameters::normal_fit(fit, pair_maps)));
+    CHECK(without_200 == 0);
+    worst = 0;
+    for(std::size_t i = 0; i < pts.size(); ++i)
+      worst = std::max(worst, line_angle_degrees(pts[i].second, lines[i].truth.normal));
+    measured("scan lines at 200 neighbours: worst normal angle (deg)", worst);
+    CHECK(worst < 0.01);  // a plane: both fits exact up to rounding
+  }
+  // Two or three lines per neighbourhood (5:1) over the wavy terrain: the quadric's slope
+  // across the lines stays determined (its anisotropic part is penalised; CGAL's jets of 30
+  // gave 1.9 degrees on average on such lines, benchmark/README.md)
+  const std::vector<scan::Sample> terrain = scan::airborne_lines(scan::wavy_terrain(), 6, 0.1, 0.5);
+  std::vector<Oriented_point> t = scan::with_true_normals(terrain);
+  CHECK(CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(t, pair_maps) == 0);
+  double sum = 0, worst = 0;
+  for(std::size_t i = 0; i < t.size(); ++i)
+  {
+    const double a = line_angle_degrees(t[i].second, terrain[i].truth.normal);
+    sum += a;
+    worst = std::max(worst, a);
+  }
+  measured("airborne 5:1 lines, quadric normals: mean angle (deg)", sum / double(t.size()));
+  measured("airborne 5:1 lines, quadric normals: worst angle (deg)", worst);
+  CHECK(sum / double(t.size()) < 0.5);  // measured 0.20 (worst 0.81)
+}
+
+TEST_CASE("estimate_oriented_normals: closed objects outward, open ones up, automatic orientation")
+{
+  // Closed: the Goursat sample of data/ and a torus (whose hole makes sum (p - c).n smaller)
+  const std::vector<std::pair<std::string, std::vector<Oriented_point> > > closed = {
+    {"Goursat 10K", read_xyz(repo_data("goursat_010000.xyz"))}, {"torus", random_torus(20000, 1.0, 0.4, 5)}};
+  for(const auto& c : closed)
+  {
+    std::vector<Oriented_point> pts = c.second;
+    std::vector<Vector> truth;
+    for(Oriented_point& p : pts)
+    {
+      truth.push_back(p.second);
+      p.second = Vector(0, 0, 0);
+    }
+    // upside down too: the highest point's side no longer decides
+    for(double flip : {1.0, -1.0})
+    {
+      std::vector<Oriented_point> q = pts;
+      std::vector<Vector> t = truth;
+      for(std::size_t i = 0; i < q.size(); ++i)
+      {
+        q[i].first = Point(q[i].first.x(), flip * q[i].first.y(), flip * q[i].first.z());
+        t[i] = Vector(t[i].x(), flip * t[i].y(), flip * t[i].z());
+      }
+      CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(q, pair_maps);
+      const double outward = share_oriented(q, t);
+      measured(c.first + (flip > 0 ? "" : " upside down") + ": normals outward", outward);
+      CHECK(outward >= 0.99);
+      // automatic: not 2.5-D, so the spanning tree
+      std::vector<Oriented_point> a = q;
+      CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
+        a, PSC::parameters::normal_orientation(CGAL::Normal_orientation::automatic(), pair_maps));
+      CHECK(share_oriented(a, t) == outward);
+    }
+  }
+  // Open, 2.5-D: a terrain scanned from above, its lowest part first in the file; automatic
+  // picks +z, the spanning tree agrees
+  const std::vector<scan::Sample> terrain = scan::airborne_lines(scan::wavy_terrain(), 6, 0.1, 0.5);
+  std::vector<Oriented_point> up = scan::with_true_normals(terrain), tree = up;
+  std::vector<Vector> truth;
+  for(const scan::Sample& s : terrain)
+    truth.push_back(s.truth.normal);
+  CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
+    up, PSC::parameters::normal_orientation(CGAL::Normal_orientation::automatic(), pair_maps));
+  CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(tree, pair_maps);
+  CHECK(share_oriented(up, truth) == 1.0);
+  CHECK(share_oriented(tree, truth) == 1.0);
+  std::size_t vertical = 0;
+  for(const Oriented_point& p : up)
+    vertical += PSC::is_near_vertical(p.second.x(), p.second.y(), p.second.z()) ? 1 : 0;
+  CHECK(PSC::is_two_and_a_half_d(vertical, up.size()));
+  CHECK(!PSC::is_two_and_a_half_d(59, 100));
+  CHECK(PSC::is_two_and_a_half_d(60, 100));
+  CHECK_THROWS_AS(CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
+                    up, PSC::parameters::normal_orientation(CGAL::Normal_orientation::automatic(),
+                                                            PSC::parameters::tile(PSC::Tile(CGAL::Bbox_3(0, 0, 0, 1, 1, 1), 1),
+                                                                                  pair_maps))),
+                  std::invalid_argument);
+}
+
+// The tool without normals: quadric normals, orientation by the input's kind (said in the
+// summary), the position blend; the plain pipeline stays reachable.
+TEST_CASE("tool: without normals, the default pipeline and what the summary says of it")
+{
+  const std::vector<scan::Sample> terrain = scan::airborne_lines(scan::wavy_terrain(), 6, 0.1, 0.5);
+  const std::vector<Oriented_point> pts = scan::with_true_normals(terrain);
+  const double offset[3] = {500000, 4000000, 100};
+  std::vector<Oriented_point> shifted;
+  for(const Oriented_point& p : pts)
+    shifted.emplace_back(p.first + Vector(offset[0], offset[1], offset[2]), p.second);
+  write_text(file("terrain.las"), las_file(shifted, 1, 2, 1e-4, offset));
+  write_xyz(file("terrain.xyz"), pts, false);
+  const Run las = run_tool(q(file("terrain.las")) + " " + q(file("terrain_las.csv")) + " --fields mean,normal,valid");
+  REQUIRE(las.status == 0);
+  CHECK(las.out.find("normals     a quadric fitted to the 40 nearest neighbours, oriented +z (LAS file, 2.5-D") !=
+        std::string::npos);
+  CHECK(las.out.find("blended with a position fit, weight 0.5") != std::string::npos);
+  const Run xyz = run_tool(q(file("terrain.xyz")) + " " + q(file("terrain_xyz.csv")) + " --fields mean,normal,valid");
+  REQUIRE(xyz.status == 0);
+  CHECK(xyz.out.find("oriented mst: along a minimum spanning tree") != std::string::npos);
+  // the plain pipeline: PCA normals of 18, no blend
+  const Run plain = run_tool(q(file("terrain.xyz")) + " " + q(file("terrain_plain.csv")) +
+                             " --normal-fit plane --position-blend 0 --fields mean,valid");
+  REQUIRE(plain.status == 0);
+  CHECK(plain.out.find("the PCA plane of the 18 nearest neighbours") != std::string::npos);
+  CHECK(plain.out.find("blended") == std::string::npos);
+  auto error_of = [&](const std::string& csv) {
+    std::ifstream in(csv);
+    std::string line;
+    std::getline(in, line);
+    const std::vector<std::string> header = [&]() {
+      std::vector<std::string> h;
+      std::stringstream ss(line);
+      std::string f;
+      while(std::getline(ss, f, ','))
+        h.push_back(f);
+      return h;
+    }();
+    const std::size_t at = std::find(header.begin(), header.end(), "mean") - header.begin();
+    double sum = 0;
+    std::size_t i = 0;
+    while(std::getline(in, line))
+    {
+      std::stringstream ss(line);
+      std::string f;
+      for(std::size_t c = 0; c <= at; ++c)
+        std::getline(ss, f, ',');
+      sum += std::abs(std::stod(f) - terrain[i++].truth.mean);
+    }
+    REQUIRE(i == terrain.size());
+    return sum / double(i);
+  };
+  const double e_las = error_of(file("terrain_las.csv")), e_xyz = error_of(file("terrain_xyz.csv")),
+               e_plain = error_of(file("terrain_plain.csv"));
+  measured("tool on airborne lines without normals: mean |H error|, LAS default", e_las);
+  measured("tool on airborne lines without normals: mean |H error|, text default", e_xyz);
+  measured("tool on airborne lines without normals: mean |H error|, plane normals, no blend", e_plain);
+  // measured 1.40e-3 (both) against 3.31e-3
+  CHECK(e_las < 0.7 * e_plain);
+  CHECK(e_xyz < 0.7 * e_plain);
+  // bad values
+  CHECK(run_tool(q(file("terrain.xyz")) + " " + q(file("x.csv")) + " --position-blend 1.5").status == 2);
+  CHECK(run_tool(q(file("terrain.xyz")) + " " + q(file("x.csv")) + " --normal-fit cubic").status == 2);
+  CHECK(run_tool(q(file("terrain.xyz")) + " " + q(file("x.csv")) + " --normal-neighbors 5").status == 2);
 }
 
 // Issue 14: Ctrl-C is honoured within a batch (at most 1% of the points, ~0.25 s) even when

@@ -23,6 +23,19 @@ const std::map<std::string, int>& color_quantities()
   return q;
 }
 
+std::size_t normal_neighbor_count(const Options& o)
+{
+  if(o.normal_neighbors > 0)
+    return o.normal_neighbors;
+  return CGAL::Point_set_curvatures::default_normal_neighbors(o.normal_fit);
+}
+
+std::string normal_fit_description(const Options& o)
+{
+  return cat(o.normal_fit == CGAL::Normal_fit::QUADRIC ? "a quadric fitted to the " : "the PCA plane of the ",
+             normal_neighbor_count(o), " nearest neighbours");
+}
+
 void print_usage(std::ostream& os)
 {
   os << "usage: " << program << " INPUT OUTPUT [options]\n"
@@ -32,16 +45,18 @@ void print_usage(std::ostream& os)
      << "          commas: x y z, or x y z nx ny nz, or a header line naming the columns, or\n"
      << "          --columns), .ply (ASCII or binary, normals nx ny nz or normal_x normal_y\n"
      << "          normal_z), .off, .las (LAS 1.0-1.4 uncompressed, point formats 0-10; .laz:\n"
-     << "          decompress first). Without normals, they are estimated (PCA of the 18 nearest\n"
-     << "          neighbours, oriented along a minimum spanning tree; see --orient) with a warning.\n"
+     << "          decompress first). Without normals, they are estimated (a quadric fitted to the\n"
+     << "          40 nearest neighbours; see --normal-fit and --orient) with a warning.\n"
      << "  OUTPUT  .ply (binary unless --ascii) or .csv (with a header line): every input point\n"
      << "          in input order with x y z, the corrected normal nx ny nz, k_min k_max mean\n"
-     << "          gaussian, the principal directions dmin_x dmin_y dmin_z dmax_x dmax_y dmax_z\n"
-     << "          (doubles; NaN where the estimate is invalid or the method does not provide\n"
-     << "          the quantity), neighbors (int) and valid (0 or 1); then the input's other\n"
-     << "          values in their own types (PLY properties, named text columns, LAS fields\n"
-     << "          such as intensity, classification, gps_time, red green blue), renamed\n"
-     << "          input_NAME where NAME is one of the above.\n"
+     << "          gaussian, the principal directions dmin_x dmin_y dmin_z dmax_x dmax_y dmax_z,\n"
+     << "          normal_coherence (a quality value in [0, 1]: 1 where the neighbours' normals\n"
+     << "          agree, low in foliage; aso and apss) (doubles; NaN where the estimate is\n"
+     << "          invalid or the method does not provide the quantity), neighbors (int) and\n"
+     << "          valid (0 or 1); then the input's other values in their own types (PLY\n"
+     << "          properties, named text columns, LAS fields such as intensity,\n"
+     << "          classification, gps_time, red green blue), renamed input_NAME where NAME\n"
+     << "          is one of the above.\n"
      << "\n"
      << "options:\n"
      << "  --method M         estimator: " << method_names() << " (default aso)\n"
@@ -67,16 +82,26 @@ void print_usage(std::ostream& os)
      << "  --ascii            ASCII PLY output (NaN written as nan)\n"
      << "  --fields LIST      estimator fields to write, comma-separated (x y z always): nx ny nz\n"
      << "                     or normal, k_min, k_max, mean, gaussian, dmin, dmax (or dmin_x...),\n"
-     << "                     neighbors, valid (default: all)\n"
+     << "                     normal_coherence, neighbors, valid (default: all)\n"
      << "  --float            write the estimator fields as float32 (x y z stay double)\n"
      << "  --drop-attributes  do not carry the input's other values to the output\n"
      << "  --require-normals  fail if INPUT has no normals instead of estimating them\n"
-     << "  --orient O         orientation of estimated normals: mst (propagated along a minimum\n"
-     << "                     spanning tree, default), +z, -z, +x, -x, +y, -y (airborne scans:\n"
-     << "                     +z), viewpoint:X,Y,Z (towards the scanner at X,Y,Z), or scanner\n"
-     << "                     (LAS point formats 4, 5, 9, 10: towards the origin of each\n"
-     << "                     point's pulse, its wave packet's x(t) y(t) z(t))\n"
-     << "  --normal-neighbors K  neighbours of the normal estimation (default 18)\n"
+     << "  --orient O         orientation of estimated normals: auto (default: LAS files with\n"
+     << "                     pulse directions, scanner; other LAS files, mst with +z on its open\n"
+     << "                     parts if the cloud is 2.5-D (60% of the normals within 60 degrees of\n"
+     << "                     the vertical); other files, mst), mst (propagated along a minimum spanning\n"
+     << "                     tree, each connected part outward if closed, up if open), +z, -z,\n"
+     << "                     +x, -x, +y, -y (airborne scans: +z), viewpoint:X,Y,Z (towards the\n"
+     << "                     scanner at X,Y,Z), or scanner (LAS point formats 4, 5, 9, 10:\n"
+     << "                     towards the origin of each point's pulse, its wave packet's x(t)\n"
+     << "                     y(t) z(t)). The summary says which was used and why\n"
+     << "  --normal-fit F     fit of the normal estimation: quadric (default: a weighted quadric,\n"
+     << "                     smooth from point to point, which the ASO needs) or plane (PCA)\n"
+     << "  --normal-neighbors K  neighbours of the normal estimation (default 40; plane 18)\n"
+     << "  --position-blend W aso: weight in [0, 1] of a quadric fitted to the positions alone,\n"
+     << "                     blended with the ASO's tensor (default 0.5 when the normals are\n"
+     << "                     estimated, which makes the result as accurate as with exact\n"
+     << "                     normals on simulated scans; 0 when the file has normals)\n"
      << "  --memory-limit M   memory for the points, in bytes or with a unit: 500M, 8G (default:\n"
      << "                     a quarter of the machine's RAM). A larger input is estimated in\n"
      << "                     spatial tiles, each read again from INPUT with a halo around it,\n"
@@ -151,9 +176,11 @@ void parse_radius(const std::string& text, Scale& scale)
     scale.radius = value;
 }
 
-// --orient: mst, +z, -y, ..., or viewpoint:X,Y,Z.
+// --orient: auto, mst, +z, -y, ..., or viewpoint:X,Y,Z.
 CGAL::Normal_orientation parse_orientation(const std::string& text)
 {
+  if(text == "auto")
+    return CGAL::Normal_orientation::automatic();
   if(text == "mst")
     return CGAL::Normal_orientation::minimum_spanning_tree();
   if(text == "scanner")  // +z, then each normal towards its pulse's origin (orient_towards_scanner())
@@ -179,7 +206,7 @@ CGAL::Normal_orientation parse_orientation(const std::string& text)
     return CGAL::Normal_orientation::towards_point(v[0], v[1], v[2]);
   }
   throw Error(cat("--orient: unknown orientation ", in_quotes(text),
-                  " (mst, +z, -z, +x, -x, +y, -y, viewpoint:X,Y,Z or scanner)"));
+                  " (auto, mst, +z, -z, +x, -x, +y, -y, viewpoint:X,Y,Z or scanner)"));
 }
 
 } // namespace
@@ -270,6 +297,19 @@ Options parse_command_line(int argc, char** argv)
       if(!parse_positive_integer(v, o.normal_neighbors) || o.normal_neighbors < 3)
         throw Error(cat(name, " must be an integer >= 3, got ", in_quotes(v)));
     }
+    else if(name == "--normal-fit")
+    {
+      const std::string v = take_value();
+      if(v != "quadric" && v != "plane")
+        throw Error(cat("--normal-fit: unknown fit ", in_quotes(v), " (quadric or plane)"));
+      o.normal_fit = v == "plane" ? CGAL::Normal_fit::PLANE : CGAL::Normal_fit::QUADRIC;
+    }
+    else if(name == "--position-blend")
+    {
+      const std::string v = take_value();
+      if(!parse_double(v, o.position_blend) || !(o.position_blend >= 0 && o.position_blend <= 1))
+        throw Error(cat("--position-blend must be a number in [0, 1], got ", in_quotes(v)));
+    }
     else if(name == "--threads")
     {
       const std::string v = take_value();
@@ -317,6 +357,9 @@ Options parse_command_line(int argc, char** argv)
                     " INPUT OUTPUT [options])"));
   if(o.radius_given && o.neighbors_given)
     throw Error("give either --radius or --neighbors, not both");
+  if(o.normal_fit == CGAL::Normal_fit::QUADRIC && o.normal_neighbors != 0 && o.normal_neighbors < 6)
+    throw Error(cat("--normal-neighbors ", o.normal_neighbors, " is below the 6 points a quadric needs: use "
+                    "--normal-neighbors 6 or more, or --normal-fit plane"));
   const std::size_t least = o.scale.min_neighbors ? o.scale.min_neighbors : o.method->min_neighbors;
   if(o.scale.by_count && o.scale.neighbors < least)
     throw Error(cat("--neighbors ", o.scale.neighbors, " is below the ", least, " neighbours of a valid ", o.method->name,

@@ -37,12 +37,21 @@ struct Options
   std::vector<std::string> fields;                 // --fields, empty: all
   std::string color;  // quantity to colour by, empty for none
   std::vector<std::string> columns;  // --columns, empty: automatic
-  CGAL::Normal_orientation orientation;  // --orient
-  std::string orientation_text = "mst";
+  // --orient; "auto" is resolved once the input is known (resolve_orientation())
+  CGAL::Normal_orientation orientation = CGAL::Normal_orientation::automatic();
+  std::string orientation_text = "auto";
   bool orient_scanner = false;           // --orient scanner
-  std::size_t normal_neighbors = 18;     // --normal-neighbors
+  CGAL::Normal_fit normal_fit = CGAL::Normal_fit::QUADRIC;  // --normal-fit
+  std::size_t normal_neighbors = 0;      // --normal-neighbors; 0: the fit's default (40, plane 18)
+  double position_blend = -1;            // --position-blend; < 0: 0.5 if the normals are estimated, else 0
   double memory_limit = 0;               // --memory-limit in bytes; 0: a quarter of the RAM
 };
+
+// The neighbour count of the normal estimation: --normal-neighbors, else the fit's default.
+std::size_t normal_neighbor_count(const Options& o);
+
+// "quadric fit of the 40 nearest neighbours": how the normals are estimated.
+std::string normal_fit_description(const Options& o);
 
 // The --help text.
 void print_usage(std::ostream& os);

@@ -40,6 +40,7 @@ struct Scale
   double spacing = 0;          // CGAL::compute_average_spacing, for "--radius Nx"
   std::size_t min_neighbors = 0;  // --min-neighbors; 0: the method's default
   CGAL::Aso_variant variant = CGAL::Aso_variant::ROBUST;  // --variant (aso)
+  double position_fit_blend = 0;  // --position-blend (aso)
 };
 
 // Every point is estimated with PSC::Tile::whole_space(), a tile's own points otherwise.

@@ -174,17 +174,76 @@ double average_spacing(const Point_set& ps, const Progress& progress)
   return count ? sum / double(count) : 0;
 }
 
-// Normals of the package's estimate_oriented_normals(): PCA of the `k` nearest, oriented as
-// `orientation` says. Returns the number of points left without a normal.
-std::size_t estimate_normals(Point_set& ps, std::size_t k, const CGAL::Normal_orientation& orientation,
-                             const Progress& progress)
+// How the estimated normals are oriented: --orient, or for "auto" (the default) what suits
+// the input (LAS files are airborne or mobile scans, seen from above, unless they hold pulse
+// directions), and why, for the summary.
+struct Orientation_choice
+{
+  CGAL::Normal_orientation orientation;
+  bool scanner = false;  // then each normal is turned towards its pulse's origin afterwards
+  std::string text;      // what the summary says
+};
+
+Orientation_choice choose_orientation(const Options& o, bool las, bool has_pulses, bool tiled)
+{
+  Orientation_choice c;
+  c.orientation = o.orientation;
+  c.scanner = o.orient_scanner;
+  if(o.orientation_text != "auto")
+  {
+    c.text = cat(o.orientation_text, " (--orient)");
+    return c;
+  }
+  if(las && has_pulses)
+  {
+    c.orientation = CGAL::Normal_orientation::along_vector(0, 0, 1);
+    c.scanner = true;
+    c.text = "towards the scanner (LAS pulse directions; --orient auto)";
+  }
+  else if(las && tiled)
+  {
+    c.orientation = CGAL::Normal_orientation::along_vector(0, 0, 1);
+    c.text = "+z (LAS file estimated in tiles, taken as 2.5-D; --orient auto)";
+  }
+  else if(las)
+    c.orientation = CGAL::Normal_orientation::automatic();  // text once the normals are known
+  else
+  {
+    c.orientation = CGAL::Normal_orientation::minimum_spanning_tree();
+    c.text = "mst: along a minimum spanning tree, closed parts outward, open parts up (--orient auto)";
+  }
+  return c;
+}
+
+// Estimates the normals of the point set as the options say, oriented as `choice` says (its
+// text completed for the automatic orientation). Returns the number of points left without a
+// normal.
+std::size_t estimate_normals(Point_set& ps, const Options& o, Orientation_choice& choice, const Progress& progress)
 {
   ps.add_normal_map();
   const std::size_t without = CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
-    ps, PSC::parameters::neighbor_count(k, PSC::parameters::normal_orientation(
-                                             orientation, CGAL::parameters::callback(progress))));
+    ps, PSC::parameters::neighbor_count(
+          normal_neighbor_count(o),
+          PSC::parameters::normal_fit(o.normal_fit, PSC::parameters::normal_orientation(
+                                                      choice.orientation, CGAL::parameters::callback(progress)))));
   if(interrupted)
     throw Cancelled();
+  if(choice.orientation.kind == CGAL::Normal_orientation::AUTOMATIC)
+  {
+    std::size_t usable = 0, vertical = 0;
+    for(Point_set::Index i : ps)
+    {
+      const Vector& n = ps.normal(i);
+      usable += n == CGAL::NULL_VECTOR ? 0 : 1;
+      vertical += PSC::is_near_vertical(n.x(), n.y(), n.z()) ? 1 : 0;
+    }
+    const double share = usable ? std::round(1000.0 * double(vertical) / double(usable)) / 10 : 0.0;
+    choice.text = PSC::is_two_and_a_half_d(vertical, usable)
+                    ? cat("+z (LAS file, 2.5-D: ", share, "% of the normals within 60 degrees of the vertical; "
+                          "closed parts outward; --orient auto)")
+                    : cat("mst (LAS file, not 2.5-D: ", share, "% of the normals within 60 degrees of the "
+                          "vertical; closed parts outward, open parts up; --orient auto)");
+  }
   return without;
 }
 
@@ -386,11 +445,12 @@ void estimate_row(const Point_set& ps, const Estimates& estimates, std::size_t i
 {
   const Point& p = ps.point(*(ps.begin() + i));
   const Estimate& e = estimates[i];
-  const double v[16] = {p.x(), p.y(), p.z(), e.normal.x(), e.normal.y(), e.normal.z(),
-                        e.min_curvature, e.max_curvature, e.mean_curvature, e.gaussian_curvature,
-                        e.min_direction.x(), e.min_direction.y(), e.min_direction.z(),
-                        e.max_direction.x(), e.max_direction.y(), e.max_direction.z()};
-  std::copy(v, v + 16, r.value);
+  const double v[output_value_count] = {p.x(), p.y(), p.z(), e.normal.x(), e.normal.y(), e.normal.z(),
+                                        e.min_curvature, e.max_curvature, e.mean_curvature, e.gaussian_curvature,
+                                        e.min_direction.x(), e.min_direction.y(), e.min_direction.z(),
+                                        e.max_direction.x(), e.max_direction.y(), e.max_direction.z(),
+                                        e.normal_coherence};
+  std::copy(v, v + output_value_count, r.value);
   r.neighbors = static_cast<std::int32_t>(std::min<std::size_t>(e.neighbor_count, INT32_MAX));
   r.valid = e.is_valid() ? 1 : 0;
   r.status = static_cast<int>(e.status);
@@ -422,8 +482,27 @@ struct Run_context
   Progress_bar& progress;
   std::vector<std::string>& warnings;
   std::chrono::steady_clock::time_point start;
-  std::string method_label;
 };
+
+// "aso (robust variant)": the method and its options, for the summary and the output's header.
+std::string method_label(const Options& o, const Scale& scale)
+{
+  if(std::string(o.method->name) != "aso")
+    return o.method->name;
+  return cat("aso (", scale.variant == CGAL::Aso_variant::PAPER ? "paper's variant" : "robust variant",
+             scale.position_fit_blend > 0 ? cat(", blended with a position fit, weight ", scale.position_fit_blend)
+                                          : std::string(),
+             ")");
+}
+
+// The scale and estimator options of the run: the command line's, with the position fit
+// blended in by default when the normals are estimated (--position-blend).
+Scale estimation_scale(const Options& o, bool normals_estimated)
+{
+  Scale s = o.scale;
+  s.position_fit_blend = o.position_blend >= 0 ? o.position_blend : normals_estimated ? 0.5 : 0.0;
+  return s;
+}
 
 // Writes the n rows of `rows` (asked for in input order), coloured from the summary.
 void write_output(const Run_context& c, Temporary_output& output, const Scale& scale,
@@ -435,7 +514,7 @@ void write_output(const Run_context& c, Temporary_output& output, const Scale& s
   layout.format = lower_extension(o.output) == ".csv" ? Output_layout::CSV
                   : o.ascii                           ? Output_layout::ASCII_PLY
                                                       : Output_layout::BINARY_PLY;
-  layout.comments.push_back(cat("point_set_curvatures method ", c.method_label, ", ", scale_description(scale)));
+  layout.comments.push_back(cat("point_set_curvatures method ", method_label(o, scale), ", ", scale_description(scale)));
   layout.comments.push_back(cat("input ", o.input));
   int color_quantity = -1;
   double color_range = 0;
@@ -475,7 +554,7 @@ void write_output(const Run_context& c, Temporary_output& output, const Scale& s
 
 // The report on standard output, and the warnings (after the output is written, so that a
 // failure prints one line only).
-void print_report(const Run_context& c, const Scale& scale, std::size_t n, bool had_normals,
+void print_report(const Run_context& c, const Scale& scale, std::size_t n, const std::string& estimated_normals,
                   const Row_summary& summary, const std::string& times, const std::string& tiles)
 {
   const Options& o = c.o;
@@ -492,9 +571,11 @@ void print_report(const Run_context& c, const Scale& scale, std::size_t n, bool 
                CGAL::to_string(static_cast<CGAL::Curvature_estimate_status>(s.first)));
   const std::size_t valid = summary.valid();
   std::printf("%s: %s -> %s\n", program, o.input.c_str(), o.output.c_str());
-  std::printf("  method      %s: %s\n", c.method_label.c_str(), o.method->description);
+  std::printf("  method      %s: %s\n", method_label(o, scale).c_str(), o.method->description);
   std::printf("  scale       %s\n", scale_description(scale).c_str());
-  std::printf("  points      %zu%s\n", n, had_normals ? "" : " (normals estimated)");
+  std::printf("  points      %zu%s\n", n, estimated_normals.empty() ? "" : " (normals estimated)");
+  if(!estimated_normals.empty())
+    std::printf("  normals     %s\n", estimated_normals.c_str());
   if(!tiles.empty())
     std::printf("  tiles       %s\n", tiles.c_str());
   std::printf("  valid       %zu (%.2f %%)%s\n", valid, 100.0 * double(valid) / double(n), why.c_str());
@@ -515,7 +596,7 @@ double physical_memory()
 // The run on an input that does not fit in the memory limit: estimated in tiles
 // (tiled_run.h), bitwise as in memory.
 int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_options& read_options,
-                    const Scanned_input& input, double memory_limit)
+                    const Scanned_input& input, double memory_limit, const Orientation_choice& orientation)
 {
   const double count_seconds = seconds_since(c.start);
   const Options& o = c.o;
@@ -529,18 +610,18 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
   {
     if(o.require_normals)
       throw Error(cat(in_quotes(o.input), " has no normals (nx ny nz) and --require-normals was given"));
-    if(o.orientation.kind == CGAL::Normal_orientation::MINIMUM_SPANNING_TREE)
+    if(orientation.orientation.kind == CGAL::Normal_orientation::MINIMUM_SPANNING_TREE)
       throw Error(cat(too_large, " and has no normals: they are estimated tile by tile, which needs a local "
                       "orientation, --orient +z (airborne scans), another axis, or viewpoint:X,Y,Z (a spanning "
                       "tree spans the whole cloud); or raise --memory-limit"));
-    c.warnings.push_back(cat(in_quotes(o.input), " has no normals: estimating them (PCA of the ", o.normal_neighbors,
-                             " nearest neighbours, oriented by --orient ", o.orientation_text, "); a wrong "
-                             "orientation flips the sign of the curvatures"));
+    c.warnings.push_back(cat(in_quotes(o.input), " has no normals: estimating them (", normal_fit_description(o),
+                             ", oriented ", orientation.text, "); a wrong orientation flips the sign of the "
+                             "curvatures"));
   }
   if(!o.scale.by_count && o.scale.spacing_multiple > 0)
     throw Error(cat(too_large, ": --radius ", o.scale.spacing_multiple, "x needs the whole cloud for the average "
                     "spacing; give the radius as a length, or raise --memory-limit"));
-  const Scale& scale = o.scale;
+  const Scale scale = estimation_scale(o, !with_normals);
   Tiling tiling;
   tiling.memory_limit = memory_limit;
   if(scale.by_count)
@@ -552,7 +633,7 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
   tiling.interrupted = []() { return interrupted != 0; };
   // the normals' share of a tile's halo: first guessed from the density, then grown to what
   // the normal estimation asks for (per tile)
-  const double normal_halo_guess = with_normals ? 0.0 : density_halo(input, o.normal_neighbors);
+  const double normal_halo_guess = with_normals ? 0.0 : density_halo(input, normal_neighbor_count(o));
   tiling.extra_halo = normal_halo_guess;
   // the current tile's two halos, tracked apart (not recovered by a subtraction that could
   // round below what was asked for)
@@ -587,9 +668,11 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
       {
         CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
           *ps, PSC::parameters::neighbor_count(
-                 o.normal_neighbors, PSC::parameters::normal_orientation(
-                                       o.orientation, PSC::parameters::tile(normal_tile, CGAL::parameters::callback(
-                                                                                          progress)))));
+                 normal_neighbor_count(o),
+                 PSC::parameters::normal_fit(
+                   o.normal_fit, PSC::parameters::normal_orientation(
+                                   orientation.orientation,
+                                   PSC::parameters::tile(normal_tile, CGAL::parameters::callback(progress))))));
       }
       catch(const PSC::Halo_too_small& e)
       {
@@ -598,7 +681,7 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
       }
       if(interrupted)
         throw Cancelled();
-      if(o.orient_scanner)
+      if(orientation.scanner)
       {
         const std::array<int, 3> pulse = pulse_attributes(input.cloud.attributes);
         orient_towards_scanner(
@@ -648,10 +731,12 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
          s.first == int(CGAL::Curvature_estimate_status::NON_FINITE_POINT))
         without += s.second;
     if(without > 0)
-      c.warnings.push_back(cat(without, " points got no normal (coincident or collinear neighbours, non-finite "
+      c.warnings.push_back(cat(without, " points got no normal (coincident neighbours, neighbours along one line "
+                               "such as a single scan line: try a larger --normal-neighbors; non-finite "
                                "coordinates) and are invalid_normal"));
   }
-  print_report(c, scale, n, with_normals, summary,
+  print_report(c, scale, n,
+               with_normals ? std::string() : cat(normal_fit_description(o), ", oriented ", orientation.text), summary,
                cat("count ", s3(count_seconds), ", density ", s3(report.density_seconds), ", tile reads ",
                    s3(report.read_seconds), ", curvatures ", s3(report.estimate_seconds), ", tile rows ",
                    s3(report.rows_seconds),
@@ -693,17 +778,15 @@ int run(const Options& o)
   // Warnings are printed once the output is written, so that a failure prints one line only.
   std::vector<std::string> warnings;
   auto warn = [&](const std::string& message) { warnings.push_back(message); };
-  const Run_context context{o, progress, warnings, start,
-                            std::string(o.method->name) +
-                              (std::string(o.method->name) == "aso"
-                                 ? (o.scale.variant == CGAL::Aso_variant::PAPER ? " (paper's variant)" : " (robust variant)")
-                                 : "")};
+  const Run_context context{o, progress, warnings, start};
 
   // 1. Read, or count the points of a file too large for the memory limit.
   const double memory_limit = o.memory_limit > 0 ? o.memory_limit : 0.25 * physical_memory();
   Read_options read_options;
   read_options.columns = o.columns;
-  read_options.keep_attributes = !o.drop_attributes || o.orient_scanner;  // the pulses of --orient scanner
+  const bool las = lower_extension(o.input) == ".las";
+  // the pulses of --orient scanner, or of --orient auto on a LAS file
+  read_options.keep_attributes = !o.drop_attributes || o.orient_scanner || (las && o.orientation_text == "auto");
   read_options.progress = progress.phase("reading");
   Scanned_input input = read_or_scan(o.input, read_options, memory_limit > 0 ? memory_limit : HUGE_VAL);
   for(const std::string& w : input.cloud.warnings)
@@ -712,10 +795,12 @@ int run(const Options& o)
   if(o.orient_scanner && !input.cloud.has_normals() && *std::min_element(pulse.begin(), pulse.end()) < 0)
     throw Error(cat("--orient scanner: ", in_quotes(o.input), " holds no pulse directions (the wave packets of LAS point "
                     "formats 4, 5, 9 and 10); use --orient +z (airborne scans) or viewpoint:X,Y,Z"));
+  const bool has_pulses = *std::min_element(pulse.begin(), pulse.end()) >= 0;
+  Orientation_choice orientation = choose_orientation(o, las, has_pulses, !input.fits);
   if(!input.fits)
   {
     read_options.progress = Progress();
-    return run_tiled_input(context, output, read_options, input, memory_limit);
+    return run_tiled_input(context, output, read_options, input, memory_limit, orientation);
   }
   Point_set ps;
   const std::vector<Attribute> attributes = std::move(input.cloud.attributes);  // written after the estimates
@@ -731,15 +816,14 @@ int run(const Options& o)
   {
     if(o.require_normals)
       throw Error(cat(in_quotes(o.input), " has no normals (nx ny nz) and --require-normals was given"));
-    warn(cat(in_quotes(o.input), " has no normals: estimating them (PCA of the ", o.normal_neighbors,
-             " nearest neighbours, oriented by --orient ", o.orientation_text, "); a wrong orientation "
-             "flips the sign of the curvatures"));
-    const std::size_t without = estimate_normals(ps, o.normal_neighbors, o.orientation, progress.phase("normals"));
+    const std::size_t without = estimate_normals(ps, o, orientation, progress.phase("normals"));
     progress.finish();
+    warn(cat(in_quotes(o.input), " has no normals: estimating them (", normal_fit_description(o), ", oriented ",
+             orientation.text, "); a wrong orientation flips the sign of the curvatures"));
     if(without > 0)
-      warn(cat(without, " points got no normal (coincident or collinear neighbours, non-finite "
-               "coordinates) and are invalid_normal"));
-    if(o.orient_scanner)
+      warn(cat(without, " points got no normal (coincident neighbours, neighbours along one line such as a single "
+               "scan line: try a larger --normal-neighbors; non-finite coordinates) and are invalid_normal"));
+    if(orientation.scanner)
     {
       const std::size_t undirected = orient_towards_scanner(
         ps.size(), [&ps](std::size_t i) -> Vector& { return ps.normal(*(ps.begin() + i)); },
@@ -755,7 +839,7 @@ int run(const Options& o)
   check_interrupted();
 
   // 3. Average spacing, for --radius Nx.
-  Scale scale = o.scale;
+  Scale scale = estimation_scale(o, !had_normals);
   const auto spacing_start = std::chrono::steady_clock::now();
   if(!scale.by_count && scale.spacing_multiple > 0)
   {
@@ -792,7 +876,8 @@ int run(const Options& o)
   write_output(context, output, scale, o.drop_attributes ? no_attributes : attributes, ps.size(), summary,
                [&](std::size_t i, Output_row& r) { estimate_row(ps, estimates, i, r); });
   const double write_seconds = seconds_since(write_start);
-  print_report(context, scale, ps.size(), had_normals, summary,
+  print_report(context, scale, ps.size(),
+               had_normals ? std::string() : cat(normal_fit_description(o), ", oriented ", orientation.text), summary,
                cat("read ", s3(read_seconds), ", normals ", s3(normals_seconds), ", spacing ", s3(spacing_seconds),
                    ", curvatures ", s3(estimation_seconds), ", write ", s3(write_seconds)),
                "");

@@ -13,14 +13,14 @@
 
 namespace psc_tool {
 
-const char* const output_field_names[16] = {"x",      "y",      "z",      "nx",     "ny",     "nz",
-                                            "k_min",  "k_max",  "mean",   "gaussian", "dmin_x", "dmin_y",
-                                            "dmin_z", "dmax_x", "dmax_y", "dmax_z"};
+const char* const output_field_names[output_value_count] = {
+  "x",      "y",      "z",      "nx",     "ny",     "nz",     "k_min", "k_max",  "mean",
+  "gaussian", "dmin_x", "dmin_y", "dmin_z", "dmax_x", "dmax_y", "dmax_z", "normal_coherence"};
 
 const char* selectable_fields()
 {
   return "nx, ny, nz (or normal), k_min, k_max, mean, gaussian, dmin_x, dmin_y, dmin_z (or dmin), dmax_x, "
-         "dmax_y, dmax_z (or dmax), neighbors, valid";
+         "dmax_y, dmax_z (or dmax), normal_coherence, neighbors, valid";
 }
 
 std::vector<std::string> parse_fields(const std::string& text)
@@ -38,8 +38,8 @@ std::vector<std::string> parse_fields(const std::string& text)
       for(const char* axis : {"x", "y", "z"})
         names.push_back(group + axis);
     else if(name == "neighbors" || name == "valid" ||
-            std::find_if(output_field_names + 3, output_field_names + 16,
-                         [&](const char* f) { return name == f; }) != output_field_names + 16)
+            std::find_if(output_field_names + 3, output_field_names + output_value_count,
+                         [&](const char* f) { return name == f; }) != output_field_names + output_value_count)
       names.push_back(name);
     else
       throw Error(cat("--fields: unknown field ", in_quotes(name), " (x y z are always written; choose among ",
@@ -58,7 +58,7 @@ std::vector<Output_field> output_fields(const std::vector<std::string>& selected
     return selected.empty() || std::find(selected.begin(), selected.end(), name) != selected.end();
   };
   std::vector<Output_field> fields;
-  for(int i = 0; i < 16; ++i)
+  for(int i = 0; i < output_value_count; ++i)
     if(i < 3 || chosen(output_field_names[i]))
       fields.push_back(Output_field{output_field_names[i],
                                     float32 && i >= 3 ? Scalar_type::FLOAT32 : Scalar_type::FLOAT64,
@@ -73,7 +73,7 @@ std::vector<Output_field> output_fields(const std::vector<std::string>& selected
                                     Output_field::COLOR + c});
   // the tool's names, selected or not, are never an input's: no file where k_min could be
   // an older run's value
-  std::set<std::string> taken(output_field_names, output_field_names + 16);
+  std::set<std::string> taken(output_field_names, output_field_names + output_value_count);
   taken.insert("neighbors");
   taken.insert("valid");
   for(const Output_field& f : fields)
@@ -193,7 +193,7 @@ void write_point_cloud(std::FILE* f, const Output_layout& layout, std::size_t n,
     {
       const Output_field& field = layout.fields[c];
       const int s = field.source;
-      const double v = s < 16                               ? r.value[s]
+      const double v = s < output_value_count               ? r.value[s]
                        : s == Output_field::NEIGHBORS       ? double(r.neighbors)
                        : s == Output_field::VALID           ? double(r.valid)
                        : s < Output_field::ATTRIBUTE        ? double(r.color[s - Output_field::COLOR])

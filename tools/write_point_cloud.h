@@ -20,14 +20,15 @@
 
 namespace psc_tool {
 
-// The 16 doubles of a row, in order: x y z nx ny nz k_min k_max mean gaussian dmin_x dmin_y
-// dmin_z dmax_x dmax_y dmax_z; then neighbors (int), valid (uchar) and, with colours, red green
-// blue (uchar).
-extern const char* const output_field_names[16];
+// The doubles of a row, in order: x y z nx ny nz k_min k_max mean gaussian dmin_x dmin_y
+// dmin_z dmax_x dmax_y dmax_z normal_coherence; then neighbors (int), valid (uchar) and, with
+// colours, red green blue (uchar).
+constexpr int output_value_count = 17;
+extern const char* const output_field_names[output_value_count];
 
 struct Output_row
 {
-  double value[16];
+  double value[output_value_count];
   std::int32_t neighbors = 0;
   unsigned char valid = 0;
   unsigned char color[3] = {0, 0, 0};
@@ -40,7 +41,7 @@ struct Output_row
 // One column of the output: its name, its type, and where its value comes from.
 struct Output_field
 {
-  enum Source { VALUE = 0, NEIGHBORS = 16, VALID = 17, COLOR = 18, ATTRIBUTE = 100 };
+  enum Source { VALUE = 0, NEIGHBORS = output_value_count, VALID, COLOR, ATTRIBUTE = 100 };
   std::string name;
   Scalar_type type = Scalar_type::FLOAT64;
   int source = 0;  // VALUE + i: Output_row::value[i]; COLOR + c; ATTRIBUTE + j: attribute j

@@ -79,6 +79,9 @@ Aso_estimator aso_estimator_from(const NamedParameters& np)
   settings.kernel_exponent = kernel_exponent(kernel);
   settings.orient_neighbors = choose_parameter(get_parameter(np, internal_np::robust_orientation), !paper);
   settings.normal_field_blend = choose_parameter(get_parameter(np, internal_np::normal_field_blend), !paper);
+  settings.position_fit_blend = choose_parameter(get_parameter(np, internal_np::position_fit_blend), 0.0);
+  if(!(settings.position_fit_blend >= 0 && settings.position_fit_blend <= 1))
+    throw std::invalid_argument("estimate_aso_curvatures: parameter 'position_fit_blend' must lie in [0, 1]");
   Aso_estimator estimator(settings);
   estimator.sample_weights = choose_parameter(get_parameter(np, internal_np::sample_weights),
                                               paper ? Sample_weights::UNIFORM : Sample_weights::TANGENT_VORONOI_AREA) ==
@@ -223,6 +226,14 @@ Aso_estimator aso_estimator_from(const NamedParameters& np)
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true` (`false` with `Aso_variant::PAPER`)}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{Point_set_curvatures::parameters::position_fit_blend}
+///     \cgalParamDescription{for normals estimated from the positions: the weight `w` of the
+///       shape operator of a quadric fitted to the neighbours' positions alone, blended with
+///       the ASO's as `(1 - w) ASO + w quadric` (`w` in `[0, 1]`; `std::invalid_argument`
+///       otherwise). 0.5 brings the error on scans without normals to that with exact normals}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{0}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{Point_set_curvatures::parameters::normal_refinement}
 ///     \cgalParamDescription{the number of passes that replace the input normals by the
 ///       corrected normals of an APSS sphere fit (kernel `(1 - d²/r²)²`) before the
@@ -256,7 +267,7 @@ Aso_estimator aso_estimator_from(const NamedParameters& np)
 /// \cgalNamedParamsEnd
 ///
 /// \throws std::invalid_argument if `radius` is not positive and finite, or if
-/// `weight_kernel` is `CONSTANT`.
+/// `weight_kernel` is `CONSTANT`, or `position_fit_blend` lies outside `[0, 1]`.
 /// \throws std::length_error with 2^32 points or more.
 ///
 /// \sa `CGAL::Algebraic_shape_operator_fit` to evaluate at other positions or with your own

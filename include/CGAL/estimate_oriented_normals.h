@@ -1,15 +1,17 @@
 // Copyright (c) 2026 The Point_set_curvatures authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// Oriented normals for clouds that have none (most LiDAR scans): PCA normals on the package's
-// neighbourhood driver, then an orientation along a vector, towards a point (the scanner),
-// or propagated along a minimum spanning tree of the neighbourhood graph.
+// Oriented normals for clouds that have none (most LiDAR scans): the normals of a weighted
+// quadric or of the PCA plane of each neighbourhood, on the package's neighbourhood driver,
+// then an orientation along a vector, towards a point (the scanner), or propagated along a
+// minimum spanning tree of the neighbourhood graph.
 
 #ifndef CGAL_ESTIMATE_ORIENTED_NORMALS_H
 #define CGAL_ESTIMATE_ORIENTED_NORMALS_H
 
 #include <CGAL/Point_set_curvatures/internal/estimate_at_every_point.h>
 #include <CGAL/Point_set_curvatures/internal/pca_plane.h>
+#include <CGAL/Point_set_curvatures/internal/quadric_fit.h>
 #include <CGAL/Point_set_curvatures/parameters.h>
 
 #include <CGAL/property_map.h>
@@ -31,13 +33,23 @@ struct Normal_orientation
   enum Kind
   {
     /// Propagation along a minimum spanning tree of the neighbourhood graph weighted by
-    /// `1 - |n_i . n_j|` (Hoppe et al. 1992), started in each connected part at its highest
-    /// point (largest z), whose normal points to +z. For closed or unknown shapes. Default.
+    /// `1 - |n_i . n_j|` (Hoppe et al. 1992), in each connected part from its highest point;
+    /// then each part's sign is chosen as a whole: outward where the part looks closed (the
+    /// mean of its unit normals shorter than 0.5, and `|sum (p - c) . n|` at least 0.3
+    /// `sum |p - c|`, `c` the part's centroid), which makes `sum (p - c) . n` positive (three
+    /// times the enclosed volume for a closed surface with outward normals, by the divergence
+    /// theorem); otherwise (an open surface: a terrain, a street, one side of an object) the
+    /// side where the mean normal points up (+z). For closed or unknown shapes. Default.
     MINIMUM_SPANNING_TREE,
     /// Every normal makes a non-negative dot product with `vector` (airborne scans: +z).
     ALONG_VECTOR,
     /// Every normal points towards `point` (a scanner or camera position).
-    TOWARDS_POINT
+    TOWARDS_POINT,
+    /// Along a minimum spanning tree as `MINIMUM_SPANNING_TREE`; then, if the cloud is 2.5-D
+    /// (airborne and mobile scans, seen from above: at least 60% of the estimated normals
+    /// within 60 degrees of the vertical, see `CGAL::Point_set_curvatures::is_two_and_a_half_d()`),
+    /// every normal of the open parts along +z (closed parts stay outward).
+    AUTOMATIC
   };
   Kind kind = MINIMUM_SPANNING_TREE;
   double target[3] = {0, 0, 1};  ///< the vector or the point
@@ -59,11 +71,32 @@ struct Normal_orientation
     o.kind = TOWARDS_POINT;
     return o;
   }
+  /// the spanning tree, with the open parts of 2.5-D clouds along +z
+  static Normal_orientation automatic()
+  {
+    Normal_orientation o;
+    o.kind = AUTOMATIC;
+    return o;
+  }
+};
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// What `CGAL::estimate_oriented_normals()` fits to each neighbourhood.
+enum class Normal_fit
+{
+  /// the least-squares plane of the neighbours (principal component analysis, unweighted):
+  /// biased by the curvature to first order, and rough from point to point
+  PLANE,
+  /// a quadric height field over the weighted PCA plane, fitted by weighted least squares
+  /// with the weights `(1 - d²/r²)²` (smooth from point to point), its anisotropic part
+  /// slightly penalised so that neighbourhoods on two or three scan lines stay determined
+  QUADRIC
 };
 
 namespace Point_set_curvatures {
 namespace internal_np {
 enum normal_orientation_t { normal_orientation };
+enum normal_fit_t { normal_fit };
 } // namespace internal_np
 
 namespace parameters {
@@ -76,15 +109,58 @@ normal_orientation(const Normal_orientation& o, const NamedParameters& np = CGAL
   return CGAL::Named_function_parameters<Normal_orientation, internal_np::normal_orientation_t,
                                          NamedParameters>(o, np);
 }
+/// \ingroup PkgPointSetCurvaturesRef
+/// Named parameter of `CGAL::estimate_oriented_normals()`: what is fitted to each
+/// neighbourhood (`CGAL::Normal_fit`).
+template <class NamedParameters = CGAL::parameters::Default_named_parameters>
+CGAL::Named_function_parameters<Normal_fit, internal_np::normal_fit_t, NamedParameters>
+normal_fit(Normal_fit fit, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return CGAL::Named_function_parameters<Normal_fit, internal_np::normal_fit_t, NamedParameters>(fit, np);
+}
 } // namespace parameters
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// The least share of near-vertical normals of a 2.5-D cloud (see `is_two_and_a_half_d()`).
+constexpr double two_and_a_half_d_min_share = 0.6;
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// True if a cloud whose normals (orientation and length ignored) are `vertical` near-vertical
+/// ones (within 60 degrees of the z axis, `|n_z| >= 0.5 |n|`) out of `count` non-zero ones
+/// looks 2.5-D, as airborne and mobile scans seen from above do: at least 60% of them. An
+/// airborne tile with trees has about 85 to 97% (the normals of vegetation point anywhere),
+/// a closed object about 50%, a terrestrial scan of a street 44% (measured on the real files
+/// of benchmark/README.md). Used by `Normal_orientation::automatic()`.
+inline bool is_two_and_a_half_d(std::size_t vertical, std::size_t count)
+{
+  return count > 0 && double(vertical) >= two_and_a_half_d_min_share * double(count);
+}
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// True if `n` lies within 60 degrees of the z axis, either way (`|n_z| >= 0.5 |n|`), for
+/// `is_two_and_a_half_d()`; false for a zero vector.
+inline bool is_near_vertical(double nx, double ny, double nz)
+{
+  const double l2 = nx * nx + ny * ny + nz * nz;
+  return l2 > 0 && nz * nz >= 0.25 * l2;
+}
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// The default neighbour count of `CGAL::estimate_oriented_normals()` for a fit: 40 for the
+/// quadric (its best count for the ASO at 40 neighbours on simulated scans, benchmark/README.md
+/// "Scans without normals"), 18 for the plane.
+inline std::size_t default_normal_neighbors(Normal_fit fit)
+{
+  return fit == Normal_fit::QUADRIC ? 40 : 18;
+}
 
 namespace internal {
 
 // Degree of the neighbourhood graph of the spanning tree: each point's nearest neighbours.
 constexpr std::size_t normal_graph_degree = 12;
 
-// Per point: the unoriented PCA normal and its nearest neighbours (input indices).
-struct Pca_normal_record
+// Per point: the unoriented normal and its nearest neighbours (input indices).
+struct Normal_record
 {
   double normal[3] = {0, 0, 0};
   std::uint32_t neighbor[normal_graph_degree];
@@ -92,21 +168,41 @@ struct Pca_normal_record
   Curvature_estimate_status status = Curvature_estimate_status::NOT_COMPUTED;
 };
 
-inline Pca_normal_record pca_normal_record(const Neighborhood& nb)
+// The evaluation of the driver: the fit's normal (neighbourhoods spread along one line only,
+// such as one LiDAR scan line, have none: DEGENERATE_FIT) and the nearest neighbours.
+struct Normal_at_point
 {
-  Pca_normal_record r;
-  Neighborhood_pca pca;
-  if(nb.size < pca_plane_min_neighbors)
+  Normal_fit fit;
+  Normal_record operator()(const Neighborhood& nb) const;
+};
+
+inline Normal_record Normal_at_point::operator()(const Neighborhood& nb) const
+{
+  Normal_record r;
+  const std::size_t least = fit == Normal_fit::QUADRIC ? quadratic_height_coefficients : pca_plane_min_neighbors;
+  if(nb.size < least)
   {
     r.status = Curvature_estimate_status::TOO_FEW_NEIGHBORS;
     return r;
   }
-  if(!pca.compute(nb))
+  bool found = false;
+  if(fit == Normal_fit::QUADRIC)
+  {
+    Quadric_fit quadric;
+    found = quadric.compute(nb) && quadric.normal(r.normal);
+  }
+  else
+  {
+    Neighborhood_pca pca;
+    found = pca.compute(nb) && spreads_in_two_directions(pca.values);
+    if(found)
+      std::copy(pca.vectors[0], pca.vectors[0] + 3, r.normal);
+  }
+  if(!found)
   {
     r.status = Curvature_estimate_status::DEGENERATE_FIT;
     return r;
   }
-  std::copy(pca.vectors[0], pca.vectors[0] + 3, r.normal);
   r.status = Curvature_estimate_status::VALID;
   // the nearest neighbours other than the point itself, ties by input index
   std::pair<double, std::uint32_t> candidates[64];
@@ -135,13 +231,59 @@ inline Pca_normal_record pca_normal_record(const Neighborhood& nb)
   return r;
 }
 
+// Turns the normals of one connected part (`part`, input indices) as a whole: outward if the
+// part looks closed, else up (Normal_orientation::MINIMUM_SPANNING_TREE), or with `upward`
+// each normal of an open part to +z (Normal_orientation::AUTOMATIC on a 2.5-D cloud). `xyz`
+// and `n` hold 3 values per point. Closed: the mean of the unit normals is shorter than 0.5 (it vanishes on a
+// closed surface sampled evenly; it is 0.5 on a hemisphere) and the flux sum (p - c) . n is at
+// least 0.3 sum |p - c| in magnitude (1 on a sphere, 0.57 on a torus of radii 1 and 0.4;
+// 0.1 on a terrestrial street scan, whose normals also nearly cancel).
+inline void choose_part_sign(const std::vector<std::uint32_t>& part, const std::vector<double>& xyz,
+                             std::vector<double>& n, bool upward)
+{
+  if(part.empty())
+    return;
+  double m[3] = {0, 0, 0}, c[3] = {0, 0, 0};
+  for(std::uint32_t i : part)
+    for(int a = 0; a < 3; ++a)
+    {
+      m[a] += n[3 * std::size_t(i) + a];
+      c[a] += xyz[3 * std::size_t(i) + a];
+    }
+  const double count = double(part.size());
+  for(double& x : c)
+    x /= count;
+  double flux = 0, spread = 0;
+  for(std::uint32_t i : part)
+  {
+    const double d[3] = {xyz[3 * std::size_t(i)] - c[0], xyz[3 * std::size_t(i) + 1] - c[1],
+                         xyz[3 * std::size_t(i) + 2] - c[2]};
+    flux += d[0] * n[3 * std::size_t(i)] + d[1] * n[3 * std::size_t(i) + 1] + d[2] * n[3 * std::size_t(i) + 2];
+    spread += std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  }
+  const bool closed = m[0] * m[0] + m[1] * m[1] + m[2] * m[2] < 0.25 * count * count &&
+                      std::abs(flux) >= 0.3 * spread;
+  if(upward && !closed)
+  {
+    for(std::uint32_t i : part)
+      if(n[3 * std::size_t(i) + 2] < 0)
+        for(int a = 0; a < 3; ++a)
+          n[3 * std::size_t(i) + a] = -n[3 * std::size_t(i) + a];
+    return;
+  }
+  if((closed ? flux : m[2]) < 0)
+    for(std::uint32_t i : part)
+      for(int a = 0; a < 3; ++a)
+        n[3 * std::size_t(i) + a] = -n[3 * std::size_t(i) + a];
+}
+
 // Orients the unit normals `n` (3 per point; records that are not VALID have none) by Prim's
 // algorithm on the symmetric graph of the records' neighbours, weights 1 - |n_i . n_j|
-// (quantized), from the highest unvisited usable point of each connected part (its normal
-// set to point to +z). Deterministic. `progress` gets the fraction of
-// the points visited; returns false if cancelled.
-inline bool orient_along_spanning_tree(const std::vector<Pca_normal_record>& records,
-                                       const std::vector<double>& z, std::vector<double>& n,
+// (quantized), from the highest unvisited usable point of each connected part; then turns
+// each part as a whole (choose_part_sign(), with `upward`). Deterministic. `progress` gets the
+// fraction of the points visited; returns false if cancelled.
+inline bool orient_along_spanning_tree(const std::vector<Normal_record>& records,
+                                       const std::vector<double>& xyz, std::vector<double>& n, bool upward,
                                        const std::function<bool(double)>& progress)
 {
   const std::size_t count = records.size();
@@ -176,8 +318,9 @@ inline bool orient_along_spanning_tree(const std::vector<Pca_normal_record>& rec
   for(std::size_t i = 0; i < count; ++i)
     if(usable(i))
       by_height.push_back(static_cast<std::uint32_t>(i));
+  auto z = [&xyz](std::uint32_t i) { return xyz[3 * std::size_t(i) + 2]; };
   std::sort(by_height.begin(), by_height.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return z[a] > z[b] || (z[a] == z[b] && a < b);
+    return z(a) > z(b) || (z(a) == z(b) && a < b);
   });
 
   // The candidate edges, by weight quantized to 1/4096 (a bucket queue: O(1) per edge, where
@@ -187,10 +330,12 @@ inline bool orient_along_spanning_tree(const std::vector<Pca_normal_record>& rec
   std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t> > > queue(buckets);
   std::size_t lowest = buckets, queued = 0;
   std::vector<char> visited(count, 0);
+  std::vector<std::uint32_t> part;  // the points of the current connected part
   const std::size_t step = std::max<std::size_t>(1, by_height.size() / 100);
   std::size_t done = 0;
   auto visit = [&](std::uint32_t i) {
     visited[i] = 1;
+    part.push_back(i);
     const double* ni = &n[3 * std::size_t(i)];
     for(std::size_t a = offset[i]; a < offset[i + 1]; ++a)
     {
@@ -211,9 +356,7 @@ inline bool orient_along_spanning_tree(const std::vector<Pca_normal_record>& rec
   {
     if(visited[seed])
       continue;
-    if(n[3 * std::size_t(seed) + 2] < 0)
-      for(int a = 0; a < 3; ++a)
-        n[3 * std::size_t(seed) + a] = -n[3 * std::size_t(seed) + a];
+    part.clear();
     if(!visit(seed))
       return false;
     while(queued > 0)
@@ -234,6 +377,7 @@ inline bool orient_along_spanning_tree(const std::vector<Pca_normal_record>& rec
         return false;
     }
     lowest = buckets;
+    choose_part_sign(part, xyz, n, upward);
   }
   return true;
 }
@@ -252,8 +396,9 @@ std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, dou
                 "Error: no normal map. Pass CGAL::parameters::normal_map(...): the normals are "
                 "written there.");
   const char* name = "estimate_oriented_normals";
+  const Normal_fit fit = choose_parameter(get_parameter(np, internal_np::normal_fit), Normal_fit::QUADRIC);
   const std::size_t k = choose_parameter(get_parameter(np, internal_np::neighbor_count),
-                                         radius_given ? std::size_t(0) : std::size_t(18));
+                                         radius_given ? std::size_t(0) : default_normal_neighbors(fit));
   check_scale(radius, k, !radius_given, name);
   const Normal_orientation orientation =
     choose_parameter(get_parameter(np, internal_np::normal_orientation), Normal_orientation());
@@ -262,41 +407,56 @@ std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, dou
       throw std::invalid_argument("estimate_oriented_normals: parameter 'normal_orientation' needs a finite target");
   const std::function<bool(double)> callback =
     choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
-  const bool tree = orientation.kind == Normal_orientation::MINIMUM_SPANNING_TREE;
+  // the spanning tree (which AUTOMATIC may choose) spans the whole cloud
+  const bool global = orientation.kind == Normal_orientation::MINIMUM_SPANNING_TREE ||
+                      orientation.kind == Normal_orientation::AUTOMATIC;
 
-  // 1. PCA normals and nearest neighbours, on the driver (the input normals are not read).
+  // 1. Unoriented normals and nearest neighbours, on the driver (the input normals are not read).
   Neighborhood_options options;
   options.function_name = name;
   options.tile = choose_parameter(get_parameter(np, internal_np::tile), Tile::whole_space());
   options.has_tile = !options.tile.is_whole_space();
-  if(options.has_tile && tree)
+  if(options.has_tile && global)
     throw std::invalid_argument("estimate_oriented_normals: parameter 'tile' needs an orientation along a vector "
-                                "or towards a point: a spanning tree spans the whole cloud");
+                                "or towards a point: a spanning tree, and the automatic choice, need the whole cloud");
   bool cancelled = false;
   if(callback)
-    options.callback = [&callback, &cancelled, tree](double f) {
-      const bool go_on = callback(tree ? 0.7 * f : f);
+    options.callback = [&callback, &cancelled, global](double f) {
+      const bool go_on = callback(global ? 0.7 * f : f);
       cancelled = cancelled || !go_on;
       return go_on;
     };
   const auto point_map = NP_helper::get_const_point_map(points, np);
   typedef typename boost::property_traits<decltype(point_map)>::key_type Key;
   const CGAL::Constant_property_map<Key, Vector_3> no_normal(Vector_3(0, 0, 1));
-  const std::vector<Pca_normal_record> records = evaluate_with_maps<Pca_normal_record, ConcurrencyTag>(
-    points, radius_given, radius, k, point_map, no_normal, options, &pca_normal_record);
+  const std::vector<Normal_record> records = evaluate_with_maps<Normal_record, ConcurrencyTag>(
+    points, radius_given, radius, k, point_map, no_normal, options, Normal_at_point{fit});
   if(!options.has_tile)  // (with a tile, the other points are not computed)
-    for(const Pca_normal_record& r : records)
+    for(const Normal_record& r : records)
       cancelled = cancelled || r.status == Curvature_estimate_status::NOT_COMPUTED;
 
   // 2. Orientation.
   const std::size_t count = records.size();
-  std::vector<double> n(3 * count, 0.0), z(count, 0.0);
+  bool upward = false;  // AUTOMATIC on a 2.5-D cloud
+  if(orientation.kind == Normal_orientation::AUTOMATIC)
+  {
+    std::size_t usable = 0, vertical = 0;
+    for(const Normal_record& r : records)
+      if(r.status == Curvature_estimate_status::VALID)
+      {
+        ++usable;
+        vertical += is_near_vertical(r.normal[0], r.normal[1], r.normal[2]) ? 1 : 0;
+      }
+    upward = is_two_and_a_half_d(vertical, usable);
+  }
+  const bool tree = global;
+  std::vector<double> n(3 * count, 0.0), xyz(3 * count, 0.0);
   std::size_t i = 0;
   for(auto it = points.begin(); it != points.end(); ++it, ++i)
   {
     const auto& p = get(point_map, *it);
     const double x[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
-    z[i] = x[2];
+    std::copy(x, x + 3, &xyz[3 * i]);
     if(records[i].status != Curvature_estimate_status::VALID)
       continue;
     std::copy(records[i].normal, records[i].normal + 3, &n[3 * i]);
@@ -315,7 +475,7 @@ std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, dou
     std::function<bool(double)> tree_progress;
     if(callback)
       tree_progress = [&callback](double f) { return callback(0.7 + 0.3 * f); };
-    cancelled = !orient_along_spanning_tree(records, z, n, tree_progress);
+    cancelled = !orient_along_spanning_tree(records, xyz, n, upward, tree_progress);
   }
 
   // 3. Output: the normals, zero where there is none (those points are then INVALID_NORMAL
@@ -340,16 +500,33 @@ std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, dou
 /// \ingroup PkgPointSetCurvaturesRef
 ///
 /// Estimates an oriented unit normal at every point of a point cloud without normals (most
-/// LiDAR scans) and writes it through `normal_map`: the normal of the least-squares plane of
-/// the point's `k` nearest neighbours (itself included; principal component analysis, on the
-/// package's neighbourhood driver, in parallel with `CGAL::Parallel_tag`), then oriented as
+/// LiDAR scans) and writes it through `normal_map`: the normal of a fit of the point's `k`
+/// nearest neighbours (itself included), on the package's neighbourhood driver (in parallel
+/// with `CGAL::Parallel_tag`), then oriented as
 /// `Point_set_curvatures::parameters::normal_orientation` says: along a minimum spanning
-/// tree of the graph of each point's 12 nearest neighbours (default), along a vector, or
-/// towards a point. The result is the input the curvature estimators of this package need.
+/// tree of the graph of each point's 12 nearest neighbours with each connected part's sign
+/// chosen outward if it is closed, up if it is open (default), along a vector, towards a
+/// point, or the spanning tree with every normal of its open parts along +z if the cloud is
+/// 2.5-D (`CGAL::Normal_orientation`). The result is the input the curvature estimators of this
+/// package need.
 ///
-/// Points whose normal cannot be estimated (non-finite coordinates, fewer than 3 neighbours,
-/// coincident or collinear neighbours) get a zero normal, which the estimators report as
-/// `INVALID_NORMAL`; so do all points if the run is cancelled through `callback`.
+/// The fit (`Point_set_curvatures::parameters::normal_fit`) is by default a weighted quadric
+/// (`CGAL::Normal_fit::QUADRIC`, 40 neighbours): its normals are nearly free of the
+/// curvature's bias and vary smoothly from point to point, which the ASO needs since it
+/// differentiates the normal field. Measured on simulated scans (benchmark/README.md, "Scans
+/// without normals"): with the PCA plane of 18 neighbours the default ASO's mean error of `H`
+/// was 25x (terrestrial scan of a torus), 2.5x (airborne scan lines) and 6x (two merged
+/// terrestrial scans) its error with exact normals; with the quadric 1.5x, 1.3x and 1.5x, and
+/// with `position_fit_blend(0.5)` 1.4x, 1.1x and 1.0x. `CGAL::Normal_fit::PLANE` is the
+/// PCA plane (18 neighbours by default).
+///
+/// Points whose normal cannot be estimated get a zero normal, which the estimators report as
+/// `INVALID_NORMAL`: non-finite coordinates, too few neighbours (3 for the plane, 6 for the
+/// quadric), coincident neighbours, and neighbourhoods spread along one line only (the ratio
+/// of the second to the first standard deviation of the positions below 0.05: one LiDAR scan
+/// line at a neighbourhood smaller than the distance between lines, where any normal about the
+/// line would fit; give a larger `k`). So do all points if the run is cancelled through
+/// `callback`.
 /// Sequential and parallel runs give identical normals.
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag`
@@ -370,28 +547,34 @@ std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, dou
 ///     \cgalParamDescription{a property map in which the normals are written. Required.}
 ///     \cgalParamType{a model of `WritablePropertyMap` whose value type is `geom_traits::Vector_3`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{Point_set_curvatures::parameters::normal_fit}
+///     \cgalParamDescription{what is fitted to each neighbourhood}
+///     \cgalParamType{`CGAL::Normal_fit`}
+///     \cgalParamDefault{`CGAL::Normal_fit::QUADRIC`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{Point_set_curvatures::parameters::neighbor_count}
-///     \cgalParamDescription{the number `k` of nearest neighbours of the PCA, the point included}
+///     \cgalParamDescription{the number `k` of nearest neighbours of the fit, the point included}
 ///     \cgalParamType{`std::size_t`}
-///     \cgalParamDefault{18}
+///     \cgalParamDefault{40 for `Normal_fit::QUADRIC`, 18 for `Normal_fit::PLANE`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Point_set_curvatures::parameters::normal_orientation}
-///     \cgalParamDescription{how the normals are oriented}
+///     \cgalParamDescription{how the normals are oriented (`CGAL::Normal_orientation`)}
 ///     \cgalParamType{`CGAL::Normal_orientation`}
 ///     \cgalParamDefault{`CGAL::Normal_orientation::minimum_spanning_tree()`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Point_set_curvatures::parameters::tile}
 ///     \cgalParamDescription{normals of the tile's own points only, bitwise as for the whole
 ///       cloud (`CGAL::Point_set_curvatures::Tile`; the other points get a zero normal); with
-///       an orientation along a vector or towards a point only (the spanning tree spans the
-///       cloud: `std::invalid_argument`). By count, a halo too small for a point's `k` nearest
+///       an orientation along a vector or towards a point only (the spanning tree and the
+///       automatic choice need the whole cloud: `std::invalid_argument`). By count, a halo too small for a point's `k` nearest
 ///       throws `CGAL::Point_set_curvatures::Halo_too_small`.}
 ///     \cgalParamType{`CGAL::Point_set_curvatures::Tile`}
 ///     \cgalParamDefault{no tile: every point}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{callback}
 ///     \cgalParamDescription{called from the calling thread with the fraction done, at least
-///       every 1% of the points (the PCA is the first 70% with the spanning tree); returning
+///       every 1% of the points (the fit is the first 70% with the spanning tree and the
+///       automatic orientation); returning
 ///       `false` cancels}
 ///     \cgalParamType{`std::function<bool(double)>`}
 ///     \cgalParamDefault{no callback}
@@ -404,7 +587,7 @@ std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, dou
 /// \cgalNamedParamsEnd
 ///
 /// \throws std::invalid_argument for a `neighbor_count` of 0, a non-finite orientation target,
-/// or a tile with the spanning tree.
+/// or a tile with the spanning tree or the automatic orientation.
 template <typename ConcurrencyTag, typename PointRange,
           typename NamedParameters = parameters::Default_named_parameters>
 std::size_t estimate_oriented_normals(PointRange& points,

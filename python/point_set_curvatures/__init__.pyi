@@ -56,13 +56,15 @@ def estimate_curvatures(
     robust_orientation: Optional[bool] = None,
     normal_field_blend: Optional[bool] = None,
     normal_refinement: Optional[int] = None,
+    position_fit_blend: Optional[float] = None,
     aso_projection: Optional[Literal["corrected_normal", "authors_implementation"]] = None,
     degree_fitting: Optional[int] = None,
     degree_monge: Optional[int] = None,
     vcm_offset_radius: Optional[float] = None,
 ) -> Result:
     """Curvatures at every point: dict with normal (N,3), k_min, k_max, mean, gaussian,
-    min_direction (N,3), max_direction (N,3), neighbors (int64), status (uint8, Status)."""
+    normal_coherence, min_direction (N,3), max_direction (N,3), neighbors (int64), status
+    (uint8, Status)."""
 
 def estimate_sphere_features(
     points: ArrayN3,
@@ -142,6 +144,7 @@ def estimate_normals(
     neighbors: Optional[int] = None,
     radius: Optional[float] = None,
     orientation: Orientation = "mst",
+    fit: Literal["quadric", "plane"] = "quadric",
     threads: Optional[int] = None,
     progress: Progress = None,
 ) -> np.ndarray:

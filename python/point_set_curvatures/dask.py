@@ -36,7 +36,7 @@ from . import HaloTooSmall, Status, TileGrid, _weights, estimate_curvatures as _
 __all__ = ["estimate_curvatures", "estimate_curvatures_file", "read_result", "estimate_tile", "RESULT_DTYPE"]
 
 _FIELDS3 = ("normal", "min_direction", "max_direction")
-_FIELDS1 = ("k_min", "k_max", "mean", "gaussian")
+_FIELDS1 = ("k_min", "k_max", "mean", "gaussian", "normal_coherence")
 
 
 
@@ -211,6 +211,7 @@ RESULT_DTYPE = np.dtype([
     ("k_max", "<f8"),
     ("mean", "<f8"),
     ("gaussian", "<f8"),
+    ("normal_coherence", "<f8"),
     ("min_direction", "<f8", (3,)),
     ("max_direction", "<f8", (3,)),
     ("neighbors", "<i8"),

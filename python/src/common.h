@@ -45,6 +45,7 @@ struct Options
   int robust_orientation = -1;  // 0 / 1
   int normal_field_blend = -1;  // 0 / 1
   long long normal_refinement = 0;
+  double position_fit_blend = 0;  // [0, 1]
   int aso_projection = 0;       // CGAL::Aso_projection: 0 CORRECTED_NORMAL, 1 AUTHORS_IMPLEMENTATION
   // jets
   long long degree_fitting = 2;

@@ -85,8 +85,8 @@ std::vector<CGAL::Curvature_estimate_status> smooth_point_set(Cloud& cloud, doub
   return CGAL::apss_smooth_point_set<CGAL::Sequential_tag>(cloud, radius, np);
 }
 
-std::size_t oriented_normals(Cloud& cloud, const Scale& s, int orientation, const double target[3], bool parallel,
-                             const Callback& cb)
+std::size_t oriented_normals(Cloud& cloud, const Scale& s, int orientation, const double target[3], int fit,
+                             bool parallel, const Callback& cb)
 {
   namespace P = CGAL::Point_set_curvatures::parameters;
   CGAL::Normal_orientation o = CGAL::Normal_orientation::minimum_spanning_tree();
@@ -94,11 +94,13 @@ std::size_t oriented_normals(Cloud& cloud, const Scale& s, int orientation, cons
     o = CGAL::Normal_orientation::along_vector(target[0], target[1], target[2]);
   else if(orientation == 2)
     o = CGAL::Normal_orientation::towards_point(target[0], target[1], target[2]);
-  const auto np = P::normal_orientation(o,
+  else if(orientation == 3)
+    o = CGAL::Normal_orientation::automatic();
+  const auto np = P::normal_orientation(o, P::normal_fit(fit == 0 ? CGAL::Normal_fit::PLANE : CGAL::Normal_fit::QUADRIC,
                     P::neighbor_count(s.by_count ? s.k : 0,
                       CGAL::parameters::point_map(CGAL::First_of_pair_property_map<Oriented>())
                         .normal_map(CGAL::Second_of_pair_property_map<Oriented>())
-                        .callback(cb)));
+                        .callback(cb))));
   if(parallel)
     return s.by_count ? CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(cloud, np)
                       : CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(cloud, s.radius, np);

@@ -23,9 +23,10 @@ std::vector<std::vector<Features> > multiscale_sphere_features(const Cloud&, con
 std::vector<CGAL::Curvature_estimate_status> smooth_point_set(Cloud& cloud, double radius, long long iterations,
                                                               bool update_normals, const Options&, bool parallel,
                                                               const Callback&);
-// Writes the normals into cloud[i].second; orientation: 0 spanning tree, 1 along, 2 towards.
-std::size_t oriented_normals(Cloud& cloud, const Scale&, int orientation, const double target[3], bool parallel,
-                             const Callback&);
+// Writes the normals into cloud[i].second; orientation: 0 spanning tree, 1 along, 2 towards,
+// 3 automatic; fit: 0 plane, 1 quadric (CGAL::Normal_fit).
+std::size_t oriented_normals(Cloud& cloud, const Scale&, int orientation, const double target[3], int fit,
+                             bool parallel, const Callback&);
 
 } // namespace psc_py
 

@@ -320,8 +320,9 @@ py::dict estimates_to_dict(const std::vector<Estimate>& e)
   auto count = array_1<std::int64_t>(n);
   auto status = array_1<std::uint8_t>(n);
   double *pn = normal.mutable_data(), *pdmin = dmin.mutable_data(), *pdmax = dmax.mutable_data();
+  auto coherence = array_1<double>(n);
   double *pkmin = kmin.mutable_data(), *pkmax = kmax.mutable_data(), *pmean = mean.mutable_data(),
-         *pgauss = gauss.mutable_data();
+         *pgauss = gauss.mutable_data(), *pcoherence = coherence.mutable_data();
   std::int64_t* pc = count.mutable_data();
   std::uint8_t* ps = status.mutable_data();
   {
@@ -335,6 +336,7 @@ py::dict estimates_to_dict(const std::vector<Estimate>& e)
       pkmax[i] = e[i].max_curvature;
       pmean[i] = e[i].mean_curvature;
       pgauss[i] = e[i].gaussian_curvature;
+      pcoherence[i] = e[i].normal_coherence;
       pc[i] = static_cast<std::int64_t>(e[i].neighbor_count);
       ps[i] = static_cast<std::uint8_t>(e[i].status);
     }
@@ -345,6 +347,7 @@ py::dict estimates_to_dict(const std::vector<Estimate>& e)
   d["k_max"] = kmax;
   d["mean"] = mean;
   d["gaussian"] = gauss;
+  d["normal_coherence"] = coherence;
   d["min_direction"] = dmin;
   d["max_direction"] = dmax;
   d["neighbors"] = count;
@@ -556,7 +559,7 @@ py::dict smooth_py(const py::handle& points, const py::handle& normals, double r
 }
 
 py::tuple normals_py(const py::handle& points, const py::object& radius, const py::object& neighbors,
-                     int orientation, const std::vector<double>& target, long long threads,
+                     int orientation, const std::vector<double>& target, int fit, long long threads,
                      const py::object& progress)
 {
   const Scale scale = read_scale(radius, neighbors);
@@ -565,7 +568,7 @@ py::tuple normals_py(const py::handle& points, const py::object& radius, const p
   Cloud cloud = read_cloud(points, py::none());
   std::size_t without = 0;
   run([&](bool parallel, const Callback& cb) {
-        without = oriented_normals(cloud, scale, orientation, target.data(), parallel, cb);
+        without = oriented_normals(cloud, scale, orientation, target.data(), fit, parallel, cb);
       },
       progress, threads);
   auto v = array_n3(cloud.size());
@@ -784,6 +787,7 @@ PYBIND11_MODULE(_core, m)
     .def_readwrite("robust_orientation", &Options::robust_orientation)
     .def_readwrite("normal_field_blend", &Options::normal_field_blend)
     .def_readwrite("normal_refinement", &Options::normal_refinement)
+    .def_readwrite("position_fit_blend", &Options::position_fit_blend)
     .def_readwrite("aso_projection", &Options::aso_projection)
     .def_readwrite("degree_fitting", &Options::degree_fitting)
     .def_readwrite("degree_monge", &Options::degree_monge)
@@ -814,7 +818,7 @@ PYBIND11_MODULE(_core, m)
         py::arg("iterations"), py::arg("update_normals"), py::arg("threads"), py::arg("progress"),
         py::arg("options"));
   m.def("estimate_normals", &normals_py, py::arg("points"), py::arg("radius"), py::arg("neighbors"),
-        py::arg("orientation"), py::arg("target"), py::arg("threads"), py::arg("progress"));
+        py::arg("orientation"), py::arg("target"), py::arg("fit"), py::arg("threads"), py::arg("progress"));
 
   py::class_<Surface>(m, "_Surface")
     .def(py::init<const py::handle&, const py::handle&, double, int>(), py::arg("points"), py::arg("normals"),

@@ -190,6 +190,7 @@ enum normal_refinement_t { normal_refinement };
 enum aso_variant_t { aso_variant };
 enum normal_field_blend_t { normal_field_blend };
 enum sample_weight_map_t { sample_weight_map };
+enum position_fit_blend_t { position_fit_blend };
 
 } // namespace internal_np
 
@@ -258,6 +259,27 @@ CGAL::Named_function_parameters<bool, internal_np::normal_field_blend_t, NamedPa
 normal_field_blend(bool blend, const NamedParameters& np = CGAL::parameters::default_values())
 {
   return CGAL::Named_function_parameters<bool, internal_np::normal_field_blend_t, NamedParameters>(blend, np);
+}
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// Named parameter of `estimate_aso_curvatures()`, for normals estimated from the positions
+/// (`CGAL::estimate_oriented_normals()`): the weight `w` in `[0, 1]` of a fit of the positions
+/// alone in the shape operator, `(1 - w) ASO + w Q`, where `Q` is the shape operator of a
+/// quadric fitted to the neighbours by weighted least squares (the fit of
+/// `Normal_fit::QUADRIC`, in the same neighbourhood). The ASO differentiates the normal field,
+/// so the small point-to-point errors of estimated normals pass into its tensor; those of the
+/// quadric are partly independent. Measured on simulated scans without normals
+/// (benchmark/README.md, "Scans without normals"; normals of `Normal_fit::QUADRIC` at 40
+/// neighbours, curvatures at 40): mean error of `H` with `w = 0` / `0.5` / exact normals, a
+/// terrestrial scan of a torus 2.7e-3 / 2.5e-3 / 1.9e-3, airborne scan lines 1.1e-3 / 0.85e-3 /
+/// 0.80e-3, two terrestrial scans merged 0.35e-3 / 0.23e-3 / 0.24e-3. With exact normals it
+/// costs accuracy. Where the quadric has no fit (neighbours along one line) the ASO is kept
+/// alone. Ignored with `aso_projection(AUTHORS_IMPLEMENTATION)`. Default 0.
+template <class NamedParameters = CGAL::parameters::Default_named_parameters>
+CGAL::Named_function_parameters<double, internal_np::position_fit_blend_t, NamedParameters>
+position_fit_blend(double weight, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return CGAL::Named_function_parameters<double, internal_np::position_fit_blend_t, NamedParameters>(weight, np);
 }
 
 /// \ingroup PkgPointSetCurvaturesRef

@@ -56,6 +56,7 @@
 #include <CGAL/Point_set_curvatures/parameters.h>
 #include <CGAL/Point_set_curvatures/internal/local_estimate.h>
 #include <CGAL/Point_set_curvatures/internal/normal_field_fit.h>
+#include <CGAL/Point_set_curvatures/internal/quadric_fit.h>
 #include <CGAL/Point_set_curvatures/internal/second_order_jet.h>
 #include <CGAL/Point_set_curvatures/internal/weight_kernel.h>
 
@@ -324,6 +325,9 @@ struct Aso_settings
   // blend in the normal-field fit where the neighbourhood is one-sided (normal_field_fit.h);
   // with the CORRECTED_NORMAL projection only
   bool normal_field_blend = false;
+  // weight of the shape operator of a quadric fitted to the positions alone (quadric_fit.h),
+  // for normals estimated from the positions; with the CORRECTED_NORMAL projection only
+  double position_fit_blend = 0;
 };
 
 // The ASO from the first-pass sums `m` of a neighbourhood (normals flipped against `ref` if
@@ -416,6 +420,14 @@ inline Local_estimate aso_from_first_pass(const Neighborhood& nb, const Aso_firs
       for(int k = 0; k < 3; ++k)
         W[k] = (1 - blend) * W[k] + blend * side * S[k] / nb.radius;
     }
+    if(settings.position_fit_blend > 0)
+    {
+      Quadric_fit quadric;
+      double Q[3];
+      if(quadric.compute(nb) && quadric.shape_operator_in(e.normal, t1, t2, 1.0 / nb.radius, Q))
+        for(int k = 0; k < 3; ++k)
+          W[k] = (1 - settings.position_fit_blend) * W[k] + settings.position_fit_blend * Q[k];
+    }
     set_principal_curvatures(W[0], W[1], W[2], t1, t2, e);
     if(!std::isfinite(e.k_min) || !std::isfinite(e.k_max))
       return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
@@ -426,6 +438,7 @@ inline Local_estimate aso_from_first_pass(const Neighborhood& nb, const Aso_firs
     if(!set_authors_shape_operator(gradient, hessian, u_l_value, 1.0 / nb.radius, e))
       return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
   }
+  e.normal_coherence = normal_coherence(m.A, m.C);
   e.status = Curvature_estimate_status::VALID;
   return e;
 }

@@ -155,6 +155,7 @@ Local_estimate algebraic_sphere_estimate(const Algebraic_sphere_sums<WeightKerne
     e.normal[i] = sphere.u_l[i] / ul;
   // H = 2 u_q / p in the scaled frame, divided by r to return to input units.
   e.mean = 2.0 * sphere.u_q / (sphere.pratt_norm * radius);
+  e.normal_coherence = normal_coherence(s.A, s.C);
   e.status = Curvature_estimate_status::VALID;
   return e;
 }

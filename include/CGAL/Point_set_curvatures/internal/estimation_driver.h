@@ -168,6 +168,7 @@ Curvature_estimate<GeomTraits> to_curvature_estimate(const Local_estimate& e, st
   r.max_curvature = FT(e.k_max);
   r.min_direction = Vector_3(FT(e.d_min[0]), FT(e.d_min[1]), FT(e.d_min[2]));
   r.max_direction = Vector_3(FT(e.d_max[0]), FT(e.d_max[1]), FT(e.d_max[2]));
+  r.normal_coherence = FT(e.normal_coherence);
   return r;
 }
 

@@ -83,10 +83,14 @@ inline bool has_disagreeing_normal(const Neighborhood& nb, const double ref[3])
 
 // Sets `ref` to the reference orientation (orientation_reference() of the weighted sum of the
 // normals). Returns false if the neighbours whose normals disagree with it form a second sheet
-// rather than flipped normals of the same one: they carry at least 10% of the weight and their
-// weighted mean offset along the reference differs from the others' by more than 0.05 r.
-// Flipped normals of one sheet sample the same disk (the same mean offset, up to noise); the
-// two sides of a thin plate, or two walls closer than r, are offset by their distance.
+// rather than flipped normals of the same one: they carry at least 10% of the weight, their
+// normals are coherent and opposite to the reference (weighted mean cosine below -0.7), and
+// their weighted mean offset along the reference differs from the others' by more than 0.05 r
+// and by more than twice the offsets' spread (weighted standard deviation) within either
+// group. Flipped normals of one sheet sample the same disk (the same mean offset, up to
+// noise); the two sides of a thin plate, or two walls closer than r, are two tight layers
+// offset by their distance. Foliage, whose normals point anywhere and whose points fill a
+// volume, is one noisy surface: its estimate is given (with a low normal_coherence).
 template <class Kernel>
 inline bool majority_orientation(const Neighborhood& nb, double ref[3])
 {
@@ -104,7 +108,8 @@ inline bool majority_orientation(const Neighborhood& nb, double ref[3])
   if(!(rr > 0))
     return true;
   const double inv = 1.0 / std::sqrt(rr);
-  double w_agree = 0, h_agree = 0, w_disagree = 0, h_disagree = 0;
+  // per group (0 agreeing, 1 disagreeing): weight, sums of w h, w h², w cos
+  double w_sum[2] = {0, 0}, h_sum[2] = {0, 0}, hh_sum[2] = {0, 0}, cos_sum[2] = {0, 0};
   for(std::size_t i = 0; i < nb.size; ++i)
   {
     const double s = nb.qx[i] * nb.qx[i] + nb.qy[i] * nb.qy[i] + nb.qz[i] * nb.qz[i];
@@ -112,20 +117,34 @@ inline bool majority_orientation(const Neighborhood& nb, double ref[3])
     if(nb.sample_weight)
       w *= nb.sample_weight[i];
     const double h = (nb.qx[i] * ref[0] + nb.qy[i] * ref[1] + nb.qz[i] * ref[2]) * inv;
-    if(nb.nx[i] * ref[0] + nb.ny[i] * ref[1] + nb.nz[i] * ref[2] < 0)
-    {
-      w_disagree += w;
-      h_disagree += w * h;
-    }
-    else
-    {
-      w_agree += w;
-      h_agree += w * h;
-    }
+    const double nn = nb.nx[i] * nb.nx[i] + nb.ny[i] * nb.ny[i] + nb.nz[i] * nb.nz[i];
+    const double c = nn > 0 ? (nb.nx[i] * ref[0] + nb.ny[i] * ref[1] + nb.nz[i] * ref[2]) * inv / std::sqrt(nn) : 0.0;
+    const int g = c < 0 ? 1 : 0;
+    w_sum[g] += w;
+    h_sum[g] += w * h;
+    hh_sum[g] += w * h * h;
+    cos_sum[g] += w * c;
   }
-  if(!(w_disagree > 0.1 * (w_agree + w_disagree)) || !(w_agree > 0))
+  if(!(w_sum[1] > 0.1 * (w_sum[0] + w_sum[1])) || !(w_sum[0] > 0))
     return true;
-  return std::abs(h_disagree / w_disagree - h_agree / w_agree) <= 0.05;
+  if(!(cos_sum[1] < -0.7 * w_sum[1]))
+    return true;  // the disagreeing normals point anywhere: not a sheet
+  double mean[2], spread[2];
+  for(int g = 0; g < 2; ++g)
+  {
+    mean[g] = h_sum[g] / w_sum[g];
+    spread[g] = std::sqrt(std::max(0.0, hh_sum[g] / w_sum[g] - mean[g] * mean[g]));
+  }
+  const double separation = std::abs(mean[1] - mean[0]);
+  return separation <= 0.05 || separation <= 2 * std::max(spread[0], spread[1]);
+}
+
+// The length of the weighted mean of the neighbours' unit normals, |C| / A for the fits'
+// sums A = sum w and C = sum w n (normals oriented as the fit uses them), in [0, 1].
+inline double normal_coherence(double A, const double C[3])
+{
+  const double c = std::sqrt(C[0] * C[0] + C[1] * C[1] + C[2] * C[2]) / A;
+  return c < 1 ? c : 1.0;
 }
 
 // One estimate in double precision, before conversion to the kernel's types.
@@ -137,6 +156,7 @@ struct Local_estimate
   double mean = nan, gaussian = nan, k_min = nan, k_max = nan;
   double d_min[3] = {nan, nan, nan};
   double d_max[3] = {nan, nan, nan};
+  double normal_coherence = nan;  // |sum w n| / sum w of the fit (ASO, APSS)
   Curvature_estimate_status status = Curvature_estimate_status::NOT_COMPUTED;
 
   static Local_estimate invalid(Curvature_estimate_status s)

@@ -1,0 +1,185 @@
+// Copyright (c) 2026 The Point_set_curvatures authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// A weighted quadric fitted to the neighbours' positions alone: the second-order normals of
+// estimate_oriented_normals() (Normal_fit::QUADRIC) and the position fit that the ASO blends
+// in when the normals were estimated from the positions (position_fit_blend).
+//
+// Why a second-order, weighted fit for normals that the ASO reads: the ASO differentiates the
+// normal field, so what matters is that the normals vary smoothly from point to point, more
+// than their accuracy at each point. The unweighted PCA plane of the k nearest is biased by
+// the curvature to first order and jumps each time the set of the k nearest changes. Here the
+// weights (1 - d²/r²)² vanish at the neighbourhood's border, so the fit varies continuously
+// with the query, and the quadric removes the curvature's bias (benchmark/README.md, "Scans
+// without normals": a cubic was more accurate point by point but rougher, and worse for the
+// ASO).
+//
+// At the query x (the origin of the neighbourhood's scaled frame):
+// 1. the weighted covariance of the neighbours about their weighted centroid gives a frame
+//    (t1, t2, n0), n0 oriented like the query's input normal, and the neighbourhood's spread:
+//    neighbours spread along one direction only (one scan line) give no fit;
+// 2. over that frame the heights h = n0.q are fitted by weighted least squares,
+//      h(u, v) = a0 + a1 u + a2 v + a3 u² + a4 u v + a5 v²,
+//    the surface being the graph of h (height_field.h): its normal at u = v = 0 is
+//    n0 - a1 t1 - a2 t2 normalised, its shape operator that of the graph there.
+//
+// Scan lines: where the neighbours lie on two lines only (airborne scans whose lines are far
+// apart compared with the spacing along a line), v² is a combination of 1 and v over the
+// samples, and the slope across the lines is undetermined (CGAL's unweighted jets of 30
+// neighbours gave normals 1.9 degrees off on average on such a scan); on three lines it is
+// badly determined. A small penalty on the anisotropic part of the quadratic term,
+// lambda ((a3 - a5)² + a4²) / 2, resolves that direction with the isotropic model (the same
+// curvature across the lines as along them) and barely moves well-sampled fits: lambda is
+// 1e-3 of the fourth moment sum w (u² + v²)² (measured on the scans of benchmark/
+// scan_experiments: 1e-2 biased the normals of the torus seen from a scanner, 1e-4 left the
+// airborne lines under-determined; 5e-4 and 1e-3 within 10% of each other).
+
+#ifndef CGAL_POINT_SET_CURVATURES_INTERNAL_QUADRIC_FIT_H
+#define CGAL_POINT_SET_CURVATURES_INTERNAL_QUADRIC_FIT_H
+
+#include <CGAL/Point_set_curvatures/internal/height_field.h>
+#include <CGAL/Point_set_curvatures/internal/local_estimate.h>
+#include <CGAL/Point_set_curvatures/internal/symmetric_eigen_3.h>
+
+#include <cmath>
+#include <cstddef>
+
+namespace CGAL {
+namespace Point_set_curvatures {
+namespace internal {
+
+// The least ratio of the second to the first standard deviation of a neighbourhood's
+// positions for a normal: below it the neighbours lie along one line (one LiDAR scan line at
+// a neighbourhood smaller than the distance between lines), and any normal about that line
+// would fit them. Two lines of an airborne scan 5 times farther apart than the spacing along
+// a line give about 0.4 at 40 neighbours; one line with the scanner's range noise about 0.004.
+constexpr double min_tangent_spread_ratio = 0.05;
+
+// The weight (1 - d²)² of a neighbour at scaled squared distance d2.
+inline double quadric_weight(double d2)
+{
+  const double t = 1.0 - d2;
+  return t > 0 ? t * t : 0.0;
+}
+
+// True if a covariance of positions whose eigenvalues are `values` (ascending) spreads in
+// two directions: see min_tangent_spread_ratio.
+inline bool spreads_in_two_directions(const double values[3])
+{
+  return values[2] > 0 && values[1] >= min_tangent_spread_ratio * min_tangent_spread_ratio * values[2];
+}
+
+struct Quadric_fit
+{
+  double t1[3], t2[3], n0[3];  // the frame of the fit, n0 oriented like the query's normal
+  double a[6];                 // the height field's coefficients (scaled frame)
+
+  // Fits the neighbourhood; false if its neighbours do not spread in two directions or the
+  // fit has no solution.
+  bool compute(const Neighborhood& nb)
+  {
+    if(nb.size < quadratic_height_coefficients)
+      return false;
+    double sw = 0, c[3] = {0, 0, 0};
+    for(std::size_t i = 0; i < nb.size; ++i)
+    {
+      const double w = quadric_weight(nb.qx[i] * nb.qx[i] + nb.qy[i] * nb.qy[i] + nb.qz[i] * nb.qz[i]);
+      sw += w;
+      c[0] += w * nb.qx[i];
+      c[1] += w * nb.qy[i];
+      c[2] += w * nb.qz[i];
+    }
+    if(!(sw > 0))
+      return false;
+    for(double& x : c)
+      x /= sw;
+    double cov[6] = {0, 0, 0, 0, 0, 0};
+    for(std::size_t i = 0; i < nb.size; ++i)
+    {
+      const double w = quadric_weight(nb.qx[i] * nb.qx[i] + nb.qy[i] * nb.qy[i] + nb.qz[i] * nb.qz[i]);
+      const double d[3] = {nb.qx[i] - c[0], nb.qy[i] - c[1], nb.qz[i] - c[2]};
+      cov[0] += w * d[0] * d[0]; cov[1] += w * d[0] * d[1]; cov[2] += w * d[0] * d[2];
+      cov[3] += w * d[1] * d[1]; cov[4] += w * d[1] * d[2]; cov[5] += w * d[2] * d[2];
+    }
+    double values[3], vectors[3][3];
+    if(!symmetric_eigen_3(cov, values, vectors) || !spreads_in_two_directions(values))
+      return false;
+    const double side = vectors[0][0] * nb.query_normal[0] + vectors[0][1] * nb.query_normal[1] +
+                        vectors[0][2] * nb.query_normal[2] < 0 ? -1.0 : 1.0;
+    for(int i = 0; i < 3; ++i)
+    {
+      n0[i] = side * vectors[0][i];
+      t1[i] = vectors[2][i];
+      t2[i] = vectors[1][i];
+    }
+
+    Quadratic_height_fit fit;
+    double fourth = 0;
+    for(std::size_t i = 0; i < nb.size; ++i)
+    {
+      const double q[3] = {nb.qx[i], nb.qy[i], nb.qz[i]};
+      const double w = quadric_weight(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+      if(!(w > 0))
+        continue;
+      const double u = t1[0] * q[0] + t1[1] * q[1] + t1[2] * q[2];
+      const double v = t2[0] * q[0] + t2[1] * q[1] + t2[2] * q[2];
+      fit.add(u, v, n0[0] * q[0] + n0[1] * q[1] + n0[2] * q[2], w);
+      fourth += w * (u * u + v * v) * (u * u + v * v);
+    }
+    // the penalty lambda ((a3 - a5)² + a4²) / 2 in the normal equations (upper triangle)
+    const double lambda = 5e-4 * fourth;
+    fit.ata[3][3] += lambda;
+    fit.ata[3][5] -= lambda;
+    fit.ata[5][5] += lambda;
+    fit.ata[4][4] += lambda;
+    return fit.solve(a);
+  }
+
+  // The gradient n0 - a1 t1 - a2 t2 of F(y) = n0.y - h(t1.y, t2.y) at the query, and its
+  // Hessian (packed xx xy xz yy yz zz), in the scaled frame.
+  void gradient_and_hessian(double gradient[3], double hessian[6]) const
+  {
+    for(int i = 0; i < 3; ++i)
+      gradient[i] = n0[i] - a[1] * t1[i] - a[2] * t2[i];
+    for(int i = 0; i < 3; ++i)
+      for(int j = i; j < 3; ++j)
+        hessian[sym_index(i, j)] =
+          -(2.0 * a[3] * t1[i] * t1[j] + a[4] * (t1[i] * t2[j] + t2[i] * t1[j]) + 2.0 * a[5] * t2[i] * t2[j]);
+  }
+
+  // The unit normal of the fitted surface at the query, oriented like the query's normal.
+  bool normal(double n[3]) const
+  {
+    double h[6];
+    gradient_and_hessian(n, h);
+    const double l2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+    if(!(l2 > 0) || !std::isfinite(l2))
+      return false;
+    const double inv = 1.0 / std::sqrt(l2);
+    for(int i = 0; i < 3; ++i)
+      n[i] *= inv;
+    return true;
+  }
+
+  // The fitted surface's shape operator in the tangent basis (t1, t2) of a normal `nrm` close
+  // to the fit's, W = [[W[0], W[1]], [W[1], W[2]]], in 1/length for `inverse_length_unit` =
+  // 1/r, with the sign convention of `nrm` (positive where the surface bends away from it).
+  bool shape_operator_in(const double nrm[3], const double b1[3], const double b2[3], double inverse_length_unit,
+                         double W[3]) const
+  {
+    double g[3], h[6];
+    gradient_and_hessian(g, h);
+    const double norm = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    if(!(norm > 0) || !std::isfinite(norm))
+      return false;
+    const double side = g[0] * nrm[0] + g[1] * nrm[1] + g[2] * nrm[2] < 0 ? -1.0 : 1.0;
+    shape_operator_in_basis(norm, h, side * inverse_length_unit, b1, b2, W);
+    return std::isfinite(W[0]) && std::isfinite(W[1]) && std::isfinite(W[2]);
+  }
+};
+
+} // namespace internal
+} // namespace Point_set_curvatures
+} // namespace CGAL
+
+#endif
