@@ -1099,9 +1099,8 @@ TEST_CASE("Non-finite points and invalid normals get their status and NaN, and a
 
 // VCM's cells are cut and integrated by the package (vcm_cells.h) from CGAL's Delaunay
 // triangulation, because CGAL's compute_vcm() depends on memory addresses: they are CGAL's
-// cells all the same. Measured on a sphere and a cylinder (ellipsoid-like curvatures): the
-// magnitudes from CGAL's covariances and the package's agree within 3.9e-15 and 3.5e-15 relative
-// (k_max).
+// cells all the same. Measured on a sphere and a cylinder: the magnitudes from CGAL's
+// covariances and the package's agree within 3.9e-15 and 3.5e-15 relative (k_max).
 TEST_CASE("VCM: the package's cells give CGAL's compute_vcm() magnitudes to rounding", "[baselines][vcm][cgal]")
 {
   for(int shape = 0; shape < 2; ++shape)
