@@ -1866,3 +1866,310 @@ TEST_CASE("tool: --memory-limit tiles give the in-memory output bitwise, by radi
     CHECK(files_starting_with("x.ply") == 0);
   }
 }
+
+// ---------------------------------------------------------------------------------------
+// Tiles under adversarial input, VCM reproducible, signals in every phase (issue 30)
+
+namespace {
+
+// run_tool() under `timeout`: a run that hangs fails (status 124 or 137) instead of holding
+// up the suite; `env` is put before the command (NAME=value ...).
+Run run_tool_within(int seconds, const std::string& args, const std::string& env = "")
+{
+  const std::string out = file("stdout.txt"), err = file("stderr.txt");
+  const std::string command = env + " timeout -k 5 " + std::to_string(seconds) + " '" + PSC_TOOL_PATH + "' " + args +
+                              " > '" + out + "' 2> '" + err + "'";
+  const int raw = std::system(command.c_str());
+  Run r;
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  r.out = read_text(out);
+  r.err = read_text(err);
+  return r;
+}
+
+// Runs `input` whole, then in tiles at each memory limit: the same exit status 0 and the same
+// output bytes, and the tiled runs in tiles indeed. Returns the whole run's output.
+std::string same_whole_and_tiled(const std::string& input, const std::string& options,
+                                 const std::vector<std::string>& limits, const std::string& extension = ".ply")
+{
+  const std::string whole_output = file("whole" + extension);
+  const Run whole = run_tool_within(120, q(input) + " " + q(whole_output) + " " + options);
+  INFO(options << "\n" << whole.err);
+  REQUIRE(whole.status == 0);
+  CHECK(whole.out.find("  tiles") == std::string::npos);
+  const std::string expected = read_text(whole_output);
+  for(const std::string& limit : limits)
+  {
+    INFO("--memory-limit " << limit);
+    const std::string tiled_output = file("tiled" + extension);
+    fs::remove(tiled_output);
+    const Run tiled = run_tool_within(120, q(input) + " " + q(tiled_output) + " " + options + " --memory-limit " + limit);
+    INFO(tiled.err);
+    CHECK(tiled.status == 0);
+    CHECK(tiled.out.find("  tiles") != std::string::npos);
+    CHECK(read_text(tiled_output) == expected);
+  }
+  return expected;
+}
+
+// The rows of a CSV output, header first.
+std::vector<std::string> csv_rows(const std::string& text)
+{
+  std::vector<std::string> rows;
+  std::istringstream lines(text);
+  std::string line;
+  while(std::getline(lines, line))
+    rows.push_back(line);
+  return rows;
+}
+
+// Field `name` of every data row of a CSV output.
+std::vector<std::string> csv_column(const std::string& text, const std::string& name)
+{
+  const std::vector<std::string> rows = csv_rows(text);
+  std::vector<std::string> values;
+  if(rows.empty())
+    return values;
+  auto split = [](const std::string& row) {
+    std::vector<std::string> fields;
+    std::istringstream s(row);
+    std::string f;
+    while(std::getline(s, f, ','))
+      fields.push_back(f);
+    return fields;
+  };
+  const std::vector<std::string> header = split(rows[0]);
+  const std::size_t at = std::size_t(std::find(header.begin(), header.end(), name) - header.begin());
+  for(std::size_t i = 1; i < rows.size(); ++i)
+  {
+    const std::vector<std::string> fields = split(rows[i]);
+    values.push_back(at < fields.size() ? fields[at] : "<missing>");
+  }
+  return values;
+}
+
+} // namespace
+
+// Class 1 of issue 30: the tiles' halo retry when the cloud has fewer points than a
+// neighbourhood asks for. The whole run gives every point all the others; the tiled run
+// failed with "internal error: the tile's halo inf is too small ...; a halo of inf suffices"
+// (exit 1), or with a finite halo said too small and sufficient at once.
+TEST_CASE("tool: tiles of clouds smaller than a neighbourhood give the whole run's bytes (3 and 39 points, 60 LAS points with normals from 200 neighbours, pairs on a line)")
+{
+  for(std::size_t n : {std::size_t(3), std::size_t(39)})
+  {
+    INFO(n << " points with normals, 40 neighbours");
+    write_xyz(file("few.xyz"), sphere(n, 1.0));
+    const std::string csv = same_whole_and_tiled(file("few.xyz"), "--fields mean,neighbors,valid", {"100", "500"}, ".csv");
+    // every point has every point as neighbour; 3 are too few (too_few_neighbors), 39 enough
+    const std::vector<std::string> neighbors = csv_column(csv, "neighbors"), valid = csv_column(csv, "valid");
+    REQUIRE(neighbors.size() == n);
+    CHECK(std::count(neighbors.begin(), neighbors.end(), std::to_string(n)) == std::ptrdiff_t(n));
+    CHECK(std::count(valid.begin(), valid.end(), n == 3 ? "0" : "1") == std::ptrdiff_t(n));
+  }
+  {
+    INFO("60 LAS points without normals, --orient scanner --normal-neighbors 200");
+    const double offset[3] = {0, 0, 0}, scanner[3] = {0, 0, 0};
+    write_las(file("few.las"), sphere(60, 1.0), 4, 3, 0.001, offset, 0, scanner);
+    const std::string csv = same_whole_and_tiled(file("few.las"), "--orient scanner --normal-neighbors 200 --drop-attributes",
+                                                 {"1K", "4K"}, ".csv");
+    // (every normal is the PCA of the whole sphere: meaningless, but the same) 40 neighbours
+    const std::vector<std::string> neighbors = csv_column(csv, "neighbors");
+    REQUIRE(neighbors.size() == 60);
+    CHECK(std::count(neighbors.begin(), neighbors.end(), "40") == 60);
+  }
+  {
+    // pairs of coincident points 2 apart on a line: a tile (halo 2r = 0.6 and a normal halo
+    // of 1e-150 guessed from the line's zero area) holds one pair, fewer than the normals' 18
+    // neighbours, of extent 0; the normals asked for 2e-150 more, which rounded away in
+    // 0.6 + 2e-150: "the tile's halo 0.59999999999999998 is too small for exact results; a
+    // halo of 0.59999999999999998 suffices". Collinear: no normal in either run.
+    INFO("pairs on a line without normals, jets --radius 0.3 --orient +z");
+    std::vector<Oriented_point> line;
+    for(int i = 0; i < 24; ++i)
+      line.emplace_back(Point(2.0 * (i / 2), 0, 0), Vector(0, 0, 1));
+    const double offset[3] = {0, 0, 0};
+    write_las(file("line.las"), line, 0, 2, 0.001, offset);
+    const std::string csv = same_whole_and_tiled(file("line.las"), "--method jet --radius 0.3 --orient +z --drop-attributes",
+                                                 {"1K", "2K"}, ".csv");
+    const std::vector<std::string> valid = csv_column(csv, "valid");
+    CHECK(std::count(valid.begin(), valid.end(), "0") == 24);
+  }
+}
+
+// Class 2 of issue 30: coordinates whose extent overflows a double. The tiled run hung (the
+// tile grid's side stayed infinite; SIGTERM did not end it); now it tiles with arithmetic
+// that cannot overflow and gives the whole run's bytes.
+TEST_CASE("tool: clouds whose extent overflows a double are tiled as the whole run (points at -1e308 and 1e308 in .xyz .ply .off, a LAS X scale of 1.5e304)")
+{
+  std::vector<Oriented_point> pts = sphere(80, 1.0);
+  pts.insert(pts.begin() + 30, Oriented_point(Point(-1e308, 0, 0), Vector(0, 0, 1)));
+  pts.emplace_back(Point(1e308, 0, 0), Vector(0, 0, 1));
+  write_xyz(file("overflow.xyz"), pts);
+  // the same points in ASCII PLY and OFF
+  {
+    std::ostringstream ply, off;
+    ply.precision(17);
+    off.precision(17);
+    ply << "ply\nformat ascii 1.0\nelement vertex " << pts.size()
+        << "\nproperty double x\nproperty double y\nproperty double z\nproperty double nx\nproperty double ny\n"
+           "property double nz\nend_header\n";
+    off << "NOFF\n" << pts.size() << " 0 0\n";
+    for(const Oriented_point& p : pts)
+    {
+      ply << p.first << " " << p.second << "\n";
+      off << p.first << " " << p.second << "\n";
+    }
+    write_text(file("overflow.ply"), ply.str());
+    write_text(file("overflow.off"), off.str());
+  }
+  const std::pair<std::string, std::string> cases[] = {
+    {"overflow.xyz", "--method aso"}, {"overflow.ply", "--method apss"}, {"overflow.off", "--method wavejet"}};
+  for(const auto& c : cases)
+  {
+    INFO(c.first << " " << c.second);
+    const std::string csv =
+      same_whole_and_tiled(file(c.first), c.second + " --fields mean,neighbors,valid", {"2K", "8K"}, ".csv");
+    // the sphere's points valid, the two far points not (degenerate_fit); 40 neighbours each
+    const std::vector<std::string> valid = csv_column(csv, "valid"), neighbors = csv_column(csv, "neighbors"),
+                                   mean = csv_column(csv, "mean");
+    REQUIRE(valid.size() == 82);
+    CHECK(std::count(valid.begin(), valid.end(), "1") == 80);
+    CHECK(valid[30] == "0");
+    CHECK(valid[81] == "0");
+    CHECK(std::count(neighbors.begin(), neighbors.end(), "40") == 82);
+    if(c.second != "--method wavejet")  // (wavejets fit a half sphere poorly: H 1.77 to 1.88)
+    {
+      std::size_t near_one = 0;
+      for(const std::string& h : mean)
+        near_one += std::abs(std::atof(h.c_str()) - 1) < 0.01;
+      CHECK(near_one == 80);
+    }
+  }
+  {
+    // a LAS file whose X scale, 1.5e304, is finite (the reader accepts it): x from -1.5e308
+    // to 1.5e308, so far apart that no normal is defined (collinear neighbourhoods)
+    INFO("LAS X scale 1.5e304");
+    const double offset[3] = {0, 0, 0};
+    write_las(file("xscale.las"), sphere(80, 10.0), 0, 2, 0.001, offset);
+    std::string las = read_text(file("xscale.las"));
+    put_le<double>(las, 131, 1.5e304);
+    write_text(file("xscale.las"), las);
+    const std::string csv = same_whole_and_tiled(file("xscale.las"), "--orient +z --drop-attributes --fields mean,valid",
+                                                 {"2K"}, ".csv");
+    const std::vector<std::string> x = csv_column(csv, "x"), valid = csv_column(csv, "valid");
+    REQUIRE(x.size() == 80);
+    const auto [lo, hi] = std::minmax_element(x.begin(), x.end(), [](const std::string& a, const std::string& b) {
+      return std::atof(a.c_str()) < std::atof(b.c_str());
+    });
+    CHECK(std::atof(hi->c_str()) - std::atof(lo->c_str()) == HUGE_VAL);  // the extent overflows
+    CHECK(std::count(valid.begin(), valid.end(), "0") == 80);
+  }
+}
+
+// Class 3 of issue 30: VCM depended on memory addresses (CGAL's convex hull orders the edges
+// of its visible sets by vertex address): two runs with --threads 1 differed in the last bits
+// in 78 of 80 rows, one result of three at random. Its cells are now computed from data
+// alone: every run, sequential or parallel, gives the same bytes. VCM's tiles stay refused.
+TEST_CASE("tool: VCM gives the same bytes in every run, sequential and parallel, by radius and by count, and tiled VCM is refused")
+{
+  write_xyz(file("vcm.xyz"), sphere(80, 1.0));
+  for(const std::string scale : {"--radius 1.2", "--neighbors 20"})
+  {
+    INFO(scale);
+    std::string first;
+    for(int run = 0; run < 8; ++run)
+    {
+      const std::string options = " --method vcm " + scale + (run % 2 ? " --threads 1" : "");
+      const Run r = run_tool_within(60, q(file("vcm.xyz")) + " " + q(file("vcm.ply")) + options);
+      REQUIRE(r.status == 0);
+      const std::string bytes = read_text(file("vcm.ply"));
+      if(run == 0)
+      {
+        first = bytes;
+        // valid estimates (not a reproducible run of NaN)
+        CHECK(r.out.find("valid       80 (100.00 %)") != std::string::npos);
+      }
+      INFO("run " << run);
+      CHECK(bytes == first);
+    }
+  }
+  const Run tiled = run_tool_within(60, q(file("vcm.xyz")) + " " + q(file("vcm.ply")) + " --method vcm --memory-limit 2K");
+  CHECK(tiled.status == 2);
+  CHECK(std::count(tiled.err.begin(), tiled.err.end(), '\n') == 1);
+  CHECK(tiled.err.find("--method vcm needs the whole cloud") != std::string::npos);
+}
+
+// Issue 30: SIGINT and SIGTERM stop every phase of a tiled run at its next progress report
+// (about 1% of its work or 0.25 s). The tool's test hook PSC_TOOL_TEST_SIGNAL=SIG@PHASE raises
+// the signal as the phase begins (PHASE: the start of its name, '*' standing for any text);
+// the run must exit 130 naming that phase (a phase that went on would let the next one stop
+// instead), leaving no output and no temporary file.
+TEST_CASE("tool: SIGINT and SIGTERM stop every phase of a tiled run, with and without normals")
+{
+  write_xyz(file("phases.xyz"), sphere(1000, 1.0));
+  write_xyz(file("phases_nn.xyz"), sphere(1000, 1.0), false);
+  struct Case
+  {
+    std::string input, options, phase;
+  };
+  // (1000 points of about 300 bytes: 60K gives 56 to 345 tiles with normals, 250K 8 without)
+  const Case cases[] = {
+    {"phases.xyz", "--memory-limit 60K", "reading"},
+    {"phases.xyz", "--memory-limit 60K", "density"},
+    {"phases.xyz", "--memory-limit 60K", "tile *read"},
+    {"phases.xyz", "--memory-limit 60K", "tile *curvatures"},
+    {"phases.xyz", "--memory-limit 60K --neighbors 30", "tile *read#9"},  // a halo grown: tiles read again
+    {"phases.xyz", "--memory-limit 60K --neighbors 30", "tile *curvatures#9"},
+    {"phases.xyz", "--memory-limit 60K --radius 0.25", "tile *curvatures#20"},
+    {"phases.xyz", "--memory-limit 60K --radius 0.25", "writing"},
+    {"phases_nn.xyz", "--memory-limit 250K --orient +z", "tile *curvatures#3"},  // the normals, then the curvatures
+    {"phases_nn.xyz", "--memory-limit 250K --orient +z --radius 0.25", "writing"},
+  };
+  for(const Case& c : cases)
+    for(const std::string signal : {"INT", "TERM"})
+    {
+      INFO(c.input << " " << c.options << ", SIG" << signal << " as phase '" << c.phase << "' begins");
+      fs::remove(file("phases.ply"));
+      const Run r = run_tool_within(120, q(file(c.input)) + " " + q(file("phases.ply")) + " " + c.options,
+                                    "PSC_TOOL_TEST_SIGNAL='" + signal + "@" + c.phase + "'");
+      INFO(r.err);
+      CHECK(r.status == 130);
+      // "interrupted (tile 9/23 curvatures), nothing written"
+      const std::string name = c.phase.substr(0, c.phase.find('#'));
+      const std::size_t star = name.find('*');
+      const std::string head = name.substr(0, star), tail = star == std::string::npos ? "" : name.substr(star + 1);
+      const std::size_t at = r.err.find("interrupted (" + head);
+      CHECK(at != std::string::npos);
+      CHECK(r.err.find(tail + "), nothing written", at) != std::string::npos);
+      CHECK(!fs::exists(file("phases.ply")));
+      CHECK(files_starting_with(".phases.ply") == 0);
+    }
+  // undisturbed, the same runs are tiled and succeed
+  for(const std::string input : {"phases.xyz --memory-limit 60K", "phases_nn.xyz --memory-limit 250K --orient +z"})
+  {
+    const Run r = run_tool_within(120, q(file(input.substr(0, input.find(' ')))) + " " + q(file("phases.ply")) +
+                                         input.substr(input.find(' ')));
+    CHECK(r.status == 0);
+    CHECK(r.out.find("  tiles") != std::string::npos);
+  }
+}
+
+// A real SIGTERM during a long tiled run (every point every point's neighbour) stops it.
+TEST_CASE("tool: SIGTERM during a long tiled run exits 130 and leaves no file")
+{
+  write_xyz(file("long.xyz"), sphere(20000, 1.0));
+  fs::remove(file("long.ply"));
+  // (\$: expanded by bash -c, not by the shell of std::system; the watchdog, its output away
+  // from the test's, only keeps a run that ignored the signal from holding up the suite)
+  const std::string script = std::string("'") + PSC_TOOL_PATH + "' '" + file("long.xyz") + "' '" + file("long.ply") +
+                             "' --radius 3 --memory-limit 2M --quiet 2> '" + file("long.err") +
+                             "' & pid=\\$!; (sleep 300; kill -KILL \\$pid) > /dev/null 2>&1 & dog=\\$!; sleep 1; "
+                             "kill -TERM \\$pid; wait \\$pid; echo \\$? > '" + file("long.status") +
+                             "'; kill \\$dog 2> /dev/null; true";
+  REQUIRE(std::system(("bash -c \"" + script + "\"").c_str()) == 0);
+  CHECK(std::atoi(read_text(file("long.status")).c_str()) == 130);
+  CHECK(read_text(file("long.err")).find("interrupted (") != std::string::npos);
+  CHECK(!fs::exists(file("long.ply")));
+  CHECK(files_starting_with(".long.ply") == 0);
+}

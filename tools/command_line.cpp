@@ -106,13 +106,14 @@ void print_usage(std::ostream& os)
      << "                     a quarter of the machine's RAM). A larger input is estimated in\n"
      << "                     spatial tiles, each read again from INPUT with a halo around it,\n"
      << "                     the rows written in input order: the same output, bitwise, in\n"
-     << "                     bounded memory (INPUT must have normals; --radius as a length)\n"
+     << "                     bounded memory (--radius as a length; without normals, --orient\n"
+     << "                     other than mst; not --method vcm, which needs every point)\n"
      << "  --threads N        use at most N threads (default: every core)\n"
      << "  --quiet            print errors only (no progress bar, warnings or summary)\n"
      << "  --help             print this help\n"
      << "\n"
      << "Exit status: 0 on success, 2 on an invalid argument or an unreadable, malformed or\n"
-     << "unwritable file (nothing written), 130 if interrupted.\n";
+     << "unwritable file (nothing written), 130 if interrupted (Ctrl-C or SIGTERM, in any phase).\n";
 }
 
 namespace {

@@ -100,6 +100,38 @@ volatile std::sig_atomic_t interrupted = 0;
 // call async-signal-safe functions). Empty when there is none.
 char temporary_output_path[4096] = "";
 
+// The phase running (its name in the progress bar), named in the message of an interrupted
+// run: the phase that stopped.
+std::string current_phase = "startup";
+
+// Test hook (test_tool): PSC_TOOL_TEST_SIGNAL=INT@NAME or TERM@NAME raises SIGINT or SIGTERM
+// when the first phase whose name starts with NAME begins ('*' in NAME: any text, as in
+// "tile *curvatures"; NAME#N: the N-th such phase), so that a test can check that every
+// phase stops at the signal (within a progress report: about 1% of its work, 0.25 s).
+void test_signal_at_phase_start(const std::string& phase)
+{
+  static const char* const hook = std::getenv("PSC_TOOL_TEST_SIGNAL");
+  static int seen = 0;
+  if(!hook || seen < 0)
+    return;
+  const std::string h = hook;
+  const std::size_t at = h.find('@'), hash = h.find('#');
+  if(at == std::string::npos)
+    return;
+  const std::string name = h.substr(at + 1, hash == std::string::npos ? std::string::npos : hash - at - 1);
+  const int nth = hash == std::string::npos ? 1 : std::atoi(h.c_str() + hash + 1);
+  const std::size_t star = name.find('*');
+  const std::string head = name.substr(0, star), tail = star == std::string::npos ? "" : name.substr(star + 1);
+  if(phase.compare(0, head.size(), head) != 0 ||
+     (star != std::string::npos &&
+      (phase.size() < head.size() + tail.size() || phase.compare(phase.size() - tail.size(), tail.size(), tail) != 0)))
+    return;
+  if(++seen < nth)
+    return;
+  seen = -1;  // once
+  std::raise(h.compare(0, at, "TERM") == 0 ? SIGTERM : SIGINT);
+}
+
 // The first Ctrl-C (or SIGTERM) cancels the current phase at its next progress report; a
 // second one removes the temporary output and exits at once.
 extern "C" void on_interrupt(int)
@@ -261,9 +293,11 @@ public:
   {
     finish();
     m_name = name;
+    current_phase = name;
     m_start = std::chrono::steady_clock::now();
     m_last = -1;
     draw(0.0);
+    test_signal_at_phase_start(name);
     return [this](double fraction) {
       draw(fraction);
       return !interrupted;
@@ -621,6 +655,9 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
   if(!o.scale.by_count && o.scale.spacing_multiple > 0)
     throw Error(cat(too_large, ": --radius ", o.scale.spacing_multiple, "x needs the whole cloud for the average "
                     "spacing; give the radius as a length, or raise --memory-limit"));
+  if(std::string(o.method->name) == "vcm")
+    throw Error(cat(too_large, ": --method vcm needs the whole cloud (its Voronoi cells come from the Delaunay "
+                    "triangulation of every point); raise --memory-limit"));
   const Scale scale = estimation_scale(o, !with_normals);
   Tiling tiling;
   tiling.memory_limit = memory_limit;
@@ -631,14 +668,24 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
   tiling.temporary_prefix = hidden_sibling(o.output, ".");
   tiling.phase = [&c](const std::string& name) { return c.progress.phase(name); };
   tiling.interrupted = []() { return interrupted != 0; };
-  // the normals' share of a tile's halo: first guessed from the density, then grown to what
-  // the normal estimation asks for (per tile)
+  // Without normals, a tile's halo H is shared by two needs: the curvatures of its own points
+  // read the points within the curvature halo h of its core (guessed from the density by
+  // count, then grown to what the estimator asks for), and their normals are those of the
+  // "normal tile" whose core is the core grown by h on every side, whose own points need
+  // their neighbours within the normal halo of that box. The tiles are read with a halo along
+  // each axis (Tiling::box_halo), which holds both when H >= h + normal halo: the normals are
+  // given H - h (the largest the range supports), and when they need more, H grows to h plus
+  // what they need. Sums are rounded up and differences down, so that a halo said to
+  // suffice does.
+  const double inf = std::numeric_limits<double>::infinity();
+  auto normal_share = [inf](double H, double h) { return std::nextafter(H - h, -inf); };
+  auto total_halo = [inf](double h, double normal) { return std::nextafter(h + normal, inf); };
   const double normal_halo_guess = with_normals ? 0.0 : density_halo(input, normal_neighbor_count(o));
-  tiling.extra_halo = normal_halo_guess;
-  // the current tile's two halos, tracked apart (not recovered by a subtraction that could
-  // round below what was asked for)
   const double curvature_halo_guess = scale.by_count ? density_halo(input, scale.neighbors) : tiling.halo;
-  double normal_halo = normal_halo_guess, curvature_halo = curvature_halo_guess;
+  tiling.extra_halo = normal_halo_guess;
+  tiling.box_halo = !with_normals;
+  // the current tile's curvature halo (grown over the retries of a tile)
+  double curvature_halo = curvature_halo_guess;
   CGAL::Bbox_3 last_core;
 
   const Tile_estimator estimate = [&](Tile_points& points, const PSC::Tile& tile,
@@ -649,64 +696,74 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
     std::vector<double>().swap(points.normals);
     std::shared_ptr<Estimates> estimates;
     if(!(tile.core == last_core))
-    {
-      // a new tile
-      normal_halo = normal_halo_guess;
-      curvature_halo = curvature_halo_guess;
-    }
+      curvature_halo = curvature_halo_guess;  // a new tile
     last_core = tile.core;
-    const PSC::Tile curvature_tile(tile.core, with_normals ? tile.halo : curvature_halo);
-    if(!with_normals)
+    const double H = tile.halo;  // infinite: the range is the whole cloud
+    if(with_normals || H == inf)
+      curvature_halo = H;
+    for(;;)
     {
-      const double h = curvature_halo;
-      const CGAL::Bbox_3& b = tile.core;
-      const PSC::Tile normal_tile(CGAL::Bbox_3(b.xmin() - h, b.ymin() - h, b.zmin() - h, b.xmax() + h, b.ymax() + h,
-                                               b.zmax() + h),
-                                  normal_halo);
-      ps->add_normal_map();
+      if(!with_normals)
+      {
+        // the normals of the points within the curvature halo of the core
+        const double h = curvature_halo, normal_halo = H == inf ? inf : normal_share(H, h);
+        if(!(normal_halo >= 0))
+          throw PSC::Halo_too_small(total_halo(h, normal_halo_guess), H);
+        const CGAL::Bbox_3& b = tile.core;
+        const PSC::Tile normal_tile(CGAL::Bbox_3(b.xmin() - h, b.ymin() - h, b.zmin() - h, b.xmax() + h,
+                                                 b.ymax() + h, b.zmax() + h),
+                                    normal_halo);
+        if(!ps->has_normal_map())
+          ps->add_normal_map();
+        try
+        {
+          CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
+            *ps, PSC::parameters::neighbor_count(
+                   normal_neighbor_count(o),
+                   PSC::parameters::normal_fit(
+                     o.normal_fit, PSC::parameters::normal_orientation(
+                                     orientation.orientation,
+                                     PSC::parameters::tile(normal_tile, CGAL::parameters::callback(progress))))));
+        }
+        catch(const PSC::Halo_too_small& e)
+        {
+          throw PSC::Halo_too_small(total_halo(h, e.required_halo()), H);
+        }
+        if(interrupted)
+          throw Cancelled();
+        if(orientation.scanner)
+        {
+          const std::array<int, 3> pulse = pulse_attributes(input.cloud.attributes);
+          orient_towards_scanner(
+            ps->size(), [&ps](std::size_t i) -> Vector& { return ps->normal(*(ps->begin() + i)); },
+            [&](std::size_t i) {
+              return std::array<double, 3>{{points.attributes[pulse[0]][i], points.attributes[pulse[1]][i],
+                                            points.attributes[pulse[2]][i]}};
+            });
+        }
+      }
       try
       {
-        CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
-          *ps, PSC::parameters::neighbor_count(
-                 normal_neighbor_count(o),
-                 PSC::parameters::normal_fit(
-                   o.normal_fit, PSC::parameters::normal_orientation(
-                                   orientation.orientation,
-                                   PSC::parameters::tile(normal_tile, CGAL::parameters::callback(progress))))));
+        estimates = std::make_shared<Estimates>(
+          o.method->run(*ps, scale, progress, PSC::Tile(tile.core, curvature_halo)));
+        break;
       }
       catch(const PSC::Halo_too_small& e)
       {
-        normal_halo = e.required_halo();
-        throw PSC::Halo_too_small(curvature_halo + normal_halo, tile.halo);
+        if(with_normals)
+          throw;
+        const double normal_halo = normal_share(H, curvature_halo);
+        curvature_halo = e.required_halo();
+        // the range may hold the larger curvature halo and the normals' share: estimate again
+        if(total_halo(curvature_halo, normal_halo_guess) <= H)
+          continue;
+        throw PSC::Halo_too_small(total_halo(curvature_halo, std::max(normal_halo, normal_halo_guess)), H);
       }
-      if(interrupted)
-        throw Cancelled();
-      if(orientation.scanner)
+      catch(const std::invalid_argument& e)
       {
-        const std::array<int, 3> pulse = pulse_attributes(input.cloud.attributes);
-        orient_towards_scanner(
-          ps->size(), [&ps](std::size_t i) -> Vector& { return ps->normal(*(ps->begin() + i)); },
-          [&](std::size_t i) {
-            return std::array<double, 3>{{points.attributes[pulse[0]][i], points.attributes[pulse[1]][i],
-                                          points.attributes[pulse[2]][i]}};
-          });
+        throw Error(cat(e.what(), " (", too_large, ", so it is estimated in tiles: give --radius, or raise "
+                        "--memory-limit)"));
       }
-    }
-    try
-    {
-      estimates = std::make_shared<Estimates>(o.method->run(*ps, scale, progress, curvature_tile));
-    }
-    catch(const PSC::Halo_too_small& e)
-    {
-      if(with_normals)
-        throw;
-      curvature_halo = e.required_halo();
-      throw PSC::Halo_too_small(curvature_halo + normal_halo, tile.halo);
-    }
-    catch(const std::invalid_argument& e)
-    {
-      throw Error(cat(e.what(), " (", too_large, ", so it is estimated in tiles: give --radius, or raise "
-                      "--memory-limit)"));
     }
     if(interrupted)
       throw Cancelled();
@@ -900,7 +957,7 @@ int main(int argc, char** argv)
   catch(const Cancelled&)
   {
     // the temporary output was removed when the stack unwound
-    std::fprintf(stderr, "\n%s: interrupted, nothing written\n", program);
+    std::fprintf(stderr, "\n%s: interrupted (%s), nothing written\n", program, current_phase.c_str());
     return 130;
   }
   catch(const Error& e)

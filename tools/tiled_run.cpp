@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <memory>
 #include <queue>
 #include <utility>
@@ -29,6 +30,15 @@ namespace {
 
 bool finite_point(const double* p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
 
+// The largest distance along an axis from p to the tile's core (0 inside).
+double box_distance(const PSC::Tile& tile, const double* p)
+{
+  double d = 0;
+  for(int a = 0; a < 3; ++a)
+    d = std::max({d, tile.core.min(a) - p[a], p[a] - tile.core.max(a)});
+  return d;
+}
+
 // Appends point k of `from` to `to` (coordinates, normal, attribute values).
 void append_point(const Point_cloud& from, std::size_t k, std::vector<double>& xyz, std::vector<double>& normals,
                   std::vector<std::vector<double>>& attributes)
@@ -42,7 +52,9 @@ void append_point(const Point_cloud& from, std::size_t k, std::vector<double>& x
 }
 
 // Counts of the finite points per cell of a grid of at most 128 cells per axis over the
-// bounds, with prefix sums: the number of points in any box of cells in constant time.
+// bounds, with prefix sums: the number of points in any box of cells in constant time. The
+// arithmetic is on halved coordinates, so that bounds whose extent overflows a double (from
+// -1e308 to 1e308) give finite cells.
 class Density_grid
 {
 public:
@@ -50,13 +62,13 @@ public:
   {
     double longest = 0;
     for(int a = 0; a < 3; ++a)
-      longest = std::max(longest, hi[a] - lo[a]);
+      longest = std::max(longest, hi[a] / 2 - lo[a] / 2);
     for(int a = 0; a < 3; ++a)
     {
-      m_lo[a] = lo[a];
-      const double extent = hi[a] - lo[a];
+      m_lo[a] = lo[a] / 2;
+      const double extent = hi[a] / 2 - lo[a] / 2;
       m_dims[a] = extent > 0 && longest > 0
-                    ? std::size_t(std::max(1.0, std::min(128.0, std::ceil(128.0 * extent / longest))))
+                    ? std::size_t(std::max(1.0, std::min(128.0, std::ceil(128.0 * (extent / longest)))))
                     : 1;
       m_cell[a] = extent > 0 ? extent / double(m_dims[a]) : 1.0;
     }
@@ -81,13 +93,20 @@ public:
                                          m_sum[(i - 1) + d0 * ((j - 1) + d1 * (k - 1))];
   }
 
-  // An upper bound of the points in the box [lo, hi] (the cells it meets).
+  // An upper bound of the points in the box [lo, hi] (the cells it meets; every point for a
+  // NaN bound).
   std::uint64_t at_most(const double lo[3], const double hi[3]) const
   {
     std::size_t b[3], e[3];
     for(int a = 0; a < 3; ++a)
     {
-      if(hi[a] < m_lo[a] || lo[a] > m_lo[a] + m_cell[a] * double(m_dims[a]))
+      if(std::isnan(lo[a]) || std::isnan(hi[a]))
+      {
+        b[a] = 0;
+        e[a] = m_dims[a];
+        continue;
+      }
+      if(hi[a] / 2 < m_lo[a] || lo[a] / 2 > m_lo[a] + m_cell[a] * double(m_dims[a]))
         return 0;
       b[a] = cell(a, lo[a]);
       e[a] = cell(a, hi[a]) + 1;
@@ -99,12 +118,13 @@ public:
   }
 
 private:
+  // the cell of coordinate v along axis a, clamped (monotonic in v; v not NaN)
   std::size_t cell(int a, double v) const
   {
-    const double c = std::floor((v - m_lo[a]) / m_cell[a]);
-    return c <= 0 ? 0 : c >= double(m_dims[a] - 1) ? m_dims[a] - 1 : std::size_t(c);
+    const double c = std::floor((v / 2 - m_lo[a]) / m_cell[a]);
+    return !(c > 0) ? 0 : c >= double(m_dims[a] - 1) ? m_dims[a] - 1 : std::size_t(c);
   }
-  double m_lo[3], m_cell[3];
+  double m_lo[3], m_cell[3];  // halved: lo / 2 and the cell side / 2
   std::size_t m_dims[3];
   std::vector<std::uint64_t> m_count, m_sum;
 };
@@ -235,7 +255,15 @@ double density_halo(const Scanned_input& input, std::size_t k)
   double e[3] = {hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]};
   std::sort(e, e + 3);
   const double area = std::max(e[1] * e[2], 1e-300);
-  return 2 * std::sqrt(area * double(k) / (3.14159265358979 * double(std::max<std::uint64_t>(1, input.finite))));
+  const double per_point = double(k) / (3.14159265358979 * double(std::max<std::uint64_t>(1, input.finite)));
+  const double halo = 2 * std::sqrt(area * per_point);
+  if(std::isfinite(halo))
+    return halo;
+  // extents or their product beyond the largest double: the same from the halved extents
+  // (infinite only if the halo itself is)
+  double h[3] = {hi[0] / 2 - lo[0] / 2, hi[1] / 2 - lo[1] / 2, hi[2] / 2 - lo[2] / 2};
+  std::sort(h, h + 3);
+  return 4 * (std::sqrt(h[1]) * std::sqrt(h[2]) * std::sqrt(per_point));
 }
 
 Scanned_input read_or_scan(const std::string& path, const Read_options& options, double memory_limit)
@@ -317,8 +345,10 @@ Tiled_report run_tiled(const std::string& path, const Read_options& options, con
   const bool with_normals = input.cloud.has_normals();
   double lo[3], hi[3];
   tile_box(input, lo, hi);
-  const double first_halo = (tiling.neighbors > 0 ? density_halo(input, tiling.neighbors) : tiling.halo) +
-                            tiling.extra_halo;
+  double first_halo = (tiling.neighbors > 0 ? density_halo(input, tiling.neighbors) : tiling.halo) +
+                      tiling.extra_halo;
+  if(std::isnan(first_halo))
+    first_halo = HUGE_VAL;  // (the whole cloud: never wrong)
   double halo = first_halo;
 
   // 1. The density, and the tiles: the largest tiles whose points with their halo fit.
@@ -339,21 +369,29 @@ Tiled_report run_tiled(const std::string& path, const Read_options& options, con
   report.density_seconds = seconds_since(density_start);
   const double budget = tiling.memory_limit / bytes_per_point(attribute_count);
   const CGAL::Bbox_3 box(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
-  double longest = 0;
+  // halved extents: the extent of finite bounds may overflow (from -1e308 to 1e308)
+  double half[3], longest = 0;
   for(int a = 0; a < 3; ++a)
-    longest = std::max(longest, hi[a] - lo[a]);
+  {
+    half[a] = hi[a] / 2 - lo[a] / 2;
+    longest = std::max(longest, half[a]);
+  }
   PSC::Tile_grid grid(box, std::array<std::size_t, 3>{{1, 1, 1}});
+  // (the tiles shrink by 0.8 a step: past 4096 tiles within 38 steps)
   for(double side = longest; side > 0;)
   {
     side *= 0.8;
     if(largest_tile(grid, density, lo, hi, halo) <= budget)
       break;
-    std::array<std::size_t, 3> counts;
+    std::array<double, 3> counts;
     for(int a = 0; a < 3; ++a)
-      counts[a] = hi[a] > lo[a] ? std::size_t(std::ceil((hi[a] - lo[a]) / side)) : 1;
-    if(counts[0] * counts[1] * counts[2] > 4096)
+      counts[a] = std::max(1.0, std::ceil(half[a] / side));  // (1 when the ratio underflows, or NaN)
+    if(!(counts[0] * counts[1] * counts[2] <= 4096))
       break;  // the halos dominate: as good as it gets
-    grid = PSC::Tile_grid(box, counts);
+    grid = PSC::Tile_grid(box, std::array<std::size_t, 3>{{std::size_t(counts[0]), std::size_t(counts[1]),
+                                                         std::size_t(counts[2])}});
+    if(tiling.interrupted && tiling.interrupted())
+      throw Cancelled();
   }
 
   // 2. The tiles, each read from the file with its halo, estimated, and its own rows written
@@ -374,7 +412,8 @@ Tiled_report run_tiled(const std::string& path, const Read_options& options, con
       const PSC::Tile tile = grid.tile(t, halo);
       Tile_points points;
       std::vector<char> own;
-      std::size_t own_count = 0;
+      std::size_t own_count = 0, finite_count = 0;
+      double next_distance = HUGE_VAL;  // of the nearest finite point left out
       const auto read_start = std::chrono::steady_clock::now();
       {
         // reserved from the density (an upper bound), the chunks small: the tile's points
@@ -399,10 +438,20 @@ Tiled_report run_tiled(const std::string& path, const Read_options& options, con
           {
             const double* p = &c.xyz[3 * k];
             const bool finite = finite_point(p);
-            if(finite ? !(tile.distance_to_core(p[0], p[1], p[2]) <= halo) : t != 0)
+            if(finite)
+            {
+              const double d = tiling.box_halo ? box_distance(tile, p) : tile.distance_to_core(p[0], p[1], p[2]);
+              if(!(d <= halo))
+              {
+                next_distance = std::min(next_distance, d);
+                continue;
+              }
+            }
+            else if(t != 0)
               continue;
             append_point(c, k, points.xyz, points.normals, points.attributes);
             points.index.push_back(c.first + k);
+            finite_count += finite;
             const bool is_own = finite ? tile.owns(p[0], p[1], p[2]) : true;
             own.push_back(is_own ? 1 : 0);
             own_count += is_own;
@@ -417,18 +466,29 @@ Tiled_report run_tiled(const std::string& path, const Read_options& options, con
         throw Error(cat(in_quotes(path), ": internal error: normals missing in a tile"));
       const auto estimate_start = std::chrono::steady_clock::now();
       const std::size_t range = points.size();
+      // A range holding every finite point is the whole cloud, whatever the halo's value: an
+      // infinite halo says so to the estimator (which then never needs more, even for
+      // neighbourhoods by count larger than the cloud).
+      const bool whole_cloud = finite_count == input.finite;
+      if(whole_cloud)
+        halo = HUGE_VAL;
       Row_source rows;
       try
       {
-        rows = estimate(points, tile, tiling.phase(name + " curvatures"));
+        rows = estimate(points, grid.tile(t, halo), tiling.phase(name + " curvatures"));
       }
       catch(const PSC::Halo_too_small& e)
       {
-        if(!(e.required_halo() > halo))
-          throw;
-        halo = e.required_halo();
+        if(whole_cloud)
+          throw;  // (the estimator broke its promise: an internal error)
+        // At least to the nearest point left out, so that the range grows at every retry
+        // (a required halo may not change the range: twice the halo when it holds fewer
+        // points than a neighbourhood, or a sum of halos rounded down to this one).
+        halo = e.required_halo() > next_distance ? e.required_halo() : next_distance;
         ++report.halo_growths;
         report.estimate_seconds += seconds_since(estimate_start);
+        if(tiling.interrupted && tiling.interrupted())
+          throw Cancelled();
         continue;  // read the tile again with the larger halo
       }
       report.estimate_seconds += seconds_since(estimate_start);
@@ -443,6 +503,8 @@ Tiled_report run_tiled(const std::string& path, const Read_options& options, con
       {
         if(!own[k])
           continue;
+        if(k % 65536 == 65535 && tiling.interrupted && tiling.interrupted())
+          throw Cancelled();
         rows(k, r);
         for(std::size_t a = 0; a < attribute_count; ++a)
           values[a] = points.attributes[a][k];

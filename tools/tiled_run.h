@@ -75,6 +75,11 @@ struct Tiling
   double halo = 0;             // the halo of the tiles by radius
   std::size_t neighbors = 0;   // by count (halo unused): the tiles start with density_halo()
   double extra_halo = 0;       // added to the first halo (the estimator's own needs)
+  // A halo along each axis: the points read are those within `halo` of the core in every
+  // coordinate (a box around the core, which holds the Euclidean halo, and every point
+  // within h2 of the core grown by h1 on every side when halo >= h1 + h2: an estimator
+  // whose own tile is such a grown core, as the normals estimated per tile).
+  bool box_halo = false;
   // A tile's halo grows when the estimator throws Halo_too_small (by count, or an estimator
   // with needs of its own such as normals).
   std::string temporary_prefix;  // the temporary files are named prefix + "tileN-XXXXXX"

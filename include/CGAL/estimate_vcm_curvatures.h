@@ -20,15 +20,19 @@ namespace CGAL {
 /// IEEE TVCG 17(6), 2011), with the covariance matrices of `CGAL::compute_vcm()`, a
 /// baseline of Lejemble et al. 2021 (Section 6, Table 1).
 ///
-/// `CGAL::compute_vcm()` builds the Delaunay triangulation of the usable points (finite
-/// coordinates and non-zero normal), cuts each Voronoi cell by the ball of radius `R`
-/// around its point, takes the covariance of the cut cell, and sums these matrices over the
-/// points at distance at most `r` (the convolution radius). For a smooth surface the sum is
+/// As `CGAL::compute_vcm()`, it builds the Delaunay triangulation of the usable points (finite
+/// coordinates and non-zero normal; CGAL's), cuts each Voronoi cell by the ball of radius `R`
+/// around its point (approximated by CGAL's 20-face polytope), takes the covariance of the
+/// cut cell, and sums these matrices over the points at distance at most `r` (the
+/// convolution radius). The cells are cut and integrated by the package, not by CGAL, whose
+/// construction depends on memory addresses (its convex hull orders edges by address: the
+/// covariances of two runs differ in the last bits); the package's agree with CGAL's to about
+/// 1e-14 relative and are the same bits in every run. For a smooth surface the sum is
 /// about `(2π R³ r²/3) [n nᵀ + (r²/4)(k1² e1 e1ᵀ + k2² e2 e2ᵀ)]`: with `λ_n` its largest
 /// eigenvalue, `|k_i| = (2/r) sqrt(λ_i / λ_n)` and the eigenvectors are the normal and the
 /// principal directions. The curvatures enter squared: their signs are not available.
-/// The Delaunay triangulation and CGAL's convolution are sequential whatever
-/// `ConcurrencyTag`; the neighbourhood counts and the final diagonalisations follow it.
+/// The Delaunay triangulation is sequential whatever `ConcurrencyTag`; the cells, the
+/// neighbourhood counts, the convolution and the final diagonalisations follow it.
 ///
 /// Fields: `min_curvature <= max_curvature` hold the UNSIGNED magnitudes `|k|` of the two
 /// principal curvatures (>= 0), in 1/(unit of the coordinates), `min_direction` and
@@ -54,10 +58,8 @@ namespace CGAL {
 /// (such points are nobody's neighbour either), `NOT_COMPUTED` (cancelled through
 /// `callback`), `TOO_FEW_NEIGHBORS` (fewer points at distance `< r`, the query included,
 /// than `min_neighbors`: 20 by default), `DEGENERATE_FIT` (the usable points are collinear, or the measure is zero).
-/// Invalid estimates hold NaN in every numeric field. Sequential and parallel runs return
-/// the same results up to rounding: CGAL's construction of the Voronoi cells is not bitwise
-/// reproducible from one call to the next (covariances within 1e-15 relative, magnitudes
-/// within 1e-12 relative or `1e-7 / r` near zero).
+/// Invalid estimates hold NaN in every numeric field. Sequential and parallel runs, and runs
+/// of different processes, return bitwise identical results.
 ///
 /// \tparam ConcurrencyTag `CGAL::Sequential_tag` or `CGAL::Parallel_tag` (needs TBB).
 /// \tparam PointRange a model of `ConstRange`; its iterator value type is the key type of
@@ -125,8 +127,9 @@ namespace CGAL {
 ///     \cgalParamDefault{`false`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Point_set_curvatures::parameters::tile}
-///     \cgalParamDescription{not supported: CGAL's VCM integrates over Voronoi cells, which
-///       no fixed halo bounds; `std::invalid_argument` is thrown}
+///     \cgalParamDescription{not supported: the cells come from the Delaunay triangulation of
+///       the whole cloud (and by count the offset radius is the median radius of the whole
+///       cloud); `std::invalid_argument` is thrown}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///

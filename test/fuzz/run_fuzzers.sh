@@ -5,16 +5,29 @@
 # crash found later). Exits non-zero on the first crash, leaking or sanitizer report; the
 # input is left in the output folder as crash-* / leak-*.
 #
-#   test/fuzz/run_fuzzers.sh [EXECUTIONS=200000] [OUT=build-fuzz]
+# Then the differential fuzzer of the tiled runs (fuzz_tiles.py) on the built tool TOOL:
+# TILE_CASES adversarial clouds, each run whole, with --threads 1 and in tiles at two memory
+# limits, which must agree byte for byte, exit 0 or 2, and end within 5 s (about 0.1 s a
+# case); a failing case is left in OUT/tiles/failure-1.
 #
-# Needs clang++ and Debian's libclang-rt-14-dev (the fuzzer runtime).
+#   test/fuzz/run_fuzzers.sh [EXECUTIONS=200000] [OUT=build-fuzz] [TOOL=build/tools/point_set_curvatures] [TILE_CASES=250]
+#
+# Needs clang++ and Debian's libclang-rt-14-dev (the fuzzer runtime), python3, and the tool
+# built (target point_set_curvatures_tool).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 repo="$(cd "$here/../.." && pwd)"
 runs="${1:-200000}"
 out="${2:-$repo/build-fuzz}"
+tool="${3:-$repo/build/tools/point_set_curvatures}"
+tile_cases="${4:-250}"
 mkdir -p "$out"
 out="$(cd "$out" && pwd)"
+if [ ! -x "$tool" ]; then
+  echo "run_fuzzers.sh: no tool at $tool: build the target point_set_curvatures_tool first" >&2
+  exit 1
+fi
+tool="$(cd "$(dirname "$tool")" && pwd)/$(basename "$tool")"  # (the script changes folder below)
 clang++ -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
   "$here/fuzz_readers.cpp" "$repo/tools/read_point_cloud.cpp" "$repo/tools/read_ply.cpp" "$repo/tools/read_las.cpp" \
   -o "$out/fuzz_readers"
@@ -30,3 +43,8 @@ start=$(date +%s)
 end=$(date +%s)
 grep -E "^#[0-9]+.*(DONE|pulse)" fuzz_readers.log | tail -1 >&2 || true
 echo "fuzz_readers: $runs executions in $((end - start)) s, no crash" >&2
+
+python3 "$here/fuzz_tiles.py" --tool "$tool" --cases "$tile_cases" --out "$out/tiles" || {
+  echo "fuzz_tiles found a difference between whole and tiled runs: see $out/tiles" >&2
+  exit 1
+}

@@ -38,6 +38,10 @@ namespace Point_set_curvatures {
 /// The core is half-open: a point `p` is own if `core.min(a) <= p[a] < core.max(a)` on each
 /// axis `a`; bounds may be infinite, so that the tiles of a `Tile_grid` cover all of space and
 /// every finite point is own in exactly one tile.
+///
+/// An infinite `halo` says that the range holds the whole cloud (every finite point): the
+/// estimation then never throws `Halo_too_small`, even when the cloud has fewer points than a
+/// neighbourhood by count asks for (it gets them all, as in the whole-cloud run).
 struct Tile
 {
   /// the region of the tile's own points (half-open, see above)
@@ -72,13 +76,23 @@ struct Tile
            z >= core.zmin() && z < core.zmax();
   }
 
-  /// Euclidean distance from `(x, y, z)` to the core (0 inside)
+  /// Euclidean distance from `(x, y, z)` to the core (0 inside; infinite only when the
+  /// distance itself exceeds the largest double: no overflow of the squares)
   double distance_to_core(double x, double y, double z) const
   {
     const double d[3] = {std::max({0.0, core.xmin() - x, x - core.xmax()}),
                          std::max({0.0, core.ymin() - y, y - core.ymax()}),
                          std::max({0.0, core.zmin() - z, z - core.zmax()})};
-    return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    const double s = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    if(s <= (std::numeric_limits<double>::max)())
+      return std::sqrt(s);
+    // the squares overflow (a distance beyond 1e154): the same distance scaled by its largest
+    // component
+    const double m = std::max({d[0], d[1], d[2]});
+    if(!(m <= (std::numeric_limits<double>::max)()))
+      return m;  // infinite (or NaN for a NaN coordinate)
+    const double u = d[0] / m, v = d[1] / m, w = d[2] / m;
+    return m * std::sqrt(u * u + v * v + w * w);
   }
 
   /// Distance from an own point to the core's boundary (infinite along unbounded sides): a
@@ -98,7 +112,9 @@ struct Tile
 /// halo to run the tile again with: one that suffices for every point whose `k` nearest were
 /// found in the range (more points in the range only shrink the radii), or, when the range
 /// holds fewer than `k` points, twice the halo (at least the range's extent). Growing the
-/// halo by it terminates: at worst the range becomes the whole cloud.
+/// halo by it terminates: at worst the range becomes the whole cloud, which a driver says
+/// with an infinite halo (never too small). `required_halo()` may be infinite (a point
+/// whose neighbours are farther than the largest double).
 class Halo_too_small : public std::runtime_error
 {
 public:
@@ -141,8 +157,10 @@ public:
     std::array<std::size_t, 3> counts;
     for(int a = 0; a < 3; ++a)
     {
-      const double extent = box.max(a) - box.min(a);
-      const double c = std::isfinite(extent) && extent > 0 ? std::ceil(extent / tile_side) : 1.0;
+      // the extent of finite bounds may overflow (from -1e308 to 1e308): halved, it cannot
+      const double half = std::isfinite(box.min(a)) && std::isfinite(box.max(a))
+                            ? box.max(a) / 2 - box.min(a) / 2 : 0.0;
+      const double c = half > 0 ? std::ceil(2 * (half / tile_side)) : 1.0;
       counts[a] = static_cast<std::size_t>(std::min(c, 1e6));
     }
     set(box, counts);
@@ -214,9 +232,14 @@ private:
       std::vector<double>& b = m_boundaries[a];
       b.assign(1, -inf);
       const double lo = box.min(a), extent = box.max(a) - box.min(a);
+      // an extent that overflows (finite bounds from -1e308 to 1e308) is split in halves:
+      // lo/2 + (hi/2 - lo/2) t stays between lo/2 and hi/2, and doubling it is exact
+      const double half = box.max(a) / 2 - box.min(a) / 2;
+      const bool overflows = !std::isfinite(extent) && std::isfinite(half);
       for(std::size_t i = 1; i < n; ++i)
       {
-        const double v = lo + extent * (double(i) / double(n));
+        const double t = double(i) / double(n);
+        const double v = overflows ? 2 * (lo / 2 + half * t) : lo + extent * t;
         if(std::isfinite(v) && v > b.back())
           b.push_back(v);
       }

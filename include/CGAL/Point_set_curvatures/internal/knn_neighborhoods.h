@@ -424,10 +424,11 @@ for_each_neighborhood_knn(const PointRange& points, PointMap point_map, NormalMa
     const std::size_t m = input.input_index.size();
     if(m == 0)
       return status;
-    if(options.has_tile && k > m)
+    if(options.has_tile && k > m && options.tile.halo != std::numeric_limits<double>::infinity())
     {
       // The range holds fewer than k points: its points' k nearest lie (partly) outside, at
-      // distances nothing here bounds. Ask for a larger halo.
+      // distances nothing here bounds. Ask for a larger halo. (An infinite halo: the range
+      // is the whole cloud, and every point is every point's neighbour, as in one piece.)
       double extent = 0;
       for(int a = 0; a < 3; ++a)
         extent = std::max(extent, input.hi[a] - input.lo[a]);

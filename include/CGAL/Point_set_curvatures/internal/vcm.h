@@ -3,7 +3,9 @@
 //
 // Curvature magnitudes from the Voronoi Covariance Measure (Mérigot, Ovsjanikov, Guibas,
 // "Voronoi-based curvature and feature estimation from point clouds", IEEE TVCG 17(6),
-// 2011), with the covariance matrices of CGAL::compute_vcm().
+// 2011), with the covariance matrices of CGAL::compute_vcm() (CGAL 5.5): CGAL's Delaunay
+// triangulation, the cells cut by the ball and integrated by vcm_cells.h, which makes them
+// reproducible bit for bit (CGAL's own construction depends on memory addresses).
 //
 // The VCM of a point p_i is the covariance matrix, about p_i, of its Voronoi cell cut by the
 // ball of radius R (the offset radius). Summed over the points of the ball B(x, r) (the
@@ -24,8 +26,8 @@
 //
 // Discretisation bias: each Voronoi cell also spreads tangentially over the sampling
 // spacing h, which adds about h²/(4 R²) to every λ_i / λ_n (an isotropic upward bias of
-// the magnitudes, sizeable at 40 neighbours: see estimate_vcm_curvatures.h), and CGAL
-// approximates the ball of radius R by a 20-face polytope.
+// the magnitudes, sizeable at 40 neighbours: see estimate_vcm_curvatures.h), and the ball
+// of radius R is approximated by a 20-face polytope (CGAL's).
 
 #ifndef CGAL_POINT_SET_CURVATURES_INTERNAL_VCM_H
 #define CGAL_POINT_SET_CURVATURES_INTERNAL_VCM_H
@@ -36,15 +38,18 @@
 #include <CGAL/Point_set_curvatures/internal/knn_neighborhoods.h>
 #include <CGAL/Point_set_curvatures/internal/local_estimate.h>
 #include <CGAL/Point_set_curvatures/internal/symmetric_eigen_3.h>
+#include <CGAL/Point_set_curvatures/internal/vcm_cells.h>
 #include <CGAL/Point_set_curvatures/parameters.h>
 
+#include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Fuzzy_sphere.h>
 #include <CGAL/Kd_tree.h>
 #include <CGAL/Search_traits_3.h>
 #include <CGAL/Search_traits_adapter.h>
 #include <CGAL/Simple_cartesian.h>
-#include <CGAL/vcm_estimate_normals.h>
+#include <CGAL/Triangulation_data_structure_3.h>
+#include <CGAL/Triangulation_vertex_base_with_info_3.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
@@ -137,7 +142,8 @@ inline Vcm_neighborhood_record vcm_neighborhood_record(const Neighborhood& nb)
 }
 
 // The whole estimate_vcm_curvatures(): the neighbourhood driver (statuses, counts, per-point
-// radii), CGAL's VCM on the usable points, then one diagonalisation per point.
+// radii), the VCM of the usable points (Delaunay triangulation, cells, convolution), then one
+// diagonalisation per point.
 template <class ConcurrencyTag, class PointRange, class NamedParameters>
 std::vector<Curvature_estimate<
   typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
@@ -168,8 +174,9 @@ estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double 
   // 1. The package's neighbourhoods (the same driver as every estimator): statuses of
   // unusable points, counts, per-point radii, and whether they lack tangent spread (one
   // scan line: a curvature is not measured).
-  // CGAL's VCM integrates over Voronoi cells, which depend on points beyond any fixed halo:
-  // tiles cannot give the whole-cloud result, so they are refused rather than approximated.
+  // The cells come from the Delaunay triangulation of the whole cloud, and by count the
+  // offset radius is the median radius of the whole cloud: tiles are refused rather than
+  // approximated.
   if(!choose_parameter(get_parameter(np, internal_np::tile), Tile::whole_space()).is_whole_space())
     throw std::invalid_argument(std::string(function_name) + ": parameter 'tile' is not supported by VCM");
   const std::size_t min_count =
@@ -205,7 +212,7 @@ estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double 
   const std::size_t m = vcm_points.size();
   if(m == 0)
     return results;
-  // CGAL's Delaunay triangulation and Voronoi constructions square coordinates: beyond
+  // CGAL's Delaunay triangulation and the cells square coordinates: beyond
   // 1e150 they overflow (and crash CGAL's exact fallback), so such clouds are refused.
   for(const Vcm_point& p : vcm_points)
     if(std::abs(p.x()) > 1e150 || std::abs(p.y()) > 1e150 || std::abs(p.z()) > 1e150)
@@ -272,14 +279,90 @@ estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double 
   if(callback && !callback(0.0))
     return results;
 
-  // 3. CGAL's VCM: Delaunay triangulation, Voronoi cells cut by the offset ball and, with a
-  // radius, CGAL's convolution over the balls of radius r (sequential).
-  std::vector<std::array<double, 6> > cov;
-  CGAL::compute_vcm(vcm_points, cov, offset_radius, by_count ? 0.0 : radius);
+  // 3. The Voronoi cells: CGAL's Delaunay triangulation of the usable points (coincident
+  // points share a vertex, hence a cell), each point's neighbours in the order of their
+  // input index (read sequentially: CGAL's incident_vertices() marks the vertices it
+  // visits), then the cells cut by the offset ball and their covariances (vcm_cells.h:
+  // reproducible bit for bit, in parallel with the tag), in batches of at most 1% of the
+  // points between reports.
+  typedef CGAL::Triangulation_vertex_base_with_info_3<std::uint32_t, CGAL::Epick> Vertex_base;
+  typedef CGAL::Triangulation_data_structure_3<Vertex_base> Tds;
+  typedef CGAL::Delaunay_triangulation_3<CGAL::Epick, Tds> Delaunay;
+  std::vector<std::uint32_t> neighbor_begin(m + 1, 0), neighbors;
+  std::vector<std::uint32_t> cell_of(m);  // the point whose vertex holds each point's cell
+  {
+    std::vector<std::pair<Vcm_point, std::uint32_t> > with_index;
+    with_index.reserve(m);
+    for(std::size_t j = 0; j < m; ++j)
+      with_index.emplace_back(vcm_points[j], static_cast<std::uint32_t>(j));
+    Delaunay dt(with_index.begin(), with_index.end());
+    std::vector<typename Delaunay::Vertex_handle> vertex_of(m);
+    std::vector<char> has_vertex(m, 0);
+    for(typename Delaunay::Vertex_handle v : dt.finite_vertex_handles())
+    {
+      vertex_of[v->info()] = v;
+      has_vertex[v->info()] = 1;
+    }
+    std::vector<typename Delaunay::Vertex_handle> around;
+    std::vector<std::uint32_t> list;
+    for(std::size_t j = 0; j < m; ++j)
+    {
+      if(!has_vertex[j])  // a point coincident with another one's vertex
+        vertex_of[j] = dt.nearest_vertex(vcm_points[j]);
+      cell_of[j] = vertex_of[j]->info();
+      list.clear();
+      if(cell_of[j] == j)
+      {
+        around.clear();
+        dt.incident_vertices(vertex_of[j], std::back_inserter(around));
+        for(const auto& w : around)
+          if(!dt.is_infinite(w))
+            list.push_back(w->info());
+        std::sort(list.begin(), list.end());
+      }
+      neighbors.insert(neighbors.end(), list.begin(), list.end());
+      neighbor_begin[j + 1] = static_cast<std::uint32_t>(neighbors.size());
+    }
+  }
+  std::vector<std::array<double, 6> > cov(m);
+  {
+    Vcm_cell_scratch ball_scratch;
+    vcm_ball_polytope(offset_radius, ball_scratch);
+    const Vcm_polytope ball = ball_scratch.cell;
+    Per_thread<std::pair<Vcm_cell_scratch, std::vector<double> > > scratches(is_parallel<ConcurrencyTag>());
+    const std::size_t batch = callback ? std::max<std::size_t>(1, (m + 99) / 100) : std::max<std::size_t>(m, 1);
+    for(std::size_t first = 0; first < m; first += batch)
+    {
+      const std::size_t last = std::min(m, first + batch);
+      process_in_parallel(is_parallel<ConcurrencyTag>(), first, last, [&](std::uint32_t b, std::uint32_t e) {
+        auto& scratch = scratches.local();
+        std::vector<double>& d = scratch.second;
+        for(std::size_t j = b; j < e; ++j)
+        {
+          if(cell_of[j] != j)
+            continue;  // (a coincident point's, copied below)
+          const Vcm_point& p = vcm_points[j];
+          d.clear();
+          for(std::uint32_t k = neighbor_begin[j]; k < neighbor_begin[j + 1]; ++k)
+          {
+            const Vcm_point& q = vcm_points[neighbors[k]];
+            d.push_back(q.x() - p.x());
+            d.push_back(q.y() - p.y());
+            d.push_back(q.z() - p.z());
+          }
+          cov[j] = vcm_covariance(ball, d.data(), d.size() / 3, scratch.first);
+        }
+      });
+      if(callback && !callback(0.5 * double(last) / double(m)))
+        return results;  // every point NOT_COMPUTED
+    }
+    for(std::size_t j = 0; j < m; ++j)
+      cov[j] = cov[cell_of[j]];
+  }
 
-  // By count: convolution over each point's own neighbourhood (the points at distance
-  // < its radius, as for the other estimators). CGAL's convolution by count
-  // (CGAL::internal::vcm_convolve, 5.5) does not initialise its sums, so it is not used.
+  // The convolution: each point's matrix is the sum of the cells' over its neighbourhood
+  // (by radius, the points at distance at most r, CGAL's convolution; by count, at distance
+  // < its own radius, as for the other estimators), summed in the order of the input index.
   typedef CGAL::Simple_cartesian<double>::Point_3 Search_point;
   std::vector<Search_point> search_points;
   typedef boost::iterator_property_map<const Search_point*,
@@ -289,7 +372,6 @@ estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double 
   typedef CGAL::Kd_tree<Search_traits> Tree;
   typedef CGAL::Fuzzy_sphere<Search_traits> Ball;
   std::unique_ptr<Tree> tree;
-  if(by_count)
   {
     search_points.reserve(m);
     for(const Vcm_point& p : vcm_points)
@@ -303,42 +385,45 @@ estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double 
   }
 
   // 4. One diagonalisation per point.
-  auto estimate = [&](std::size_t j) {
+  auto estimate = [&](std::size_t j, std::vector<std::uint32_t>& found) {
     const std::size_t i = input_index[j];
     Local_estimate e;
     if(records[i].count < min_count)
       e = Local_estimate::invalid(Curvature_estimate_status::TOO_FEW_NEIGHBORS);
     else if(records[i].no_spread)
       e = Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
-    else if(!by_count)
-      e = vcm_curvature_estimate(cov[j], radius, orientation[j].data());
     else
     {
-      const double r = records[i].radius;
+      const double r = by_count ? records[i].radius : radius;
       const Search_point& x = search_points[j];
       std::array<double, 6> sum = {0, 0, 0, 0, 0, 0};
-      std::vector<std::uint32_t> found;
-      tree->search(std::back_inserter(found),
-                   Ball(x, r, 0.0, tree->traits()));
+      found.clear();
+      // (the tree's ball, slightly larger, is only a filter: the test below decides)
+      tree->search(std::back_inserter(found), Ball(x, r * (1 + 1e-9), 0.0, tree->traits()));
       std::sort(found.begin(), found.end());  // summation order independent of the tree
       for(std::uint32_t f : found)
-        if(CGAL::squared_distance(search_points[f], x) < r * r)
+      {
+        const double d2 = CGAL::squared_distance(search_points[f], x);
+        if(by_count ? d2 < r * r : d2 <= r * r)
           for(int a = 0; a < 6; ++a)
             sum[a] += cov[f][a];
+      }
       e = vcm_curvature_estimate(sum, r, orientation[j].data());
     }
     results[i] = to_curvature_estimate<Geom_traits>(e, records[i].count);
   };
   // batches of at most 1% of the points, as the driver's
+  Per_thread<std::vector<std::uint32_t> > found(is_parallel<ConcurrencyTag>());
   const std::size_t batch = callback ? std::max<std::size_t>(1, (m + 99) / 100) : std::max<std::size_t>(m, 1);
   for(std::size_t first = 0; first < m; first += batch)
   {
     const std::size_t last = std::min(m, first + batch);
     process_in_parallel(is_parallel<ConcurrencyTag>(), first, last, [&](std::uint32_t b, std::uint32_t e) {
+      std::vector<std::uint32_t>& local = found.local();
       for(std::size_t j = b; j < e; ++j)
-        estimate(j);
+        estimate(j, local);
     });
-    if(callback && !callback(double(last) / double(m)))
+    if(callback && !callback(last == m ? 1.0 : 0.5 + 0.5 * double(last) / double(m)))
       break;  // the points not reached keep NOT_COMPUTED
   }
   return results;
