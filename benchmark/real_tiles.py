@@ -47,8 +47,8 @@ def summary(path):
         h = np.abs(v["mean"][ok])
         med[c] = np.median(h) if len(h) else np.nan
         extra = ""
-        if "quality" in fields:
-            extra = f", median quality {np.median(v['quality'][ok]) if ok.any() else np.nan:.3g}"
+        if "normal_coherence" in fields and ok.any():
+            extra = f", median normal_coherence {np.median(v['normal_coherence'][ok]):.3g}"
         print(f"  class {c:2d} {CLASSES.get(int(c), ''):18s} {m.sum():7d} points: up {100 * np.mean(v['nz'][m] > 0):5.1f}%,"
               f" valid {100 * np.mean(v['valid'][m] == 1):5.1f}%, median |H| {med[c]:.4g}{extra}")
     veg = [c for c in (3, 4, 5) if c in med and not np.isnan(med[c])]
