@@ -1354,72 +1354,6 @@ TEST_CASE("estimate_oriented_normals: closed objects outward, open ones up, auto
                   std::invalid_argument);
 }
 
-// The tool without normals: quadric normals, orientation by the input's kind (said in the
-// summary), the position blend; the plain pipeline stays reachable.
-TEST_CASE("tool: without normals, the default pipeline and what the summary says of it")
-{
-  const std::vector<scan::Sample> terrain = scan::airborne_lines(scan::wavy_terrain(), 6, 0.1, 0.5);
-  const std::vector<Oriented_point> pts = scan::with_true_normals(terrain);
-  const double offset[3] = {500000, 4000000, 100};
-  std::vector<Oriented_point> shifted;
-  for(const Oriented_point& p : pts)
-    shifted.emplace_back(p.first + Vector(offset[0], offset[1], offset[2]), p.second);
-  write_text(file("terrain.las"), las_file(shifted, 1, 2, 1e-4, offset));
-  write_xyz(file("terrain.xyz"), pts, false);
-  const Run las = run_tool(q(file("terrain.las")) + " " + q(file("terrain_las.csv")) + " --fields mean,normal,valid");
-  REQUIRE(las.status == 0);
-  CHECK(las.out.find("normals     a quadric fitted to the 40 nearest neighbours, oriented +z (LAS file, 2.5-D") !=
-        std::string::npos);
-  CHECK(las.out.find("blended with a position fit, weight 0.5") != std::string::npos);
-  const Run xyz = run_tool(q(file("terrain.xyz")) + " " + q(file("terrain_xyz.csv")) + " --fields mean,normal,valid");
-  REQUIRE(xyz.status == 0);
-  CHECK(xyz.out.find("oriented mst: along a minimum spanning tree") != std::string::npos);
-  // the plain pipeline: PCA normals of 18, no blend
-  const Run plain = run_tool(q(file("terrain.xyz")) + " " + q(file("terrain_plain.csv")) +
-                             " --normal-fit plane --position-blend 0 --fields mean,valid");
-  REQUIRE(plain.status == 0);
-  CHECK(plain.out.find("the PCA plane of the 18 nearest neighbours") != std::string::npos);
-  CHECK(plain.out.find("blended") == std::string::npos);
-  auto error_of = [&](const std::string& csv) {
-    std::ifstream in(csv);
-    std::string line;
-    std::getline(in, line);
-    const std::vector<std::string> header = [&]() {
-      std::vector<std::string> h;
-      std::stringstream ss(line);
-      std::string f;
-      while(std::getline(ss, f, ','))
-        h.push_back(f);
-      return h;
-    }();
-    const std::size_t at = std::find(header.begin(), header.end(), "mean") - header.begin();
-    double sum = 0;
-    std::size_t i = 0;
-    while(std::getline(in, line))
-    {
-      std::stringstream ss(line);
-      std::string f;
-      for(std::size_t c = 0; c <= at; ++c)
-        std::getline(ss, f, ',');
-      sum += std::abs(std::stod(f) - terrain[i++].truth.mean);
-    }
-    REQUIRE(i == terrain.size());
-    return sum / double(i);
-  };
-  const double e_las = error_of(file("terrain_las.csv")), e_xyz = error_of(file("terrain_xyz.csv")),
-               e_plain = error_of(file("terrain_plain.csv"));
-  measured("tool on airborne lines without normals: mean |H error|, LAS default", e_las);
-  measured("tool on airborne lines without normals: mean |H error|, text default", e_xyz);
-  measured("tool on airborne lines without normals: mean |H error|, plane normals, no blend", e_plain);
-  // measured 1.40e-3 (both) against 3.31e-3
-  CHECK(e_las < 0.7 * e_plain);
-  CHECK(e_xyz < 0.7 * e_plain);
-  // bad values
-  CHECK(run_tool(q(file("terrain.xyz")) + " " + q(file("x.csv")) + " --position-blend 1.5").status == 2);
-  CHECK(run_tool(q(file("terrain.xyz")) + " " + q(file("x.csv")) + " --normal-fit cubic").status == 2);
-  CHECK(run_tool(q(file("terrain.xyz")) + " " + q(file("x.csv")) + " --normal-neighbors 5").status == 2);
-}
-
 // Issue 14: Ctrl-C is honoured within a batch (at most 1% of the points, ~0.25 s) even when
 // one grid cell holds every point, and neither one nor two interrupts leave a temporary file.
 TEST_CASE("tool: SIGINT during a long run exits 130 and leaves no temporary file, once or twice")
@@ -2173,4 +2107,52 @@ TEST_CASE("tool: SIGTERM during a long tiled run exits 130 and leaves no file")
   CHECK(read_text(file("long.err")).find("interrupted (") != std::string::npos);
   CHECK(!fs::exists(file("long.ply")));
   CHECK(files_starting_with(".long.ply") == 0);
+}
+
+// The tool without normals: quadric normals, orientation by the input's kind (said in the
+// summary), the position blend; the plain pipeline stays reachable.
+TEST_CASE("tool: without normals, the default pipeline and what the summary says of it")
+{
+  const std::vector<scan::Sample> terrain = scan::airborne_lines(scan::wavy_terrain(), 6, 0.1, 0.5);
+  const std::vector<Oriented_point> pts = scan::with_true_normals(terrain);
+  const double offset[3] = {500000, 4000000, 100};
+  std::vector<Oriented_point> shifted;
+  for(const Oriented_point& p : pts)
+    shifted.emplace_back(p.first + Vector(offset[0], offset[1], offset[2]), p.second);
+  write_text(file("terrain.las"), las_file(shifted, 1, 2, 1e-4, offset));
+  write_xyz(file("terrain.xyz"), pts, false);
+  const Run las = run_tool(q(file("terrain.las")) + " " + q(file("terrain_las.csv")) + " --fields mean,normal,valid");
+  REQUIRE(las.status == 0);
+  CHECK(las.out.find("normals     a quadric fitted to the 40 nearest neighbours, oriented +z (LAS file, 2.5-D") !=
+        std::string::npos);
+  CHECK(las.out.find("blended with a position fit, weight 0.5") != std::string::npos);
+  const Run xyz = run_tool(q(file("terrain.xyz")) + " " + q(file("terrain_xyz.csv")) + " --fields mean,normal,valid");
+  REQUIRE(xyz.status == 0);
+  CHECK(xyz.out.find("oriented mst: along a minimum spanning tree") != std::string::npos);
+  // the plain pipeline: PCA normals of 18, no blend
+  const Run plain = run_tool(q(file("terrain.xyz")) + " " + q(file("terrain_plain.csv")) +
+                             " --normal-fit plane --position-blend 0 --fields mean,valid");
+  REQUIRE(plain.status == 0);
+  CHECK(plain.out.find("the PCA plane of the 18 nearest neighbours") != std::string::npos);
+  CHECK(plain.out.find("blended") == std::string::npos);
+  auto error_of = [&](const std::string& csv) {
+    const std::vector<std::string> mean = csv_column(read_text(csv), "mean");
+    REQUIRE(mean.size() == terrain.size());
+    double sum = 0;
+    for(std::size_t i = 0; i < mean.size(); ++i)
+      sum += std::abs(std::stod(mean[i]) - terrain[i].truth.mean);
+    return sum / double(mean.size());
+  };
+  const double e_las = error_of(file("terrain_las.csv")), e_xyz = error_of(file("terrain_xyz.csv")),
+               e_plain = error_of(file("terrain_plain.csv"));
+  measured("tool on airborne lines without normals: mean |H error|, LAS default", e_las);
+  measured("tool on airborne lines without normals: mean |H error|, text default", e_xyz);
+  measured("tool on airborne lines without normals: mean |H error|, plane normals, no blend", e_plain);
+  // measured 1.40e-3 (both) against 3.31e-3
+  CHECK(e_las < 0.7 * e_plain);
+  CHECK(e_xyz < 0.7 * e_plain);
+  // bad values
+  CHECK(run_tool(q(file("terrain.xyz")) + " " + q(file("x.csv")) + " --position-blend 1.5").status == 2);
+  CHECK(run_tool(q(file("terrain.xyz")) + " " + q(file("x.csv")) + " --normal-fit cubic").status == 2);
+  CHECK(run_tool(q(file("terrain.xyz")) + " " + q(file("x.csv")) + " --normal-neighbors 5").status == 2);
 }
