@@ -4,11 +4,12 @@
 // A cloud without normals: read the positions only, estimate normals with the package
 // (CGAL::estimate_oriented_normals: a weighted quadric fitted to the 40 nearest neighbours,
 // oriented along a minimum spanning tree), then estimate the Algebraic Shape Operator with a
-// fit of the positions blended in (position_fit_blend(0.5)), which makes it as accurate as with
-// exact normals on simulated scans. The sign of the curvatures follows the orientation found:
-// each connected part outward if it is closed, up if it is open. For an airborne scan, orient
-// along +z instead: normal_orientation(CGAL::Normal_orientation::along_vector(0, 0, 1)), or
-// Normal_orientation::automatic() (+z if the cloud is 2.5-D).
+// fit of the positions blended in (position_fit_blend(0.5)): on simulated scans its error was
+// within 1.35 times that with exact normals. The sign of the curvatures follows the orientation
+// found: each connected part outward if it is closed, up if it is open. For an airborne scan,
+// orient along +z instead: normal_orientation(CGAL::Normal_orientation::along_vector(0, 0, 1)),
+// or Normal_orientation::automatic() (the spanning tree, with +z on the near-vertical normals
+// of its open parts if the cloud is 2.5-D).
 //
 // usage: curvatures_without_normals INPUT [NEIGHBORS]
 // (INPUT: any point file CGAL reads; normals in it, if any, are ignored here)

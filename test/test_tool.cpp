@@ -786,7 +786,7 @@ TEST_CASE("tool: a file without normals gets estimated, oriented normals and a w
   }
   measured("normals estimated by the tool: outward (of 10000)", double(outward));
   measured("normals estimated by the tool: max |H - H(exact normals)|", worst);
-  // Orientation: the spanning tree starts outward (top point, +z) on this closed surface;
+  // Orientation: the spanning tree's part is closed, so its sign is chosen outward;
   // measured 10000/10000.
   CHECK(outward == pts.size());
   // H with the tool's normals (a quadric of 40 neighbours) vs exact normals (|H| up to 0.35):
@@ -1106,7 +1106,7 @@ TEST_CASE("estimate_oriented_normals: spheres and a terrain, by spanning tree, v
   // 0.0004 degrees (the PCA plane of 18 gave 0.79: its tilt is second order in the spacing)
   measured("sphere, quadric normals, worst angle (deg)", tree.first);
   CHECK(tree.first < 0.01);
-  CHECK(tree.second == 0);  // both spheres outward: each part seeded at its top, +z
+  CHECK(tree.second == 0);  // both spheres outward: each part is closed, its sign chosen outward
 
   // towards the centre of the first sphere: every normal of the first sphere inward
   auto inward = positions_of(two);
@@ -1126,7 +1126,7 @@ TEST_CASE("estimate_oriented_normals: spheres and a terrain, by spanning tree, v
   measured("terrain, quadric normals by radius 0.1, worst angle (deg)", along.first);
   CHECK(along.first < 1.0);  // measured 0.18 (0.58 with the PCA plane; the sparse end has few points per ball)
   CHECK(along.second == 0);
-  // and the spanning tree agrees on the terrain (its top point's normal points up)
+  // and the spanning tree agrees on the terrain (an open part: its mean normal up)
   auto propagated = positions_of(terrain);
   CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(propagated, tuple_maps);
   CHECK(normal_agreement(propagated, terrain).second == 0);
@@ -1908,7 +1908,7 @@ TEST_CASE("tool: tiles of clouds smaller than a neighbourhood give the whole run
     write_las(file("few.las"), sphere(60, 1.0), 4, 3, 0.001, offset, 0, scanner);
     const std::string csv = same_whole_and_tiled(file("few.las"), "--orient scanner --normal-neighbors 200 --drop-attributes",
                                                  {"1K", "4K"}, ".csv");
-    // (every normal is the PCA of the whole sphere: meaningless, but the same) 40 neighbours
+    // (every normal is the fit of the whole sphere: meaningless, but the same) 40 neighbours
     const std::vector<std::string> neighbors = csv_column(csv, "neighbors");
     REQUIRE(neighbors.size() == 60);
     CHECK(std::count(neighbors.begin(), neighbors.end(), "40") == 60);
@@ -2151,6 +2151,23 @@ TEST_CASE("tool: without normals, the default pipeline and what the summary says
   // measured 1.40e-3 (both) against 3.31e-3
   CHECK(e_las < 0.7 * e_plain);
   CHECK(e_xyz < 0.7 * e_plain);
+  // the paper's variant stays the paper's estimator unless the blend is asked for
+  const Run paper = run_tool(q(file("terrain.las")) + " " + q(file("paper.csv")) + " --variant paper");
+  REQUIRE(paper.status == 0);
+  CHECK(paper.out.find("aso (paper's variant)") != std::string::npos);
+  CHECK(paper.out.find("blended") == std::string::npos);
+  // in tiles the automatic orientation (a spanning tree over the whole cloud) is refused with
+  // what to do, as the spanning tree is: the tiled run never differs from the whole one
+  const Run tiled = run_tool(q(file("terrain.las")) + " " + q(file("tiled.csv")) + " --memory-limit 200K");
+  CHECK(tiled.status == 2);
+  CHECK(tiled.err.find("--orient +z") != std::string::npos);
+  CHECK(!fs::exists(file("tiled.csv")));
+  const Run tiled_z = run_tool(q(file("terrain.las")) + " " + q(file("tiled_z.csv")) + " --orient +z --memory-limit 200K");
+  const Run whole_z = run_tool(q(file("terrain.las")) + " " + q(file("whole_z.csv")) + " --orient +z");
+  REQUIRE(tiled_z.status == 0);
+  REQUIRE(whole_z.status == 0);
+  CHECK(tiled_z.out.find("  tiles") != std::string::npos);
+  CHECK(read_text(file("tiled_z.csv")) == read_text(file("whole_z.csv")));
   // bad values
   CHECK(run_tool(q(file("terrain.xyz")) + " " + q(file("x.csv")) + " --position-blend 1.5").status == 2);
   CHECK(run_tool(q(file("terrain.xyz")) + " " + q(file("x.csv")) + " --normal-fit cubic").status == 2);

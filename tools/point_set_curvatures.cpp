@@ -216,7 +216,7 @@ struct Orientation_choice
   std::string text;      // what the summary says
 };
 
-Orientation_choice choose_orientation(const Options& o, bool las, bool has_pulses, bool tiled)
+Orientation_choice choose_orientation(const Options& o, bool las, bool has_pulses)
 {
   Orientation_choice c;
   c.orientation = o.orientation;
@@ -231,11 +231,6 @@ Orientation_choice choose_orientation(const Options& o, bool las, bool has_pulse
     c.orientation = CGAL::Normal_orientation::along_vector(0, 0, 1);
     c.scanner = true;
     c.text = "towards the scanner (LAS pulse directions; --orient auto)";
-  }
-  else if(las && tiled)
-  {
-    c.orientation = CGAL::Normal_orientation::along_vector(0, 0, 1);
-    c.text = "+z (LAS file estimated in tiles, taken as 2.5-D; --orient auto)";
   }
   else if(las)
     c.orientation = CGAL::Normal_orientation::automatic();  // text once the normals are known
@@ -530,11 +525,13 @@ std::string method_label(const Options& o, const Scale& scale)
 }
 
 // The scale and estimator options of the run: the command line's, with the position fit
-// blended in by default when the normals are estimated (--position-blend).
+// blended into the robust ASO by default when the normals are estimated (--position-blend;
+// --variant paper stays the paper's estimator unless asked).
 Scale estimation_scale(const Options& o, bool normals_estimated)
 {
   Scale s = o.scale;
-  s.position_fit_blend = o.position_blend >= 0 ? o.position_blend : normals_estimated ? 0.5 : 0.0;
+  const bool robust = s.variant == CGAL::Aso_variant::ROBUST;
+  s.position_fit_blend = o.position_blend >= 0 ? o.position_blend : normals_estimated && robust ? 0.5 : 0.0;
   return s;
 }
 
@@ -644,10 +641,11 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
   {
     if(o.require_normals)
       throw Error(cat(in_quotes(o.input), " has no normals (nx ny nz) and --require-normals was given"));
-    if(orientation.orientation.kind == CGAL::Normal_orientation::MINIMUM_SPANNING_TREE)
+    if(orientation.orientation.kind == CGAL::Normal_orientation::MINIMUM_SPANNING_TREE ||
+       orientation.orientation.kind == CGAL::Normal_orientation::AUTOMATIC)
       throw Error(cat(too_large, " and has no normals: they are estimated tile by tile, which needs a local "
                       "orientation, --orient +z (airborne scans), another axis, or viewpoint:X,Y,Z (a spanning "
-                      "tree spans the whole cloud); or raise --memory-limit"));
+                      "tree, which --orient auto uses here, spans the whole cloud); or raise --memory-limit"));
     c.warnings.push_back(cat(in_quotes(o.input), " has no normals: estimating them (", normal_fit_description(o),
                              ", oriented ", orientation.text, "); a wrong orientation flips the sign of the "
                              "curvatures"));
@@ -853,7 +851,7 @@ int run(const Options& o)
     throw Error(cat("--orient scanner: ", in_quotes(o.input), " holds no pulse directions (the wave packets of LAS point "
                     "formats 4, 5, 9 and 10); use --orient +z (airborne scans) or viewpoint:X,Y,Z"));
   const bool has_pulses = *std::min_element(pulse.begin(), pulse.end()) >= 0;
-  Orientation_choice orientation = choose_orientation(o, las, has_pulses, !input.fits);
+  Orientation_choice orientation = choose_orientation(o, las, has_pulses);
   if(!input.fits)
   {
     read_options.progress = Progress();

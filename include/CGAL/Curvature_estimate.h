@@ -96,8 +96,8 @@ struct Curvature_estimate
   /// how consistent the neighbours' normals are, a quality value in `[0, 1]`: the length of
   /// the kernel-weighted mean of their unit normals, as the fit oriented them
   /// (`estimate_aso_curvatures()` and `estimate_apss_curvatures()`; NaN for the other
-  /// estimators). 1 on a plane; on a smooth surface about `1 - (r k)²/c` with `c` between 6
-  /// and 16 depending on the kernel (0.99 or more wherever `r |k| < 0.3`); it falls where the
+  /// estimators). 1 on a plane, close to 1 on smooth surfaces (at least 0.996 on a sphere at
+  /// `r k = 0.2` with the default ASO); it falls where the
   /// normals disagree: foliage, noisy normals, edges and corners within `r`. Measured on real
   /// airborne tiles with the tool's defaults (benchmark/README.md, "Scans without normals"):
   /// medians 0.996 to 1 on ground and roofs, 0.86 to 0.93 in the vegetation classes; about 0.6

@@ -48,7 +48,9 @@ struct Normal_orientation
     /// Along a minimum spanning tree as `MINIMUM_SPANNING_TREE`; then, if the cloud is 2.5-D
     /// (airborne and mobile scans, seen from above: at least 60% of the estimated normals
     /// within 60 degrees of the vertical, see `CGAL::Point_set_curvatures::is_two_and_a_half_d()`),
-    /// every normal of the open parts along +z (closed parts stay outward).
+    /// every near-vertical normal of the open parts along +z on its own, so that a tree crown or
+    /// a roof edge cannot turn a region (steeper normals keep the tree's side; closed parts stay
+    /// outward).
     AUTOMATIC
   };
   Kind kind = MINIMUM_SPANNING_TREE;
@@ -233,9 +235,10 @@ inline Normal_record Normal_at_point::operator()(const Neighborhood& nb) const
 }
 
 // Turns the normals of one connected part (`part`, input indices) as a whole: outward if the
-// part looks closed, else up (Normal_orientation::MINIMUM_SPANNING_TREE), or with `upward`
-// each normal of an open part to +z (Normal_orientation::AUTOMATIC on a 2.5-D cloud). `xyz`
-// and `n` hold 3 values per point. Closed: the mean of the unit normals is shorter than 0.5 (it vanishes on a
+// part looks closed, else up (Normal_orientation::MINIMUM_SPANNING_TREE); then with `upward`
+// (Normal_orientation::AUTOMATIC on a 2.5-D cloud) each near-vertical normal of an open part
+// to +z on its own (steep ones, whose side up is noise, keep the tree's). `xyz` and `n` hold 3
+// values per point. Closed: the mean of the unit normals is shorter than 0.5 (it vanishes on a
 // closed surface sampled evenly; it is 0.5 on a hemisphere) and the flux sum (p - c) . n is at
 // least 0.3 sum |p - c| in magnitude (1 on a sphere, 0.57 on a torus of radii 1 and 0.4;
 // 0.1 on a terrestrial street scan, whose normals also nearly cancel).
@@ -264,18 +267,20 @@ inline void choose_part_sign(const std::vector<std::uint32_t>& part, const std::
   }
   const bool closed = m[0] * m[0] + m[1] * m[1] + m[2] * m[2] < 0.25 * count * count &&
                       std::abs(flux) >= 0.3 * spread;
-  if(upward && !closed)
-  {
-    for(std::uint32_t i : part)
-      if(n[3 * std::size_t(i) + 2] < 0)
-        for(int a = 0; a < 3; ++a)
-          n[3 * std::size_t(i) + a] = -n[3 * std::size_t(i) + a];
-    return;
-  }
+  auto turn = [&n](std::uint32_t i) {
+    for(int a = 0; a < 3; ++a)
+      n[3 * std::size_t(i) + a] = -n[3 * std::size_t(i) + a];
+  };
   if((closed ? flux : m[2]) < 0)
     for(std::uint32_t i : part)
-      for(int a = 0; a < 3; ++a)
-        n[3 * std::size_t(i) + a] = -n[3 * std::size_t(i) + a];
+      turn(i);
+  if(upward && !closed)
+    for(std::uint32_t i : part)
+    {
+      const double* v = &n[3 * std::size_t(i)];
+      if(v[2] < 0 && is_near_vertical(v[0], v[1], v[2]))
+        turn(i);
+    }
 }
 
 // Orients the unit normals `n` (3 per point; records that are not VALID have none) by Prim's
@@ -450,7 +455,6 @@ std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, dou
       }
     upward = is_two_and_a_half_d(vertical, usable);
   }
-  const bool tree = global;
   std::vector<double> n(3 * count, 0.0), xyz(3 * count, 0.0);
   std::size_t i = 0;
   for(auto it = points.begin(); it != points.end(); ++it, ++i)
@@ -461,7 +465,7 @@ std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, dou
     if(records[i].status != Curvature_estimate_status::VALID)
       continue;
     std::copy(records[i].normal, records[i].normal + 3, &n[3 * i]);
-    if(tree)
+    if(global)
       continue;
     double t[3] = {orientation.target[0], orientation.target[1], orientation.target[2]};
     if(orientation.kind == Normal_orientation::TOWARDS_POINT)
@@ -471,7 +475,7 @@ std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, dou
       for(int a = 0; a < 3; ++a)
         n[3 * i + a] = -n[3 * i + a];
   }
-  if(tree && !cancelled)
+  if(global && !cancelled)
   {
     std::function<bool(double)> tree_progress;
     if(callback)

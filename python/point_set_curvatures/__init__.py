@@ -128,6 +128,14 @@ def _bool(name, value):
     raise ValueError(f"option '{name}': expected a bool, got {value!r}")
 
 
+def _float_in(name, value, low, high):
+    if isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(value, (bool, np.bool_)):
+        v = float(value)
+        if low <= v <= high:
+            return v
+    raise ValueError(f"option '{name}': expected a number in [{low:g}, {high:g}], got {value!r}")
+
+
 def _int(name, value, least):
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
         raise ValueError(f"option '{name}': expected an integer, got {value!r}")
@@ -217,10 +225,7 @@ def _options(method, allowed, given):
         elif name == "normal_refinement":
             o.normal_refinement = _int(name, value, 0)
         elif name == "position_fit_blend":
-            v = float(value) if isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(value, bool) else None
-            if v is None or not (0 <= v <= 1):
-                raise ValueError(f"option 'position_fit_blend': expected a number in [0, 1], got {value!r}")
-            o.position_fit_blend = v
+            o.position_fit_blend = _float_in(name, value, 0.0, 1.0)
         elif name == "aso_projection":
             o.aso_projection = _choice(name, value, _ASO_PROJECTIONS)
         elif name == "degree_fitting":
@@ -572,12 +577,12 @@ def estimate_normals(points, *, neighbors=None, radius=None, orientation="mst", 
     ``fit``: ``"quadric"`` (a weighted quadric, smooth from point to point: the input the ASO
     needs; default, 40 neighbours by default) or ``"plane"`` (the PCA plane, 18 neighbours by
     default). With estimated normals, pass ``position_fit_blend=0.5`` to
-    :func:`estimate_curvatures` (method ``"aso"``): on simulated scans it makes the
-    curvatures as accurate as with exact normals.
+    :func:`estimate_curvatures` (method ``"aso"``): on simulated scans its error was within
+    1.35 times that with exact normals.
 
     ``orientation``: ``"mst"`` (along a minimum spanning tree, each connected part outward if
-    it is closed, up if it is open; default), ``"auto"`` (+z if the cloud is 2.5-D, as
-    airborne scans are, else ``"mst"``), ``"+x"``, ``"-x"``, ..., ``"-z"``,
+    it is closed, up if it is open; default), ``"auto"`` (``"mst"``, then +z on the
+    near-vertical normals of its open parts if the cloud is 2.5-D, as airborne scans are), ``"+x"``, ``"-x"``, ..., ``"-z"``,
     ``("along", (x, y, z))`` (every normal on the side of the vector) or
     ``("towards", (x, y, z))`` (towards a scanner).
 

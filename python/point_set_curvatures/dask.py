@@ -543,7 +543,7 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
     estimates and writes. Only paths, boxes and block numbers travel in the tasks, and only
     summaries come back. The workers write disjoint rows of a preallocated memory-mapped
     output rather than sending results to the client: the client then never holds more than
-    the small per-block and per-tile arrays (gathering would need the whole result, about 113
+    the small per-block and per-tile arrays (gathering would need the whole result, about 121
     bytes a point, in the client), and a task retried after a lost worker rewrites the same
     bytes. Every point is checked to be written by exactly one tile (own counts per tile, and
     sums of the indices), else RuntimeError.

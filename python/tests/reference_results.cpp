@@ -50,11 +50,11 @@ static void write_estimates(const std::string& name, const std::vector<Estimate>
   std::vector<double> v;
   for(const Estimate& x : e)
   {
-    const double r[15] = {x.normal.x(), x.normal.y(), x.normal.z(), x.min_curvature, x.max_curvature,
+    const double r[16] = {x.normal.x(), x.normal.y(), x.normal.z(), x.min_curvature, x.max_curvature,
                           x.mean_curvature, x.gaussian_curvature, x.min_direction.x(), x.min_direction.y(),
                           x.min_direction.z(), x.max_direction.x(), x.max_direction.y(), x.max_direction.z(),
-                          double(x.neighbor_count), double(int(x.status))};
-    v.insert(v.end(), r, r + 15);
+                          x.normal_coherence, double(x.neighbor_count), double(int(x.status))};
+    v.insert(v.end(), r, r + 16);
   }
   write(name, v);
 }
@@ -100,6 +100,8 @@ int main(int argc, char** argv)
                                             cloud, 1.5, P::aso_variant(CGAL::Aso_variant::PAPER,
                                                           P::normal_field_blend(true, np))));
   write_estimates("aso_k30", CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(cloud, P::neighbor_count(30, np)));
+  write_estimates("aso_k40_position_blend", CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
+                                              cloud, P::neighbor_count(40, P::position_fit_blend(0.5, np))));
   write_estimates("aso_quartic_authors_r1.5",
                   CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
                     cloud, 1.5, P::weight_kernel(CGAL::Apss_weight_kernel::SMOOTH_QUARTIC,
@@ -119,15 +121,22 @@ int main(int argc, char** argv)
   }
   write("features_r1.5", f);
 
-  std::vector<Oriented> unoriented = cloud;
-  CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(unoriented, np);
-  std::vector<double> n;
-  for(const Oriented& o : unoriented)
-  {
-    const double r[3] = {o.second.x(), o.second.y(), o.second.z()};
-    n.insert(n.end(), r, r + 3);
-  }
-  write("normals_k18", n);
+  // the normals of estimate_oriented_normals(): the defaults (a quadric of 40, the spanning
+  // tree), the PCA plane of 18, the automatic orientation
+  auto normals = [&](const std::string& name, const auto& parameters) {
+    std::vector<Oriented> unoriented = cloud;
+    CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(unoriented, parameters);
+    std::vector<double> n;
+    for(const Oriented& o : unoriented)
+    {
+      const double r[3] = {o.second.x(), o.second.y(), o.second.z()};
+      n.insert(n.end(), r, r + 3);
+    }
+    write(name, n);
+  };
+  normals("normals_default", np);
+  normals("normals_plane", P::normal_fit(CGAL::Normal_fit::PLANE, np));
+  normals("normals_auto", P::normal_orientation(CGAL::Normal_orientation::automatic(), np));
   std::cout << cloud.size() << " points\n";
   return 0;
 }

@@ -11,7 +11,8 @@ import pytest
 import point_set_curvatures as psc
 from conftest import fibonacci_sphere
 
-FIELDS = ("normal", "k_min", "k_max", "mean", "gaussian", "min_direction", "max_direction", "neighbors", "status")
+FIELDS = ("normal", "k_min", "k_max", "mean", "gaussian", "normal_coherence", "min_direction", "max_direction",
+          "neighbors", "status")
 
 
 def assert_same(a, b, fields=FIELDS):
@@ -71,6 +72,7 @@ CPP_CASES = [
     ("aso_paper_r1.5", dict(radius=1.5, threads=1, aso_variant="paper")),
     ("aso_paper_blend_r1.5", dict(radius=1.5, aso_variant="paper", normal_field_blend=True)),
     ("aso_k30", dict(neighbors=30)),
+    ("aso_k40_position_blend", dict(neighbors=40, position_fit_blend=0.5)),
     ("aso_quartic_authors_r1.5", dict(radius=1.5, weight_kernel="smooth_quartic",
                                       aso_projection="authors_implementation", min_neighbors=20)),
     ("apss_r1.5", dict(method="apss", radius=1.5)),
@@ -82,12 +84,13 @@ CPP_CASES = [
 @pytest.mark.parametrize("name,kwargs", CPP_CASES, ids=[c[0] for c in CPP_CASES])
 def test_same_as_cpp(reference, name, kwargs):
     points, normals, load = reference
-    ref = load(name, 15)
+    ref = load(name, 16)
     r = psc.estimate_curvatures(points, normals, **kwargs)
     expected = {
         "normal": ref[:, 0:3], "k_min": ref[:, 3], "k_max": ref[:, 4], "mean": ref[:, 5],
         "gaussian": ref[:, 6], "min_direction": ref[:, 7:10], "max_direction": ref[:, 10:13],
-        "neighbors": ref[:, 13].astype(np.int64), "status": ref[:, 14].astype(np.uint8),
+        "normal_coherence": ref[:, 13], "neighbors": ref[:, 14].astype(np.int64),
+        "status": ref[:, 15].astype(np.uint8),
     }
     assert (r["status"] == psc.Status.VALID).sum() > 9000
     assert_same(r, {k: np.ascontiguousarray(v) for k, v in expected.items()})
@@ -95,8 +98,8 @@ def test_same_as_cpp(reference, name, kwargs):
 
 def test_normal_field_blend_option(reference):
     points, normals, load = reference
-    paper = load("aso_paper_r1.5", 15)
-    blended = load("aso_paper_blend_r1.5", 15)
+    paper = load("aso_paper_r1.5", 16)
+    blended = load("aso_paper_blend_r1.5", 16)
     # the option reaches the C++ function: on the paper's variant it changes some estimates
     assert (paper[:, 4] != blended[:, 4]).sum() > 100
 
@@ -110,7 +113,13 @@ def test_same_as_cpp_features_and_normals(reference):
     assert np.array_equal(f["neighbors"], ref[:, 4].astype(np.int64))
     assert np.array_equal(f["status"], ref[:, 5].astype(np.uint8))
     n = psc.estimate_normals(points)
-    assert np.array_equal(n, load("normals_k18", 3))
+    assert np.array_equal(n, load("normals_default", 3))
+    # the fits and orientations of the C++ function, each reached
+    plane = psc.estimate_normals(points, fit="plane")
+    assert np.array_equal(plane, load("normals_plane", 3))
+    assert np.array_equal(psc.estimate_normals(points, orientation="auto"), load("normals_auto", 3))
+    with pytest.raises(ValueError, match="fit"):
+        psc.estimate_normals(points, fit="cubic")
 
 
 # ---- sample weights computed once, shared by several runs ----
@@ -252,6 +261,8 @@ def test_bad_arguments(sphere):
         dict(radius=1, method="jet", degree_monge=5), dict(radius=1, weight_kernel="constant"),
         dict(radius=1, method="vcm", tile=((0, 0, 0), (1, 1, 1), 2)), dict(radius=1, min_neighbors=-1),
         dict(radius=1, robust_orientation=1), dict(radius=1, progress=3), dict(radius="big"),
+        dict(radius=1, position_fit_blend=1.5), dict(radius=1, position_fit_blend=True),
+        dict(radius=1, position_fit_blend="half"), dict(radius=1, method="pss", position_fit_blend=0.5),
     ]
     for kwargs in cases:
         with pytest.raises(ValueError):
@@ -261,6 +272,8 @@ def test_bad_arguments(sphere):
         psc.estimate_curvatures(p, n, radius=1, method="jet", degree_monge=5)
     with pytest.raises(ValueError, match="CONSTANT is not supported"):
         psc.estimate_curvatures(p, n, radius=1, weight_kernel="constant")
+    with pytest.raises(ValueError, match="position_fit_blend"):
+        psc.estimate_curvatures(p, n, radius=1, position_fit_blend=-0.1)
 
 
 def test_empty_and_invalid_points(sphere):

@@ -438,7 +438,8 @@ inline Local_estimate aso_from_first_pass(const Neighborhood& nb, const Aso_firs
     if(!set_authors_shape_operator(gradient, hessian, u_l_value, 1.0 / nb.radius, e))
       return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
   }
-  e.normal_coherence = normal_coherence(m.A, m.C);
+  if(corrected_normal)  // (the authors' projection may read normals that are not unit)
+    e.normal_coherence = normal_coherence(m.A, m.C);
   e.status = Curvature_estimate_status::VALID;
   return e;
 }

@@ -82,69 +82,86 @@ inline bool has_disagreeing_normal(const Neighborhood& nb, const double ref[3])
 }
 
 // Sets `ref` to the reference orientation (orientation_reference() of the weighted sum of the
-// normals). Returns false if the neighbours whose normals disagree with it form a second sheet
-// rather than flipped normals of the same one: they carry at least 10% of the weight, their
-// normals are coherent and opposite to the reference (weighted mean cosine below -0.7), and
-// their weighted mean offset along the reference differs from the others' by more than 0.05 r
-// and by more than twice the offsets' spread (weighted standard deviation) within either
-// group. Flipped normals of one sheet sample the same disk (the same mean offset, up to
-// noise); the two sides of a thin plate, or two walls closer than r, are two tight layers
-// offset by their distance. Foliage, whose normals point anywhere and whose points fill a
-// volume, is one noisy surface: its estimate is given (with a low normal_coherence).
+// normals). Returns false if the neighbourhood holds two sheets rather than flipped normals of
+// one: the neighbours whose normals oppose the query's (negative dot product) carry at least
+// 10% of the weight; both groups' normals are coherent (the length of each group's weighted
+// mean unit normal at least 0.7) and opposite (the cosine of the two means below -0.7); and
+// along the axis between the two mean normals, the groups' weighted mean offsets differ by
+// more than 0.05 r and by more than twice the offsets' spread (weighted standard deviation)
+// within either group. Flipped normals of one sheet sample the same disk (the same mean
+// offset, up to noise); the two sides of a thin plate, or two walls closer than r, are two
+// tight layers offset by their distance. Foliage, whose normals point anywhere and whose
+// points fill a volume, is one noisy surface: its estimate is given (with a low
+// normal_coherence). The groups are split by the query's normal, not by the majority, which
+// two sheets of equal weight leave undetermined.
 template <class Kernel>
 inline bool majority_orientation(const Neighborhood& nb, double ref[3])
 {
-  double m[3] = {0, 0, 0};
+  // per group (0: with the query's normal, 1: against it): weight, sum w n, sum w q, sum w q q^T
+  double W[2] = {0, 0}, N[2][3] = {}, Q[2][3] = {}, QQ[2][6] = {};
+  double m[3] = {0, 0, 0};  // sum w n
+  const double* up = nb.query_normal;
   for(std::size_t i = 0; i < nb.size; ++i)
   {
-    const double s = nb.qx[i] * nb.qx[i] + nb.qy[i] * nb.qy[i] + nb.qz[i] * nb.qz[i];
-    double w = Kernel::weight(1.0 - s);
+    const double q[3] = {nb.qx[i], nb.qy[i], nb.qz[i]};
+    double w = Kernel::weight(1.0 - (q[0] * q[0] + q[1] * q[1] + q[2] * q[2]));
     if(nb.sample_weight)
       w *= nb.sample_weight[i];
-    m[0] += w * nb.nx[i]; m[1] += w * nb.ny[i]; m[2] += w * nb.nz[i];
+    const double n[3] = {nb.nx[i], nb.ny[i], nb.nz[i]};
+    m[0] += w * n[0]; m[1] += w * n[1]; m[2] += w * n[2];
+    const int g = n[0] * up[0] + n[1] * up[1] + n[2] * up[2] < 0 ? 1 : 0;
+    const double l2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+    const double inv = l2 > 0 ? 1.0 / std::sqrt(l2) : 0.0;
+    W[g] += w;
+    for(int a = 0; a < 3; ++a)
+    {
+      N[g][a] += w * n[a] * inv;
+      Q[g][a] += w * q[a];
+    }
+    QQ[g][0] += w * q[0] * q[0]; QQ[g][1] += w * q[0] * q[1]; QQ[g][2] += w * q[0] * q[2];
+    QQ[g][3] += w * q[1] * q[1]; QQ[g][4] += w * q[1] * q[2]; QQ[g][5] += w * q[2] * q[2];
   }
   orientation_reference(m, nb.query_normal, ref);
-  const double rr = ref[0] * ref[0] + ref[1] * ref[1] + ref[2] * ref[2];
-  if(!(rr > 0))
+  if(!(W[1] > 0.1 * (W[0] + W[1])) || !(W[0] > 0.1 * (W[0] + W[1])))
     return true;
-  const double inv = 1.0 / std::sqrt(rr);
-  // per group (0 agreeing, 1 disagreeing): weight, sums of w h, w h², w cos
-  double w_sum[2] = {0, 0}, h_sum[2] = {0, 0}, hh_sum[2] = {0, 0}, cos_sum[2] = {0, 0};
-  for(std::size_t i = 0; i < nb.size; ++i)
-  {
-    const double s = nb.qx[i] * nb.qx[i] + nb.qy[i] * nb.qy[i] + nb.qz[i] * nb.qz[i];
-    double w = Kernel::weight(1.0 - s);
-    if(nb.sample_weight)
-      w *= nb.sample_weight[i];
-    const double h = (nb.qx[i] * ref[0] + nb.qy[i] * ref[1] + nb.qz[i] * ref[2]) * inv;
-    const double nn = nb.nx[i] * nb.nx[i] + nb.ny[i] * nb.ny[i] + nb.nz[i] * nb.nz[i];
-    const double c = nn > 0 ? (nb.nx[i] * ref[0] + nb.ny[i] * ref[1] + nb.nz[i] * ref[2]) * inv / std::sqrt(nn) : 0.0;
-    const int g = c < 0 ? 1 : 0;
-    w_sum[g] += w;
-    h_sum[g] += w * h;
-    hh_sum[g] += w * h * h;
-    cos_sum[g] += w * c;
-  }
-  if(!(w_sum[1] > 0.1 * (w_sum[0] + w_sum[1])) || !(w_sum[0] > 0))
-    return true;
-  if(!(cos_sum[1] < -0.7 * w_sum[1]))
-    return true;  // the disagreeing normals point anywhere: not a sheet
-  double mean[2], spread[2];
+  double mean[2][3], length[2];
   for(int g = 0; g < 2; ++g)
   {
-    mean[g] = h_sum[g] / w_sum[g];
-    spread[g] = std::sqrt(std::max(0.0, hh_sum[g] / w_sum[g] - mean[g] * mean[g]));
+    for(int a = 0; a < 3; ++a)
+      mean[g][a] = N[g][a] / W[g];
+    length[g] = std::sqrt(mean[g][0] * mean[g][0] + mean[g][1] * mean[g][1] + mean[g][2] * mean[g][2]);
   }
-  const double separation = std::abs(mean[1] - mean[0]);
+  const double cosine = (mean[0][0] * mean[1][0] + mean[0][1] * mean[1][1] + mean[0][2] * mean[1][2]) /
+                        (length[0] * length[1]);
+  if(!(length[0] >= 0.7 && length[1] >= 0.7 && cosine < -0.7))
+    return true;  // normals pointing anywhere, or not opposite: not two sheets
+  double axis[3] = {mean[0][0] - mean[1][0], mean[0][1] - mean[1][1], mean[0][2] - mean[1][2]};
+  const double al = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+  for(double& x : axis)
+    x /= al;
+  double offset[2], spread[2];
+  for(int g = 0; g < 2; ++g)
+  {
+    offset[g] = (axis[0] * Q[g][0] + axis[1] * Q[g][1] + axis[2] * Q[g][2]) / W[g];
+    const double* M = QQ[g];
+    const double second = (axis[0] * (M[0] * axis[0] + M[1] * axis[1] + M[2] * axis[2]) +
+                           axis[1] * (M[1] * axis[0] + M[3] * axis[1] + M[4] * axis[2]) +
+                           axis[2] * (M[2] * axis[0] + M[4] * axis[1] + M[5] * axis[2])) / W[g];
+    spread[g] = std::sqrt(std::max(0.0, second - offset[g] * offset[g]));
+  }
+  const double separation = std::abs(offset[1] - offset[0]);
   return separation <= 0.05 || separation <= 2 * std::max(spread[0], spread[1]);
 }
 
 // The length of the weighted mean of the neighbours' unit normals, |C| / A for the fits'
-// sums A = sum w and C = sum w n (normals oriented as the fit uses them), in [0, 1].
+// sums A = sum w and C = sum w n (normals oriented as the fit uses them), in [0, 1] (1 may be
+// exceeded by rounding only); NaN if it is not defined.
 inline double normal_coherence(double A, const double C[3])
 {
   const double c = std::sqrt(C[0] * C[0] + C[1] * C[1] + C[2] * C[2]) / A;
-  return c < 1 ? c : 1.0;
+  if(!(A > 0) || !std::isfinite(c))
+    return std::numeric_limits<double>::quiet_NaN();
+  return std::min(c, 1.0);
 }
 
 // One estimate in double precision, before conversion to the kernel's types.

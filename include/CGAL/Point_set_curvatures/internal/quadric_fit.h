@@ -30,15 +30,16 @@
 // badly determined. A small penalty on the anisotropic part of the quadratic term,
 // lambda ((a3 - a5)² + a4²) / 2, resolves that direction with the isotropic model (the same
 // curvature across the lines as along them) and barely moves well-sampled fits: lambda is
-// 1e-3 of the fourth moment sum w (u² + v²)² (measured on the scans of benchmark/
-// scan_experiments: 1e-2 biased the normals of the torus seen from a scanner, 1e-4 left the
-// airborne lines under-determined; 5e-4 and 1e-3 within 10% of each other).
+// 5e-4 of the fourth moment sum w (u² + v²)² (measured on the scans of benchmark/
+// scan_experiments: 5e-3 biased the normals of the torus seen from a scanner, 5e-5 left the
+// airborne lines under-determined, 2.5e-4 within 10% of 5e-4).
 
 #ifndef CGAL_POINT_SET_CURVATURES_INTERNAL_QUADRIC_FIT_H
 #define CGAL_POINT_SET_CURVATURES_INTERNAL_QUADRIC_FIT_H
 
 #include <CGAL/Point_set_curvatures/internal/height_field.h>
 #include <CGAL/Point_set_curvatures/internal/local_estimate.h>
+#include <CGAL/Point_set_curvatures/internal/pss.h>
 #include <CGAL/Point_set_curvatures/internal/symmetric_eigen_3.h>
 
 #include <cmath>
@@ -54,13 +55,6 @@ namespace internal {
 // would fit them. Two lines of an airborne scan 5 times farther apart than the spacing along
 // a line give about 0.4 at 40 neighbours; one line with the scanner's range noise about 0.004.
 constexpr double min_tangent_spread_ratio = 0.05;
-
-// The weight (1 - d²)² of a neighbour at scaled squared distance d2.
-inline double quadric_weight(double d2)
-{
-  const double t = 1.0 - d2;
-  return t > 0 ? t * t : 0.0;
-}
 
 // True if a covariance of positions whose eigenvalues are `values` (ascending) spreads in
 // two directions: see min_tangent_spread_ratio.
@@ -83,7 +77,7 @@ struct Quadric_fit
     double sw = 0, c[3] = {0, 0, 0};
     for(std::size_t i = 0; i < nb.size; ++i)
     {
-      const double w = quadric_weight(nb.qx[i] * nb.qx[i] + nb.qy[i] * nb.qy[i] + nb.qz[i] * nb.qz[i]);
+      const double w = pss_weight(nb.qx[i] * nb.qx[i] + nb.qy[i] * nb.qy[i] + nb.qz[i] * nb.qz[i]);
       sw += w;
       c[0] += w * nb.qx[i];
       c[1] += w * nb.qy[i];
@@ -96,7 +90,7 @@ struct Quadric_fit
     double cov[6] = {0, 0, 0, 0, 0, 0};
     for(std::size_t i = 0; i < nb.size; ++i)
     {
-      const double w = quadric_weight(nb.qx[i] * nb.qx[i] + nb.qy[i] * nb.qy[i] + nb.qz[i] * nb.qz[i]);
+      const double w = pss_weight(nb.qx[i] * nb.qx[i] + nb.qy[i] * nb.qy[i] + nb.qz[i] * nb.qz[i]);
       const double d[3] = {nb.qx[i] - c[0], nb.qy[i] - c[1], nb.qz[i] - c[2]};
       cov[0] += w * d[0] * d[0]; cov[1] += w * d[0] * d[1]; cov[2] += w * d[0] * d[2];
       cov[3] += w * d[1] * d[1]; cov[4] += w * d[1] * d[2]; cov[5] += w * d[2] * d[2];
@@ -104,11 +98,9 @@ struct Quadric_fit
     double values[3], vectors[3][3];
     if(!symmetric_eigen_3(cov, values, vectors) || !spreads_in_two_directions(values))
       return false;
-    const double side = vectors[0][0] * nb.query_normal[0] + vectors[0][1] * nb.query_normal[1] +
-                        vectors[0][2] * nb.query_normal[2] < 0 ? -1.0 : 1.0;
+    orient_like(vectors[0], nb.query_normal, n0);
     for(int i = 0; i < 3; ++i)
     {
-      n0[i] = side * vectors[0][i];
       t1[i] = vectors[2][i];
       t2[i] = vectors[1][i];
     }
@@ -118,7 +110,7 @@ struct Quadric_fit
     for(std::size_t i = 0; i < nb.size; ++i)
     {
       const double q[3] = {nb.qx[i], nb.qy[i], nb.qz[i]};
-      const double w = quadric_weight(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+      const double w = pss_weight(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
       if(!(w > 0))
         continue;
       const double u = t1[0] * q[0] + t1[1] * q[1] + t1[2] * q[2];
@@ -135,23 +127,11 @@ struct Quadric_fit
     return fit.solve(a);
   }
 
-  // The gradient n0 - a1 t1 - a2 t2 of F(y) = n0.y - h(t1.y, t2.y) at the query, and its
-  // Hessian (packed xx xy xz yy yz zz), in the scaled frame.
-  void gradient_and_hessian(double gradient[3], double hessian[6]) const
-  {
-    for(int i = 0; i < 3; ++i)
-      gradient[i] = n0[i] - a[1] * t1[i] - a[2] * t2[i];
-    for(int i = 0; i < 3; ++i)
-      for(int j = i; j < 3; ++j)
-        hessian[sym_index(i, j)] =
-          -(2.0 * a[3] * t1[i] * t1[j] + a[4] * (t1[i] * t2[j] + t2[i] * t1[j]) + 2.0 * a[5] * t2[i] * t2[j]);
-  }
-
   // The unit normal of the fitted surface at the query, oriented like the query's normal.
   bool normal(double n[3]) const
   {
     double h[6];
-    gradient_and_hessian(n, h);
+    height_field_gradient_hessian(a, t1, t2, n0, n, h);
     const double l2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
     if(!(l2 > 0) || !std::isfinite(l2))
       return false;
@@ -168,7 +148,7 @@ struct Quadric_fit
                          double W[3]) const
   {
     double g[3], h[6];
-    gradient_and_hessian(g, h);
+    height_field_gradient_hessian(a, t1, t2, n0, g, h);
     const double norm = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
     if(!(norm > 0) || !std::isfinite(norm))
       return false;
