@@ -64,12 +64,11 @@ Aso_estimator aso_estimator_from(const NamedParameters& np)
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   using CGAL::parameters::is_default_parameter;
-  const Aso_variant variant = choose_parameter(get_parameter(np, internal_np::aso_variant), default_aso_variant);
-  const bool paper = variant == Aso_variant::PAPER;
-  const Apss_weight_kernel kernel =
-    is_default_parameter<NamedParameters, internal_np::weight_kernel_t>::value
-      ? (paper ? Apss_weight_kernel::SMOOTH : Apss_weight_kernel::SMOOTH_CUBIC)
-      : weight_kernel_parameter(np);
+  const Aso_variant_options preset =
+    aso_variant_options(choose_parameter(get_parameter(np, internal_np::aso_variant), default_aso_variant));
+  const Apss_weight_kernel kernel = is_default_parameter<NamedParameters, internal_np::weight_kernel_t>::value
+                                      ? preset.weight_kernel
+                                      : weight_kernel_parameter(np);
   if(kernel == Apss_weight_kernel::CONSTANT)
     throw std::invalid_argument("estimate_aso_curvatures: parameter 'weight_kernel': the ASO "
                                 "differentiates the kernel, Apss_weight_kernel::CONSTANT is not "
@@ -77,14 +76,15 @@ Aso_estimator aso_estimator_from(const NamedParameters& np)
   Aso_settings settings;
   settings.projection = choose_parameter(get_parameter(np, internal_np::aso_projection), Aso_projection::CORRECTED_NORMAL);
   settings.kernel_exponent = kernel_exponent(kernel);
-  settings.orient_neighbors = choose_parameter(get_parameter(np, internal_np::robust_orientation), !paper);
-  settings.normal_field_blend = choose_parameter(get_parameter(np, internal_np::normal_field_blend), !paper);
+  settings.orient_neighbors = choose_parameter(get_parameter(np, internal_np::robust_orientation),
+                                               preset.robust_orientation);
+  settings.normal_field_blend = choose_parameter(get_parameter(np, internal_np::normal_field_blend),
+                                                 preset.normal_field_blend);
   settings.position_fit_blend = choose_parameter(get_parameter(np, internal_np::position_fit_blend), 0.0);
   if(!(settings.position_fit_blend >= 0 && settings.position_fit_blend <= 1))
     throw std::invalid_argument("estimate_aso_curvatures: parameter 'position_fit_blend' must lie in [0, 1]");
   Aso_estimator estimator(settings);
-  estimator.sample_weights = choose_parameter(get_parameter(np, internal_np::sample_weights),
-                                              paper ? Sample_weights::UNIFORM : Sample_weights::TANGENT_VORONOI_AREA) ==
+  estimator.sample_weights = choose_parameter(get_parameter(np, internal_np::sample_weights), preset.sample_weights) ==
                              Sample_weights::TANGENT_VORONOI_AREA;
   estimator.refinement = choose_parameter(get_parameter(np, internal_np::normal_refinement), std::size_t(0));
   return estimator;

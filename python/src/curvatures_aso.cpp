@@ -13,19 +13,19 @@ std::vector<Estimate> estimate_aso(const Cloud& cloud, const Scale& s, const Opt
                                    bool parallel, const Callback& cb)
 {
   namespace P = CGAL::Point_set_curvatures::parameters;
-  const bool paper = o.aso_variant == 0;
-  // The defaults of the variant (aso_estimator_from), passed explicitly.
+  const CGAL::Aso_variant variant = o.aso_variant == 0 ? CGAL::Aso_variant::PAPER : CGAL::Aso_variant::ROBUST;
+  // The options not given take the library's preset of the variant (passed explicitly: the
+  // named parameters are types, one call serves every combination).
+  const CGAL::Point_set_curvatures::Aso_variant_options preset = CGAL::Point_set_curvatures::aso_variant_options(variant);
   const CGAL::Apss_weight_kernel kernel =
-    o.weight_kernel >= 0 ? CGAL::Apss_weight_kernel(o.weight_kernel)
-                         : (paper ? CGAL::Apss_weight_kernel::SMOOTH : CGAL::Apss_weight_kernel::SMOOTH_CUBIC);
+    o.weight_kernel >= 0 ? CGAL::Apss_weight_kernel(o.weight_kernel) : preset.weight_kernel;
   const CGAL::Sample_weights weights =
-    o.sample_weights >= 0 ? CGAL::Sample_weights(o.sample_weights)
-                          : (paper ? CGAL::Sample_weights::UNIFORM : CGAL::Sample_weights::TANGENT_VORONOI_AREA);
-  const bool robust = o.robust_orientation >= 0 ? o.robust_orientation != 0 : !paper;
-  const bool blend = o.normal_field_blend >= 0 ? o.normal_field_blend != 0 : !paper;
+    o.sample_weights >= 0 ? CGAL::Sample_weights(o.sample_weights) : preset.sample_weights;
+  const bool robust = o.robust_orientation >= 0 ? o.robust_orientation != 0 : preset.robust_orientation;
+  const bool blend = o.normal_field_blend >= 0 ? o.normal_field_blend != 0 : preset.normal_field_blend;
   const auto np = common_parameters(s, o, cb, CGAL::Point_set_curvatures::internal::default_min_neighbors::aso,
     [&](const auto& base) {
-      return P::aso_variant(paper ? CGAL::Aso_variant::PAPER : CGAL::Aso_variant::ROBUST,
+      return P::aso_variant(variant,
              P::weight_kernel(kernel,
              P::sample_weights(weights,
              P::robust_orientation(robust,

@@ -395,6 +395,32 @@ weight_kernel(Apss_weight_kernel kernel,
 
 } // namespace parameters
 
+/// \ingroup PkgPointSetCurvaturesRef
+/// The options that a variant of `estimate_aso_curvatures()` (`CGAL::Aso_variant`) uses
+/// where they are not given explicitly. The library's presets, for callers that pass every
+/// option explicitly (the Python bindings) and must not restate them.
+struct Aso_variant_options
+{
+  /// `weight_kernel`: `SMOOTH` for the paper, `SMOOTH_CUBIC` for the robust variant.
+  Apss_weight_kernel weight_kernel;
+  /// `sample_weights`: `UNIFORM` for the paper, `TANGENT_VORONOI_AREA` for the robust variant.
+  Sample_weights sample_weights;
+  /// `robust_orientation`: `false` for the paper, `true` for the robust variant.
+  bool robust_orientation;
+  /// `normal_field_blend`: `false` for the paper, `true` for the robust variant.
+  bool normal_field_blend;
+};
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// The preset of `variant`: what `estimate_aso_curvatures()` uses for every option of
+/// `Aso_variant_options` that the named parameters do not give.
+inline Aso_variant_options aso_variant_options(Aso_variant variant)
+{
+  if(variant == Aso_variant::PAPER)
+    return {Apss_weight_kernel::SMOOTH, Sample_weights::UNIFORM, false, false};
+  return {Apss_weight_kernel::SMOOTH_CUBIC, Sample_weights::TANGENT_VORONOI_AREA, true, true};
+}
+
 namespace internal {
 
 // P of the kernel (1 - d^2/r^2)^P; 0 for the constant kernel.
