@@ -18,7 +18,7 @@ namespace internal {
 // Per-point APSS: the five sums of the sphere fit, then Equations 6-8.
 struct Apss_estimator : Estimator_base
 {
-  // weight kernel (named parameter weight_kernel, issue 6)
+  // weight kernel (named parameter weight_kernel)
   Apss_weight_kernel kernel = Apss_weight_kernel::SMOOTH;
   bool orient_neighbors = false;  // robust_orientation
 

@@ -316,7 +316,7 @@ aso_variant(Aso_variant variant, const NamedParameters& np = CGAL::parameters::d
 } // namespace Point_set_curvatures
 // ---- end of the options beyond the paper ----
 
-// ---- Baseline estimators (issue 4): options of estimate_vcm_curvatures() ----
+// ---- Baseline estimators: options of estimate_vcm_curvatures() ----
 namespace Point_set_curvatures {
 namespace internal_np {
 
@@ -345,7 +345,7 @@ vcm_offset_radius(double offset_radius,
 } // namespace Point_set_curvatures
 // ---- end of the baseline estimators' options ----
 
-// ---- Algebraic sphere features, projection and flow (issue 6): weight kernel, normals ----
+// ---- Algebraic sphere features, projection and flow: weight kernel, normals ----
 /// \ingroup PkgPointSetCurvaturesRef
 /// Weight kernel of the APSS algebraic sphere fit (Equation 5 of Lejemble et al. 2021), for
 /// a neighbour at distance `d` from the evaluation point and a radius `r`.
