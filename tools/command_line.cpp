@@ -114,7 +114,8 @@ void print_usage(std::ostream& os)
      << "  --help             print this help\n"
      << "\n"
      << "Exit status: 0 on success, 2 on an invalid argument or an unreadable, malformed or\n"
-     << "unwritable file (nothing written), 130 if interrupted (Ctrl-C or SIGTERM, in any phase).\n";
+     << "unwritable file (nothing written), 130 if interrupted by Ctrl-C (SIGINT) and 143 by\n"
+     << "SIGTERM, in any phase (nothing written), 1 on an internal error.\n";
 }
 
 namespace {

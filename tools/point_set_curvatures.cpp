@@ -10,7 +10,7 @@
 // read_*.cpp and write_point_cloud.cpp, and inputs larger than memory go through tiled_run.cpp.
 // Run with --help for the options. Exit status: 0 on success, 2 on invalid arguments or
 // unreadable/malformed/unwritable files (one line on stderr, no output file left behind),
-// 130 when interrupted (Ctrl-C), 1 on unexpected failures.
+// 130 when interrupted by Ctrl-C (SIGINT), 143 by SIGTERM, 1 on unexpected failures.
 
 #include <CGAL/Point_set_curvatures/Tile.h>
 #include <CGAL/Point_set_curvatures/internal/knn_neighborhoods.h>
@@ -96,6 +96,8 @@ std::size_t orient_towards_scanner(std::size_t n, const Normal_of& normal, const
 // Progress and interruption
 
 volatile std::sig_atomic_t interrupted = 0;
+// The signal that interrupted the run (SIGINT or SIGTERM): the exit status is 128 + it.
+volatile std::sig_atomic_t interrupt_signal = SIGINT;
 // The temporary output file, removed by a second Ctrl-C (a fixed buffer: the handler may only
 // call async-signal-safe functions). Empty when there is none.
 char temporary_output_path[4096] = "";
@@ -133,15 +135,17 @@ void test_signal_at_phase_start(const std::string& phase)
 }
 
 // The first Ctrl-C (or SIGTERM) cancels the current phase at its next progress report; a
-// second one removes the temporary output and exits at once.
-extern "C" void on_interrupt(int)
+// second one removes the temporary output and exits at once. Exit status 128 + the signal,
+// as a shell reports a process the signal killed: 130 for SIGINT, 143 for SIGTERM.
+extern "C" void on_interrupt(int signal)
 {
   if(interrupted)
   {
     if(temporary_output_path[0] != '\0')
       ::unlink(temporary_output_path);
-    ::_exit(130);
+    ::_exit(128 + signal);
   }
+  interrupt_signal = signal;
   interrupted = 1;
 }
 
@@ -956,7 +960,7 @@ int main(int argc, char** argv)
   {
     // the temporary output was removed when the stack unwound
     std::fprintf(stderr, "\n%s: interrupted (%s), nothing written\n", program, current_phase.c_str());
-    return 130;
+    return 128 + interrupt_signal;  // 130 for SIGINT, 143 for SIGTERM
   }
   catch(const Error& e)
   {

@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // What every part of the point_set_curvatures tool shares: the error a user can fix (exit
-// status 2, one line on stderr), the cancellation of a long phase (exit status 130), string
-// helpers and the progress callback type.
+// status 2, one line on stderr), the cancellation of a long phase (exit status 130 for
+// SIGINT, 143 for SIGTERM), string helpers and the progress callback type.
 
 #ifndef POINT_SET_CURVATURES_TOOL_SUPPORT_H
 #define POINT_SET_CURVATURES_TOOL_SUPPORT_H
@@ -23,7 +23,8 @@ struct Error : std::runtime_error
   using std::runtime_error::runtime_error;
 };
 
-// A phase stopped because its progress callback returned false (Ctrl-C): exit status 130.
+// A phase stopped because its progress callback returned false (Ctrl-C or SIGTERM): exit
+// status 130 or 143.
 struct Cancelled : std::runtime_error
 {
   Cancelled() : std::runtime_error("cancelled") {}
