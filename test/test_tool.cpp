@@ -1049,6 +1049,37 @@ TEST_CASE("tool: 3-neighbour estimates are invalid, with one warning suggesting 
   CHECK(run_tool(q(repo_data("goursat-lidar.xyz")) + " " + q(file("lidar.csv")) + " --neighbors 5 --min-neighbors 5 --quiet").status == 0);
 }
 
+// Issue 28: a file smaller than a good neighbourhood is told so, not to try the default
+// --neighbors 40 it ran with; counts of one are singular.
+TEST_CASE("tool: a file with fewer points than a good neighbourhood is told it is too small, and one point is one point")
+{
+  // 10 points of a plane and one point far from them; --min-neighbors 5 lets the 10 be valid
+  std::vector<Oriented_point> pts;
+  for(int i = 0; i < 10; ++i)
+    pts.emplace_back(Point(0.1 * (i % 4), 0.1 * (i / 4), 0), Vector(0, 0, 1));
+  write_xyz(file("ten.xyz"), pts);
+  pts.emplace_back(Point(100, 100, 0), Vector(0, 0, 1));
+  write_xyz(file("eleven.xyz"), pts);
+  const Run ten = run_tool(q(file("ten.xyz")) + " " + q(file("ten.csv")) + " --min-neighbors 5");
+  INFO(ten.err);
+  REQUIRE(ten.status == 0);
+  CHECK(ten.out.find("valid       10 (100.00 %)") != std::string::npos);
+  CHECK(ten.err.find("warning: '" + file("ten.xyz") + "' is too small for aso: it holds 10 usable points") !=
+        std::string::npos);
+  CHECK(ten.err.find("--neighbors 40") == std::string::npos);  // the default it ran with
+  CHECK(std::count(ten.err.begin(), ten.err.end(), '\n') == 1);
+  // by radius too, and the isolated point is "1 point", never "1 points"
+  const Run eleven = run_tool(q(file("eleven.xyz")) + " " + q(file("eleven.csv")) + " --min-neighbors 5 --radius 1");
+  INFO(eleven.err);
+  REQUIRE(eleven.status == 0);
+  CHECK(eleven.out.find("valid       10 (90.91 %); 1 too_few_neighbors") != std::string::npos);
+  CHECK(eleven.err.find("is too small for aso: it holds 11 usable points") != std::string::npos);
+  CHECK(eleven.err.find("; 1 point has too few neighbours for a fit and is invalid (too_few_neighbors)") !=
+        std::string::npos);
+  CHECK(eleven.err.find("1 points") == std::string::npos);
+  CHECK(eleven.err.find("try --") == std::string::npos);  // no scale gives more points
+}
+
 // =======================================================================================
 // Normals for clouds without (estimate_oriented_normals)
 
@@ -1619,6 +1650,24 @@ TEST_CASE("tool: LAS 1.2-1.4 point formats 0-10 with their fields as attributes,
   const Run w = run_tool(q(file("bounds.las")) + " " + q(file("bounds.ply")) + " --radius 0.5" + viewpoint);
   CHECK(w.status == 0);
   CHECK(w.err.find("is not within the header's bounds") != std::string::npos);
+  // with every digit the numbers need (issue 28: six digits printed "[999999, 1e+06] is not
+  // within the header's bounds [999999, 1e+06]"): "x range [LO, HI] is not within the
+  // header's bounds [LO', HI']", each reading back as the exact value
+  double quantised_max = -HUGE_VAL;
+  for(const Oriented_point& p : pts)
+    quantised_max = std::max(quantised_max, double(std::lround((p.first.x() - offset[0]) / 0.001)) * 0.001 + offset[0]);
+  auto bracket = [&](const std::string& before) {
+    const std::size_t at = w.err.find(before);
+    REQUIRE(at != std::string::npos);
+    const std::size_t open = at + before.size(), comma = w.err.find(", ", open), close = w.err.find(']', open);
+    return std::make_pair(w.err.substr(open, comma - open), w.err.substr(comma + 2, close - comma - 2));
+  };
+  const auto range = bracket("x range ["), bounds = bracket("header's bounds [");
+  INFO(w.err);
+  CHECK(std::stod(range.second) == quantised_max);
+  CHECK(std::stod(bounds.second) == 1e6 + 4.0);
+  CHECK(range.second != bounds.second);
+  CHECK(bounds.second == "1000004");
 }
 
 TEST_CASE("tool: input attributes carried in their types, renamed on a clash, --fields, --float, --drop-attributes")

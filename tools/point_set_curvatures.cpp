@@ -447,30 +447,68 @@ std::string scale_description(const Scale& s)
   return cat("radius ", s.radius);
 }
 
+// The points that can be anyone's neighbour: finite, with a usable normal.
+std::size_t usable_points(const Row_summary& summary)
+{
+  std::size_t n = summary.valid();
+  for(const auto& s : summary.invalid())
+    if(s.first != int(CGAL::Curvature_estimate_status::NON_FINITE_POINT) &&
+       s.first != int(CGAL::Curvature_estimate_status::INVALID_NORMAL))
+      n += s.second;
+  return n;
+}
+
+// "fewer than 12 neighbours": the least count of a valid estimate, when the tool knows it
+// (--min-neighbors below a fit's own least count, 3 or 6 points, is raised to it).
+std::string fewer_than_least(const Method& m, const Scale& scale)
+{
+  const std::size_t least = scale.min_neighbors ? scale.min_neighbors : m.min_neighbors;
+  return least >= 6 ? cat("fewer than ", least, " neighbours") : std::string("too few neighbours for a fit");
+}
+
+// When the input holds fewer usable points than the method's `good_neighbors`, no scale
+// helps: what to say instead of a suggested scale ("" otherwise).
+std::string too_small_input(const Method& m, const std::string& input, const Row_summary& summary)
+{
+  const std::size_t usable = usable_points(summary);
+  if(usable >= m.good_neighbors)
+    return "";
+  return cat(in_quotes(input), " is too small for ", m.name, ": it holds ", plural(usable, "usable point"),
+             " (finite, with a normal), fewer than the ", m.good_neighbors, " neighbours from which ", m.name,
+             "'s errors stay within twice those at 40 (measured, see the manual), whatever --radius or --neighbors");
+}
+
+// The scale to try for about 40 neighbours, from the median count (counts grow like the
+// radius squared on a surface).
+std::string suggested_scale(const Method& m, const Scale& scale, double median)
+{
+  if(scale.by_count)
+    return cat("--neighbors ", std::max<std::size_t>(40, m.good_neighbors));
+  const double factor = std::sqrt(40.0 / std::max(median, 1.0));
+  return scale.spacing_multiple > 0 ? cat("--radius ", scale.spacing_multiple * factor, "x")
+                                    : cat("--radius ", scale.radius * factor);
+}
+
 // The warning when neighbourhoods are small: empty if the median count of the estimated
 // points reaches the method's measured `good_neighbors`.
-std::string small_neighborhood_warning(const Method& m, const Scale& scale, const Row_summary& summary)
+std::string small_neighborhood_warning(const Method& m, const Scale& scale, const Row_summary& summary,
+                                       const std::string& input)
 {
   if(summary.neighbor_sample().empty())
     return "";
   const double median = percentile(summary.neighbor_sample(), 0.5);
   if(median >= double(m.good_neighbors))
     return "";
-  // counts grow like the radius squared on a surface
-  std::string suggestion;
-  if(scale.by_count)
-    suggestion = cat("--neighbors ", std::max<std::size_t>(40, m.good_neighbors));
-  else
-  {
-    const double factor = std::sqrt(40.0 / std::max(median, 1.0));
-    suggestion = scale.spacing_multiple > 0 ? cat("--radius ", scale.spacing_multiple * factor, "x")
-                                            : cat("--radius ", scale.radius * factor);
-  }
+  const std::string invalid = summary.too_few() == 0 ? std::string()
+                              : cat("; ", plural(summary.too_few(), "point"), summary.too_few() == 1 ? " has " : " have ",
+                                    fewer_than_least(m, scale), " and ", summary.too_few() == 1 ? "is" : "are",
+                                    " invalid (too_few_neighbors)");
+  const std::string too_small = too_small_input(m, input, summary);
+  if(!too_small.empty())
+    return too_small + invalid;
   return cat("the median neighbourhood holds ", median, " points, fewer than the ", m.good_neighbors,
              " from which ", m.name, "'s errors stay within twice those at 40 neighbours (measured, see the "
-             "manual); ", summary.too_few(), " points have fewer than ",
-             scale.min_neighbors ? scale.min_neighbors : m.min_neighbors,
-             " and are invalid (too_few_neighbors). For about 40 neighbours, try ", suggestion);
+             "manual)", invalid, ". For about 40 neighbours, try ", suggested_scale(m, scale, median));
 }
 
 // Row i of the output from the point set and its estimates (without colour).
@@ -593,7 +631,7 @@ void print_report(const Run_context& c, const Scale& scale, std::size_t n, const
                   const Row_summary& summary, const std::string& times, const std::string& tiles)
 {
   const Options& o = c.o;
-  const std::string small = small_neighborhood_warning(*o.method, scale, summary);
+  const std::string small = small_neighborhood_warning(*o.method, scale, summary, o.input);
   if(!small.empty())
     c.warnings.push_back(small);
   if(o.quiet)

@@ -10,6 +10,9 @@
 
 #include <cctype>
 #include <chrono>
+#include <cstddef>
+#include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <sstream>
 #include <stdexcept>
@@ -39,6 +42,27 @@ std::string cat(const T&... t)
   std::ostringstream s;
   (s << ... << t);
   return s.str();
+}
+
+// "1 point", "2 points": a count and its noun.
+inline std::string plural(std::size_t n, const std::string& noun)
+{
+  return cat(n, " ", noun, n == 1 ? "" : "s");
+}
+
+// The shortest decimal text that reads back as `v` exactly: "1000004.9995" where the stream's
+// six digits print "1e+06" (for numbers compared in a message, which must differ in print
+// when they differ).
+inline std::string exact_number(double v)
+{
+  char text[40];
+  for(int digits = 1; digits <= 17; ++digits)
+  {
+    std::snprintf(text, sizeof text, "%.*g", digits, v);
+    if(std::strtod(text, nullptr) == v)
+      break;
+  }
+  return text;
 }
 
 // (not named quoted: std::quoted would win by ADL for non-const strings)
