@@ -1019,18 +1019,29 @@ TEST_CASE("tool: rgb columns are refused with a message naming --columns, and --
   CHECK(read_text(file("cols_other.csv")) == reference);
 }
 
-TEST_CASE("tool: 3-neighbour estimates are invalid, with one warning suggesting a scale")
+TEST_CASE("tool: 3-neighbour estimates are invalid, and a run without a valid estimate exits 3 with one line suggesting a scale")
 {
   // The simulated LiDAR scan at r = 0.3: every point has about 3 neighbours. They used to be
-  // reported valid (86.9%) with a mean H error of 0.072.
+  // reported valid (86.9%) with a mean H error of 0.072; then all invalid with exit status 0,
+  // which a pipeline took for a success (issue 28). Exit 3, the output written, all invalid.
+  for(const std::string quiet : {"", " --quiet"})
+  {
+    const Run r = run_tool(q(repo_data("goursat-lidar.xyz")) + " " + q(file("lidar.csv")) + " --radius 0.3" + quiet);
+    INFO(r.err);
+    REQUIRE(r.status == 3);
+    if(quiet.empty())
+      CHECK(r.out.find("valid       0 (0.00 %); 2947 too_few_neighbors") != std::string::npos);
+    else
+      CHECK(r.out.empty());
+    CHECK(r.err.rfind("point_set_curvatures: error: no valid estimate: all 2947 points are too_few_neighbors: the median "
+                      "neighbourhood holds 3 points: fewer than 12 neighbours, the least count of a valid aso estimate; "
+                      "for about 40 neighbours, try --radius ", 0) == 0);
+    CHECK(r.err.find("' was written, every row invalid\n") != std::string::npos);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  }
   const Run r = run_tool(q(repo_data("goursat-lidar.xyz")) + " " + q(file("lidar.csv")) + " --radius 0.3");
-  INFO(r.err);
-  REQUIRE(r.status == 0);
-  CHECK(r.out.find("valid       0 (0.00 %)") != std::string::npos);
-  CHECK(r.err.find("warning: the median neighbourhood holds 3 points, fewer than the 12") != std::string::npos);
-  CHECK(r.err.find("try --radius ") != std::string::npos);
-  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
   const std::string rows = read_text(file("lidar.csv"));
+  CHECK(std::count(rows.begin(), rows.end(), '\n') == 2948);  // the header and every point
   CHECK(rows.find(",1\n") == std::string::npos);  // no row ends with valid = 1
 
   // at the scale it suggests (about 40 neighbours), no warning and every point valid but a few
@@ -1078,6 +1089,56 @@ TEST_CASE("tool: a file with fewer points than a good neighbourhood is told it i
         std::string::npos);
   CHECK(eleven.err.find("1 points") == std::string::npos);
   CHECK(eleven.err.find("try --") == std::string::npos);  // no scale gives more points
+
+  // without --min-neighbors nothing is valid: exit 3, one line saying the file is too small
+  const Run none = run_tool(q(file("ten.xyz")) + " " + q(file("ten.csv")));
+  INFO(none.err);
+  CHECK(none.status == 3);
+  CHECK(none.err == "point_set_curvatures: error: no valid estimate: all 10 points are too_few_neighbors: '" +
+                      file("ten.xyz") + "' is too small for aso: it holds 10 usable points (finite, with a normal), "
+                      "fewer than the 12 neighbours from which aso's errors stay within twice those at 40 (measured, "
+                      "see the manual), whatever --radius or --neighbors (--min-neighbors lowers the least count of a "
+                      "valid estimate, at a cost in accuracy); '" + file("ten.csv") + "' was written, every row invalid\n");
+}
+
+// Issue 28: every other reason for a run without a valid estimate is named, with exit status 3.
+TEST_CASE("tool: runs without a valid estimate exit 3 naming the most frequent status: degenerate_fit, invalid_normal, non_finite_point, two_sheets")
+{
+  const std::vector<Oriented_point> pts = sphere(500, 1.0);
+  write_xyz(file("ball.xyz"), pts);
+  std::vector<Oriented_point> zero = pts, plate;
+  for(Oriented_point& p : zero)
+    p.second = Vector(0, 0, 0);
+  write_xyz(file("zero.xyz"), zero);
+  write_text(file("nan.xyz"), "nan 0 0 0 0 1\n0 inf 0 0 0 1\n");
+  // two sheets 0.02 apart with opposite normals (a thin plate)
+  for(int i = 0; i < 400; ++i)
+    for(int side : {0, 1})
+      plate.emplace_back(Point(0.05 * (i % 20), 0.05 * (i / 20), 0.02 * side), Vector(0, 0, side ? 1 : -1));
+  write_xyz(file("plate.xyz"), plate);
+  struct Case
+  {
+    std::string args, message;
+  };
+  const Case cases[] = {
+    {q(file("ball.xyz")) + " --radius 1e300", "no valid estimate: all 500 points are degenerate_fit: coincident "
+                                             "neighbours, neighbours along one line (a single scan line), or a radius "
+                                             "far larger than the cloud; --radius 3.5x gives about 40 neighbours"},
+    {q(file("zero.xyz")) + " --radius 0.5 --columns x,y,z,nx,ny,nz", "no valid estimate: all 500 points are invalid_normal: the normals are zero"},
+    {q(file("nan.xyz")), "no valid estimate: all 2 points are non_finite_point: NaN or infinite coordinates"},
+    {q(file("plate.xyz")) + " --radius 0.3", "points are two_sheets: two layers with opposite normals in every neighbourhood"},
+  };
+  for(const Case& c : cases)
+  {
+    fs::remove(file("none.csv"));
+    const Run r = run_tool(c.args + " " + q(file("none.csv")) + " --quiet");
+    INFO(c.args << "\n" << r.err);
+    CHECK(r.status == 3);
+    CHECK(r.err.rfind("point_set_curvatures: error: ", 0) == 0);
+    CHECK(r.err.find(c.message) != std::string::npos);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK(fs::exists(file("none.csv")));
+  }
 }
 
 // =======================================================================================
@@ -1463,7 +1524,8 @@ TEST_CASE("tool: readers accept trailing comments, a count before a header, OFF 
   // 1e400 is infinite (a non-finite point), 1e-400 is 0
   write_text(file("range.xyz"), "1e400 0 0\n1e-400 0 0\n");
   const Run range = run_tool(q(file("range.xyz")) + " " + q(file("range.csv")) + " --radius 1 --min-neighbors 1 --quiet");
-  CHECK(range.status == 0);
+  CHECK(range.status == 3);  // read: no estimate is possible (one finite point), said with exit status 3
+  CHECK(fs::exists(file("range.csv")));
 }
 
 // Issue 14 reproducers that are not errors: a UTF-8 byte order mark, integer coordinates in a
@@ -1474,7 +1536,7 @@ TEST_CASE("tool and library: BOM, integer PLY coordinates, identical points, nei
   CHECK(run_tool(q(file("bom.xyz")) + " " + q(file("bom.csv")) + " --quiet --min-neighbors 3").status == 0);
   write_text(file("int.ply"), "ply\nformat ascii 1.0\nelement vertex 3\nproperty int x\nproperty float y\n"
                               "property double z\nend_header\n0 0 0\n1 0 0\n0 1 0\n");
-  CHECK(run_tool(q(file("int.ply")) + " " + q(file("int.csv")) + " --quiet").status == 0);
+  CHECK(run_tool(q(file("int.ply")) + " " + q(file("int.csv")) + " --quiet").status == 3);  // 3 points: no normals
   const std::string rows = read_text(file("int.csv"));
   CHECK(std::count(rows.begin(), rows.end(), '\n') == 4);  // header and three points
   std::string same;
@@ -1482,8 +1544,10 @@ TEST_CASE("tool and library: BOM, integer PLY coordinates, identical points, nei
     same += "1 2 3\n";
   write_text(file("same.xyz"), same);
   const Run r = run_tool(q(file("same.xyz")) + " " + q(file("same.csv")));
-  CHECK(r.status == 0);
+  CHECK(r.status == 3);  // no crash, and no valid estimate
   CHECK(r.out.find("19 invalid_normal") != std::string::npos);
+  CHECK(r.err.find("error: no valid estimate: all 19 points are invalid_normal: no normal could be estimated") !=
+        std::string::npos);
 
   const auto pts = sphere(100, 1.0);
   const auto e = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
@@ -1878,15 +1942,17 @@ Run run_tool_within(int seconds, const std::string& args, const std::string& env
   return r;
 }
 
-// Runs `input` whole, then in tiles at each memory limit: the same exit status 0 and the same
-// output bytes, and the tiled runs in tiles indeed. Returns the whole run's output.
+// Runs `input` whole, then in tiles at each memory limit: the same exit status (0, or 3 when
+// no point is valid) and the same output bytes, and the tiled runs in tiles indeed. Returns
+// the whole run's output.
 std::string same_whole_and_tiled(const std::string& input, const std::string& options,
-                                 const std::vector<std::string>& limits, const std::string& extension = ".ply")
+                                 const std::vector<std::string>& limits, const std::string& extension = ".ply",
+                                 int status = 0)
 {
   const std::string whole_output = file("whole" + extension);
   const Run whole = run_tool_within(120, q(input) + " " + q(whole_output) + " " + options);
   INFO(options << "\n" << whole.err);
-  REQUIRE(whole.status == 0);
+  REQUIRE(whole.status == status);
   CHECK(whole.out.find("  tiles") == std::string::npos);
   const std::string expected = read_text(whole_output);
   for(const std::string& limit : limits)
@@ -1896,7 +1962,7 @@ std::string same_whole_and_tiled(const std::string& input, const std::string& op
     fs::remove(tiled_output);
     const Run tiled = run_tool_within(120, q(input) + " " + q(tiled_output) + " " + options + " --memory-limit " + limit);
     INFO(tiled.err);
-    CHECK(tiled.status == 0);
+    CHECK(tiled.status == status);
     CHECK(tiled.out.find("  tiles") != std::string::npos);
     CHECK(read_text(tiled_output) == expected);
   }
@@ -1951,7 +2017,9 @@ TEST_CASE("tool: tiles of clouds smaller than a neighbourhood give the whole run
   {
     INFO(n << " points with normals, 40 neighbours");
     write_xyz(file("few.xyz"), sphere(n, 1.0));
-    const std::string csv = same_whole_and_tiled(file("few.xyz"), "--fields mean,neighbors,valid", {"100", "500"}, ".csv");
+    // (3 points: no valid estimate, exit status 3 in both runs)
+    const std::string csv =
+      same_whole_and_tiled(file("few.xyz"), "--fields mean,neighbors,valid", {"100", "500"}, ".csv", n == 3 ? 3 : 0);
     // every point has every point as neighbour; 3 are too few (too_few_neighbors), 39 enough
     const std::vector<std::string> neighbors = csv_column(csv, "neighbors"), valid = csv_column(csv, "valid");
     REQUIRE(neighbors.size() == n);
@@ -1982,7 +2050,7 @@ TEST_CASE("tool: tiles of clouds smaller than a neighbourhood give the whole run
     const double offset[3] = {0, 0, 0};
     write_las(file("line.las"), line, 0, 2, 0.001, offset);
     const std::string csv = same_whole_and_tiled(file("line.las"), "--method jet --radius 0.3 --orient +z --drop-attributes",
-                                                 {"1K", "2K"}, ".csv");
+                                                 {"1K", "2K"}, ".csv", 3);
     const std::vector<std::string> valid = csv_column(csv, "valid");
     CHECK(std::count(valid.begin(), valid.end(), "0") == 24);
   }
@@ -2046,8 +2114,9 @@ TEST_CASE("tool: clouds whose extent overflows a double are tiled as the whole r
     std::string las = read_text(file("xscale.las"));
     put_le<double>(las, 131, 1.5e304);
     write_text(file("xscale.las"), las);
+    // (no valid estimate: exit status 3 in both runs)
     const std::string csv = same_whole_and_tiled(file("xscale.las"), "--orient +z --drop-attributes --fields mean,valid",
-                                                 {"2K"}, ".csv");
+                                                 {"2K"}, ".csv", 3);
     const std::vector<std::string> x = csv_column(csv, "x"), valid = csv_column(csv, "valid");
     REQUIRE(x.size() == 80);
     const auto [lo, hi] = std::minmax_element(x.begin(), x.end(), [](const std::string& a, const std::string& b) {

@@ -113,9 +113,11 @@ void print_usage(std::ostream& os)
      << "  --quiet            print errors only (no progress bar, warnings or summary)\n"
      << "  --help             print this help\n"
      << "\n"
-     << "Exit status: 0 on success, 2 on an invalid argument or an unreadable, malformed or\n"
-     << "unwritable file (nothing written), 130 if interrupted by Ctrl-C (SIGINT) and 143 by\n"
-     << "SIGTERM, in any phase (nothing written), 1 on an internal error.\n";
+     << "Exit status: 0 on success; 2 on an invalid argument or an unreadable, malformed or\n"
+     << "unwritable file (nothing written); 3 when no point got a valid estimate (OUTPUT is\n"
+     << "written, every row invalid; stderr says why, such as too few neighbours, and what to\n"
+     << "try, such as a radius); 130 if interrupted by Ctrl-C (SIGINT) and 143 by SIGTERM, in\n"
+     << "any phase (nothing written); 1 on an internal error.\n";
 }
 
 namespace {

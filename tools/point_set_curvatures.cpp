@@ -9,8 +9,9 @@
 // command_line.cpp, the estimators run from methods.cpp, the files are read and written in
 // read_*.cpp and write_point_cloud.cpp, and inputs larger than memory go through tiled_run.cpp.
 // Run with --help for the options. Exit status: 0 on success, 2 on invalid arguments or
-// unreadable/malformed/unwritable files (one line on stderr, no output file left behind),
-// 130 when interrupted by Ctrl-C (SIGINT), 143 by SIGTERM, 1 on unexpected failures.
+// unreadable/malformed/unwritable files (one line on stderr, no output file left behind), 3
+// when no point got a valid estimate (the output written, the reason on stderr), 130 when
+// interrupted by Ctrl-C (SIGINT), 143 by SIGTERM, 1 on unexpected failures.
 
 #include <CGAL/Point_set_curvatures/Tile.h>
 #include <CGAL/Point_set_curvatures/internal/knn_neighborhoods.h>
@@ -506,9 +507,69 @@ std::string small_neighborhood_warning(const Method& m, const Scale& scale, cons
   const std::string too_small = too_small_input(m, input, summary);
   if(!too_small.empty())
     return too_small + invalid;
-  return cat("the median neighbourhood holds ", median, " points, fewer than the ", m.good_neighbors,
+  return cat("the median neighbourhood holds ", plural(std::size_t(median), "point"), ", fewer than the ", m.good_neighbors,
              " from which ", m.name, "'s errors stay within twice those at 40 neighbours (measured, see the "
              "manual)", invalid, ". For about 40 neighbours, try ", suggested_scale(m, scale, median));
+}
+
+// Why no point got a valid estimate (exit status 3): the most frequent status, what causes
+// it, and what to try.
+std::string no_valid_estimate_reason(const Method& m, const Scale& scale, const Row_summary& summary,
+                                     const std::string& input, bool normals_estimated)
+{
+  typedef CGAL::Curvature_estimate_status Status;
+  int status = -1;
+  std::size_t count = 0, n = 0;
+  for(const auto& s : summary.invalid())
+  {
+    n += s.second;
+    if(s.second > count)
+    {
+      status = s.first;
+      count = s.second;
+    }
+  }
+  const std::string what = cat(count == n ? (n == 1 ? std::string("the only point is ") : cat("all ", n, " points are "))
+                                          : cat(count, " of the ", n, count == 1 ? " points is " : " points are "),
+                               CGAL::to_string(static_cast<Status>(status)));
+  std::string why;
+  switch(static_cast<Status>(status))
+  {
+    case Status::TOO_FEW_NEIGHBORS:
+    {
+      const std::string too_small = too_small_input(m, input, summary);
+      if(!too_small.empty())
+        why = too_small + " (--min-neighbors lowers the least count of a valid estimate, at a cost in accuracy)";
+      else if(!summary.neighbor_sample().empty())
+      {
+        const double median = percentile(summary.neighbor_sample(), 0.5);
+        why = cat("the median neighbourhood holds ", plural(std::size_t(median), "point"), ": ",
+                  fewer_than_least(m, scale), ", the least count of a valid ", m.name,
+                  " estimate; for about 40 neighbours, try ", suggested_scale(m, scale, median));
+      }
+      break;
+    }
+    case Status::DEGENERATE_FIT:
+      why = "coincident neighbours, neighbours along one line (a single scan line), or a radius far larger than "
+            "the cloud; --radius 3.5x gives about 40 neighbours";
+      break;
+    case Status::NON_FINITE_POINT:
+      why = "NaN or infinite coordinates";
+      break;
+    case Status::INVALID_NORMAL:
+      why = normals_estimated ? "no normal could be estimated (too few points, coincident points, or points along "
+                                "one line: try a larger --normal-neighbors)"
+                              : "the normals are zero, not finite or far from unit length (are the columns right? "
+                                "see --columns)";
+      break;
+    case Status::TWO_SHEETS:
+      why = "two layers with opposite normals in every neighbourhood (a thin plate, or neighbourhoods reaching "
+            "across the object): try a smaller --radius or --neighbors";
+      break;
+    default:
+      break;
+  }
+  return cat("no valid estimate: ", what, why.empty() ? std::string() : ": " + why);
 }
 
 // Row i of the output from the point set and its estimates (without colour).
@@ -625,15 +686,11 @@ void write_output(const Run_context& c, Temporary_output& output, const Scale& s
   output.commit();
 }
 
-// The report on standard output, and the warnings (after the output is written, so that a
-// failure prints one line only).
-void print_report(const Run_context& c, const Scale& scale, std::size_t n, const std::string& estimated_normals,
-                  const Row_summary& summary, const std::string& times, const std::string& tiles)
+// The warnings and the summary (not with --quiet).
+void print_summary(const Run_context& c, const Scale& scale, std::size_t n, const std::string& estimated_normals,
+                   const Row_summary& summary, const std::string& times, const std::string& tiles)
 {
   const Options& o = c.o;
-  const std::string small = small_neighborhood_warning(*o.method, scale, summary, o.input);
-  if(!small.empty())
-    c.warnings.push_back(small);
   if(o.quiet)
     return;
   for(const std::string& w : c.warnings)
@@ -657,6 +714,23 @@ void print_report(const Run_context& c, const Scale& scale, std::size_t n, const
   std::printf("  time        %s s: %s\n", s3(seconds_since(c.start)).c_str(), times.c_str());
   std::printf("  H (mean)    %s\n", min_median_max(summary, 2).c_str());
   std::printf("  K (Gauss)   %s\n", min_median_max(summary, 3).c_str());
+}
+
+// The report on standard output, and the warnings (after the output is written, so that a
+// failure prints one line only). Throws No_valid_estimate, after them, when no point got a
+// valid estimate (exit status 3).
+void print_report(const Run_context& c, const Scale& scale, std::size_t n, const std::string& estimated_normals,
+                  const Row_summary& summary, const std::string& times, const std::string& tiles)
+{
+  const Options& o = c.o;
+  const bool none_valid = n > 0 && summary.valid() == 0;
+  const std::string small = none_valid ? std::string() : small_neighborhood_warning(*o.method, scale, summary, o.input);
+  if(!small.empty())
+    c.warnings.push_back(small);
+  print_summary(c, scale, n, estimated_normals, summary, times, tiles);
+  if(none_valid)
+    throw No_valid_estimate(cat(no_valid_estimate_reason(*o.method, scale, summary, o.input, !estimated_normals.empty()),
+                                "; ", in_quotes(o.output), " was written, every row invalid"));
 }
 
 // The physical memory of the machine, in bytes (0 if unknown).
@@ -1004,6 +1078,11 @@ int main(int argc, char** argv)
   {
     std::fprintf(stderr, "%s: error: %s\n", program, e.what());
     return 2;
+  }
+  catch(const No_valid_estimate& e)
+  {
+    std::fprintf(stderr, "%s: error: %s\n", program, e.what());
+    return 3;
   }
   catch(const std::invalid_argument& e)
   {

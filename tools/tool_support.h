@@ -2,8 +2,9 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // What every part of the point_set_curvatures tool shares: the error a user can fix (exit
-// status 2, one line on stderr), the cancellation of a long phase (exit status 130 for
-// SIGINT, 143 for SIGTERM), string helpers and the progress callback type.
+// status 2, one line on stderr), a run without any valid estimate (exit status 3), the
+// cancellation of a long phase (exit status 130 for SIGINT, 143 for SIGTERM), string helpers
+// and the progress callback type.
 
 #ifndef POINT_SET_CURVATURES_TOOL_SUPPORT_H
 #define POINT_SET_CURVATURES_TOOL_SUPPORT_H
@@ -31,6 +32,13 @@ struct Error : std::runtime_error
 struct Cancelled : std::runtime_error
 {
   Cancelled() : std::runtime_error("cancelled") {}
+};
+
+// A run that wrote its output but where no point got a valid estimate: exit status 3, the
+// reason and what to try on stderr (a pipeline must not take it for a success).
+struct No_valid_estimate : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
 };
 
 // Fraction done in [0, 1]; returning false cancels the phase.
