@@ -8,7 +8,7 @@
 // and the curvature estimators on them, by count.
 //
 //   scan_experiments [--neighbors K] [--normal-neighbors K1,K2...] [--only torus,airborne,merged]
-//                    [--noise SIGMA_IN_SPACINGS] [--quantum Q] [--dump PREFIX]
+//                    [--noise SIGMA_IN_SPACINGS] [--quantum Q] [--line-spacing S] [--dump PREFIX]
 
 #include "bench_support.h"
 #include "../test/scan_simulator.h"
@@ -45,6 +45,7 @@ struct Options
   double quantum = 0;  // coordinate grid
   std::vector<std::size_t> normal_neighbors = {40};
   std::string dump;  // prefix of per-point CSV files (x, y, z, true H, estimated H, neighbours)
+  double line_spacing = 0.5;  // of the airborne lines (points 0.1 apart along a line)
 };
 
 struct Named_cloud
@@ -71,7 +72,7 @@ std::vector<Named_cloud> clouds(const Options& o)
     list.push_back({name, f(noise)});
   };
   make("torus", [](const scan::Noise& n) { return scan::terrestrial_torus(n); });
-  make("airborne", [&](const scan::Noise& n) { return scan::airborne_lines(terrain, 12, 0.1, 0.5, n); });
+  make("airborne", [&](const scan::Noise& n) { return scan::airborne_lines(terrain, 12, 0.1, o.line_spacing, n); });
   make("merged", [&](const scan::Noise& n) { return scan::merged_terrestrial(terrain, 12, 0.009, 12, n); });
   return list;
 }
@@ -219,6 +220,8 @@ int main(int argc, char** argv)
       while(std::getline(s, part, ','))
         o.normal_neighbors.push_back(std::stoul(part));
     }
+    else if(a == "--line-spacing")
+      o.line_spacing = std::stod(value());
     else if(a == "--dump")
       o.dump = value();
     else if(a == "--quantum")

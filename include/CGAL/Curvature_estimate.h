@@ -100,7 +100,7 @@ struct Curvature_estimate
   /// `r k = 0.2` with the default ASO); it falls where the
   /// normals disagree: foliage, noisy normals, edges and corners within `r`. Measured on real
   /// airborne tiles with the tool's defaults (benchmark/README.md, "Scans without normals"):
-  /// medians 0.996 to 1 on ground and roofs, 0.86 to 0.93 in the vegetation classes; about 0.6
+  /// medians 0.996 to 1 on ground and roofs, 0.85 to 0.93 in the vegetation classes; about 0.6
   /// for normals pointing anywhere. Filter with a threshold such as 0.95 to keep surfaces.
   FT normal_coherence = nan();
   /// number of input points at distance `< r` from the query point, the query point included

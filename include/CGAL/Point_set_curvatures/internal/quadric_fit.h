@@ -74,27 +74,25 @@ struct Quadric_fit
   {
     if(nb.size < quadratic_height_coefficients)
       return false;
-    double sw = 0, c[3] = {0, 0, 0};
+    // weighted centroid and covariance in one pass: the raw second moments minus the
+    // centroid's (the coordinates are scaled to |q| < 1, so the difference loses little)
+    double sw = 0, c[3] = {0, 0, 0}, cov[6] = {0, 0, 0, 0, 0, 0};
     for(std::size_t i = 0; i < nb.size; ++i)
     {
-      const double w = pss_weight(nb.qx[i] * nb.qx[i] + nb.qy[i] * nb.qy[i] + nb.qz[i] * nb.qz[i]);
+      const double q[3] = {nb.qx[i], nb.qy[i], nb.qz[i]};
+      const double w = pss_weight(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
       sw += w;
-      c[0] += w * nb.qx[i];
-      c[1] += w * nb.qy[i];
-      c[2] += w * nb.qz[i];
+      c[0] += w * q[0]; c[1] += w * q[1]; c[2] += w * q[2];
+      cov[0] += w * q[0] * q[0]; cov[1] += w * q[0] * q[1]; cov[2] += w * q[0] * q[2];
+      cov[3] += w * q[1] * q[1]; cov[4] += w * q[1] * q[2]; cov[5] += w * q[2] * q[2];
     }
     if(!(sw > 0))
       return false;
     for(double& x : c)
       x /= sw;
-    double cov[6] = {0, 0, 0, 0, 0, 0};
-    for(std::size_t i = 0; i < nb.size; ++i)
-    {
-      const double w = pss_weight(nb.qx[i] * nb.qx[i] + nb.qy[i] * nb.qy[i] + nb.qz[i] * nb.qz[i]);
-      const double d[3] = {nb.qx[i] - c[0], nb.qy[i] - c[1], nb.qz[i] - c[2]};
-      cov[0] += w * d[0] * d[0]; cov[1] += w * d[0] * d[1]; cov[2] += w * d[0] * d[2];
-      cov[3] += w * d[1] * d[1]; cov[4] += w * d[1] * d[2]; cov[5] += w * d[2] * d[2];
-    }
+    for(int a = 0, k = 0; a < 3; ++a)
+      for(int b = a; b < 3; ++b, ++k)
+        cov[k] = cov[k] / sw - c[a] * c[b];
     double values[3], vectors[3][3];
     if(!symmetric_eigen_3(cov, values, vectors) || !spreads_in_two_directions(values))
       return false;
