@@ -956,10 +956,11 @@ TEST_CASE("tool: rgb columns are refused with a message naming --columns, and --
   REQUIRE(run_tool(q(file("cols.xyz")) + " " + q(file("cols_ref.csv")) + " --radius 0.6").status == 0);
   const std::string reference = read_text(file("cols_ref.csv"));
 
-  std::ostringstream rgb, nine, csv, cloudcompare;
-  for(std::ostringstream* s : {&rgb, &nine, &csv, &cloudcompare})
+  std::ostringstream rgb, nine, csv, cloudcompare, asc;
+  for(std::ostringstream* s : {&rgb, &nine, &csv, &cloudcompare, &asc})
     s->precision(17);
   cloudcompare << "//X,Y,Z,R,G,B,Nx,Ny,Nz\n";
+  asc << "//X Y Z R G B Nx Ny Nz\n";  // CloudCompare's .asc export, separated by spaces
   for(const Oriented_point& p : pts)
   {
     const double x = p.first.x(), y = p.first.y(), z = p.first.z();
@@ -968,11 +969,14 @@ TEST_CASE("tool: rgb columns are refused with a message naming --columns, and --
     nine << x << " " << y << " " << z << " 200 120 35 " << nx << " " << ny << " " << nz << "\n";
     csv << x << "," << y << "," << z << "," << nx << "," << ny << "," << nz << "\n";
     cloudcompare << x << "," << y << "," << z << ",200,120,35," << nx << "," << ny << "," << nz << "\n";
+    asc << x << " " << y << " " << z << " 200 120 35 " << nx << " " << ny << " " << nz << "\n";
   }
   write_text(file("rgb.xyz"), rgb.str());
   write_text(file("nine.txt"), nine.str());
   write_text(file("plain.csv"), csv.str());
   write_text(file("cloudcompare.csv"), cloudcompare.str());
+  write_text(file("cloudcompare.asc"), asc.str());
+  write_text(file("plain.asc"), csv.str());
 
   // x y z r g b: never read as normals without being told
   fs::remove(file("out.ply"));  // (another test case of this process may have written one)
@@ -987,10 +991,12 @@ TEST_CASE("tool: rgb columns are refused with a message naming --columns, and --
   CHECK(told.status == 0);
   CHECK(told.err.find("has no normals: estimating them") != std::string::npos);
 
-  // the same cloud through --columns, a comma-separated file and CloudCompare's header
-  // (the colour columns of CloudCompare's file are attributes, dropped here to compare)
+  // the same cloud through --columns, a comma-separated file and CloudCompare's header, and
+  // CloudCompare's .asc export, read like .txt (issue 28: refused as an unknown extension)
+  // (the colour columns of CloudCompare's files are attributes, dropped here to compare)
   for(const std::string& args : {q(file("nine.txt")) + " --columns x,y,z,_,_,_,nx,ny,nz",
-                                 q(file("plain.csv")), q(file("cloudcompare.csv"))})
+                                 q(file("plain.csv")), q(file("cloudcompare.csv")), q(file("cloudcompare.asc")),
+                                 q(file("plain.asc")), q(file("cloudcompare.asc")) + " --columns x,y,z,_,_,_,nx,ny,nz"})
   {
     const Run r = run_tool(args + " " + q(file("cols_other.csv")) + " --radius 0.6 --drop-attributes");
     INFO(args << ": " << r.err);

@@ -3,7 +3,7 @@
 //
 // point_set_curvatures INPUT OUTPUT [options]
 //
-// Command-line front end of the package: reads a point cloud (.xyz/.pwn/.txt/.csv, .ply, .off, .las),
+// Command-line front end of the package: reads a point cloud (.xyz/.pwn/.txt/.csv/.asc, .ply, .off, .las),
 // estimates normals if the file has none, estimates curvatures at every point and writes them
 // (.ply or .csv), every input point in input order. The options are parsed in
 // command_line.cpp, the estimators run from methods.cpp, the files are read and written in
