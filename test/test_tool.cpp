@@ -10,6 +10,8 @@
 #include "scan_simulator.h"
 #include "test_support.h"
 
+#include "../tools/progress_line.h"
+
 #include <CGAL/Point_set_curvatures/internal/knn_neighborhoods.h>
 #include <CGAL/estimate_apss_curvatures.h>
 #include <CGAL/estimate_aso_curvatures.h>
@@ -2240,6 +2242,209 @@ TEST_CASE("tool: SIGTERM during a long tiled run exits 143 and leaves no file")
   CHECK(files_starting_with(".long.ply") == 0);
 }
 
+// Issue 28, item 12: the progress bar's line (drawn on a terminal only, redrawn twice a second
+// by a timer even when a phase reports no progress): the elapsed time, and an ETA once a
+// fraction of at least 1% is known and a second has passed.
+TEST_CASE("tool: the progress line shows the elapsed time, an ETA once a fraction is known, at one width")
+{
+  using psc_tool::progress_line;
+  const std::string frozen = progress_line("curvatures", 0.0, 14.2);  // no progress yet: the time still moves
+  CHECK(frozen.find("  0%") != std::string::npos);
+  CHECK(frozen.find("14.2 s") != std::string::npos);
+  CHECK(frozen.find("ETA") == std::string::npos);
+  CHECK(progress_line("curvatures", 0.25, 10.0).find(" 25%") != std::string::npos);
+  CHECK(progress_line("curvatures", 0.25, 10.0).find("ETA 30 s") != std::string::npos);
+  CHECK(progress_line("curvatures", 0.5, 150.0).find("ETA 2 min 30 s") != std::string::npos);
+  CHECK(progress_line("curvatures", 0.01, 100.0).find("ETA 2 h 45 min") != std::string::npos);  // 9900 s
+  CHECK(progress_line("curvatures", 0.5, 0.5).find("ETA") == std::string::npos);  // under a second: no guess
+  CHECK(progress_line("curvatures", 1.0, 20.0).find("ETA") == std::string::npos);  // done
+  CHECK(progress_line("curvatures", std::nan(""), 3.0).find("  0%") != std::string::npos);
+  CHECK(psc_tool::eta_text(59.6) == "1 min 00 s");
+  // drawn over each other after '\r': one width, or a shorter line would leave a tail
+  for(const auto& fs : {std::make_pair(0.0, 0.0), std::make_pair(0.5, 150.0), std::make_pair(0.01, 100.0),
+                        std::make_pair(1.0, 20.0), std::make_pair(0.999, 5e4)})
+    CHECK(progress_line("curvatures", fs.first, fs.second).size() == frozen.size());
+
+  // not on a terminal (stderr is a file here): no bar, no '\r', as before
+  write_xyz(file("bar.xyz"), sphere(500, 1.0));
+  const Run r = run_tool(q(file("bar.xyz")) + " " + q(file("bar.ply")) + " --radius 0.3");
+  REQUIRE(r.status == 0);
+  CHECK(r.err.find('\r') == std::string::npos);
+  CHECK(r.err.find("ETA") == std::string::npos);
+}
+
+// Issue 28, item 13: a run killed (SIGKILL) while it computes leaves no file: the output's
+// temporary file is created when writing starts (the space reserved before is held by a file
+// unlinked at once). One killed while writing leaves ".OUTPUT.tmp-PID-XXXXXX", which the next
+// run writing OUTPUT removes, with a note, as it does those of earlier versions
+// (".OUTPUT.tmp-XXXXXX"), never those of a run still going (its PID alive).
+TEST_CASE("tool: a run killed while computing leaves no temporary file, and the next run removes a killed run's with a note")
+{
+  write_xyz(file("killed.xyz"), sphere(2000, 1.0));
+  write_xyz(file("killed_nn.xyz"), sphere(2000, 1.0), false);
+  const struct
+  {
+    std::string input, options, phase;
+  } cases[] = {{"killed.xyz", "--radius 0.3", "curvatures"},
+               {"killed.xyz", "--radius 0.3x", "spacing"},
+               {"killed_nn.xyz", "--radius 0.3", "normals"},
+               {"killed.xyz", "--radius 0.3 --memory-limit 100K", "tile *curvatures#2"},
+               {"killed_nn.xyz", "--radius 0.3 --memory-limit 300K --orient +z --ascii", "tile *curvatures#2"},
+               {"killed.xyz", "--radius 0.3 --memory-limit 100K", "tile *read#3"}};
+  for(const auto& c : cases)
+  {
+    INFO(c.input << " " << c.options << ", SIGKILL as phase '" << c.phase << "' begins");
+    const Run r = run_tool_within(60, q(file(c.input)) + " " + q(file("killed.ply")) + " " + c.options,
+                                  "PSC_TOOL_TEST_SIGNAL='KILL@" + c.phase + "'");
+    CHECK(r.status == 137);  // killed (timeout reports 128 + SIGKILL)
+    CHECK(!fs::exists(file("killed.ply")));
+    CHECK(files_starting_with(".killed.ply") == 0);
+  }
+
+  // killed while writing: the partial temporary file stays, and the next run removes it
+  const Run w = run_tool_within(60, q(file("killed.xyz")) + " " + q(file("killed.ply")) + " --radius 0.3",
+                                "PSC_TOOL_TEST_SIGNAL='KILL@writing'");
+  CHECK(w.status == 137);
+  CHECK(files_starting_with(".killed.ply.tmp-") == 1);
+  // planted: a run of an earlier version, and killed ones (a PID above Linux's largest)
+  for(const std::string name : {".killed.ply.tmp-AbC123", ".killed.ply.tmp-4194305-xYz789",
+                                ".killed.ply.tmp-4194305-tile3-aBcDeF"})
+    write_text(file(name), "partial");
+  // kept: a run still going (this process), other names
+  const std::string running = ".killed.ply.tmp-" + std::to_string(::getpid()) + "-kEePmE";
+  for(const std::string name : {running, std::string(".killed.ply.tmp-notes.txt"), std::string(".other.ply.tmp-AbC123"),
+                                std::string("killed.ply.tmp-AbC123")})
+    write_text(file(name), "keep");
+  const Run next = run_tool(q(file("killed.xyz")) + " " + q(file("killed.ply")) + " --radius 0.3");
+  INFO(next.err);
+  REQUIRE(next.status == 0);
+  CHECK(next.err.find("note: removed 4 temporary files of earlier runs writing") != std::string::npos);
+  CHECK(std::count(next.err.begin(), next.err.end(), '\n') == 1);
+  CHECK(files_starting_with(".killed.ply.tmp-") == 2);  // the running one and notes.txt
+  CHECK(fs::exists(file(running)));
+  CHECK(fs::exists(file(".killed.ply.tmp-notes.txt")));
+  CHECK(fs::exists(file(".other.ply.tmp-AbC123")));
+  CHECK(fs::exists(file("killed.ply.tmp-AbC123")));
+  CHECK(fs::exists(file("killed.ply")));
+  // nothing left to remove: no note
+  const Run again = run_tool(q(file("killed.xyz")) + " " + q(file("killed.ply")) + " --radius 0.3");
+  CHECK(again.status == 0);
+  CHECK(again.err.find("note:") == std::string::npos);
+  for(const std::string name : {running, std::string(".killed.ply.tmp-notes.txt"), std::string(".other.ply.tmp-AbC123"),
+                                std::string("killed.ply.tmp-AbC123")})
+    fs::remove(file(name));
+}
+
+// Issue 28, item 14: an OUTPUT that cannot be written is refused before the estimation (the
+// SIGKILL hook at the estimation's start would kill a run that reached it), with one line:
+// a directory, a folder that does not exist or is a file, more than the file size limit
+// (ulimit -f: the reservation of the output's size fails with EFBIG), a full disk (a tiny
+// tmpfs, where user namespaces allow mounting one).
+TEST_CASE("tool: an OUTPUT that is a directory, in a missing folder, over the file size limit or on a full disk fails before the estimation")
+{
+  write_xyz(file("early.xyz"), sphere(2000, 1.0));
+  const std::string kill = "PSC_TOOL_TEST_SIGNAL='KILL@curvatures'";
+  auto refused = [&](const std::string& output, const std::string& prefix, const std::string& message) {
+    INFO(output << " " << prefix);
+    const Run r = run_tool_within(60, q(file("early.xyz")) + " " + q(output) + " --radius 0.3", prefix + " " + kill);
+    INFO(r.err);
+    CHECK(r.status == 2);
+    CHECK(r.err.find(message) != std::string::npos);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK(files_starting_with(".early") == 0);
+  };
+  fs::create_directories(file("dir.ply"));
+  refused(file("dir.ply"), "", "is a directory: give a file name, such as");
+  CHECK(fs::is_empty(file("dir.ply")));
+  refused(file("missing/sub/out.ply"), "", "its folder '" + file("missing/sub") + "' does not exist (create it with mkdir -p");
+  CHECK(!fs::exists(file("missing")));
+  refused(file("early.xyz/out.ply"), "", "is not a directory; choose another OUTPUT");
+  // 277 KB of binary PLY, 860 KB of CSV at most, over a limit of 64 blocks (32 or 64 KB)
+  refused(file("early.ply"), "ulimit -f 64;", "more than the largest file allowed (the shell's file size limit, ulimit -f");
+  refused(file("early.csv"), "ulimit -f 64;", "more than the largest file allowed");
+  CHECK(!fs::exists(file("early.ply")));
+  // within the limit: the reservation, larger than a CSV written, is cut to the bytes written
+  for(const std::string ext : {".ply", ".csv"})
+  {
+    const Run free_run = run_tool(q(file("early.xyz")) + " " + q(file("early_free" + ext)) + " --radius 0.3");
+    const Run limited = run_tool_within(60, q(file("early.xyz")) + " " + q(file("early" + ext)) + " --radius 0.3",
+                                        "ulimit -f 100000;");
+    REQUIRE(free_run.status == 0);
+    REQUIRE(limited.status == 0);
+    const std::string expected = read_text(file("early_free" + ext));
+    CHECK(expected.size() > 100000);
+    CHECK(read_text(file("early" + ext)) == expected);
+  }
+
+  // a full disk: a 128 KB tmpfs in a user and mount namespace, where the system allows it
+  fs::create_directories(file("tiny"));
+  const std::string mount = "mount -t tmpfs -o size=128k tmpfs '" + file("tiny") + "'";
+  if(std::system(("unshare -rm sh -c \"" + mount + "\" > /dev/null 2>&1").c_str()) != 0)
+    WARN("no user namespace to mount a tiny file system in: the full disk is not tested");
+  else
+  {
+    const std::string script = mount + " && " + kill + " '" + PSC_TOOL_PATH + "' '" + file("early.xyz") + "' '" +
+                               file("tiny/early.ply") + "' --radius 0.3 2> '" + file("tiny.err") + "'; echo \\$? > '" +
+                               file("tiny.status") + "'; ls -a '" + file("tiny") + "' | wc -l > '" + file("tiny.files") + "'";
+    REQUIRE(std::system(("unshare -rm sh -c \"" + script + "\"").c_str()) == 0);
+    const std::string err = read_text(file("tiny.err"));
+    INFO(err);
+    CHECK(std::atoi(read_text(file("tiny.status")).c_str()) == 2);
+    CHECK(err.find("not enough space for output '" + file("tiny/early.ply") + "': it needs up to 277.0 KB (binary PLY "
+                   "of 2000 points, 19 fields), the file system holding it has 128.0 KB free") != std::string::npos);
+    CHECK(std::count(err.begin(), err.end(), '\n') == 1);
+    CHECK(std::atoi(read_text(file("tiny.files")).c_str()) == 2);  // . and ..: nothing left
+  }
+}
+
+// Issue 28, item 15: a --memory-limit so small that it makes hundreds of tiles (each read
+// again from the input with its halo: 1K on 1000 points makes 570, 14 times as long as 8)
+// is warned of with a limit giving at most 100; one above the machine's RAM too.
+TEST_CASE("tool: a --memory-limit making hundreds of tiles or above the RAM is warned of, with the limit to give")
+{
+  write_xyz(file("limits.xyz"), sphere(1000, 1.0));
+  const Run tiny = run_tool_within(120, q(file("limits.xyz")) + " " + q(file("limits.ply")) + " --memory-limit 1K");
+  INFO(tiny.err);
+  REQUIRE(tiny.status == 0);
+  const std::size_t at = tiny.err.find("warning: --memory-limit 1.0 KB makes ");
+  REQUIRE(at != std::string::npos);
+  const std::size_t tiles = std::stoul(tiny.err.substr(at + 37));
+  CHECK(tiles > 500);
+  CHECK(tiny.out.find("  tiles       " + std::to_string(tiles) + " ") != std::string::npos);
+  const std::size_t give = tiny.err.find("; --memory-limit ", at);
+  REQUIRE(give != std::string::npos);
+  const std::string suggested = tiny.err.substr(give + 17, tiny.err.find(' ', give + 17) - give - 17);
+  const std::size_t most = std::stoul(tiny.err.substr(tiny.err.find(" gives at most ", give) + 15));
+  CHECK(most <= 100);
+  CHECK(std::count(tiny.err.begin(), tiny.err.end(), '\n') == 1);
+  // the limit suggested gives at most that many tiles, the same bytes, and no warning
+  const std::string expected = read_text(file("limits.ply"));
+  const Run fewer = run_tool_within(120, q(file("limits.xyz")) + " " + q(file("limits.ply")) + " --memory-limit " + suggested);
+  INFO(suggested << "\n" << fewer.out);
+  REQUIRE(fewer.status == 0);
+  CHECK(fewer.err.empty());
+  const std::size_t t = fewer.out.find("  tiles       ");
+  REQUIRE(t != std::string::npos);
+  CHECK(std::stoul(fewer.out.substr(t + 14)) <= most);
+  CHECK(std::stoul(fewer.out.substr(t + 14)) > 1);
+  CHECK(read_text(file("limits.ply")) == expected);
+
+  // above the RAM
+  const double ram = double(::sysconf(_SC_PHYS_PAGES)) * double(::sysconf(_SC_PAGE_SIZE));
+  char ram_text[64];
+  std::snprintf(ram_text, sizeof ram_text, "%.1f GB of RAM", ram / (1024.0 * 1024 * 1024));
+  const Run huge = run_tool(q(file("limits.xyz")) + " " + q(file("limits.ply")) + " --memory-limit 1024T");
+  INFO(huge.err);
+  CHECK(huge.status == 0);
+  CHECK(huge.err.find("warning: --memory-limit 1024.0 TB exceeds this machine's memory (" + std::string(ram_text) +
+                      "): ") != std::string::npos);
+  CHECK(std::count(huge.err.begin(), huge.err.end(), '\n') == 1);
+  // within it: silent
+  const Run within = run_tool(q(file("limits.xyz")) + " " + q(file("limits.ply")) + " --memory-limit 100M");
+  CHECK(within.status == 0);
+  CHECK(within.err.empty());
+}
+
 // The tool without normals: quadric normals, orientation by the input's kind (said in the
 // summary), the position blend; the plain pipeline stays reachable.
 TEST_CASE("tool: without normals, the default pipeline and what the summary says of it")
@@ -2289,6 +2494,7 @@ TEST_CASE("tool: without normals, the default pipeline and what the summary says
   CHECK(paper.out.find("blended") == std::string::npos);
   // in tiles the automatic orientation (a spanning tree over the whole cloud) is refused with
   // what to do, as the spanning tree is: the tiled run never differs from the whole one
+  fs::remove(file("tiled.csv"));  // (same_whole_and_tiled() writes one)
   const Run tiled = run_tool(q(file("terrain.las")) + " " + q(file("tiled.csv")) + " --memory-limit 200K");
   CHECK(tiled.status == 2);
   CHECK(tiled.err.find("--orient +z") != std::string::npos);

@@ -109,16 +109,23 @@ void print_usage(std::ostream& os)
      << "                     the rows written in input order: the same output, bitwise, in\n"
      << "                     bounded memory (--radius as a length; without normals, a local\n"
      << "                     --orient: an axis, viewpoint or scanner, not mst or auto; not\n"
-     << "                     --method vcm, which needs every point)\n"
+     << "                     --method vcm, which needs every point). A limit that makes more\n"
+     << "                     than 500 tiles, or above the machine's RAM, is warned of\n"
      << "  --threads N        use at most N threads (default: every core)\n"
-     << "  --quiet            print errors only (no progress bar, warnings or summary)\n"
+     << "  --quiet            print errors only (no progress bar, warnings, notes or summary;\n"
+     << "                     the progress bar, with the elapsed time and an ETA, is drawn\n"
+     << "                     only when stderr is a terminal)\n"
      << "  --help             print this help\n"
      << "\n"
      << "Exit status: 0 on success; 2 on an invalid argument or an unreadable, malformed or\n"
-     << "unwritable file (nothing written); 3 when no point got a valid estimate (OUTPUT is\n"
+     << "unwritable file (nothing written; an OUTPUT that is a directory or in a missing or\n"
+     << "read-only folder, and a disk too full for the output, whose size is reserved once INPUT\n"
+     << "is read, fail before the estimation); 3 when no point got a valid estimate (OUTPUT is\n"
      << "written, every row invalid; stderr says why, such as too few neighbours, and what to\n"
      << "try, such as a radius); 130 if interrupted by Ctrl-C (SIGINT) and 143 by SIGTERM, in\n"
-     << "any phase (nothing written); 1 on an internal error.\n";
+     << "any phase (nothing written); 1 on an internal error. A run killed while writing\n"
+     << "leaves a hidden .OUTPUT.tmp-PID-XXXXXX, which the next run writing OUTPUT removes\n"
+     << "(with a note).\n";
 }
 
 namespace {
