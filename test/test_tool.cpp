@@ -10,6 +10,8 @@
 #include "scan_simulator.h"
 #include "test_support.h"
 
+#include "../tools/progress_line.h"
+
 #include <CGAL/Point_set_curvatures/internal/knn_neighborhoods.h>
 #include <CGAL/estimate_apss_curvatures.h>
 #include <CGAL/estimate_aso_curvatures.h>
@@ -956,10 +958,11 @@ TEST_CASE("tool: rgb columns are refused with a message naming --columns, and --
   REQUIRE(run_tool(q(file("cols.xyz")) + " " + q(file("cols_ref.csv")) + " --radius 0.6").status == 0);
   const std::string reference = read_text(file("cols_ref.csv"));
 
-  std::ostringstream rgb, nine, csv, cloudcompare;
-  for(std::ostringstream* s : {&rgb, &nine, &csv, &cloudcompare})
+  std::ostringstream rgb, nine, csv, cloudcompare, asc;
+  for(std::ostringstream* s : {&rgb, &nine, &csv, &cloudcompare, &asc})
     s->precision(17);
   cloudcompare << "//X,Y,Z,R,G,B,Nx,Ny,Nz\n";
+  asc << "//X Y Z R G B Nx Ny Nz\n";  // CloudCompare's .asc export, separated by spaces
   for(const Oriented_point& p : pts)
   {
     const double x = p.first.x(), y = p.first.y(), z = p.first.z();
@@ -968,11 +971,14 @@ TEST_CASE("tool: rgb columns are refused with a message naming --columns, and --
     nine << x << " " << y << " " << z << " 200 120 35 " << nx << " " << ny << " " << nz << "\n";
     csv << x << "," << y << "," << z << "," << nx << "," << ny << "," << nz << "\n";
     cloudcompare << x << "," << y << "," << z << ",200,120,35," << nx << "," << ny << "," << nz << "\n";
+    asc << x << " " << y << " " << z << " 200 120 35 " << nx << " " << ny << " " << nz << "\n";
   }
   write_text(file("rgb.xyz"), rgb.str());
   write_text(file("nine.txt"), nine.str());
   write_text(file("plain.csv"), csv.str());
   write_text(file("cloudcompare.csv"), cloudcompare.str());
+  write_text(file("cloudcompare.asc"), asc.str());
+  write_text(file("plain.asc"), csv.str());
 
   // x y z r g b: never read as normals without being told
   fs::remove(file("out.ply"));  // (another test case of this process may have written one)
@@ -987,10 +993,12 @@ TEST_CASE("tool: rgb columns are refused with a message naming --columns, and --
   CHECK(told.status == 0);
   CHECK(told.err.find("has no normals: estimating them") != std::string::npos);
 
-  // the same cloud through --columns, a comma-separated file and CloudCompare's header
-  // (the colour columns of CloudCompare's file are attributes, dropped here to compare)
+  // the same cloud through --columns, a comma-separated file and CloudCompare's header, and
+  // CloudCompare's .asc export, read like .txt (issue 28: refused as an unknown extension)
+  // (the colour columns of CloudCompare's files are attributes, dropped here to compare)
   for(const std::string& args : {q(file("nine.txt")) + " --columns x,y,z,_,_,_,nx,ny,nz",
-                                 q(file("plain.csv")), q(file("cloudcompare.csv"))})
+                                 q(file("plain.csv")), q(file("cloudcompare.csv")), q(file("cloudcompare.asc")),
+                                 q(file("plain.asc")), q(file("cloudcompare.asc")) + " --columns x,y,z,_,_,_,nx,ny,nz"})
   {
     const Run r = run_tool(args + " " + q(file("cols_other.csv")) + " --radius 0.6 --drop-attributes");
     INFO(args << ": " << r.err);
@@ -1019,18 +1027,29 @@ TEST_CASE("tool: rgb columns are refused with a message naming --columns, and --
   CHECK(read_text(file("cols_other.csv")) == reference);
 }
 
-TEST_CASE("tool: 3-neighbour estimates are invalid, with one warning suggesting a scale")
+TEST_CASE("tool: 3-neighbour estimates are invalid, and a run without a valid estimate exits 3 with one line suggesting a scale")
 {
   // The simulated LiDAR scan at r = 0.3: every point has about 3 neighbours. They used to be
-  // reported valid (86.9%) with a mean H error of 0.072.
+  // reported valid (86.9%) with a mean H error of 0.072; then all invalid with exit status 0,
+  // which a pipeline took for a success (issue 28). Exit 3, the output written, all invalid.
+  for(const std::string quiet : {"", " --quiet"})
+  {
+    const Run r = run_tool(q(repo_data("goursat-lidar.xyz")) + " " + q(file("lidar.csv")) + " --radius 0.3" + quiet);
+    INFO(r.err);
+    REQUIRE(r.status == 3);
+    if(quiet.empty())
+      CHECK(r.out.find("valid       0 (0.00 %); 2947 too_few_neighbors") != std::string::npos);
+    else
+      CHECK(r.out.empty());
+    CHECK(r.err.rfind("point_set_curvatures: error: no valid estimate: all 2947 points are too_few_neighbors: the median "
+                      "neighbourhood holds 3 points: fewer than 12 neighbours, the least count of a valid aso estimate; "
+                      "for about 40 neighbours, try --radius ", 0) == 0);
+    CHECK(r.err.find("' was written, every row invalid\n") != std::string::npos);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  }
   const Run r = run_tool(q(repo_data("goursat-lidar.xyz")) + " " + q(file("lidar.csv")) + " --radius 0.3");
-  INFO(r.err);
-  REQUIRE(r.status == 0);
-  CHECK(r.out.find("valid       0 (0.00 %)") != std::string::npos);
-  CHECK(r.err.find("warning: the median neighbourhood holds 3 points, fewer than the 12") != std::string::npos);
-  CHECK(r.err.find("try --radius ") != std::string::npos);
-  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
   const std::string rows = read_text(file("lidar.csv"));
+  CHECK(std::count(rows.begin(), rows.end(), '\n') == 2948);  // the header and every point
   CHECK(rows.find(",1\n") == std::string::npos);  // no row ends with valid = 1
 
   // at the scale it suggests (about 40 neighbours), no warning and every point valid but a few
@@ -1047,6 +1066,87 @@ TEST_CASE("tool: 3-neighbour estimates are invalid, with one warning suggesting 
   CHECK(few.err.find("--neighbors 5 is below the 12 neighbours of a valid aso estimate") != std::string::npos);
   // and allowed with --min-neighbors
   CHECK(run_tool(q(repo_data("goursat-lidar.xyz")) + " " + q(file("lidar.csv")) + " --neighbors 5 --min-neighbors 5 --quiet").status == 0);
+}
+
+// Issue 28: a file smaller than a good neighbourhood is told so, not to try the default
+// --neighbors 40 it ran with; counts of one are singular.
+TEST_CASE("tool: a file with fewer points than a good neighbourhood is told it is too small, and one point is one point")
+{
+  // 10 points of a plane and one point far from them; --min-neighbors 5 lets the 10 be valid
+  std::vector<Oriented_point> pts;
+  for(int i = 0; i < 10; ++i)
+    pts.emplace_back(Point(0.1 * (i % 4), 0.1 * (i / 4), 0), Vector(0, 0, 1));
+  write_xyz(file("ten.xyz"), pts);
+  pts.emplace_back(Point(100, 100, 0), Vector(0, 0, 1));
+  write_xyz(file("eleven.xyz"), pts);
+  const Run ten = run_tool(q(file("ten.xyz")) + " " + q(file("ten.csv")) + " --min-neighbors 5");
+  INFO(ten.err);
+  REQUIRE(ten.status == 0);
+  CHECK(ten.out.find("valid       10 (100.00 %)") != std::string::npos);
+  CHECK(ten.err.find("warning: '" + file("ten.xyz") + "' is too small for aso: it holds 10 usable points") !=
+        std::string::npos);
+  CHECK(ten.err.find("--neighbors 40") == std::string::npos);  // the default it ran with
+  CHECK(std::count(ten.err.begin(), ten.err.end(), '\n') == 1);
+  // by radius too, and the isolated point is "1 point", never "1 points"
+  const Run eleven = run_tool(q(file("eleven.xyz")) + " " + q(file("eleven.csv")) + " --min-neighbors 5 --radius 1");
+  INFO(eleven.err);
+  REQUIRE(eleven.status == 0);
+  CHECK(eleven.out.find("valid       10 (90.91 %); 1 too_few_neighbors") != std::string::npos);
+  CHECK(eleven.err.find("is too small for aso: it holds 11 usable points") != std::string::npos);
+  CHECK(eleven.err.find("; 1 point has too few neighbours for a fit and is invalid (too_few_neighbors)") !=
+        std::string::npos);
+  CHECK(eleven.err.find("1 points") == std::string::npos);
+  CHECK(eleven.err.find("try --") == std::string::npos);  // no scale gives more points
+
+  // without --min-neighbors nothing is valid: exit 3, one line saying the file is too small
+  const Run none = run_tool(q(file("ten.xyz")) + " " + q(file("ten.csv")));
+  INFO(none.err);
+  CHECK(none.status == 3);
+  CHECK(none.err == "point_set_curvatures: error: no valid estimate: all 10 points are too_few_neighbors: '" +
+                      file("ten.xyz") + "' is too small for aso: it holds 10 usable points (finite, with a normal), "
+                      "fewer than the 12 neighbours from which aso's errors stay within twice those at 40 (measured, "
+                      "see the manual), whatever --radius or --neighbors (--min-neighbors lowers the least count of a "
+                      "valid estimate, at a cost in accuracy); '" + file("ten.csv") + "' was written, every row invalid\n");
+}
+
+// Issue 28: every other reason for a run without a valid estimate is named, with exit status 3.
+TEST_CASE("tool: runs without a valid estimate exit 3 naming the most frequent status: degenerate_fit, invalid_normal, non_finite_point, two_sheets")
+{
+  const std::vector<Oriented_point> pts = sphere(500, 1.0);
+  write_xyz(file("ball.xyz"), pts);
+  std::vector<Oriented_point> zero = pts, plate;
+  for(Oriented_point& p : zero)
+    p.second = Vector(0, 0, 0);
+  write_xyz(file("zero.xyz"), zero);
+  write_text(file("nan.xyz"), "nan 0 0 0 0 1\n0 inf 0 0 0 1\n");
+  // two sheets 0.02 apart with opposite normals (a thin plate)
+  for(int i = 0; i < 400; ++i)
+    for(int side : {0, 1})
+      plate.emplace_back(Point(0.05 * (i % 20), 0.05 * (i / 20), 0.02 * side), Vector(0, 0, side ? 1 : -1));
+  write_xyz(file("plate.xyz"), plate);
+  struct Case
+  {
+    std::string args, message;
+  };
+  const Case cases[] = {
+    {q(file("ball.xyz")) + " --radius 1e300", "no valid estimate: all 500 points are degenerate_fit: coincident "
+                                             "neighbours, neighbours along one line (a single scan line), or a radius "
+                                             "far larger than the cloud; --radius 3.5x gives about 40 neighbours"},
+    {q(file("zero.xyz")) + " --radius 0.5 --columns x,y,z,nx,ny,nz", "no valid estimate: all 500 points are invalid_normal: the normals are zero"},
+    {q(file("nan.xyz")), "no valid estimate: all 2 points are non_finite_point: NaN or infinite coordinates"},
+    {q(file("plate.xyz")) + " --radius 0.3", "points are two_sheets: two layers with opposite normals in every neighbourhood"},
+  };
+  for(const Case& c : cases)
+  {
+    fs::remove(file("none.csv"));
+    const Run r = run_tool(c.args + " " + q(file("none.csv")) + " --quiet");
+    INFO(c.args << "\n" << r.err);
+    CHECK(r.status == 3);
+    CHECK(r.err.rfind("point_set_curvatures: error: ", 0) == 0);
+    CHECK(r.err.find(c.message) != std::string::npos);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK(fs::exists(file("none.csv")));
+  }
 }
 
 // =======================================================================================
@@ -1356,16 +1456,23 @@ TEST_CASE("estimate_oriented_normals: closed objects outward, open ones up, auto
 
 // Issue 14: Ctrl-C is honoured within a batch (at most 1% of the points, ~0.25 s) even when
 // one grid cell holds every point, and neither one nor two interrupts leave a temporary file.
-TEST_CASE("tool: SIGINT during a long run exits 130 and leaves no temporary file, once or twice")
+TEST_CASE("tool: SIGINT during a long run exits 130, SIGTERM 143, and neither leaves a temporary file, once or twice")
 {
   // 20K points and a radius covering them all: 4e8 pairs, tens of seconds if not stopped
   write_xyz(file("slow.xyz"), sphere(20000, 1.0));
-  for(int signals : {1, 2})
+  struct Case
   {
-    INFO(signals << " signal(s)");
+    std::string signal;
+    int signals, status;
+  };
+  // the second signal exits from the handler at once, with the same status
+  for(const Case& c : {Case{"INT", 1, 130}, Case{"INT", 2, 130}, Case{"TERM", 1, 143}, Case{"TERM", 2, 143}})
+  {
+    INFO(c.signals << " SIG" << c.signal);
     fs::remove(file("slow.ply"));
     // (\$: expanded by bash -c, not by the shell of std::system)
-    const std::string kills = signals == 1 ? "kill -INT \\$pid" : "kill -INT \\$pid; kill -INT \\$pid";
+    const std::string kill = "kill -" + c.signal + " \\$pid";
+    const std::string kills = c.signals == 1 ? kill : kill + "; " + kill;
     const std::string script = std::string("'") + PSC_TOOL_PATH + "' '" + file("slow.xyz") + "' '" +
                                file("slow.ply") + "' --radius 3 --quiet 2> '" + file("slow.err") +
                                "' & pid=\\$!; sleep 1; " + kills + "; wait \\$pid; echo \\$? > '" +
@@ -1373,7 +1480,7 @@ TEST_CASE("tool: SIGINT during a long run exits 130 and leaves no temporary file
     const auto start = std::chrono::steady_clock::now();
     REQUIRE(std::system(("bash -c \"" + script + "\"").c_str()) == 0);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    CHECK(std::atoi(read_text(file("slow.status")).c_str()) == 130);
+    CHECK(std::atoi(read_text(file("slow.status")).c_str()) == c.status);
     CHECK(!fs::exists(file("slow.ply")));
     CHECK(files_starting_with(".slow.ply.tmp") == 0);
     // not a timing assertion: a run that ignored the signal would take tens of seconds
@@ -1425,7 +1532,8 @@ TEST_CASE("tool: readers accept trailing comments, a count before a header, OFF 
   // 1e400 is infinite (a non-finite point), 1e-400 is 0
   write_text(file("range.xyz"), "1e400 0 0\n1e-400 0 0\n");
   const Run range = run_tool(q(file("range.xyz")) + " " + q(file("range.csv")) + " --radius 1 --min-neighbors 1 --quiet");
-  CHECK(range.status == 0);
+  CHECK(range.status == 3);  // read: no estimate is possible (one finite point), said with exit status 3
+  CHECK(fs::exists(file("range.csv")));
 }
 
 // Issue 14 reproducers that are not errors: a UTF-8 byte order mark, integer coordinates in a
@@ -1436,7 +1544,7 @@ TEST_CASE("tool and library: BOM, integer PLY coordinates, identical points, nei
   CHECK(run_tool(q(file("bom.xyz")) + " " + q(file("bom.csv")) + " --quiet --min-neighbors 3").status == 0);
   write_text(file("int.ply"), "ply\nformat ascii 1.0\nelement vertex 3\nproperty int x\nproperty float y\n"
                               "property double z\nend_header\n0 0 0\n1 0 0\n0 1 0\n");
-  CHECK(run_tool(q(file("int.ply")) + " " + q(file("int.csv")) + " --quiet").status == 0);
+  CHECK(run_tool(q(file("int.ply")) + " " + q(file("int.csv")) + " --quiet").status == 3);  // 3 points: no normals
   const std::string rows = read_text(file("int.csv"));
   CHECK(std::count(rows.begin(), rows.end(), '\n') == 4);  // header and three points
   std::string same;
@@ -1444,8 +1552,10 @@ TEST_CASE("tool and library: BOM, integer PLY coordinates, identical points, nei
     same += "1 2 3\n";
   write_text(file("same.xyz"), same);
   const Run r = run_tool(q(file("same.xyz")) + " " + q(file("same.csv")));
-  CHECK(r.status == 0);
+  CHECK(r.status == 3);  // no crash, and no valid estimate
   CHECK(r.out.find("19 invalid_normal") != std::string::npos);
+  CHECK(r.err.find("error: no valid estimate: all 19 points are invalid_normal: no normal could be estimated") !=
+        std::string::npos);
 
   const auto pts = sphere(100, 1.0);
   const auto e = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
@@ -1612,6 +1722,24 @@ TEST_CASE("tool: LAS 1.2-1.4 point formats 0-10 with their fields as attributes,
   const Run w = run_tool(q(file("bounds.las")) + " " + q(file("bounds.ply")) + " --radius 0.5" + viewpoint);
   CHECK(w.status == 0);
   CHECK(w.err.find("is not within the header's bounds") != std::string::npos);
+  // with every digit the numbers need (issue 28: six digits printed "[999999, 1e+06] is not
+  // within the header's bounds [999999, 1e+06]"): "x range [LO, HI] is not within the
+  // header's bounds [LO', HI']", each reading back as the exact value
+  double quantised_max = -HUGE_VAL;
+  for(const Oriented_point& p : pts)
+    quantised_max = std::max(quantised_max, double(std::lround((p.first.x() - offset[0]) / 0.001)) * 0.001 + offset[0]);
+  auto bracket = [&](const std::string& before) {
+    const std::size_t at = w.err.find(before);
+    REQUIRE(at != std::string::npos);
+    const std::size_t open = at + before.size(), comma = w.err.find(", ", open), close = w.err.find(']', open);
+    return std::make_pair(w.err.substr(open, comma - open), w.err.substr(comma + 2, close - comma - 2));
+  };
+  const auto range = bracket("x range ["), bounds = bracket("header's bounds [");
+  INFO(w.err);
+  CHECK(std::stod(range.second) == quantised_max);
+  CHECK(std::stod(bounds.second) == 1e6 + 4.0);
+  CHECK(range.second != bounds.second);
+  CHECK(bounds.second == "1000004");
 }
 
 TEST_CASE("tool: input attributes carried in their types, renamed on a clash, --fields, --float, --drop-attributes")
@@ -1822,15 +1950,17 @@ Run run_tool_within(int seconds, const std::string& args, const std::string& env
   return r;
 }
 
-// Runs `input` whole, then in tiles at each memory limit: the same exit status 0 and the same
-// output bytes, and the tiled runs in tiles indeed. Returns the whole run's output.
+// Runs `input` whole, then in tiles at each memory limit: the same exit status (0, or 3 when
+// no point is valid) and the same output bytes, and the tiled runs in tiles indeed. Returns
+// the whole run's output.
 std::string same_whole_and_tiled(const std::string& input, const std::string& options,
-                                 const std::vector<std::string>& limits, const std::string& extension = ".ply")
+                                 const std::vector<std::string>& limits, const std::string& extension = ".ply",
+                                 int status = 0)
 {
   const std::string whole_output = file("whole" + extension);
   const Run whole = run_tool_within(120, q(input) + " " + q(whole_output) + " " + options);
   INFO(options << "\n" << whole.err);
-  REQUIRE(whole.status == 0);
+  REQUIRE(whole.status == status);
   CHECK(whole.out.find("  tiles") == std::string::npos);
   const std::string expected = read_text(whole_output);
   for(const std::string& limit : limits)
@@ -1840,7 +1970,7 @@ std::string same_whole_and_tiled(const std::string& input, const std::string& op
     fs::remove(tiled_output);
     const Run tiled = run_tool_within(120, q(input) + " " + q(tiled_output) + " " + options + " --memory-limit " + limit);
     INFO(tiled.err);
-    CHECK(tiled.status == 0);
+    CHECK(tiled.status == status);
     CHECK(tiled.out.find("  tiles") != std::string::npos);
     CHECK(read_text(tiled_output) == expected);
   }
@@ -1957,7 +2087,9 @@ TEST_CASE("tool: tiles of clouds smaller than a neighbourhood give the whole run
   {
     INFO(n << " points with normals, 40 neighbours");
     write_xyz(file("few.xyz"), sphere(n, 1.0));
-    const std::string csv = same_whole_and_tiled(file("few.xyz"), "--fields mean,neighbors,valid", {"100", "500"}, ".csv");
+    // (3 points: no valid estimate, exit status 3 in both runs)
+    const std::string csv =
+      same_whole_and_tiled(file("few.xyz"), "--fields mean,neighbors,valid", {"100", "500"}, ".csv", n == 3 ? 3 : 0);
     // every point has every point as neighbour; 3 are too few (too_few_neighbors), 39 enough
     const std::vector<std::string> neighbors = csv_column(csv, "neighbors"), valid = csv_column(csv, "valid");
     REQUIRE(neighbors.size() == n);
@@ -1988,7 +2120,7 @@ TEST_CASE("tool: tiles of clouds smaller than a neighbourhood give the whole run
     const double offset[3] = {0, 0, 0};
     write_las(file("line.las"), line, 0, 2, 0.001, offset);
     const std::string csv = same_whole_and_tiled(file("line.las"), "--method jet --radius 0.3 --orient +z --drop-attributes",
-                                                 {"1K", "2K"}, ".csv");
+                                                 {"1K", "2K"}, ".csv", 3);
     const std::vector<std::string> valid = csv_column(csv, "valid");
     CHECK(std::count(valid.begin(), valid.end(), "0") == 24);
   }
@@ -2052,8 +2184,9 @@ TEST_CASE("tool: clouds whose extent overflows a double are tiled as the whole r
     std::string las = read_text(file("xscale.las"));
     put_le<double>(las, 131, 1.5e304);
     write_text(file("xscale.las"), las);
+    // (no valid estimate: exit status 3 in both runs)
     const std::string csv = same_whole_and_tiled(file("xscale.las"), "--orient +z --drop-attributes --fields mean,valid",
-                                                 {"2K"}, ".csv");
+                                                 {"2K"}, ".csv", 3);
     const std::vector<std::string> x = csv_column(csv, "x"), valid = csv_column(csv, "valid");
     REQUIRE(x.size() == 80);
     const auto [lo, hi] = std::minmax_element(x.begin(), x.end(), [](const std::string& a, const std::string& b) {
@@ -2100,8 +2233,8 @@ TEST_CASE("tool: VCM gives the same bytes in every run, sequential and parallel,
 // Issue 30: SIGINT and SIGTERM stop every phase of a tiled run at its next progress report
 // (about 1% of its work or 0.25 s). The tool's test hook PSC_TOOL_TEST_SIGNAL=SIG@PHASE raises
 // the signal as the phase begins (PHASE: the start of its name, '*' standing for any text);
-// the run must exit 130 naming that phase (a phase that went on would let the next one stop
-// instead), leaving no output and no temporary file.
+// the run must exit 130 (SIGINT) or 143 (SIGTERM) naming that phase (a phase that went on
+// would let the next one stop instead), leaving no output and no temporary file.
 TEST_CASE("tool: SIGINT and SIGTERM stop every phase of a tiled run, with and without normals")
 {
   write_xyz(file("phases.xyz"), sphere(1000, 1.0));
@@ -2131,7 +2264,7 @@ TEST_CASE("tool: SIGINT and SIGTERM stop every phase of a tiled run, with and wi
       const Run r = run_tool_within(120, q(file(c.input)) + " " + q(file("phases.ply")) + " " + c.options,
                                     "PSC_TOOL_TEST_SIGNAL='" + signal + "@" + c.phase + "'");
       INFO(r.err);
-      CHECK(r.status == 130);
+      CHECK(r.status == (signal == "TERM" ? 143 : 130));  // 128 + the signal, as a shell reports it
       // "interrupted (tile 9/23 curvatures), nothing written"
       const std::string name = c.phase.substr(0, c.phase.find('#'));
       const std::size_t star = name.find('*');
@@ -2153,7 +2286,7 @@ TEST_CASE("tool: SIGINT and SIGTERM stop every phase of a tiled run, with and wi
 }
 
 // A real SIGTERM during a long tiled run (every point every point's neighbour) stops it.
-TEST_CASE("tool: SIGTERM during a long tiled run exits 130 and leaves no file")
+TEST_CASE("tool: SIGTERM during a long tiled run exits 143 and leaves no file")
 {
   write_xyz(file("long.xyz"), sphere(20000, 1.0));
   fs::remove(file("long.ply"));
@@ -2165,10 +2298,213 @@ TEST_CASE("tool: SIGTERM during a long tiled run exits 130 and leaves no file")
                              "kill -TERM \\$pid; wait \\$pid; echo \\$? > '" + file("long.status") +
                              "'; kill \\$dog 2> /dev/null; true";
   REQUIRE(std::system(("bash -c \"" + script + "\"").c_str()) == 0);
-  CHECK(std::atoi(read_text(file("long.status")).c_str()) == 130);
+  CHECK(std::atoi(read_text(file("long.status")).c_str()) == 143);
   CHECK(read_text(file("long.err")).find("interrupted (") != std::string::npos);
   CHECK(!fs::exists(file("long.ply")));
   CHECK(files_starting_with(".long.ply") == 0);
+}
+
+// Issue 28, item 12: the progress bar's line (drawn on a terminal only, redrawn twice a second
+// by a timer even when a phase reports no progress): the elapsed time, and an ETA once a
+// fraction of at least 1% is known and a second has passed.
+TEST_CASE("tool: the progress line shows the elapsed time, an ETA once a fraction is known, at one width")
+{
+  using psc_tool::progress_line;
+  const std::string frozen = progress_line("curvatures", 0.0, 14.2);  // no progress yet: the time still moves
+  CHECK(frozen.find("  0%") != std::string::npos);
+  CHECK(frozen.find("14.2 s") != std::string::npos);
+  CHECK(frozen.find("ETA") == std::string::npos);
+  CHECK(progress_line("curvatures", 0.25, 10.0).find(" 25%") != std::string::npos);
+  CHECK(progress_line("curvatures", 0.25, 10.0).find("ETA 30 s") != std::string::npos);
+  CHECK(progress_line("curvatures", 0.5, 150.0).find("ETA 2 min 30 s") != std::string::npos);
+  CHECK(progress_line("curvatures", 0.01, 100.0).find("ETA 2 h 45 min") != std::string::npos);  // 9900 s
+  CHECK(progress_line("curvatures", 0.5, 0.5).find("ETA") == std::string::npos);  // under a second: no guess
+  CHECK(progress_line("curvatures", 1.0, 20.0).find("ETA") == std::string::npos);  // done
+  CHECK(progress_line("curvatures", std::nan(""), 3.0).find("  0%") != std::string::npos);
+  CHECK(psc_tool::eta_text(59.6) == "1 min 00 s");
+  // drawn over each other after '\r': one width, or a shorter line would leave a tail
+  for(const auto& fs : {std::make_pair(0.0, 0.0), std::make_pair(0.5, 150.0), std::make_pair(0.01, 100.0),
+                        std::make_pair(1.0, 20.0), std::make_pair(0.999, 5e4)})
+    CHECK(progress_line("curvatures", fs.first, fs.second).size() == frozen.size());
+
+  // not on a terminal (stderr is a file here): no bar, no '\r', as before
+  write_xyz(file("bar.xyz"), sphere(500, 1.0));
+  const Run r = run_tool(q(file("bar.xyz")) + " " + q(file("bar.ply")) + " --radius 0.3");
+  REQUIRE(r.status == 0);
+  CHECK(r.err.find('\r') == std::string::npos);
+  CHECK(r.err.find("ETA") == std::string::npos);
+}
+
+// Issue 28, item 13: a run killed (SIGKILL) while it computes leaves no file: the output's
+// temporary file is created when writing starts (the space reserved before is held by a file
+// unlinked at once). One killed while writing leaves ".OUTPUT.tmp-PID-XXXXXX", which the next
+// run writing OUTPUT removes, with a note, as it does those of earlier versions
+// (".OUTPUT.tmp-XXXXXX"), never those of a run still going (its PID alive).
+TEST_CASE("tool: a run killed while computing leaves no temporary file, and the next run removes a killed run's with a note")
+{
+  write_xyz(file("killed.xyz"), sphere(2000, 1.0));
+  write_xyz(file("killed_nn.xyz"), sphere(2000, 1.0), false);
+  const struct
+  {
+    std::string input, options, phase;
+  } cases[] = {{"killed.xyz", "--radius 0.3", "curvatures"},
+               {"killed.xyz", "--radius 0.3x", "spacing"},
+               {"killed_nn.xyz", "--radius 0.3", "normals"},
+               {"killed.xyz", "--radius 0.3 --memory-limit 100K", "tile *curvatures#2"},
+               {"killed_nn.xyz", "--radius 0.3 --memory-limit 300K --orient +z --ascii", "tile *curvatures#2"},
+               {"killed.xyz", "--radius 0.3 --memory-limit 100K", "tile *read#3"}};
+  for(const auto& c : cases)
+  {
+    INFO(c.input << " " << c.options << ", SIGKILL as phase '" << c.phase << "' begins");
+    const Run r = run_tool_within(60, q(file(c.input)) + " " + q(file("killed.ply")) + " " + c.options,
+                                  "PSC_TOOL_TEST_SIGNAL='KILL@" + c.phase + "'");
+    CHECK(r.status == 137);  // killed (timeout reports 128 + SIGKILL)
+    CHECK(!fs::exists(file("killed.ply")));
+    CHECK(files_starting_with(".killed.ply") == 0);
+  }
+
+  // killed while writing: the partial temporary file stays, and the next run removes it
+  const Run w = run_tool_within(60, q(file("killed.xyz")) + " " + q(file("killed.ply")) + " --radius 0.3",
+                                "PSC_TOOL_TEST_SIGNAL='KILL@writing'");
+  CHECK(w.status == 137);
+  CHECK(files_starting_with(".killed.ply.tmp-") == 1);
+  // planted: a run of an earlier version, and killed ones (a PID above Linux's largest)
+  for(const std::string name : {".killed.ply.tmp-AbC123", ".killed.ply.tmp-4194305-xYz789",
+                                ".killed.ply.tmp-4194305-tile3-aBcDeF"})
+    write_text(file(name), "partial");
+  // kept: a run still going (this process), other names
+  const std::string running = ".killed.ply.tmp-" + std::to_string(::getpid()) + "-kEePmE";
+  for(const std::string name : {running, std::string(".killed.ply.tmp-notes.txt"), std::string(".other.ply.tmp-AbC123"),
+                                std::string("killed.ply.tmp-AbC123")})
+    write_text(file(name), "keep");
+  const Run next = run_tool(q(file("killed.xyz")) + " " + q(file("killed.ply")) + " --radius 0.3");
+  INFO(next.err);
+  REQUIRE(next.status == 0);
+  CHECK(next.err.find("note: removed 4 temporary files of earlier runs writing") != std::string::npos);
+  CHECK(std::count(next.err.begin(), next.err.end(), '\n') == 1);
+  CHECK(files_starting_with(".killed.ply.tmp-") == 2);  // the running one and notes.txt
+  CHECK(fs::exists(file(running)));
+  CHECK(fs::exists(file(".killed.ply.tmp-notes.txt")));
+  CHECK(fs::exists(file(".other.ply.tmp-AbC123")));
+  CHECK(fs::exists(file("killed.ply.tmp-AbC123")));
+  CHECK(fs::exists(file("killed.ply")));
+  // nothing left to remove: no note
+  const Run again = run_tool(q(file("killed.xyz")) + " " + q(file("killed.ply")) + " --radius 0.3");
+  CHECK(again.status == 0);
+  CHECK(again.err.find("note:") == std::string::npos);
+  for(const std::string name : {running, std::string(".killed.ply.tmp-notes.txt"), std::string(".other.ply.tmp-AbC123"),
+                                std::string("killed.ply.tmp-AbC123")})
+    fs::remove(file(name));
+}
+
+// Issue 28, item 14: an OUTPUT that cannot be written is refused before the estimation (the
+// SIGKILL hook at the estimation's start would kill a run that reached it), with one line:
+// a directory, a folder that does not exist or is a file, more than the file size limit
+// (ulimit -f: the reservation of the output's size fails with EFBIG), a full disk (a tiny
+// tmpfs, where user namespaces allow mounting one).
+TEST_CASE("tool: an OUTPUT that is a directory, in a missing folder, over the file size limit or on a full disk fails before the estimation")
+{
+  write_xyz(file("early.xyz"), sphere(2000, 1.0));
+  const std::string kill = "PSC_TOOL_TEST_SIGNAL='KILL@curvatures'";
+  auto refused = [&](const std::string& output, const std::string& prefix, const std::string& message) {
+    INFO(output << " " << prefix);
+    const Run r = run_tool_within(60, q(file("early.xyz")) + " " + q(output) + " --radius 0.3", prefix + " " + kill);
+    INFO(r.err);
+    CHECK(r.status == 2);
+    CHECK(r.err.find(message) != std::string::npos);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK(files_starting_with(".early") == 0);
+  };
+  fs::create_directories(file("dir.ply"));
+  refused(file("dir.ply"), "", "is a directory: give a file name, such as");
+  CHECK(fs::is_empty(file("dir.ply")));
+  refused(file("missing/sub/out.ply"), "", "its folder '" + file("missing/sub") + "' does not exist (create it with mkdir -p");
+  CHECK(!fs::exists(file("missing")));
+  refused(file("early.xyz/out.ply"), "", "is not a directory; choose another OUTPUT");
+  // 277 KB of binary PLY, 860 KB of CSV at most, over a limit of 64 blocks (32 or 64 KB)
+  refused(file("early.ply"), "ulimit -f 64;", "more than the largest file allowed (the shell's file size limit, ulimit -f");
+  refused(file("early.csv"), "ulimit -f 64;", "more than the largest file allowed");
+  CHECK(!fs::exists(file("early.ply")));
+  // within the limit: the reservation, larger than a CSV written, is cut to the bytes written
+  for(const std::string ext : {".ply", ".csv"})
+  {
+    const Run free_run = run_tool(q(file("early.xyz")) + " " + q(file("early_free" + ext)) + " --radius 0.3");
+    const Run limited = run_tool_within(60, q(file("early.xyz")) + " " + q(file("early" + ext)) + " --radius 0.3",
+                                        "ulimit -f 100000;");
+    REQUIRE(free_run.status == 0);
+    REQUIRE(limited.status == 0);
+    const std::string expected = read_text(file("early_free" + ext));
+    CHECK(expected.size() > 100000);
+    CHECK(read_text(file("early" + ext)) == expected);
+  }
+
+  // a full disk: a 128 KB tmpfs in a user and mount namespace, where the system allows it
+  fs::create_directories(file("tiny"));
+  const std::string mount = "mount -t tmpfs -o size=128k tmpfs '" + file("tiny") + "'";
+  if(std::system(("unshare -rm sh -c \"" + mount + "\" > /dev/null 2>&1").c_str()) != 0)
+    WARN("no user namespace to mount a tiny file system in: the full disk is not tested");
+  else
+  {
+    const std::string script = mount + " && " + kill + " '" + PSC_TOOL_PATH + "' '" + file("early.xyz") + "' '" +
+                               file("tiny/early.ply") + "' --radius 0.3 2> '" + file("tiny.err") + "'; echo \\$? > '" +
+                               file("tiny.status") + "'; ls -a '" + file("tiny") + "' | wc -l > '" + file("tiny.files") + "'";
+    REQUIRE(std::system(("unshare -rm sh -c \"" + script + "\"").c_str()) == 0);
+    const std::string err = read_text(file("tiny.err"));
+    INFO(err);
+    CHECK(std::atoi(read_text(file("tiny.status")).c_str()) == 2);
+    CHECK(err.find("not enough space for output '" + file("tiny/early.ply") + "': it needs up to 277.0 KB (binary PLY "
+                   "of 2000 points, 19 fields), the file system holding it has 128.0 KB free") != std::string::npos);
+    CHECK(std::count(err.begin(), err.end(), '\n') == 1);
+    CHECK(std::atoi(read_text(file("tiny.files")).c_str()) == 2);  // . and ..: nothing left
+  }
+}
+
+// Issue 28, item 15: a --memory-limit so small that it makes hundreds of tiles (each read
+// again from the input with its halo: 1K on 1000 points makes 570, 14 times as long as 8)
+// is warned of with a limit giving at most 100; one above the machine's RAM too.
+TEST_CASE("tool: a --memory-limit making hundreds of tiles or above the RAM is warned of, with the limit to give")
+{
+  write_xyz(file("limits.xyz"), sphere(1000, 1.0));
+  const Run tiny = run_tool_within(120, q(file("limits.xyz")) + " " + q(file("limits.ply")) + " --memory-limit 1K");
+  INFO(tiny.err);
+  REQUIRE(tiny.status == 0);
+  const std::size_t at = tiny.err.find("warning: --memory-limit 1.0 KB makes ");
+  REQUIRE(at != std::string::npos);
+  const std::size_t tiles = std::stoul(tiny.err.substr(at + 37));
+  CHECK(tiles > 500);
+  CHECK(tiny.out.find("  tiles       " + std::to_string(tiles) + " ") != std::string::npos);
+  const std::size_t give = tiny.err.find("; --memory-limit ", at);
+  REQUIRE(give != std::string::npos);
+  const std::string suggested = tiny.err.substr(give + 17, tiny.err.find(' ', give + 17) - give - 17);
+  const std::size_t most = std::stoul(tiny.err.substr(tiny.err.find(" gives at most ", give) + 15));
+  CHECK(most <= 100);
+  CHECK(std::count(tiny.err.begin(), tiny.err.end(), '\n') == 1);
+  // the limit suggested gives at most that many tiles, the same bytes, and no warning
+  const std::string expected = read_text(file("limits.ply"));
+  const Run fewer = run_tool_within(120, q(file("limits.xyz")) + " " + q(file("limits.ply")) + " --memory-limit " + suggested);
+  INFO(suggested << "\n" << fewer.out);
+  REQUIRE(fewer.status == 0);
+  CHECK(fewer.err.empty());
+  const std::size_t t = fewer.out.find("  tiles       ");
+  REQUIRE(t != std::string::npos);
+  CHECK(std::stoul(fewer.out.substr(t + 14)) <= most);
+  CHECK(std::stoul(fewer.out.substr(t + 14)) > 1);
+  CHECK(read_text(file("limits.ply")) == expected);
+
+  // above the RAM
+  const double ram = double(::sysconf(_SC_PHYS_PAGES)) * double(::sysconf(_SC_PAGE_SIZE));
+  char ram_text[64];
+  std::snprintf(ram_text, sizeof ram_text, "%.1f GB of RAM", ram / (1024.0 * 1024 * 1024));
+  const Run huge = run_tool(q(file("limits.xyz")) + " " + q(file("limits.ply")) + " --memory-limit 1024T");
+  INFO(huge.err);
+  CHECK(huge.status == 0);
+  CHECK(huge.err.find("warning: --memory-limit 1024.0 TB exceeds this machine's memory (" + std::string(ram_text) +
+                      "): ") != std::string::npos);
+  CHECK(std::count(huge.err.begin(), huge.err.end(), '\n') == 1);
+  // within it: silent
+  const Run within = run_tool(q(file("limits.xyz")) + " " + q(file("limits.ply")) + " --memory-limit 100M");
+  CHECK(within.status == 0);
+  CHECK(within.err.empty());
 }
 
 // The tool without normals: quadric normals, orientation by the input's kind (said in the
@@ -2220,6 +2556,7 @@ TEST_CASE("tool: without normals, the default pipeline and what the summary says
   CHECK(paper.out.find("blended") == std::string::npos);
   // in tiles the automatic orientation (a spanning tree over the whole cloud) is refused with
   // what to do, as the spanning tree is: the tiled run never differs from the whole one
+  fs::remove(file("tiled.csv"));  // (same_whole_and_tiled() writes one)
   const Run tiled = run_tool(q(file("terrain.las")) + " " + q(file("tiled.csv")) + " --memory-limit 200K");
   CHECK(tiled.status == 2);
   CHECK(tiled.err.find("--orient +z") != std::string::npos);

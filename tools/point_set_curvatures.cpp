@@ -3,14 +3,15 @@
 //
 // point_set_curvatures INPUT OUTPUT [options]
 //
-// Command-line front end of the package: reads a point cloud (.xyz/.pwn/.txt/.csv, .ply, .off, .las),
+// Command-line front end of the package: reads a point cloud (.xyz/.pwn/.txt/.csv/.asc, .ply, .off, .las),
 // estimates normals if the file has none, estimates curvatures at every point and writes them
 // (.ply or .csv), every input point in input order. The options are parsed in
 // command_line.cpp, the estimators run from methods.cpp, the files are read and written in
 // read_*.cpp and write_point_cloud.cpp, and inputs larger than memory go through tiled_run.cpp.
 // Run with --help for the options. Exit status: 0 on success, 2 on invalid arguments or
-// unreadable/malformed/unwritable files (one line on stderr, no output file left behind),
-// 130 when interrupted (Ctrl-C), 1 on unexpected failures.
+// unreadable/malformed/unwritable files (one line on stderr, no output file left behind), 3
+// when no point got a valid estimate (the output written, the reason on stderr), 130 when
+// interrupted by Ctrl-C (SIGINT), 143 by SIGTERM, 1 on unexpected failures.
 
 #include <CGAL/Point_set_curvatures/Tile.h>
 #include <CGAL/Point_set_curvatures/internal/knn_neighborhoods.h>
@@ -21,20 +22,26 @@
 
 #include "command_line.h"
 #include "methods.h"
+#include "progress_line.h"
 #include "read_point_cloud.h"
 #include "run_summary.h"
 #include "tiled_run.h"
 #include "tool_support.h"
 #include "write_point_cloud.h"
 
+#include <dirent.h>
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <sys/statvfs.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <csignal>
 #include <cstdint>
 #include <cstdio>
@@ -45,9 +52,11 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -96,6 +105,8 @@ std::size_t orient_towards_scanner(std::size_t n, const Normal_of& normal, const
 // Progress and interruption
 
 volatile std::sig_atomic_t interrupted = 0;
+// The signal that interrupted the run (SIGINT or SIGTERM): the exit status is 128 + it.
+volatile std::sig_atomic_t interrupt_signal = SIGINT;
 // The temporary output file, removed by a second Ctrl-C (a fixed buffer: the handler may only
 // call async-signal-safe functions). Empty when there is none.
 char temporary_output_path[4096] = "";
@@ -104,10 +115,11 @@ char temporary_output_path[4096] = "";
 // run: the phase that stopped.
 std::string current_phase = "startup";
 
-// Test hook (test_tool): PSC_TOOL_TEST_SIGNAL=INT@NAME or TERM@NAME raises SIGINT or SIGTERM
-// when the first phase whose name starts with NAME begins ('*' in NAME: any text, as in
-// "tile *curvatures"; NAME#N: the N-th such phase), so that a test can check that every
-// phase stops at the signal (within a progress report: about 1% of its work, 0.25 s).
+// Test hook (test_tool): PSC_TOOL_TEST_SIGNAL=INT@NAME, TERM@NAME or KILL@NAME raises SIGINT,
+// SIGTERM or SIGKILL when the first phase whose name starts with NAME begins ('*' in NAME: any
+// text, as in "tile *curvatures"; NAME#N: the N-th such phase), so that a test can check that
+// every phase stops at the signal (within a progress report: about 1% of its work, 0.25 s),
+// and what a run killed in a phase leaves behind.
 void test_signal_at_phase_start(const std::string& phase)
 {
   static const char* const hook = std::getenv("PSC_TOOL_TEST_SIGNAL");
@@ -129,19 +141,22 @@ void test_signal_at_phase_start(const std::string& phase)
   if(++seen < nth)
     return;
   seen = -1;  // once
-  std::raise(h.compare(0, at, "TERM") == 0 ? SIGTERM : SIGINT);
+  const std::string signal = h.substr(0, at);
+  std::raise(signal == "TERM" ? SIGTERM : signal == "KILL" ? SIGKILL : SIGINT);
 }
 
 // The first Ctrl-C (or SIGTERM) cancels the current phase at its next progress report; a
-// second one removes the temporary output and exits at once.
-extern "C" void on_interrupt(int)
+// second one removes the temporary output and exits at once. Exit status 128 + the signal,
+// as a shell reports a process the signal killed: 130 for SIGINT, 143 for SIGTERM.
+extern "C" void on_interrupt(int signal)
 {
   if(interrupted)
   {
     if(temporary_output_path[0] != '\0')
       ::unlink(temporary_output_path);
-    ::_exit(130);
+    ::_exit(128 + signal);
   }
+  interrupt_signal = signal;
   interrupted = 1;
 }
 
@@ -274,27 +289,61 @@ std::size_t estimate_normals(Point_set& ps, const Options& o, Orientation_choice
   return without;
 }
 
-// One line per phase on a terminal ("reading     [#######.....]  58%   1.2 s"), redrawn at
-// every new percent. The callbacks return false once Ctrl-C was pressed, which cancels the
-// phase. CGAL's Parallel_tag functions call them from a thread of their own: only one thread
-// draws at a time.
+// One line per phase on a terminal ("reading     [#######.....]  58%   1.2 s  ETA 1 s"),
+// redrawn at every new percent and, from a timer thread, twice a second: the elapsed time and
+// the ETA move on while a phase reports no progress for long (a radius covering the whole
+// cloud). Nothing is drawn when stderr is not a terminal, and then no thread is started.
+// The callbacks return false once Ctrl-C was pressed, which cancels the phase. CGAL's
+// Parallel_tag functions call them from threads of their own: a mutex keeps one drawer at a
+// time (the signal handler never draws).
 class Progress_bar
 {
 public:
-  explicit Progress_bar(bool enabled) : m_enabled(enabled) {}
+  explicit Progress_bar(bool enabled) : m_enabled(enabled)
+  {
+    if(m_enabled)
+      m_timer = std::thread([this]() { redraw_periodically(); });
+  }
+
+  ~Progress_bar()
+  {
+    if(m_timer.joinable())
+    {
+      {
+        std::lock_guard<std::mutex> lock(m_mutex);
+        m_stop = true;
+      }
+      m_wake.notify_all();
+      m_timer.join();
+    }
+  }
+
+  Progress_bar(const Progress_bar&) = delete;
+  Progress_bar& operator=(const Progress_bar&) = delete;
 
   // Starts a phase (ending the previous one) and returns its callback.
   Progress phase(const std::string& name)
   {
-    finish();
-    m_name = name;
-    current_phase = name;
-    m_start = std::chrono::steady_clock::now();
-    m_last = -1;
-    draw(0.0);
+    {
+      std::lock_guard<std::mutex> lock(m_mutex);
+      finish_locked();
+      m_name = name;
+      current_phase = name;
+      m_start = std::chrono::steady_clock::now();
+      m_fraction = 0;
+      m_last = -1;
+      m_active = true;
+      draw_locked(true);
+    }
     test_signal_at_phase_start(name);
     return [this](double fraction) {
-      draw(fraction);
+      // (the lock only at a new percent: the line shows no finer fraction)
+      if(m_enabled && percent_of(fraction) != m_last)
+      {
+        std::lock_guard<std::mutex> lock(m_mutex);
+        m_fraction = fraction;
+        draw_locked(false);
+      }
       return !interrupted;
     };
   }
@@ -302,82 +351,260 @@ public:
   // Ends the current phase's line.
   void finish()
   {
-    if(m_drawn)
-      std::fputc('\n', stderr);
-    m_drawn = false;
+    std::lock_guard<std::mutex> lock(m_mutex);
+    finish_locked();
   }
 
 private:
-  void draw(double fraction)
+  void finish_locked()
   {
-    if(!m_enabled)
+    if(m_drawn)
+      std::fputc('\n', stderr);
+    m_drawn = false;
+    m_active = false;
+  }
+
+  // Draws the line at a new percent, or always with `force` (the timer's redraws).
+  void draw_locked(bool force)
+  {
+    if(!m_enabled || !m_active)
       return;
-    const int percent = static_cast<int>(100 * std::max(0.0, std::min(1.0, fraction)));
-    if(percent == m_last)
+    const double f = std::isfinite(m_fraction) ? std::max(0.0, std::min(1.0, m_fraction)) : 0.0;
+    const int percent = percent_of(f);
+    if(percent == m_last && !force)
       return;
     m_last = percent;
-    const int width = 30, filled = percent * width / 100;
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
-    std::fprintf(stderr, "\r%-12s [%s%s] %3d%% %7.1f s", m_name.c_str(), std::string(filled, '#').c_str(),
-                 std::string(width - filled, '.').c_str(), percent, seconds);
+    std::fprintf(stderr, "\r%s", progress_line(m_name, f, seconds).c_str());
     std::fflush(stderr);
     m_drawn = true;
   }
 
-  bool m_enabled;
+  static int percent_of(double fraction)
+  {
+    return std::isfinite(fraction) ? static_cast<int>(100 * std::max(0.0, std::min(1.0, fraction))) : 0;
+  }
+
+  void redraw_periodically()
+  {
+    std::unique_lock<std::mutex> lock(m_mutex);
+    while(!m_stop)
+    {
+      m_wake.wait_for(lock, std::chrono::milliseconds(500));
+      if(!m_stop && m_active && !interrupted)
+        draw_locked(true);
+    }
+  }
+
+  const bool m_enabled;
+  std::mutex m_mutex;
+  std::condition_variable m_wake;
+  std::thread m_timer;
+  bool m_stop = false;
+  bool m_active = false;  // a phase is running (between phase() and finish())
   std::string m_name;
   std::chrono::steady_clock::time_point m_start;
-  int m_last = -1;
+  double m_fraction = 0;
+  std::atomic<int> m_last{-1};  // the percent drawn last (read without the lock by the callbacks)
   bool m_drawn = false;
 };
 
 // ---------------------------------------------------------------------------------------
 // Output
 
-// The output file is written under a temporary name in the same folder and renamed when
-// complete, so that a failure or an interruption never leaves a partial OUTPUT.
+// "120.3 MB": a size for messages.
+std::string size_text(double bytes)
+{
+  char text[64];
+  if(bytes < 1024)
+    std::snprintf(text, sizeof text, "%.0f bytes", bytes);
+  else if(bytes < 1024.0 * 1024)
+    std::snprintf(text, sizeof text, "%.1f KB", bytes / 1024);
+  else if(bytes < 1024.0 * 1024 * 1024)
+    std::snprintf(text, sizeof text, "%.1f MB", bytes / (1024.0 * 1024));
+  else if(bytes < 1024.0 * 1024 * 1024 * 1024)
+    std::snprintf(text, sizeof text, "%.1f GB", bytes / (1024.0 * 1024 * 1024));
+  else
+    std::snprintf(text, sizeof text, "%.1f TB", bytes / (1024.0 * 1024 * 1024 * 1024));
+  return text;
+}
+
+// The folder of a path ("." for a bare name) and its name in it.
+std::string folder_of(const std::string& path)
+{
+  const std::size_t slash = path.find_last_of('/');
+  return slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
+}
+
+// The temporary files of OUTPUT are named ".NAME.tmp-PID-" and six characters of mkstemp
+// (the output while it is written) or "tileN-" and six (the rows of a tiled run's tiles,
+// unlinked at once): the PID tells the files of a killed run (its process is gone) from
+// those of a run still going.
+std::string temporary_prefix(const std::string& output)
+{
+  return hidden_sibling(output, cat(".tmp-", ::getpid(), "-"));
+}
+
+// Refuses, before any computation, an OUTPUT that cannot be written: a directory, a folder
+// that does not exist, is not a directory or is not writable.
+void check_output_path(const std::string& output)
+{
+  struct stat st;
+  if(::stat(output.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+    throw Error(cat("the output ", in_quotes(output), " is a directory: give a file name, such as ",
+                    in_quotes(output + "/curvatures" + lower_extension(output))));
+  const std::string folder = folder_of(output);
+  if(::stat(folder.c_str(), &st) != 0)
+    throw Error(cat("cannot write output ", in_quotes(output), ": its folder ", in_quotes(folder), " ",
+                    errno == ENOENT ? "does not exist (create it with mkdir -p, or choose another OUTPUT)"
+                                    : cat("cannot be read (", std::strerror(errno), "); choose another OUTPUT")));
+  if(!S_ISDIR(st.st_mode))
+    throw Error(cat("cannot write output ", in_quotes(output), ": ", in_quotes(folder),
+                    " is not a directory; choose another OUTPUT"));
+  if(::access(folder.c_str(), W_OK | X_OK) != 0)
+    throw Error(cat("cannot write output ", in_quotes(output), ": its folder ", in_quotes(folder),
+                    " is not writable (", std::strerror(errno), "); choose another OUTPUT or change its permissions"));
+}
+
+// Removes the temporary files that runs writing `output` left when they were killed (SIGKILL,
+// a power cut): ".NAME.tmp-PID-..." whose process is gone, and ".NAME.tmp-XXXXXX" of the
+// tool's earlier versions. Returns their number.
+std::size_t remove_stale_temporaries(const std::string& output)
+{
+  const std::size_t slash = output.find_last_of('/');
+  const std::string folder = slash == std::string::npos ? "" : output.substr(0, slash + 1);
+  const std::string head = hidden_sibling(output, ".tmp-").substr(folder.size());
+  if(head.size() <= 5)
+    return 0;
+  std::size_t removed = 0;
+  DIR* d = ::opendir(folder.empty() ? "." : folder.c_str());
+  if(!d)
+    return 0;
+  while(const dirent* e = ::readdir(d))
+  {
+    const std::string name = e->d_name;
+    if(name.compare(0, head.size(), head) != 0)
+      continue;
+    const std::string rest = name.substr(head.size());
+    const std::size_t dash = rest.find('-');
+    bool stale = false;
+    if(dash == std::string::npos)
+      stale = rest.size() == 6;  // ".NAME.tmp-XXXXXX": an earlier version's
+    else if(dash > 0 && dash < 10 && rest.find_first_not_of("0123456789") == dash)
+    {
+      const long pid = std::strtol(rest.c_str(), nullptr, 10);
+      stale = pid > 0 && pid != long(::getpid()) && ::kill(pid_t(pid), 0) != 0 && errno == ESRCH;
+    }
+    struct stat st;
+    const std::string path = folder + name;
+    if(stale && ::lstat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode) && ::unlink(path.c_str()) == 0)
+      ++removed;
+  }
+  ::closedir(d);
+  return removed;
+}
+
+// Allocates `bytes` to the file: 0, or the error (ENOSPC for a full disk, EDQUOT, EFBIG for a
+// file size limit). A file system without fallocate is checked for its free space instead.
+int allocate(int fd, std::uint64_t bytes)
+{
+  if(bytes == 0)
+    return 0;
+#ifdef __linux__
+  for(;;)
+  {
+    if(::fallocate(fd, 0, 0, off_t(bytes)) == 0)
+      return 0;
+    if(errno != EINTR || interrupted)
+      break;
+  }
+  if(errno != EOPNOTSUPP && errno != ENOSYS)
+    return errno;
+  struct statvfs v;
+  if(::fstatvfs(fd, &v) == 0 && double(v.f_bavail) * double(v.f_frsize) < double(bytes))
+    return ENOSPC;
+  return 0;
+#else
+  return ::posix_fallocate(fd, 0, off_t(bytes));
+#endif
+}
+
+// The output file. Its size is reserved on its file system before the estimation (reserve()),
+// so that a full disk, a quota or a file size limit fails in the first second, not after the
+// computation; the space is held by a temporary file unlinked at once, so that a killed run
+// leaves nothing. When writing starts (open()), the output is written under a temporary name
+// in the same folder (the reservation passing to it), and renamed when complete (commit()):
+// a failure or an interruption never leaves a partial OUTPUT.
 class Temporary_output
 {
 public:
-  explicit Temporary_output(const std::string& output) : m_output(output)
+  explicit Temporary_output(const std::string& output) : m_output(output) {}
+
+  ~Temporary_output()
   {
-    const std::string pattern = hidden_sibling(output, ".tmp-XXXXXX");
-    if(pattern.empty())
-      throw Error(cat("invalid output file name ", in_quotes(output)));
-    std::vector<char> buffer(pattern.begin(), pattern.end());
-    buffer.push_back('\0');
-    const int fd = ::mkstemp(buffer.data());
-    if(fd < 0)
-      throw Error(cat("cannot write output ", in_quotes(output), ": ", std::strerror(errno)));
-    m_path = buffer.data();
-    if(m_path.size() < sizeof(temporary_output_path))
-      std::memcpy(temporary_output_path, m_path.c_str(), m_path.size() + 1);
-    // mkstemp creates the file readable by its owner only: give it the usual permissions
-    const mode_t mask = ::umask(0);
-    ::umask(mask);
-    ::fchmod(fd, 0666 & ~mask);
+    discard();
+    release();
+  }
+
+  // Reserves `bytes` (the output's size, or an upper bound) for the output; `what` describes
+  // it for the message.
+  void reserve(std::uint64_t bytes, const std::string& what)
+  {
+    std::string path;
+    const int fd = create(path);
+    ::unlink(path.c_str());
+    temporary_output_path[0] = '\0';
+    const int e = allocate(fd, bytes);
+    if(e != 0)
+    {
+      ::close(fd);
+      if(interrupted)
+        throw Cancelled();
+      throw reservation_error(e, bytes, what);
+    }
+    release();
+    m_reserved = fd;
+  }
+
+  // Creates the temporary file, `bytes` allocated to it, and returns it for writing.
+  std::FILE* open(std::uint64_t bytes, const std::string& what)
+  {
+    const int fd = create(m_path);
+    release();  // the space reserved passes to the file
+    const int e = allocate(fd, bytes);
+    if(e != 0)
+    {
+      ::close(fd);
+      discard();
+      if(interrupted)
+        throw Cancelled();
+      throw reservation_error(e, bytes, what);
+    }
     m_file = ::fdopen(fd, "wb");
     if(!m_file)
     {
       ::close(fd);
       discard();
-      throw Error(cat("cannot write output ", in_quotes(output), ": ", std::strerror(errno)));
+      throw Error(cat("cannot write output ", in_quotes(m_output), ": ", std::strerror(errno)));
     }
     static char buffer_space[1 << 16];
     std::setvbuf(m_file, buffer_space, _IOFBF, sizeof(buffer_space));
+    return m_file;
   }
-
-  ~Temporary_output() { discard(); }
 
   std::FILE* file() { return m_file; }
 
   void commit()
   {
-    const bool written = !std::ferror(m_file);
+    // the allocation may exceed what was written (text formats): cut the file where it ends
+    bool written = std::fflush(m_file) == 0 && !std::ferror(m_file);
+    const off_t end = ::ftello(m_file);
+    written = written && end >= 0 && ::ftruncate(::fileno(m_file), end) == 0;
+    const int error = errno;
     const bool closed = std::fclose(m_file) == 0;
     m_file = nullptr;
     if(!written || !closed)
-      throw Error(cat("cannot write output ", in_quotes(m_output), ": ", std::strerror(errno)));
+      throw Error(cat("cannot write output ", in_quotes(m_output), ": ", std::strerror(written ? errno : error)));
     temporary_output_path[0] = '\0';
     if(std::rename(m_path.c_str(), m_output.c_str()) != 0)
       throw Error(cat("cannot write output ", in_quotes(m_output), ": ", std::strerror(errno)));
@@ -396,8 +623,58 @@ public:
   }
 
 private:
+  // A new temporary file ".NAME.tmp-PID-XXXXXX" with the usual permissions; its name in `path`
+  // and in temporary_output_path (removed by a second Ctrl-C).
+  int create(std::string& path)
+  {
+    const std::string pattern = temporary_prefix(m_output) + "XXXXXX";
+    std::vector<char> buffer(pattern.begin(), pattern.end());
+    buffer.push_back('\0');
+    const int fd = ::mkstemp(buffer.data());
+    if(fd < 0)
+      throw Error(cat("cannot write output ", in_quotes(m_output), ": ", std::strerror(errno)));
+    path = buffer.data();
+    if(path.size() < sizeof(temporary_output_path))
+      std::memcpy(temporary_output_path, path.c_str(), path.size() + 1);
+    // mkstemp creates the file readable by its owner only: give it the usual permissions
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    ::fchmod(fd, 0666 & ~mask);
+    return fd;
+  }
+
+  void release()
+  {
+    if(m_reserved >= 0)
+      ::close(m_reserved);
+    m_reserved = -1;
+  }
+
+  Error reservation_error(int e, std::uint64_t bytes, const std::string& what) const
+  {
+    const std::string needs = cat(size_text(double(bytes)), " (", what, ")");
+    if(e == ENOSPC)
+    {
+      struct statvfs v;
+      const std::string free_space = ::statvfs(folder_of(m_output).c_str(), &v) == 0
+                                       ? cat(", the file system holding it has ", size_text(double(v.f_bavail) * double(v.f_frsize)), " free")
+                                       : std::string();
+      return Error(cat("not enough space for output ", in_quotes(m_output), ": it needs up to ", needs, free_space,
+                       "; free some space or write OUTPUT elsewhere"));
+    }
+    if(e == EDQUOT)
+      return Error(cat("output ", in_quotes(m_output), " needs up to ", needs, ", beyond your disk quota; free some "
+                       "space or write OUTPUT elsewhere"));
+    if(e == EFBIG)
+      return Error(cat("output ", in_quotes(m_output), " needs up to ", needs, ", more than the largest file allowed "
+                       "(the shell's file size limit, ulimit -f, or the file system's); raise the limit or write "
+                       "OUTPUT elsewhere"));
+    return Error(cat("cannot reserve ", needs, " for output ", in_quotes(m_output), ": ", std::strerror(e)));
+  }
+
   std::string m_output, m_path;
   std::FILE* m_file = nullptr;
+  int m_reserved = -1;  // the unlinked file holding the space reserved, until open()
 };
 
 // Diverging colour map centred on 0 (Moreland's cool-warm end points): blue for negative,
@@ -443,30 +720,128 @@ std::string scale_description(const Scale& s)
   return cat("radius ", s.radius);
 }
 
+// The points that can be anyone's neighbour: finite, with a usable normal.
+std::size_t usable_points(const Row_summary& summary)
+{
+  std::size_t n = summary.valid();
+  for(const auto& s : summary.invalid())
+    if(s.first != int(CGAL::Curvature_estimate_status::NON_FINITE_POINT) &&
+       s.first != int(CGAL::Curvature_estimate_status::INVALID_NORMAL))
+      n += s.second;
+  return n;
+}
+
+// "fewer than 12 neighbours": the least count of a valid estimate, when the tool knows it
+// (--min-neighbors below a fit's own least count, 3 or 6 points, is raised to it).
+std::string fewer_than_least(const Method& m, const Scale& scale)
+{
+  const std::size_t least = scale.min_neighbors ? scale.min_neighbors : m.min_neighbors;
+  return least >= 6 ? cat("fewer than ", least, " neighbours") : std::string("too few neighbours for a fit");
+}
+
+// When the input holds fewer usable points than the method's `good_neighbors`, no scale
+// helps: what to say instead of a suggested scale ("" otherwise).
+std::string too_small_input(const Method& m, const std::string& input, const Row_summary& summary)
+{
+  const std::size_t usable = usable_points(summary);
+  if(usable >= m.good_neighbors)
+    return "";
+  return cat(in_quotes(input), " is too small for ", m.name, ": it holds ", plural(usable, "usable point"),
+             " (finite, with a normal), fewer than the ", m.good_neighbors, " neighbours from which ", m.name,
+             "'s errors stay within twice those at 40 (measured, see the manual), whatever --radius or --neighbors");
+}
+
+// The scale to try for about 40 neighbours, from the median count (counts grow like the
+// radius squared on a surface).
+std::string suggested_scale(const Method& m, const Scale& scale, double median)
+{
+  if(scale.by_count)
+    return cat("--neighbors ", std::max<std::size_t>(40, m.good_neighbors));
+  const double factor = std::sqrt(40.0 / std::max(median, 1.0));
+  return scale.spacing_multiple > 0 ? cat("--radius ", scale.spacing_multiple * factor, "x")
+                                    : cat("--radius ", scale.radius * factor);
+}
+
 // The warning when neighbourhoods are small: empty if the median count of the estimated
 // points reaches the method's measured `good_neighbors`.
-std::string small_neighborhood_warning(const Method& m, const Scale& scale, const Row_summary& summary)
+std::string small_neighborhood_warning(const Method& m, const Scale& scale, const Row_summary& summary,
+                                       const std::string& input)
 {
   if(summary.neighbor_sample().empty())
     return "";
   const double median = percentile(summary.neighbor_sample(), 0.5);
   if(median >= double(m.good_neighbors))
     return "";
-  // counts grow like the radius squared on a surface
-  std::string suggestion;
-  if(scale.by_count)
-    suggestion = cat("--neighbors ", std::max<std::size_t>(40, m.good_neighbors));
-  else
-  {
-    const double factor = std::sqrt(40.0 / std::max(median, 1.0));
-    suggestion = scale.spacing_multiple > 0 ? cat("--radius ", scale.spacing_multiple * factor, "x")
-                                            : cat("--radius ", scale.radius * factor);
-  }
-  return cat("the median neighbourhood holds ", median, " points, fewer than the ", m.good_neighbors,
+  const std::string invalid = summary.too_few() == 0 ? std::string()
+                              : cat("; ", plural(summary.too_few(), "point"), summary.too_few() == 1 ? " has " : " have ",
+                                    fewer_than_least(m, scale), " and ", summary.too_few() == 1 ? "is" : "are",
+                                    " invalid (too_few_neighbors)");
+  const std::string too_small = too_small_input(m, input, summary);
+  if(!too_small.empty())
+    return too_small + invalid;
+  return cat("the median neighbourhood holds ", plural(std::size_t(median), "point"), ", fewer than the ", m.good_neighbors,
              " from which ", m.name, "'s errors stay within twice those at 40 neighbours (measured, see the "
-             "manual); ", summary.too_few(), " points have fewer than ",
-             scale.min_neighbors ? scale.min_neighbors : m.min_neighbors,
-             " and are invalid (too_few_neighbors). For about 40 neighbours, try ", suggestion);
+             "manual)", invalid, ". For about 40 neighbours, try ", suggested_scale(m, scale, median));
+}
+
+// Why no point got a valid estimate (exit status 3): the most frequent status, what causes
+// it, and what to try.
+std::string no_valid_estimate_reason(const Method& m, const Scale& scale, const Row_summary& summary,
+                                     const std::string& input, bool normals_estimated)
+{
+  typedef CGAL::Curvature_estimate_status Status;
+  int status = -1;
+  std::size_t count = 0, n = 0;
+  for(const auto& s : summary.invalid())
+  {
+    n += s.second;
+    if(s.second > count)
+    {
+      status = s.first;
+      count = s.second;
+    }
+  }
+  const std::string what = cat(count == n ? (n == 1 ? std::string("the only point is ") : cat("all ", n, " points are "))
+                                          : cat(count, " of the ", n, count == 1 ? " points is " : " points are "),
+                               CGAL::to_string(static_cast<Status>(status)));
+  std::string why;
+  switch(static_cast<Status>(status))
+  {
+    case Status::TOO_FEW_NEIGHBORS:
+    {
+      const std::string too_small = too_small_input(m, input, summary);
+      if(!too_small.empty())
+        why = too_small + " (--min-neighbors lowers the least count of a valid estimate, at a cost in accuracy)";
+      else if(!summary.neighbor_sample().empty())
+      {
+        const double median = percentile(summary.neighbor_sample(), 0.5);
+        why = cat("the median neighbourhood holds ", plural(std::size_t(median), "point"), ": ",
+                  fewer_than_least(m, scale), ", the least count of a valid ", m.name,
+                  " estimate; for about 40 neighbours, try ", suggested_scale(m, scale, median));
+      }
+      break;
+    }
+    case Status::DEGENERATE_FIT:
+      why = "coincident neighbours, neighbours along one line (a single scan line), or a radius far larger than "
+            "the cloud; --radius 3.5x gives about 40 neighbours";
+      break;
+    case Status::NON_FINITE_POINT:
+      why = "NaN or infinite coordinates";
+      break;
+    case Status::INVALID_NORMAL:
+      why = normals_estimated ? "no normal could be estimated (too few points, coincident points, or points along "
+                                "one line: try a larger --normal-neighbors)"
+                              : "the normals are zero, not finite or far from unit length (are the columns right? "
+                                "see --columns)";
+      break;
+    case Status::TWO_SHEETS:
+      why = "two layers with opposite normals in every neighbourhood (a thin plate, or neighbourhoods reaching "
+            "across the object): try a smaller --radius or --neighbors";
+      break;
+    default:
+      break;
+  }
+  return cat("no valid estimate: ", what, why.empty() ? std::string() : ": " + why);
 }
 
 // Row i of the output from the point set and its estimates (without colour).
@@ -535,30 +910,20 @@ Scale estimation_scale(const Options& o, bool normals_estimated)
   return s;
 }
 
-// Writes the n rows of `rows` (asked for in input order), coloured from the summary.
-void write_output(const Run_context& c, Temporary_output& output, const Scale& scale,
-                  const std::vector<Attribute>& attributes, std::size_t n, const Row_summary& summary,
-                  const Row_source& rows)
+// The output's format, columns and header comments, with colours by `color_quantity` (-1:
+// none) over +-color_range.
+Output_layout output_layout(const Options& o, const Scale& scale, const std::vector<Attribute>& attributes,
+                            int color_quantity, double color_range)
 {
-  const Options& o = c.o;
   Output_layout layout;
   layout.format = lower_extension(o.output) == ".csv" ? Output_layout::CSV
                   : o.ascii                           ? Output_layout::ASCII_PLY
                                                       : Output_layout::BINARY_PLY;
   layout.comments.push_back(cat("point_set_curvatures method ", method_label(o, scale), ", ", scale_description(scale)));
   layout.comments.push_back(cat("input ", o.input));
-  int color_quantity = -1;
-  double color_range = 0;
-  if(!o.color.empty())
-  {
-    color_quantity = color_quantities().at(o.color);
-    if(summary.count(color_quantity) == 0)
-      c.warnings.push_back(cat("--color ", o.color, ": no valid value (not estimated by method ", o.method->name,
-                               "?); every point is grey"));
-    color_range = summary.color_range(color_quantity);
+  if(color_quantity >= 0)
     layout.comments.push_back(
       cat("colors: ", o.color, ", blue -", color_range, " white 0 red +", color_range, ", grey invalid"));
-  }
   layout.fields = output_fields(o.fields, o.float32, color_quantity >= 0, attributes);
   layout.attributes = &attributes;
   if(!attributes.empty())
@@ -568,7 +933,47 @@ void write_output(const Run_context& c, Temporary_output& output, const Scale& s
       kept += (kept.empty() ? "" : " ") + a.name;
     layout.comments.push_back(cat("input attributes: ", kept));
   }
-  write_point_cloud(output.file(), layout, n, [&](std::size_t i, Output_row& r) {
+  return layout;
+}
+
+// "binary PLY of 20000 points": the output, for messages.
+std::string output_description(const Output_layout& layout, std::size_t n)
+{
+  return cat(layout.format == Output_layout::CSV ? "CSV" : layout.format == Output_layout::ASCII_PLY ? "ASCII PLY" : "binary PLY",
+             " of ", plural(n, "point"), ", ", plural(layout.fields.size(), "field"));
+}
+
+// Reserves the output's size before the estimation (Temporary_output::reserve): the layout of
+// write_output() with the scale and colour range still unknown (a margin for the header
+// comments that hold them).
+void reserve_output(const Options& o, Temporary_output& output, const std::vector<Attribute>& attributes,
+                    std::size_t n)
+{
+  const Output_layout layout =
+    output_layout(o, o.scale, attributes, o.color.empty() ? -1 : color_quantities().at(o.color), 0.0);
+  output.reserve(output_size_bound(layout, n) + 1024, output_description(layout, n));
+}
+
+// Writes the n rows of `rows` (asked for in input order), coloured from the summary.
+void write_output(const Run_context& c, Temporary_output& output, const Scale& scale,
+                  const std::vector<Attribute>& attributes, std::size_t n, const Row_summary& summary,
+                  const Row_source& rows)
+{
+  const Options& o = c.o;
+  int color_quantity = -1;
+  double color_range = 0;
+  if(!o.color.empty())
+  {
+    color_quantity = color_quantities().at(o.color);
+    if(summary.count(color_quantity) == 0)
+      c.warnings.push_back(cat("--color ", o.color, ": no valid value (not estimated by method ", o.method->name,
+                               "?); every point is grey"));
+    color_range = summary.color_range(color_quantity);
+  }
+  const Output_layout layout = output_layout(o, scale, attributes, color_quantity, color_range);
+  // the temporary file is created now, when writing starts
+  std::FILE* file = output.open(output_size_bound(layout, n), output_description(layout, n));
+  write_point_cloud(file, layout, n, [&](std::size_t i, Output_row& r) {
     rows(i, r);
     if(color_quantity >= 0)
     {
@@ -583,15 +988,11 @@ void write_output(const Run_context& c, Temporary_output& output, const Scale& s
   output.commit();
 }
 
-// The report on standard output, and the warnings (after the output is written, so that a
-// failure prints one line only).
-void print_report(const Run_context& c, const Scale& scale, std::size_t n, const std::string& estimated_normals,
-                  const Row_summary& summary, const std::string& times, const std::string& tiles)
+// The warnings and the summary (not with --quiet).
+void print_summary(const Run_context& c, const Scale& scale, std::size_t n, const std::string& estimated_normals,
+                   const Row_summary& summary, const std::string& times, const std::string& tiles)
 {
   const Options& o = c.o;
-  const std::string small = small_neighborhood_warning(*o.method, scale, summary);
-  if(!small.empty())
-    c.warnings.push_back(small);
   if(o.quiet)
     return;
   for(const std::string& w : c.warnings)
@@ -617,11 +1018,50 @@ void print_report(const Run_context& c, const Scale& scale, std::size_t n, const
   std::printf("  K (Gauss)   %s\n", min_median_max(summary, 3).c_str());
 }
 
+// The report on standard output, and the warnings (after the output is written, so that a
+// failure prints one line only). Throws No_valid_estimate, after them, when no point got a
+// valid estimate (exit status 3).
+void print_report(const Run_context& c, const Scale& scale, std::size_t n, const std::string& estimated_normals,
+                  const Row_summary& summary, const std::string& times, const std::string& tiles)
+{
+  const Options& o = c.o;
+  const bool none_valid = n > 0 && summary.valid() == 0;
+  const std::string small = none_valid ? std::string() : small_neighborhood_warning(*o.method, scale, summary, o.input);
+  if(!small.empty())
+    c.warnings.push_back(small);
+  print_summary(c, scale, n, estimated_normals, summary, times, tiles);
+  if(none_valid)
+    throw No_valid_estimate(cat(no_valid_estimate_reason(*o.method, scale, summary, o.input, !estimated_normals.empty()),
+                                "; ", in_quotes(o.output), " was written, every row invalid"));
+}
+
 // The physical memory of the machine, in bytes (0 if unknown).
 double physical_memory()
 {
   const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
   return pages > 0 && page > 0 ? double(pages) * double(page) : 0.0;
+}
+
+// More tiles than this: the memory limit is said to be too small (--memory-limit 1K on 1000
+// points: 570 tiles, 14 times as long as 8 tiles at 200K).
+const std::size_t many_tiles = 500;
+
+// "190K": a --memory-limit of at least `bytes`, two significant digits.
+std::string memory_argument(double bytes)
+{
+  const char* units = "KMGT";
+  double v = bytes / 1024;
+  int u = 0;
+  while(v >= 1000 && u < 3)
+  {
+    v /= 1024;
+    ++u;
+  }
+  const double step = v >= 100 ? 10 : v >= 10 ? 1 : 0.1;
+  v = std::ceil(v / step - 1e-9) * step;
+  char text[64];
+  std::snprintf(text, sizeof text, step < 1 ? "%.1f%c" : "%.0f%c", std::max(v, 0.1), units[u]);
+  return text;
 }
 
 // The run on an input that does not fit in the memory limit: estimated in tiles
@@ -657,13 +1097,14 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
     throw Error(cat(too_large, ": --method vcm needs the whole cloud (its Voronoi cells come from the Delaunay "
                     "triangulation of every point); raise --memory-limit"));
   const Scale scale = estimation_scale(o, !with_normals);
+  reserve_output(o, output, o.drop_attributes ? std::vector<Attribute>() : input.cloud.attributes, n);
   Tiling tiling;
   tiling.memory_limit = memory_limit;
   if(scale.by_count)
     tiling.neighbors = scale.neighbors;
   else
     tiling.halo = 2 * scale.radius;  // the reach of the sample weights' areas
-  tiling.temporary_prefix = hidden_sibling(o.output, ".");
+  tiling.temporary_prefix = temporary_prefix(o.output);
   tiling.phase = [&c](const std::string& name) { return c.progress.phase(name); };
   tiling.interrupted = []() { return interrupted != 0; };
   // Without normals, a tile's halo H is shared by two needs: the curvatures of its own points
@@ -790,6 +1231,11 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
                                "such as a single scan line: try a larger --normal-neighbors; non-finite "
                                "coordinates) and are invalid_normal"));
   }
+  if(report.tiles > many_tiles)
+    c.warnings.push_back(cat("--memory-limit ", size_text(memory_limit), " makes ", report.tiles, " tiles, each read "
+                             "again from the input with its halo: slow (", s3(seconds_since(c.start)), " s here); --memory-limit ",
+                             memory_argument(report.few_tiles_points * bytes_per_point(input.cloud.attributes.size())),
+                             " gives at most ", plural(report.few_tiles_grid, "tile")));
   print_report(c, scale, n,
                with_normals ? std::string() : cat(normal_fit_description(o), ", oriented ", orientation.text), summary,
                cat("count ", s3(count_seconds), ", density ", s3(report.density_seconds), ", tile reads ",
@@ -821,10 +1267,20 @@ int run(const Options& o)
     threads.reset(new tbb::global_control(tbb::global_control::max_allowed_parallelism,
                                           static_cast<std::size_t>(o.threads)));
 
-  // Created first: an unwritable OUTPUT fails before any long computation.
+  // An unwritable OUTPUT fails before any long computation; its size is reserved once the
+  // input is read, and its file created when writing starts.
+  check_output_path(o.output);
   Temporary_output output(o.output);
   std::signal(SIGINT, on_interrupt);
   std::signal(SIGTERM, on_interrupt);
+  // beyond a file size limit (ulimit -f), a write or a reservation fails with EFBIG, which
+  // is reported, instead of killing the process
+  std::signal(SIGXFSZ, SIG_IGN);
+  if(const std::size_t stale = remove_stale_temporaries(o.output))
+    if(!o.quiet)
+      std::fprintf(stderr, "%s: note: removed %s of earlier runs writing %s that were killed (%s*)\n", program,
+                   plural(stale, "temporary file").c_str(), in_quotes(o.output).c_str(),
+                   hidden_sibling(o.output, ".tmp-").c_str());
   Progress_bar progress(!o.quiet && ::isatty(STDERR_FILENO));
   auto check_interrupted = [&]() {
     if(interrupted)
@@ -837,6 +1293,10 @@ int run(const Options& o)
 
   // 1. Read, or count the points of a file too large for the memory limit.
   const double memory_limit = o.memory_limit > 0 ? o.memory_limit : 0.25 * physical_memory();
+  if(o.memory_limit > physical_memory() && physical_memory() > 0)
+    warn(cat("--memory-limit ", size_text(o.memory_limit), " exceeds this machine's memory (", size_text(physical_memory()),
+             " of RAM): inputs up to that size are read whole and may be swapped out; give at most the RAM, or "
+             "omit --memory-limit for a quarter of it"));
   Read_options read_options;
   read_options.columns = o.columns;
   const bool las = lower_extension(o.input) == ".las";
@@ -863,6 +1323,7 @@ int run(const Options& o)
   const bool had_normals = input.cloud.has_normals();
   fill_point_set(ps, input.cloud.xyz, input.cloud.normals);
   input.cloud = Point_cloud();
+  reserve_output(o, output, o.drop_attributes ? no_attributes : attributes, ps.size());
   const double read_seconds = seconds_since(start);
   check_interrupted();
 
@@ -956,12 +1417,17 @@ int main(int argc, char** argv)
   {
     // the temporary output was removed when the stack unwound
     std::fprintf(stderr, "\n%s: interrupted (%s), nothing written\n", program, current_phase.c_str());
-    return 130;
+    return 128 + interrupt_signal;  // 130 for SIGINT, 143 for SIGTERM
   }
   catch(const Error& e)
   {
     std::fprintf(stderr, "%s: error: %s\n", program, e.what());
     return 2;
+  }
+  catch(const No_valid_estimate& e)
+  {
+    std::fprintf(stderr, "%s: error: %s\n", program, e.what());
+    return 3;
   }
   catch(const std::invalid_argument& e)
   {

@@ -285,8 +285,9 @@ Point_cloud read_las(Byte_source& bytes, const std::string& path, const Read_opt
   {
     const double slack = 0.5 * std::abs(scale[a]) + 1e-9 * std::max(std::abs(lo[a]), std::abs(hi[a]));
     if(!(lo[a] >= min_bound[a] - slack && hi[a] <= max_bound[a] + slack))
-      cloud.warnings.push_back(cat(in_quotes(path), ": the points' ", "xyz"[a], " range [", lo[a], ", ", hi[a],
-                                   "] is not within the header's bounds [", min_bound[a], ", ", max_bound[a],
+      cloud.warnings.push_back(cat(in_quotes(path), ": the points' ", "xyz"[a], " range [", exact_number(lo[a]), ", ",
+                                   exact_number(hi[a]), "] is not within the header's bounds [",
+                                   exact_number(min_bound[a]), ", ", exact_number(max_bound[a]),
                                    "] (a corrupted header, or a writer that did not update it)"));
   }
   hand_over(cloud, options, true);

@@ -342,7 +342,7 @@ Point_cloud read_off(Byte_source& bytes, const std::string& path)
 
 } // namespace
 
-const char* readable_formats() { return ".xyz, .pwn, .txt, .csv, .ply, .off or .las"; }
+const char* readable_formats() { return ".xyz, .pwn, .txt, .csv, .asc, .ply, .off or .las"; }
 
 const char* ply_type_name(Scalar_type t)
 {
@@ -382,7 +382,9 @@ Point_cloud read_point_cloud(const std::string& path, const Read_options& option
   if(!S_ISREG(st.st_mode))
     throw Error(cat("cannot read input ", in_quotes(path), ": not a regular file (a pipe or a device?)"));
   const std::string ext = lower_extension(path);
-  const bool text = ext == ".xyz" || ext == ".pwn" || ext == ".txt" || ext == ".csv";
+  // .asc: CloudCompare's ASCII export (values separated by spaces or commas, an optional
+  // header line such as //X Y Z Nx Ny Nz), read like .txt
+  const bool text = ext == ".xyz" || ext == ".pwn" || ext == ".txt" || ext == ".csv" || ext == ".asc";
   if(ext == ".laz")
     throw Error(cat(in_quotes(path), ": compressed LAS (.laz) is not read; decompress it first, for example "
                     "with 'laszip -i FILE.laz -o FILE.las' or 'pdal translate FILE.laz FILE.las'"));
@@ -390,7 +392,7 @@ Point_cloud read_point_cloud(const std::string& path, const Read_options& option
     throw Error(cat("unsupported input format ", in_quotes(ext.empty() ? path : ext), " for ", in_quotes(path),
                     " (expected ", readable_formats(), ")"));
   if(!options.columns.empty() && !text)
-    throw Error(cat("--columns applies to text point files (.xyz, .pwn, .txt, .csv), not to ", in_quotes(path)));
+    throw Error(cat("--columns applies to text point files (.xyz, .pwn, .txt, .csv, .asc), not to ", in_quotes(path)));
   Byte_source bytes(path, std::uint64_t(st.st_size), options.progress);
   Point_cloud cloud = text            ? read_xyz(bytes, path, options)
                       : ext == ".ply" ? read_ply(bytes, path, options)

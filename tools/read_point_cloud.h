@@ -6,7 +6,8 @@
 // whose message names the file, the line or element, and what is wrong; nothing is read
 // from a count in a header before it is checked against the bytes the file holds.
 //
-//   .xyz .pwn .txt .csv   one point per line, values separated by white space or by commas;
+//   .xyz .pwn .txt .csv   one point per line, values separated by white space or by commas
+//   .asc                  (.asc: CloudCompare's ASCII export, read alike);
 //                         '#' comments; an optional point count alone on the first line; an
 //                         optional header line of column names (x y z nx ny nz, normal_x...).
 //                         Without names or --columns: 3 values (x y z) or 6 (x y z nx ny nz),

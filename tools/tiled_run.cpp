@@ -381,7 +381,14 @@ Tiled_report run_tiled(const std::string& path, const Read_options& options, con
   for(double side = longest; side > 0;)
   {
     side *= 0.8;
-    if(largest_tile(grid, density, lo, hi, halo) <= budget)
+    const double largest = largest_tile(grid, density, lo, hi, halo);
+    if(grid.size() <= Tiled_report::few_tiles)
+    {
+      // the finest grid of few tiles, for a --memory-limit to suggest when the limit makes many
+      report.few_tiles_grid = grid.size();
+      report.few_tiles_points = largest;
+    }
+    if(largest <= budget)
       break;
     std::array<double, 3> counts;
     for(int a = 0; a < 3; ++a)

@@ -105,6 +105,12 @@ struct Tiled_report
   double density_seconds = 0;  // the pass that chooses the tiles
   double read_seconds = 0, estimate_seconds = 0;  // of all tiles
   double rows_seconds = 0;  // the tiles' rows to their temporary files
+  // The grid of at most `few_tiles` tiles closest to the one chosen: its number of tiles and
+  // the most points of one of them with its first halo (the memory limit that would choose
+  // it, divided by bytes_per_point()).
+  static constexpr std::size_t few_tiles = 100;
+  std::size_t few_tiles_grid = 0;
+  double few_tiles_points = 0;
 };
 
 // Runs the tiles and then `write(rows)`, where rows(i, r) gives row i in input order; every

@@ -2,14 +2,18 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // What every part of the point_set_curvatures tool shares: the error a user can fix (exit
-// status 2, one line on stderr), the cancellation of a long phase (exit status 130), string
-// helpers and the progress callback type.
+// status 2, one line on stderr), a run without any valid estimate (exit status 3), the
+// cancellation of a long phase (exit status 130 for SIGINT, 143 for SIGTERM), string helpers
+// and the progress callback type.
 
 #ifndef POINT_SET_CURVATURES_TOOL_SUPPORT_H
 #define POINT_SET_CURVATURES_TOOL_SUPPORT_H
 
 #include <cctype>
 #include <chrono>
+#include <cstddef>
+#include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <sstream>
 #include <stdexcept>
@@ -23,10 +27,18 @@ struct Error : std::runtime_error
   using std::runtime_error::runtime_error;
 };
 
-// A phase stopped because its progress callback returned false (Ctrl-C): exit status 130.
+// A phase stopped because its progress callback returned false (Ctrl-C or SIGTERM): exit
+// status 130 or 143.
 struct Cancelled : std::runtime_error
 {
   Cancelled() : std::runtime_error("cancelled") {}
+};
+
+// A run that wrote its output but where no point got a valid estimate: exit status 3, the
+// reason and what to try on stderr (a pipeline must not take it for a success).
+struct No_valid_estimate : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
 };
 
 // Fraction done in [0, 1]; returning false cancels the phase.
@@ -38,6 +50,27 @@ std::string cat(const T&... t)
   std::ostringstream s;
   (s << ... << t);
   return s.str();
+}
+
+// "1 point", "2 points": a count and its noun.
+inline std::string plural(std::size_t n, const std::string& noun)
+{
+  return cat(n, " ", noun, n == 1 ? "" : "s");
+}
+
+// The shortest decimal text that reads back as `v` exactly: "1000004.9995" where the stream's
+// six digits print "1e+06" (for numbers compared in a message, which must differ in print
+// when they differ).
+inline std::string exact_number(double v)
+{
+  char text[40];
+  for(int digits = 1; digits <= 17; ++digits)
+  {
+    std::snprintf(text, sizeof text, "%.*g", digits, v);
+    if(std::strtod(text, nullptr) == v)
+      break;
+  }
+  return text;
 }
 
 // (not named quoted: std::quoted would win by ADL for non-const strings)

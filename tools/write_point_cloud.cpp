@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <set>
@@ -175,7 +176,51 @@ void write_header(std::FILE* f, const Output_layout& layout, std::size_t n)
   std::fputs("end_header\n", f);
 }
 
+// The bytes of a value in binary PLY, and the most characters it takes as text.
+std::size_t binary_size(Scalar_type t)
+{
+  switch(t)
+  {
+    case Scalar_type::INT8: case Scalar_type::UINT8: return 1;
+    case Scalar_type::INT16: case Scalar_type::UINT16: return 2;
+    case Scalar_type::INT32: case Scalar_type::UINT32: case Scalar_type::FLOAT32: return 4;
+    default: return 8;
+  }
+}
+
+std::size_t text_width(Scalar_type t)
+{
+  switch(t)
+  {
+    case Scalar_type::INT8: return 4;     // -128
+    case Scalar_type::UINT8: return 3;    // 255
+    case Scalar_type::INT16: return 6;    // -32768
+    case Scalar_type::UINT16: return 5;   // 65535
+    case Scalar_type::INT32: return 11;   // -2147483648
+    case Scalar_type::UINT32: return 10;  // 4294967295
+    case Scalar_type::FLOAT32: return 15; // -1.17549435e-38 (%.9g)
+    default: return 24;                   // -2.2250738585072014e-308 (%.17g)
+  }
+}
+
 } // namespace
+
+std::uint64_t output_size_bound(const Output_layout& layout, std::size_t n)
+{
+  // the header, written to memory
+  char* text = nullptr;
+  std::size_t header = 0;
+  if(std::FILE* m = ::open_memstream(&text, &header))
+  {
+    write_header(m, layout, n);
+    std::fclose(m);
+  }
+  std::free(text);
+  std::uint64_t row = 0;
+  for(const Output_field& field : layout.fields)
+    row += layout.format == Output_layout::BINARY_PLY ? binary_size(field.type) : text_width(field.type) + 1;
+  return std::uint64_t(header) + row * std::uint64_t(n);
+}
 
 void write_point_cloud(std::FILE* f, const Output_layout& layout, std::size_t n,
                        const std::function<void(std::size_t, Output_row&)>& row, const Progress& progress)

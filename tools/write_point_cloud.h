@@ -71,6 +71,10 @@ std::vector<std::string> parse_fields(const std::string& text);
 std::vector<Output_field> output_fields(const std::vector<std::string>& selected, bool float32, bool color,
                                         const std::vector<Attribute>& attributes);
 
+// The size of the file write_point_cloud() writes for `n` rows: exact for binary PLY, an
+// upper bound for the text formats (every number at its widest: "-2.2250738585072014e-308").
+std::uint64_t output_size_bound(const Output_layout& layout, std::size_t n);
+
 // Writes `n` rows, row(i, r) filling row i. Progress: the fraction of rows written, about
 // every 1%; false cancels (Cancelled). Write errors are left to the caller (ferror).
 void write_point_cloud(std::FILE* f, const Output_layout& layout, std::size_t n,

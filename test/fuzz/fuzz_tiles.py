@@ -17,7 +17,8 @@ normals and their orientation, output format and fields). The built tool runs it
     the same output bytes as the whole run (options the tiles refuse by design, VCM and
     --orient mst, may instead exit 2 with one line).
 
-Every run must exit 0 or 2 (2: one line on stderr, no output file) within --timeout seconds;
+Every run must exit 0, 2 (one line on stderr, no output file) or 3 (no valid estimate: the
+output written, the reason on the last line of stderr) within --timeout seconds;
 a run past it gets SIGTERM and must end within a second. The first failure stops the run
 (exit status 1), leaving the case's input and commands in OUT/failure-N/.
 
@@ -352,9 +353,15 @@ def contract_violation(o):
     """What is wrong with one run by itself, or None."""
     if o.note:
         return o.note
-    if o.status not in (0, 2):
+    if o.status not in (0, 2, 3):
         return "exit status %d: %s" % (o.status, o.stderr.strip()[-300:])
-    if o.status == 2:
+    if o.status == 3:
+        # no valid estimate: the output written, the reason on the last line of stderr
+        if not o.stderr.strip("\n").split("\n")[-1].startswith("point_set_curvatures: error: no valid estimate: "):
+            return "exit 3 without its reason on the last line of stderr"
+        if o.output is None:
+            return "exit 3 without an output file"
+    elif o.status == 2:
         lines = o.stderr.strip("\n").split("\n")
         if len(lines) != 1:
             return "exit 2 with %d lines on stderr" % len(lines)
