@@ -561,6 +561,7 @@ void write_output(const Run_context& c, Temporary_output& output, const Scale& s
   }
   layout.fields = output_fields(o.fields, o.float32, color_quantity >= 0, attributes);
   layout.attributes = &attributes;
+  layout.scalar_prefix = o.ply_scalar_names;
   if(!attributes.empty())
   {
     std::string kept;
