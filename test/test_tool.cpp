@@ -755,6 +755,24 @@ TEST_CASE("tool: CloudCompare loads every estimate and attribute of a --ply-name
   CHECK(rows == ps.size());
   CHECK(wrong == 0);
   CHECK(nan == 2);  // the isolated point and the point with a zero normal
+
+  // without the option CloudCompare loads none of the estimates (the reason for it); it does
+  // load a property named intensity, and the input's scalar_Intensity and scalar_mean
+  const fs::path plain_dir = work_dir() / "cloudcompare_plain";
+  fs::create_directories(plain_dir);
+  REQUIRE(run_tool(q(input) + " " + q((plain_dir / "plain.ply").string()) + " --radius 0.4 --color mean --quiet").status == 0);
+  const std::string plain_command = "cd " + q(plain_dir.string()) +
+                                    " && QT_QPA_PLATFORM=offscreen CloudCompare -SILENT -O plain.ply -C_EXPORT_FMT ASC"
+                                    " -ADD_HEADER -SAVE_CLOUDS > cloudcompare.log 2>&1";
+  REQUIRE(std::system(plain_command.c_str()) == 0);
+  std::string plain_header;
+  for(const auto& entry : fs::directory_iterator(plain_dir))
+    if(entry.path().extension() == ".asc")
+    {
+      std::istringstream plain_lines(read_text(entry.path().string()));
+      std::getline(plain_lines, plain_header);
+    }
+  CHECK(plain_header == "//X Y Z R G B intensity Intensity mean Nx Ny Nz");
 }
 
 TEST_CASE("tool: .xyz, .pwn, .off and ASCII, little- and big-endian binary .ply give the same result")

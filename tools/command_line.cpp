@@ -88,7 +88,7 @@ void print_usage(std::ostream& os)
      << "                     scalar (scalar_mean, scalar_k_min, ...: every property but x y z,\n"
      << "                     nx ny nz and red green blue, input attributes too). CloudCompare\n"
      << "                     loads a property scalar_NAME as the scalar field NAME and leaves\n"
-     << "                     out the plain names: use scalar for CloudCompare\n"
+     << "                     out mean, k_min, ...: use scalar for CloudCompare\n"
      << "  --drop-attributes  do not carry the input's other values to the output\n"
      << "  --require-normals  fail if INPUT has no normals instead of estimating them\n"
      << "  --orient O         orientation of estimated normals: auto (default: LAS files with\n"
