@@ -595,6 +595,188 @@ TEST_CASE("tool: binary and ASCII PLY read back with CGAL's PLY reader, every pr
   CHECK(read_text(file("sphere_1thread.ply")) == read_text(file("sphere_binary.ply")));
 }
 
+namespace {
+
+// A PLY of sphere_with_invalid_points() with attributes: red (a --color clash), intensity,
+// k_min (a clash with an estimate), scalar_Intensity (as CloudCompare names a scalar field
+// Intensity in its PLY files) and scalar_mean (the CloudCompare name of the tool's mean).
+std::string write_ply_with_attributes(const std::string& name)
+{
+  const std::vector<Oriented_point> pts = sphere_with_invalid_points();
+  std::ostringstream ply;
+  ply.precision(17);
+  ply << "ply\nformat ascii 1.0\nelement vertex " << pts.size()
+      << "\nproperty double x\nproperty double y\nproperty double z\nproperty float nx\nproperty float ny\n"
+         "property float nz\nproperty uchar red\nproperty float intensity\nproperty short k_min\n"
+         "property float scalar_Intensity\nproperty float scalar_mean\nend_header\n";
+  for(std::size_t i = 0; i < pts.size(); ++i)
+    ply << pts[i].first.x() << " " << pts[i].first.y() << " " << pts[i].first.z() << " " << pts[i].second.x()
+        << " " << pts[i].second.y() << " " << pts[i].second.z() << " " << i % 256 << " " << 0.5 * double(i) << " "
+        << -int(i) << " " << 0.25 * double(i) << " " << 2.0 * double(i) << "\n";
+  write_text(file(name), ply.str());
+  return file(name);
+}
+
+// The property names of a PLY header, in order.
+std::vector<std::string> ply_property_names(const std::string& path)
+{
+  std::istringstream header(read_text(path));
+  std::vector<std::string> names;
+  std::string line;
+  while(std::getline(header, line) && line != "end_header")
+    if(line.rfind("property ", 0) == 0)
+      names.push_back(line.substr(line.rfind(' ') + 1));
+  return names;
+}
+
+} // namespace
+
+TEST_CASE("tool: --ply-names scalar names every property but x y z, normals and colours scalar_NAME, same data")
+{
+  const std::string input = write_ply_with_attributes("cc_input.ply");
+  for(const char* format : {"", " --ascii"})
+  {
+    INFO("format" << format);
+    const std::string plain = file("cc_plain.ply"), scalar = file("cc_scalar.ply");
+    const std::string args = std::string(" --radius 0.4 --color mean --quiet") + format;
+    REQUIRE(run_tool(q(input) + " " + q(plain) + args).status == 0);
+    const Run r = run_tool(q(input) + " " + q(scalar) + args + " --ply-names scalar");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    const std::vector<std::string> expected_plain = {
+      "x", "y", "z", "nx", "ny", "nz", "k_min", "k_max", "mean", "gaussian", "dmin_x", "dmin_y", "dmin_z",
+      "dmax_x", "dmax_y", "dmax_z", "normal_coherence", "neighbors", "valid", "red", "green", "blue",
+      "input_red", "intensity", "input_k_min", "scalar_Intensity", "scalar_mean"};
+    // readers that look for mean, k_min, ... find them without the option
+    CHECK(ply_property_names(plain) == expected_plain);
+    // x y z, the normals and --color's colours keep their names (CloudCompare loads them as
+    // such); every other property gets scalar_, but for a name that has it already
+    // (CloudCompare's own scalar_Intensity stays the field Intensity) unless the name is
+    // taken: the input's scalar_mean becomes scalar_scalar_mean, the tool's mean scalar_mean.
+    const std::vector<std::string> expected_scalar = {
+      "x", "y", "z", "nx", "ny", "nz", "scalar_k_min", "scalar_k_max", "scalar_mean", "scalar_gaussian",
+      "scalar_dmin_x", "scalar_dmin_y", "scalar_dmin_z", "scalar_dmax_x", "scalar_dmax_y", "scalar_dmax_z",
+      "scalar_normal_coherence", "scalar_neighbors", "scalar_valid", "red", "green", "blue",
+      "scalar_input_red", "scalar_intensity", "scalar_input_k_min", "scalar_Intensity", "scalar_scalar_mean"};
+    CHECK(ply_property_names(scalar) == expected_scalar);
+    // only the names differ: the types, the comments and every byte of the data are the same
+    const std::string a = read_text(plain), b = read_text(scalar);
+    CHECK(a.substr(a.find("end_header\n")) == b.substr(b.find("end_header\n")));
+    std::string renamed = b.substr(0, b.find("end_header\n"));
+    for(std::size_t at = 0; (at = renamed.find(" scalar_", at)) != std::string::npos;)
+      renamed.erase(at + 1, 7);
+    std::string original = a.substr(0, a.find("end_header\n"));
+    for(std::size_t at = 0; (at = original.find(" scalar_", at)) != std::string::npos;)
+      original.erase(at + 1, 7);
+    CHECK(renamed == original);
+  }
+  // --ply-names plain is the default; the option is for .ply outputs only, and checked
+  const std::string plain_again = file("cc_plain_again.ply");
+  REQUIRE(run_tool(q(input) + " " + q(plain_again) + " --radius 0.4 --color mean --quiet --ply-names plain").status == 0);
+  CHECK(ply_property_names(plain_again) == ply_property_names(file("cc_plain.ply")));
+  const Run csv = run_tool(q(input) + " " + q(file("cc.csv")) + " --radius 0.4 --ply-names scalar");
+  CHECK(csv.status == 2);
+  CHECK(csv.err.find("--ply-names scalar names the properties of a .ply output") != std::string::npos);
+  CHECK(!fs::exists(file("cc.csv")));
+  const Run unknown = run_tool(q(input) + " " + q(file("cc_unknown.ply")) + " --radius 0.4 --ply-names cloudcompare");
+  CHECK(unknown.status == 2);
+  CHECK(unknown.err.find("--ply-names: unknown naming 'cloudcompare'") != std::string::npos);
+}
+
+// Runs only where CloudCompare is installed (Debian's cloudcompare package): skipped, with a
+// warning, without it, as on CI machines.
+TEST_CASE("tool: CloudCompare loads every estimate and attribute of a --ply-names scalar PLY by its name")
+{
+  if(std::system("command -v CloudCompare > /dev/null 2>&1") != 0)
+  {
+    WARN("CloudCompare is not installed: test skipped");
+    return;
+  }
+  const std::string input = write_ply_with_attributes("cc_in.ply");
+  const fs::path dir = work_dir() / "cloudcompare";
+  fs::create_directories(dir);
+  const std::string output = (dir / "cc_out.ply").string();
+  REQUIRE(run_tool(q(input) + " " + q(output) + " --radius 0.4 --color mean --quiet --ply-names scalar").status == 0);
+  // CloudCompare headless: open the PLY, save it as ASCII with a header line naming the
+  // columns (X Y Z R G B, the scalar fields, Nx Ny Nz), in the folder of the PLY
+  const std::string command = "cd " + q(dir.string()) +
+                              " && QT_QPA_PLATFORM=offscreen CloudCompare -SILENT -O cc_out.ply -C_EXPORT_FMT ASC"
+                              " -ADD_HEADER -SAVE_CLOUDS > cloudcompare.log 2>&1";
+  REQUIRE(std::system(command.c_str()) == 0);
+  std::string asc;
+  for(const auto& entry : fs::directory_iterator(dir))
+    if(entry.path().extension() == ".asc")
+      asc = entry.path().string();
+  INFO(read_text((dir / "cloudcompare.log").string()));
+  REQUIRE(!asc.empty());
+  std::istringstream lines(read_text(asc));
+  std::string header;
+  std::getline(lines, header);
+  // the names CloudCompare 2.11.3 gives the fields
+  const std::vector<std::string> expected = {
+    "//X", "Y", "Z", "R", "G", "B", "k_min", "k_max", "mean", "gaussian", "dmin_x", "dmin_y", "dmin_z", "dmax_x",
+    "dmax_y", "dmax_z", "normal_coherence", "neighbors", "valid", "input_red", "intensity", "input_k_min",
+    "Intensity", "scalar_mean", "Nx", "Ny", "Nz"};
+  std::istringstream words(header);
+  std::vector<std::string> columns;
+  for(std::string w; words >> w;)
+    columns.push_back(w);
+  CHECK(columns == expected);
+  REQUIRE(columns.size() == expected.size());
+
+  // the values: CloudCompare's scalar fields are float32; NaN (invalid points) stays NaN
+  Point_set ps;
+  REQUIRE(CGAL::IO::read_PLY(output, ps));
+  const char* checked[] = {"mean", "k_min", "gaussian", "dmax_z", "normal_coherence"};
+  std::vector<Point_set::Property_map<double> > maps;
+  for(const char* name : checked)
+    maps.push_back(property<double>(ps, std::string("scalar_") + name));
+  const auto intensity = property<float>(ps, "scalar_intensity");
+  std::size_t rows = 0, wrong = 0, nan = 0;
+  auto close = [](double a, double b) {
+    return (std::isnan(a) && std::isnan(b)) || std::abs(a - b) <= 1e-6 * std::abs(b) + 1e-9;
+  };
+  for(Point_set::Index p : ps)
+  {
+    std::string line;
+    REQUIRE(std::getline(lines, line));
+    std::istringstream row(line);
+    std::vector<double> v;
+    for(std::string w; row >> w;)
+      v.push_back(w == "nan" || w == "-nan" ? std::nan("") : std::stod(w));
+    REQUIRE(v.size() == expected.size());
+    for(std::size_t k = 0; k < maps.size(); ++k)
+    {
+      const std::size_t column = std::find(expected.begin(), expected.end(), checked[k]) - expected.begin();
+      wrong += close(v[column], maps[k][p]) ? 0 : 1;
+    }
+    wrong += close(v[20], intensity[p]) ? 0 : 1;
+    nan += std::isnan(v[8]) ? 1 : 0;
+    ++rows;
+  }
+  CHECK(rows == ps.size());
+  CHECK(wrong == 0);
+  CHECK(nan == 2);  // the isolated point and the point with a zero normal
+
+  // without the option CloudCompare loads none of the estimates (the reason for it); it does
+  // load a property named intensity, and the input's scalar_Intensity and scalar_mean
+  const fs::path plain_dir = work_dir() / "cloudcompare_plain";
+  fs::create_directories(plain_dir);
+  REQUIRE(run_tool(q(input) + " " + q((plain_dir / "plain.ply").string()) + " --radius 0.4 --color mean --quiet").status == 0);
+  const std::string plain_command = "cd " + q(plain_dir.string()) +
+                                    " && QT_QPA_PLATFORM=offscreen CloudCompare -SILENT -O plain.ply -C_EXPORT_FMT ASC"
+                                    " -ADD_HEADER -SAVE_CLOUDS > cloudcompare.log 2>&1";
+  REQUIRE(std::system(plain_command.c_str()) == 0);
+  std::string plain_header;
+  for(const auto& entry : fs::directory_iterator(plain_dir))
+    if(entry.path().extension() == ".asc")
+    {
+      std::istringstream plain_lines(read_text(entry.path().string()));
+      std::getline(plain_lines, plain_header);
+    }
+  CHECK(plain_header == "//X Y Z R G B intensity Intensity mean Nx Ny Nz");
+}
+
 TEST_CASE("tool: .xyz, .pwn, .off and ASCII, little- and big-endian binary .ply give the same result")
 {
   const std::vector<Oriented_point> pts = sphere(500, 1.0);

@@ -85,6 +85,11 @@ void print_usage(std::ostream& os)
      << "                     or normal, k_min, k_max, mean, gaussian, dmin, dmax (or dmin_x...),\n"
      << "                     normal_coherence, neighbors, valid (default: all)\n"
      << "  --float            write the estimator fields as float32 (x y z stay double)\n"
+     << "  --ply-names N      names of the PLY properties: plain (default: mean, k_min, ...) or\n"
+     << "                     scalar (scalar_mean, scalar_k_min, ...: every property but x y z,\n"
+     << "                     nx ny nz and red green blue, input attributes too). CloudCompare\n"
+     << "                     loads a property scalar_NAME as the scalar field NAME and leaves\n"
+     << "                     out mean, k_min, ...: use scalar for CloudCompare\n"
      << "  --drop-attributes  do not carry the input's other values to the output\n"
      << "  --require-normals  fail if INPUT has no normals instead of estimating them\n"
      << "  --orient O         orientation of estimated normals: auto (default: LAS files with\n"
@@ -353,6 +358,14 @@ Options parse_command_line(int argc, char** argv)
       flag(o.drop_attributes);
     else if(name == "--fields")
       o.fields = parse_fields(take_value());
+    else if(name == "--ply-names")
+    {
+      const std::string v = take_value();
+      if(v != "plain" && v != "scalar")
+        throw Error(cat("--ply-names: unknown naming ", in_quotes(v),
+                        " (plain, or scalar for CloudCompare's scalar_NAME)"));
+      o.ply_scalar_names = v == "scalar";
+    }
     else if(name == "--quiet")
       flag(o.quiet);
     else if(name == "--require-normals")
@@ -381,6 +394,9 @@ Options parse_command_line(int argc, char** argv)
                     " or more, or lower the threshold with --min-neighbors"));
   o.input = positional[0];
   o.output = positional[1];
+  if(o.ply_scalar_names && lower_extension(o.output) != ".ply")
+    throw Error(cat("--ply-names scalar names the properties of a .ply output; ", in_quotes(o.output),
+                    " is not one: write OUTPUT.ply, or drop --ply-names"));
   return o;
 }
 

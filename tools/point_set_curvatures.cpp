@@ -926,6 +926,7 @@ Output_layout output_layout(const Options& o, const Scale& scale, const std::vec
       cat("colors: ", o.color, ", blue -", color_range, " white 0 red +", color_range, ", grey invalid"));
   layout.fields = output_fields(o.fields, o.float32, color_quantity >= 0, attributes);
   layout.attributes = &attributes;
+  layout.scalar_prefix = o.ply_scalar_names;
   if(!attributes.empty())
   {
     std::string kept;

@@ -90,6 +90,33 @@ std::vector<Output_field> output_fields(const std::vector<std::string>& selected
   return fields;
 }
 
+std::vector<std::string> ply_property_names(const Output_layout& layout)
+{
+  std::vector<std::string> names;
+  for(const Output_field& f : layout.fields)
+    names.push_back(f.name);
+  if(!layout.scalar_prefix)
+    return names;
+  // CloudCompare 2.11 loads x y z, nx ny nz and red green blue as what they are, and a
+  // property scalar_NAME as the scalar field NAME; other properties (mean, k_min, ...) it
+  // leaves out without a word.
+  static const std::set<std::string> kept = {"x", "y", "z", "nx", "ny", "nz", "red", "green", "blue"};
+  const std::string prefix = "scalar_";
+  std::set<std::string> taken;
+  for(std::string& name : names)
+  {
+    if(!kept.count(name))
+    {
+      if(name.compare(0, prefix.size(), prefix) != 0 || taken.count(name))
+        name = prefix + name;
+      while(taken.count(name))
+        name = prefix + name;
+    }
+    taken.insert(name);
+  }
+  return names;
+}
+
 namespace {
 
 bool little_endian_host()
@@ -171,8 +198,9 @@ void write_header(std::FILE* f, const Output_layout& layout, std::size_t n)
   for(const std::string& c : layout.comments)
     std::fprintf(f, "comment %s\n", c.c_str());
   std::fprintf(f, "element vertex %zu\n", n);
-  for(const Output_field& field : layout.fields)
-    std::fprintf(f, "property %s %s\n", ply_type_name(field.type), field.name.c_str());
+  const std::vector<std::string> names = ply_property_names(layout);
+  for(std::size_t i = 0; i < layout.fields.size(); ++i)
+    std::fprintf(f, "property %s %s\n", ply_type_name(layout.fields[i].type), names[i].c_str());
   std::fputs("end_header\n", f);
 }
 

@@ -53,7 +53,16 @@ struct Output_layout
   std::vector<Output_field> fields;                  // the columns, in order (output_fields())
   const std::vector<Attribute>* attributes = nullptr;  // for Output_field::ATTRIBUTE + j
   std::vector<std::string> comments;                 // PLY header comments
+  // --ply-names scalar: PLY properties other than x y z nx ny nz red green blue are named
+  // scalar_NAME, the names CloudCompare loads as scalar fields NAME (ply_property_names()).
+  bool scalar_prefix = false;
 };
+
+// The PLY property names of the layout's fields: their names, or with scalar_prefix each
+// name but x y z nx ny nz red green blue as scalar_NAME (a name already beginning with
+// scalar_, such as an attribute of a PLY written by CloudCompare, is kept unless another
+// field has it); unique.
+std::vector<std::string> ply_property_names(const Output_layout& layout);
 
 // The names --fields accepts, for messages.
 const char* selectable_fields();
