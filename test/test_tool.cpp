@@ -1672,7 +1672,7 @@ std::string las_with_extra_bytes(const std::vector<Oriented_point>& pts, const d
 
 } // namespace
 
-TEST_CASE("tool: LAS output is LAS 1.4 with the estimates as extra bytes, per an independent reader of the specification; tiles give the same bytes; read back")
+TEST_CASE("tool: LAS output is LAS 1.4 with the estimates as extra bytes, per an independent reader of the specification, tiles give the same bytes, read back")
 {
   using namespace psc_las_test;
   ::setenv("SOURCE_DATE_EPOCH", "1700000000", 1);  // 2023-11-14, day 318: reproducible headers
@@ -1889,6 +1889,37 @@ TEST_CASE("tool: LAS output is LAS 1.4 with the estimates as extra bytes, per an
   CHECK(el.file.size() == el.first_evlr + 60 + wkt.size() + 1);
   CHECK(el.record(5).substr(0, 30) == v14.substr(375 + 5 * 30, 30));
 
+  // every point format 0-10: the standard fields of each record written back bytewise (flags,
+  // scan angles, GPS times, colours, NIR, wave packets with their byte offsets and pulses)
+  {
+    static const std::size_t standard[11] = {20, 28, 26, 34, 57, 63, 30, 36, 38, 59, 67};
+    const std::vector<Oriented_point> few(pts.begin(), pts.begin() + 400);
+    const double centre[3] = {1e6 + 3, 2e6 + 4, 105};
+    for(int format = 0; format <= 10; ++format)
+    {
+      INFO("point format " << format);
+      const int minor = format >= 6 ? 4 : format >= 4 ? 3 : 2;
+      std::string src = las_file(few, format, minor, 0.001, offset, 0, nullptr, centre);
+      const std::size_t header = le<std::uint16_t>(src, 94);
+      if(format == 4 || format == 5 || format == 9 || format == 10)
+        for(std::size_t i = 0; i < few.size(); ++i)
+          set_le<std::uint64_t>(src, header + i * standard[format] + (format == 4 ? 28 : format == 5 ? 34 : format == 9 ? 30 : 38) + 1,
+                                std::uint64_t(1000 + 256 * i));
+      write_text(file("fmt.las"), src);
+      const Run fr = run_tool(q(file("fmt.las")) + " " + q(file("fmt_out.las")) + " --radius 0.5 --fields mean --quiet" + viewpoint);
+      INFO(fr.err);
+      REQUIRE(fr.status == 0);
+      const Las fl = read_las_1_4(read_text(file("fmt_out.las")));
+      CHECK(fl.format == format);
+      CHECK(fl.record_length == standard[format] + 8);
+      CHECK(fl.legacy_count == (format <= 5 ? few.size() : 0));
+      std::size_t different = 0;
+      for(std::size_t i = 0; i < few.size(); ++i)
+        different += fl.record(i).substr(0, standard[format]) != src.substr(header + i * standard[format], standard[format]);
+      CHECK(different == 0);
+    }
+  }
+
   // refused before any work: --color and --ascii with a .las output
   for(const char* option : {" --color mean", " --ascii"})
   {
@@ -1900,7 +1931,7 @@ TEST_CASE("tool: LAS output is LAS 1.4 with the estimates as extra bytes, per an
   ::unsetenv("SOURCE_DATE_EPOCH");
 }
 
-TEST_CASE("tool: LAS extra bytes are read in their types (float Amplitude, int16 Reflectance with a scale, uint16 Deviation) and carried to PLY and CSV; deprecated and undocumented ones are warned of")
+TEST_CASE("tool: LAS extra bytes are read in their types (float Amplitude, int16 Reflectance with a scale, uint16 Deviation) and carried to PLY and CSV, deprecated and undocumented ones are warned of")
 {
   using namespace psc_las_test;
   const double offset[3] = {1e6, 2e6, 100};
@@ -1952,7 +1983,7 @@ TEST_CASE("tool: LAS extra bytes are read in their types (float Amplitude, int16
   CHECK(width[1234] == 1234);
 }
 
-TEST_CASE("tool: a geographic LAS (GeoTIFF key, WKT GEOGCS, or x y like degrees) gets one warning naming the reprojection; a projected one none")
+TEST_CASE("tool: a geographic LAS (GeoTIFF key, WKT GEOGCS, or x y like degrees) gets one warning naming the reprojection, a projected one none")
 {
   using namespace psc_las_test;
   const double offset[3] = {1e6, 2e6, 100};
