@@ -1864,6 +1864,40 @@ TEST_CASE("tool: LAS output is LAS 1.4 with the estimates as extra bytes, per an
   CHECK(wrong_ball == 0);
   CHECK(worst_ball < 0.01);
 
+  // in tiles, the scale and offset from the same bounds: the same bytes
+  const Run ball_tiled = run_tool(q(file("ball.xyz")) + " " + q(file("ball_tiled.las")) +
+                                  " --radius 0.5 --fields mean,valid --memory-limit 100K");
+  REQUIRE(ball_tiled.status == 0);
+  CHECK(ball_tiled.out.find("  tiles") != std::string::npos);
+  CHECK(read_text(file("ball_tiled.las")) == read_text(file("ball.las")));
+  // a point with a non-finite coordinate: at the offset, withheld, out of the bounds, warned of
+  {
+    std::ofstream add(file("ball.xyz"), std::ios::app);
+    add << "nan 20 30 0 0 1\n";
+  }
+  const Run nan_run = run_tool(q(file("ball.xyz")) + " " + q(file("ball_nan.las")) + " --radius 0.5 --fields mean,valid");
+  REQUIRE(nan_run.status == 0);
+  CHECK(nan_run.err.find("1 points with non-finite coordinates are written to the LAS output at its offset, withheld") !=
+        std::string::npos);
+  const Las bn = read_las_1_4(read_text(file("ball_nan.las")));
+  REQUIRE(bn.count == ball.size() + 1);
+  CHECK((bn.record(ball.size())[15] & 4) == 4);  // withheld (formats 6-10: bit 2 of byte 15)
+  CHECK((bn.record(0)[15] & 4) == 0);
+  CHECK(bn.coordinate(ball.size(), 0) == bn.offset[0]);
+  for(int a = 0; a < 3; ++a)
+  {
+    CHECK(bn.min[a] == b.min[a]);
+    CHECK(bn.max[a] == b.max[a]);
+  }
+  // --drop-attributes: a LAS input's standard fields stay, its extra bytes go
+  REQUIRE(run_tool(q(file("eb.las")) + " " + q(file("eb_drop.las")) + " --radius 0.5 --fields mean --drop-attributes --quiet" + viewpoint).status == 0);
+  const Las dropped = read_las_1_4(read_text(file("eb_drop.las")));
+  REQUIRE(dropped.descriptors.size() == 1);
+  CHECK(dropped.descriptors[0].name == "mean");
+  CHECK(dropped.format == 3);
+  CHECK(dropped.record_length == 34 + 8);
+  CHECK(dropped.record(42).substr(0, 34) == in.substr(in_offset + 42 * 42, 34));
+
   // LAS 1.4 format 6 with a WKT CRS in an extended VLR: copied after the points, the WKT bit kept
   std::string v14 = las_file(pts, 6, 4, 0.001, offset);
   const std::string wkt = "PROJCS[\"WGS 84 / UTM zone 32N\",GEOGCS[\"WGS 84\"],UNIT[\"metre\",1]]";
