@@ -1924,6 +1924,488 @@ TEST_CASE("tool: LAS 1.2-1.4 point formats 0-10 with their fields as attributes,
   CHECK(bounds.second == "1000004");
 }
 
+// ---------------------------------------------------------------------------------------
+// LAS output, extra bytes, geographic coordinates, truncated files (issue 28)
+
+#include "las_test_reader.h"
+
+namespace {
+
+// The values of column `name` of a CSV file with a header line.
+std::vector<double> csv_values(const std::string& csv, const std::string& name)
+{
+  std::istringstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> names;
+  for(std::size_t b = 0;;)
+  {
+    const std::size_t comma = line.find(',', b);
+    names.push_back(line.substr(b, comma == std::string::npos ? std::string::npos : comma - b));
+    if(comma == std::string::npos)
+      break;
+    b = comma + 1;
+  }
+  const std::size_t column = std::size_t(std::find(names.begin(), names.end(), name) - names.begin());
+  INFO("CSV column " << name << " in " << names.size() << " columns");
+  REQUIRE(column < names.size());
+  std::vector<double> values;
+  while(std::getline(in, line))
+  {
+    std::size_t b = 0;
+    for(std::size_t c = 0; c < column; ++c)
+      b = line.find(',', b) + 1;
+    values.push_back(std::strtod(line.c_str() + b, nullptr));
+  }
+  return values;
+}
+
+// A LAS 1.2 file of format 3 whose records end with 8 extra bytes described by an extra-bytes
+// VLR: Amplitude (float, 0.5 i), Reflectance (int16 with scale 0.01: raw i % 2000 - 1000),
+// Deviation (uint16, 7 i); and a GeoTIFF key of a projected CRS.
+std::string las_with_extra_bytes(const std::vector<Oriented_point>& pts, const double offset[3],
+                                 std::vector<std::array<double, 3> >* quantised)
+{
+  using namespace psc_las_test;
+  std::string in = las_file(pts, 3, 2, 0.001, offset, 8, quantised);
+  for(std::size_t i = 0; i < pts.size(); ++i)
+  {
+    const std::size_t r = 227 + i * 42 + 34;
+    set_le<float>(in, r, 0.5f * float(i));
+    set_le<std::int16_t>(in, r + 4, std::int16_t(int(i % 2000) - 1000));
+    set_le<std::uint16_t>(in, r + 6, std::uint16_t(i * 7));
+  }
+  const std::string descriptors = descriptor(9, "Amplitude") + descriptor(4, "Reflectance", 8, 0.01, 0, "reflectance dB") +
+                                  descriptor(3, "Deviation");
+  return with_vlrs(in, {vlr("LASF_Projection", 34735, geokeys(1)), vlr("LASF_Spec", 4, descriptors)});
+}
+
+} // namespace
+
+TEST_CASE("tool: LAS output is LAS 1.4 with the estimates as extra bytes, per an independent reader of the specification, tiles give the same bytes, read back")
+{
+  using namespace psc_las_test;
+  ::setenv("SOURCE_DATE_EPOCH", "1700000000", 1);  // 2023-11-14, day 318: reproducible headers
+  const double offset[3] = {1e6, 2e6, 100};
+  std::vector<Oriented_point> pts;
+  for(const Oriented_point& p : sphere(3000, 2.0))
+    pts.emplace_back(Point(p.first.x() + 1e6 + 3, p.first.y() + 2e6 + 4, p.first.z() + 105), p.second);
+  pts.emplace_back(Point(1e6 + 30, 2e6 + 4, 105), Vector(0, 0, 1));  // isolated: invalid
+  const std::size_t n = pts.size();
+  std::vector<std::array<double, 3> > quantised;
+  const std::string in = las_with_extra_bytes(pts, offset, &quantised);
+  write_text(file("eb.las"), in);
+  const std::string viewpoint = " --orient viewpoint:1000003,2000004,105";  // normals inwards: H = -1/2
+  const Run r = run_tool(q(file("eb.las")) + " " + q(file("eb_out.las")) + " --radius 0.5" + viewpoint);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK(r.out.find("valid       3000 (99.97 %)") != std::string::npos);
+  CHECK(r.err.find("meaningless") == std::string::npos);  // a projected CRS: no warning
+  const Las l = read_las_1_4(read_text(file("eb_out.las")));
+  CHECK(l.major == 1);
+  CHECK(l.minor == 4);
+  CHECK(l.header_size == 375);
+  CHECK(l.format == 3);  // the input's
+  CHECK(l.software == "point_set_curvatures");
+  CHECK(l.day == 318);
+  CHECK(l.year == 2023);
+  CHECK(l.count == n);
+  CHECK(l.legacy_count == n);  // format 0-5, the count fits
+  CHECK(l.by_return[0] == n);  // every point is return 1 of 2
+  CHECK(l.legacy_by_return[0] == n);
+  CHECK(l.by_return[1] == 0);
+  CHECK(l.first_evlr == 0);
+  CHECK(l.evlr_count == 0);
+  for(int a = 0; a < 3; ++a)
+  {
+    CHECK(l.scale[a] == 0.001);
+    CHECK(l.offset[a] == offset[a]);
+    double lo = 1e300, hi = -1e300;
+    for(const auto& x : quantised)
+    {
+      lo = std::min(lo, x[a]);
+      hi = std::max(hi, x[a]);
+    }
+    CHECK(l.min[a] == lo);
+    CHECK(l.max[a] == hi);
+  }
+  // the VLRs: the input's GeoTIFF keys, then the extra-bytes VLR of the output
+  REQUIRE(l.vlrs.size() == 2);
+  CHECK(l.vlrs[0].user_id == "LASF_Projection");
+  CHECK(l.vlrs[0].record_id == 34735);
+  CHECK(l.vlrs[0].payload == geokeys(1));
+  CHECK(l.vlrs[1].user_id == "LASF_Spec");
+  CHECK(l.vlrs[1].record_id == 4);
+  const std::vector<std::string> names = {"nx", "ny", "nz", "k_min", "k_max", "mean", "gaussian", "dmin_x", "dmin_y",
+                                          "dmin_z", "dmax_x", "dmax_y", "dmax_z", "normal_coherence", "neighbors",
+                                          "valid", "Amplitude", "Reflectance", "Deviation"};
+  REQUIRE(l.descriptors.size() == names.size());
+  for(std::size_t k = 0; k < names.size(); ++k)
+  {
+    const Descriptor& d = l.descriptors[k];
+    INFO(names[k]);
+    CHECK(d.name == names[k]);
+    CHECK(d.bytes.substr(0, 2) == std::string(2, '\0'));  // reserved
+    const int type = k < 14 ? 10 : k == 14 ? 6 : k == 15 ? 1 : k == 16 ? 9 : k == 17 ? 4 : 3;
+    CHECK(d.data_type == type);
+    if(k < 14)
+    {
+      CHECK(d.options == 1);  // no_data
+      CHECK(std::isnan(le<double>(d.no_data, 0)));
+      CHECK(!d.description.empty());
+    }
+    else if(k == 17)
+    {
+      CHECK(d.options == 8);  // scale, as in the input
+      CHECK(d.scale == 0.01);
+      CHECK(d.description == "reflectance dB");
+    }
+    else
+      CHECK(d.options == 0);
+  }
+  CHECK(l.descriptors[5].description == "mean curvature (k_min+k_max)/2");
+  CHECK(l.point_offset == 375 + 54 + 16 + 54 + 192 * names.size());
+  CHECK(l.record_length == 34 + 14 * 8 + 4 + 1 + 4 + 2 + 2);
+  REQUIRE(l.file.size() == l.point_offset + n * l.record_length);
+  std::size_t mean_at, valid_at, neighbors_at, amplitude_at, reflectance_at, deviation_at;
+  REQUIRE(l.extra("mean", mean_at));
+  REQUIRE(l.extra("valid", valid_at));
+  REQUIRE(l.extra("neighbors", neighbors_at));
+  REQUIRE(l.extra("Amplitude", amplitude_at));
+  REQUIRE(l.extra("Reflectance", reflectance_at));
+  REQUIRE(l.extra("Deviation", deviation_at));
+  const std::size_t in_offset = le<std::uint32_t>(in, 96);
+  std::size_t wrong_standard = 0, wrong_extra = 0;
+  double worst_h = 0;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const std::string rec = l.record(i);
+    // every standard field as in the input: the same 34 bytes
+    wrong_standard += rec.substr(0, 34) != in.substr(in_offset + i * 42, 34);
+    wrong_extra += le<float>(rec, amplitude_at) != 0.5f * float(i) ||
+                   le<std::int16_t>(rec, reflectance_at) != int(i % 2000) - 1000 ||
+                   le<std::uint16_t>(rec, deviation_at) != std::uint16_t(i * 7);
+    const double mean = le<double>(rec, mean_at);
+    if(i < 3000)
+    {
+      wrong_extra += le<std::uint8_t>(rec, valid_at) != 1 || le<std::int32_t>(rec, neighbors_at) < 20;
+      worst_h = std::max(worst_h, std::abs(mean + 0.5));
+    }
+    else  // the isolated point: no_data
+      wrong_extra += le<std::uint8_t>(rec, valid_at) != 0 || !std::isnan(mean);
+  }
+  CHECK(wrong_standard == 0);
+  CHECK(wrong_extra == 0);
+  CHECK(worst_h < 0.05);
+
+  // in tiles: the same bytes
+  const Run tiled = run_tool(q(file("eb.las")) + " " + q(file("eb_tiled.las")) + " --radius 0.5 --orient +z --memory-limit 400K");
+  const Run whole = run_tool(q(file("eb.las")) + " " + q(file("eb_whole.las")) + " --radius 0.5 --orient +z");
+  REQUIRE(tiled.status == 0);
+  REQUIRE(whole.status == 0);
+  CHECK(tiled.out.find("  tiles") != std::string::npos);
+  CHECK(read_text(file("eb_tiled.las")) == read_text(file("eb_whole.las")));
+
+  // --float: float32 estimates with a NaN no_data (a double, as the specification upcasts floats)
+  REQUIRE(run_tool(q(file("eb.las")) + " " + q(file("eb_float.las")) + " --radius 0.5 --float --quiet" + viewpoint).status == 0);
+  const Las f = read_las_1_4(read_text(file("eb_float.las")));
+  REQUIRE(f.descriptors.size() == names.size());
+  CHECK(f.descriptors[5].data_type == 9);
+  CHECK(f.descriptors[5].options == 1);
+  CHECK(std::isnan(le<double>(f.descriptors[5].no_data, 0)));
+  CHECK(f.record_length == 34 + 14 * 4 + 4 + 1 + 4 + 2 + 2);
+  std::size_t float_mean_at;
+  REQUIRE(f.extra("mean", float_mean_at));
+  CHECK(le<float>(f.record(7), float_mean_at) == float(le<double>(l.record(7), mean_at)));
+
+  // read back by the tool's reader: the estimates and the extra bytes as attributes
+  REQUIRE(run_tool(q(file("eb_out.las")) + " " + q(file("back.csv")) + " --radius 0.5 --fields mean --quiet" + viewpoint).status == 0);
+  const std::string back = read_text(file("back.csv"));
+  const std::vector<double> input_mean = csv_values(back, "input_mean"), amplitude = csv_values(back, "Amplitude"),
+                            reflectance = csv_values(back, "Reflectance"), deviation = csv_values(back, "Deviation"),
+                            x = csv_values(back, "x");
+  REQUIRE(input_mean.size() == n);
+  std::size_t wrong_back = 0;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const double m = le<double>(l.record(i), mean_at);
+    wrong_back += !(m == input_mean[i] || (std::isnan(m) && std::isnan(input_mean[i]))) ||
+                  amplitude[i] != 0.5 * double(i) || std::abs(reflectance[i] - 0.01 * (int(i % 2000) - 1000)) > 1e-12 ||
+                  deviation[i] != double(i * 7 % 65536) || x[i] != quantised[i][0];
+  }
+  CHECK(wrong_back == 0);
+
+  // a text input: format 6, return 1 of 1, the offset at the floor of the minimum, a scale of
+  // a million steps or more across the extent (4: 1e-6)
+  std::vector<Oriented_point> ball;
+  for(const Oriented_point& p : sphere(2000, 2.0))
+    ball.emplace_back(Point(p.first.x() + 10.5, p.first.y() + 20.5, p.first.z() + 30.5), p.second);
+  write_xyz(file("ball.xyz"), ball);
+  REQUIRE(run_tool(q(file("ball.xyz")) + " " + q(file("ball.las")) + " --radius 0.5 --fields mean,valid --quiet").status == 0);
+  const Las b = read_las_1_4(read_text(file("ball.las")));
+  CHECK(b.format == 6);
+  CHECK(b.legacy_count == 0);  // formats 6-10: the legacy counts are 0
+  CHECK(b.count == ball.size());
+  CHECK(b.by_return[0] == ball.size());
+  CHECK(b.system_id == "OTHER");
+  CHECK(b.record_length == 30 + 8 + 1);
+  REQUIRE(b.vlrs.size() == 1);
+  REQUIRE(b.descriptors.size() == 2);
+  double lo[3] = {1e300, 1e300, 1e300};
+  for(const Oriented_point& p : ball)
+    for(int a = 0; a < 3; ++a)
+      lo[a] = std::min(lo[a], p.first[a]);
+  std::size_t wrong_ball = 0;
+  for(int a = 0; a < 3; ++a)
+  {
+    CHECK(b.offset[a] == std::floor(lo[a]));
+    CHECK(b.scale[a] == 1e-6);
+  }
+  double worst_ball = 0;
+  std::size_t ball_mean_at;
+  REQUIRE(b.extra("mean", ball_mean_at));
+  for(std::size_t i = 0; i < ball.size(); ++i)
+  {
+    for(int a = 0; a < 3; ++a)
+      wrong_ball += std::abs(b.coordinate(i, a) - ball[i].first[a]) > 0.5e-6 * (1 + 1e-9);
+    wrong_ball += b.record(i)[14] != char(0x11);  // return 1 of 1
+    worst_ball = std::max(worst_ball, std::abs(le<double>(b.record(i), ball_mean_at) - 0.5));
+  }
+  CHECK(wrong_ball == 0);
+  CHECK(worst_ball < 0.01);
+
+  // in tiles, the scale and offset from the same bounds: the same bytes
+  const Run ball_tiled = run_tool(q(file("ball.xyz")) + " " + q(file("ball_tiled.las")) +
+                                  " --radius 0.5 --fields mean,valid --memory-limit 100K");
+  REQUIRE(ball_tiled.status == 0);
+  CHECK(ball_tiled.out.find("  tiles") != std::string::npos);
+  CHECK(read_text(file("ball_tiled.las")) == read_text(file("ball.las")));
+  // a point with a non-finite coordinate: at the offset, withheld, out of the bounds, warned of
+  {
+    std::ofstream add(file("ball.xyz"), std::ios::app);
+    add << "nan 20 30 0 0 1\n";
+  }
+  const Run nan_run = run_tool(q(file("ball.xyz")) + " " + q(file("ball_nan.las")) + " --radius 0.5 --fields mean,valid");
+  REQUIRE(nan_run.status == 0);
+  CHECK(nan_run.err.find("1 points with non-finite coordinates are written to the LAS output at its offset, withheld") !=
+        std::string::npos);
+  const Las bn = read_las_1_4(read_text(file("ball_nan.las")));
+  REQUIRE(bn.count == ball.size() + 1);
+  CHECK((bn.record(ball.size())[15] & 4) == 4);  // withheld (formats 6-10: bit 2 of byte 15)
+  CHECK((bn.record(0)[15] & 4) == 0);
+  CHECK(bn.coordinate(ball.size(), 0) == bn.offset[0]);
+  for(int a = 0; a < 3; ++a)
+  {
+    CHECK(bn.min[a] == b.min[a]);
+    CHECK(bn.max[a] == b.max[a]);
+  }
+  // --drop-attributes: a LAS input's standard fields stay, its extra bytes go
+  REQUIRE(run_tool(q(file("eb.las")) + " " + q(file("eb_drop.las")) + " --radius 0.5 --fields mean --drop-attributes --quiet" + viewpoint).status == 0);
+  const Las dropped = read_las_1_4(read_text(file("eb_drop.las")));
+  REQUIRE(dropped.descriptors.size() == 1);
+  CHECK(dropped.descriptors[0].name == "mean");
+  CHECK(dropped.format == 3);
+  CHECK(dropped.record_length == 34 + 8);
+  CHECK(dropped.record(42).substr(0, 34) == in.substr(in_offset + 42 * 42, 34));
+
+  // LAS 1.4 format 6 with a WKT CRS in an extended VLR: copied after the points, the WKT bit kept
+  std::string v14 = las_file(pts, 6, 4, 0.001, offset);
+  const std::string wkt = "PROJCS[\"WGS 84 / UTM zone 32N\",GEOGCS[\"WGS 84\"],UNIT[\"metre\",1]]";
+  set_le<std::uint16_t>(v14, 6, 16);  // WKT
+  set_le<std::uint64_t>(v14, 235, v14.size());
+  set_le<std::uint32_t>(v14, 243, 1);
+  v14 += evlr("LASF_Projection", 2112, wkt + std::string(1, '\0'));
+  write_text(file("evlr.las"), v14);
+  const Run e = run_tool(q(file("evlr.las")) + " " + q(file("evlr_out.las")) + " --radius 0.5 --fields mean" + viewpoint);
+  INFO(e.err);
+  REQUIRE(e.status == 0);
+  CHECK(e.err.find("meaningless") == std::string::npos);
+  const Las el = read_las_1_4(read_text(file("evlr_out.las")));
+  CHECK(el.format == 6);
+  CHECK(el.global_encoding == 16);
+  CHECK(el.legacy_count == 0);
+  REQUIRE(el.evlr_count == 1);
+  CHECK(el.first_evlr == el.point_offset + n * el.record_length);
+  REQUIRE(el.evlrs.size() == 1);
+  CHECK(el.evlrs[0].user_id == "LASF_Projection");
+  CHECK(el.evlrs[0].record_id == 2112);
+  CHECK(el.evlrs[0].payload == wkt + std::string(1, '\0'));
+  CHECK(el.file.size() == el.first_evlr + 60 + wkt.size() + 1);
+  CHECK(el.record(5).substr(0, 30) == v14.substr(375 + 5 * 30, 30));
+
+  // every point format 0-10: the standard fields of each record written back bytewise (flags,
+  // scan angles, GPS times, colours, NIR, wave packets with their byte offsets and pulses)
+  {
+    static const std::size_t standard[11] = {20, 28, 26, 34, 57, 63, 30, 36, 38, 59, 67};
+    const std::vector<Oriented_point> few(pts.begin(), pts.begin() + 400);
+    const double centre[3] = {1e6 + 3, 2e6 + 4, 105};
+    for(int format = 0; format <= 10; ++format)
+    {
+      INFO("point format " << format);
+      const int minor = format >= 6 ? 4 : format >= 4 ? 3 : 2;
+      std::string src = las_file(few, format, minor, 0.001, offset, 0, nullptr, centre);
+      const std::size_t header = le<std::uint16_t>(src, 94);
+      if(format == 4 || format == 5 || format == 9 || format == 10)
+        for(std::size_t i = 0; i < few.size(); ++i)
+          set_le<std::uint64_t>(src, header + i * standard[format] + (format == 4 ? 28 : format == 5 ? 34 : format == 9 ? 30 : 38) + 1,
+                                std::uint64_t(1000 + 256 * i));
+      write_text(file("fmt.las"), src);
+      const Run fr = run_tool(q(file("fmt.las")) + " " + q(file("fmt_out.las")) + " --radius 0.5 --fields mean --quiet" + viewpoint);
+      INFO(fr.err);
+      REQUIRE(fr.status == 0);
+      const Las fl = read_las_1_4(read_text(file("fmt_out.las")));
+      CHECK(fl.format == format);
+      CHECK(fl.record_length == standard[format] + 8);
+      CHECK(fl.legacy_count == (format <= 5 ? few.size() : 0));
+      std::size_t different = 0;
+      for(std::size_t i = 0; i < few.size(); ++i)
+        different += fl.record(i).substr(0, standard[format]) != src.substr(header + i * standard[format], standard[format]);
+      CHECK(different == 0);
+    }
+  }
+
+  // refused before any work: --color and --ascii with a .las output
+  for(const char* option : {" --color mean", " --ascii"})
+  {
+    const Run bad = run_tool(q(file("eb.las")) + " " + q(file("bad.las")) + option);
+    CHECK(bad.status == 2);
+    CHECK(std::count(bad.err.begin(), bad.err.end(), '\n') == 1);
+    CHECK(!fs::exists(file("bad.las")));
+  }
+  ::unsetenv("SOURCE_DATE_EPOCH");
+}
+
+TEST_CASE("tool: LAS extra bytes are read in their types (float Amplitude, int16 Reflectance with a scale, uint16 Deviation) and carried to PLY and CSV, deprecated and undocumented ones are warned of")
+{
+  using namespace psc_las_test;
+  const double offset[3] = {1e6, 2e6, 100};
+  std::vector<Oriented_point> pts;
+  for(const Oriented_point& p : sphere(1500, 2.0))
+    pts.emplace_back(Point(p.first.x() + 1e6 + 3, p.first.y() + 2e6 + 4, p.first.z() + 105), p.second);
+  write_text(file("eb2.las"), las_with_extra_bytes(pts, offset, nullptr));
+  const Run r = run_tool(q(file("eb2.las")) + " " + q(file("eb2.ply")) + " --radius 0.5 --orient +z");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK(r.err.find("extra bytes") == std::string::npos);  // every extra byte described and read
+  const std::string ply = read_text(file("eb2.ply"));
+  CHECK(ply.find("property float Amplitude\nproperty double Reflectance\nproperty ushort Deviation\n") !=
+        std::string::npos);
+  Point_set ps;
+  REQUIRE(CGAL::IO::read_PLY(file("eb2.ply"), ps));
+  REQUIRE(ps.size() == pts.size());
+  const auto amplitude = property<float>(ps, "Amplitude");
+  const auto reflectance = property<double>(ps, "Reflectance");
+  const auto deviation = property<std::uint16_t>(ps, "Deviation");
+  std::size_t i = 0, wrong = 0;
+  for(Point_set::Index p : ps)
+  {
+    wrong += amplitude[p] != 0.5f * float(i) || reflectance[p] != double(int(i % 2000) - 1000) * 0.01 ||
+             deviation[p] != std::uint16_t(i * 7);
+    ++i;
+  }
+  CHECK(wrong == 0);
+  REQUIRE(run_tool(q(file("eb2.las")) + " " + q(file("eb2.csv")) + " --radius 0.5 --orient +z --fields mean --quiet").status == 0);
+  const std::string csv = read_text(file("eb2.csv"));
+  CHECK(csv.substr(0, csv.find('\n')).find(",gps_time,red,green,blue,Amplitude,Reflectance,Deviation") != std::string::npos);
+  CHECK(csv_values(csv, "Reflectance")[3] == -9.97);
+  CHECK(csv_values(csv, "Deviation")[1499] == 1499 * 7);
+
+  // a deprecated array type (13: two ushorts) and 2 undocumented bytes: skipped, with warnings
+  std::string odd = las_file(pts, 1, 2, 0.001, offset, 8);
+  for(std::size_t k = 0; k < pts.size(); ++k)
+    set_le<std::uint16_t>(odd, 227 + k * 36 + 28 + 4, std::uint16_t(k));
+  odd = with_vlrs(odd, {vlr("LASF_Spec", 4, descriptor(13, "Pair") + descriptor(3, "Width"))});
+  write_text(file("odd.las"), odd);
+  const Run o = run_tool(q(file("odd.las")) + " " + q(file("odd.csv")) + " --radius 0.5 --orient +z --fields mean");
+  INFO(o.err);
+  REQUIRE(o.status == 0);
+  CHECK(o.err.find("extra bytes fields not read: 'Pair' (deprecated array type)") != std::string::npos);
+  CHECK(o.err.find("2 extra bytes per point record beyond those the extra-bytes VLR describes are not read") !=
+        std::string::npos);
+  const std::vector<double> width = csv_values(read_text(file("odd.csv")), "Width");
+  REQUIRE(width.size() == pts.size());
+  CHECK(width[1234] == 1234);
+}
+
+TEST_CASE("tool: a geographic LAS (GeoTIFF key, WKT GEOGCS, or x y like degrees) gets one warning naming the reprojection, a projected one none")
+{
+  using namespace psc_las_test;
+  const double offset[3] = {1e6, 2e6, 100};
+  std::vector<Oriented_point> pts;
+  for(const Oriented_point& p : sphere(1500, 2.0))
+    pts.emplace_back(Point(p.first.x() + 1e6 + 3, p.first.y() + 2e6 + 4, p.first.z() + 105), p.second);
+  const std::string base = las_file(pts, 1, 2, 0.001, offset);
+  const std::string wkt = "GEOGCS[\"WGS 84\",DATUM[\"WGS_1984\"],UNIT[\"degree\",0.0174532925199433]]";
+  // a lon/lat terrain: 0.01 degree wide, 30 m high
+  std::vector<Oriented_point> terrain;
+  for(int u = 0; u < 40; ++u)
+    for(int v = 0; v < 40; ++v)
+      terrain.emplace_back(Point(7.1 + 0.00025 * u, 46.2 + 0.00025 * v, 500 + 15 * std::sin(0.2 * u) * std::cos(0.15 * v)),
+                           Vector(0, 0, 1));
+  const double geo_offset[3] = {7, 46, 0};
+  const std::pair<std::string, std::string> cases[] = {
+    {with_vlrs(base, {vlr("LASF_Projection", 34735, geokeys(2))}), "GTModelTypeGeoKey 1024 = 2"},
+    {with_vlrs(base, {vlr("LASF_Projection", 2112, wkt)}), "WKT GEOGCS"},
+    {las_file(terrain, 1, 2, 1e-7, geo_offset), "x and y look like longitude and latitude (x in [7.1, 7.10975]"},
+    {with_vlrs(base, {vlr("LASF_Projection", 34735, geokeys(1))}), ""},
+    {base, ""}};
+  int k = 0;
+  for(const auto& c : cases)
+  {
+    INFO("case " << k);
+    const std::string las = file("geo" + std::to_string(k++) + ".las");
+    write_text(las, c.first);
+    const Run r = run_tool(q(las) + " " + q(file("geo.ply")) + " --radius 0.5 --orient +z");
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    const std::size_t at = r.err.find("curvatures in 1/degree are meaningless");
+    if(c.second.empty())
+      CHECK(at == std::string::npos);
+    else
+    {
+      REQUIRE(at != std::string::npos);
+      CHECK(r.err.find(c.second) != std::string::npos);
+      // one line, naming what to do
+      const std::size_t begin = r.err.rfind('\n', at) + 1, end = r.err.find('\n', at);
+      const std::string line = r.err.substr(begin, end - begin);
+      CHECK(line.find("reproject to a projected CRS in metres") != std::string::npos);
+      CHECK(line.find("pdal translate IN.las OUT.las reprojection --filters.reprojection.out_srs=EPSG:326xx") !=
+            std::string::npos);
+      CHECK(line.find("--radius in degrees") != std::string::npos);
+    }
+  }
+}
+
+TEST_CASE("tool: a truncated LAS is refused, and read to its last complete record with --allow-truncated and a warning")
+{
+  const double offset[3] = {0, 0, 0};
+  const std::vector<Oriented_point> pts = sphere(1065, 2.0);
+  std::string las = las_file(pts, 1, 2, 0.001, offset);
+  las.resize(las.size() - 10);  // 1064 complete records
+  write_text(file("cut.las"), las);
+  const Run refused = run_tool(q(file("cut.las")) + " " + q(file("cut.ply")) + " --radius 0.5");
+  CHECK(refused.status == 2);
+  CHECK(refused.err.find("truncated: the header declares 1065 points") != std::string::npos);
+  CHECK(refused.err.find("(1064 complete records: --allow-truncated reads them)") != std::string::npos);
+  CHECK(std::count(refused.err.begin(), refused.err.end(), '\n') == 1);
+  CHECK(!fs::exists(file("cut.ply")));
+  const Run r = run_tool(q(file("cut.las")) + " " + q(file("cut.ply")) + " --radius 0.5 --orient +z --allow-truncated");
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK(r.err.find("truncated: read the 1064 complete points of the 1065 the header declares (--allow-truncated)") !=
+        std::string::npos);
+  CHECK(r.out.find("points      1064") != std::string::npos);
+  Point_set ps;
+  REQUIRE(CGAL::IO::read_PLY(file("cut.ply"), ps));
+  CHECK(ps.size() == 1064);
+  // to LAS: the count written is the points read
+  REQUIRE(run_tool(q(file("cut.las")) + " " + q(file("cut_out.las")) + " --radius 0.5 --orient +z --allow-truncated --quiet").status == 0);
+  const psc_las_test::Las l = psc_las_test::read_las_1_4(read_text(file("cut_out.las")));
+  CHECK(l.count == 1064);
+  CHECK(l.legacy_count == 1064);
+  CHECK(l.file.size() == l.point_offset + 1064 * std::size_t(l.record_length));
+}
+
 TEST_CASE("tool: input attributes carried in their types, renamed on a clash, --fields, --float, --drop-attributes")
 {
   const std::vector<Oriented_point> pts = sphere(800, 1.0);

@@ -56,8 +56,14 @@ void print_usage(std::ostream& os)
      << "          invalid or the method does not provide the quantity), neighbors (int) and\n"
      << "          valid (0 or 1); then the input's other values in their own types (PLY\n"
      << "          properties, named text columns, LAS fields such as intensity,\n"
-     << "          classification, gps_time, red green blue), renamed input_NAME where NAME\n"
-     << "          is one of the above.\n"
+     << "          classification, gps_time, red green blue, and the extra bytes an extra-bytes\n"
+     << "          VLR describes), renamed input_NAME where NAME is one of the above.\n"
+     << "          Or .las: LAS 1.4 with the estimates as extra-bytes fields (double, float\n"
+     << "          with --float; no_data NaN where invalid), from a LAS input in its point\n"
+     << "          format with its fields, scale, offset, VLRs, extended VLRs and CRS kept;\n"
+     << "          otherwise format 6, offset at the floor of the minimum, scale 0.001 (finer\n"
+     << "          for extents below 1000). A LAS input whose CRS is geographic, or whose x y\n"
+     << "          look like degrees, gets a warning: reproject it to metres first.\n"
      << "\n"
      << "options:\n"
      << "  --method M         estimator: " << method_names() << " (default aso)\n"
@@ -90,7 +96,10 @@ void print_usage(std::ostream& os)
      << "                     nx ny nz and red green blue, input attributes too). CloudCompare\n"
      << "                     loads a property scalar_NAME as the scalar field NAME and leaves\n"
      << "                     out mean, k_min, ...: use scalar for CloudCompare\n"
-     << "  --drop-attributes  do not carry the input's other values to the output\n"
+     << "  --drop-attributes  do not carry the input's other values to the output (a .las\n"
+     << "                     output keeps a LAS input's standard fields, drops its extra bytes)\n"
+     << "  --allow-truncated  read a LAS file whose last point records are missing up to its\n"
+     << "                     last complete record, with a warning (default: refused)\n"
      << "  --require-normals  fail if INPUT has no normals instead of estimating them\n"
      << "  --orient O         orientation of estimated normals: auto (default: LAS files with\n"
      << "                     pulse directions, scanner; other LAS files, mst with +z on its open\n"
@@ -356,6 +365,8 @@ Options parse_command_line(int argc, char** argv)
       flag(o.float32);
     else if(name == "--drop-attributes")
       flag(o.drop_attributes);
+    else if(name == "--allow-truncated")
+      flag(o.allow_truncated);
     else if(name == "--fields")
       o.fields = parse_fields(take_value());
     else if(name == "--ply-names")

@@ -35,6 +35,7 @@ struct Options
   bool quiet = false, ascii = false, require_normals = false, help = false;
   bool float32 = false, drop_attributes = false;  // --float, --drop-attributes
   bool ply_scalar_names = false;                   // --ply-names scalar (CloudCompare's scalar_NAME)
+  bool allow_truncated = false;                    // --allow-truncated
   std::vector<std::string> fields;                 // --fields, empty: all
   std::string color;  // quantity to colour by, empty for none
   std::vector<std::string> columns;  // --columns, empty: automatic

@@ -5,7 +5,7 @@
 //
 // Command-line front end of the package: reads a point cloud (.xyz/.pwn/.txt/.csv/.asc, .ply, .off, .las),
 // estimates normals if the file has none, estimates curvatures at every point and writes them
-// (.ply or .csv), every input point in input order. The options are parsed in
+// (.ply, .csv or .las), every input point in input order. The options are parsed in
 // command_line.cpp, the estimators run from methods.cpp, the files are read and written in
 // read_*.cpp and write_point_cloud.cpp, and inputs larger than memory go through tiled_run.cpp.
 // Run with --help for the options. Exit status: 0 on success, 2 on invalid arguments or
@@ -27,6 +27,7 @@
 #include "run_summary.h"
 #include "tiled_run.h"
 #include "tool_support.h"
+#include "write_las.h"
 #include "write_point_cloud.h"
 
 #include <dirent.h>
@@ -947,20 +948,44 @@ std::string output_description(const Output_layout& layout, std::size_t n)
 // Reserves the output's size before the estimation (Temporary_output::reserve): the layout of
 // write_output() with the scale and colour range still unknown (a margin for the header
 // comments that hold them).
+// A LAS output (`las` not null) has its size from write_las.h.
 void reserve_output(const Options& o, Temporary_output& output, const std::vector<Attribute>& attributes,
-                    std::size_t n)
+                    std::size_t n, const Las_output_options* las)
 {
+  if(las)
+  {
+    const std::vector<Output_field> fields = output_fields(o.fields, o.float32, false, attributes);
+    output.reserve(las_output_size(*las, fields, attributes, n),
+                   cat("LAS of ", plural(n, "point"), ", ", plural(fields.size(), "field")));
+    return;
+  }
   const Output_layout layout =
     output_layout(o, o.scale, attributes, o.color.empty() ? -1 : color_quantities().at(o.color), 0.0);
   output.reserve(output_size_bound(layout, n) + 1024, output_description(layout, n));
 }
 
-// Writes the n rows of `rows` (asked for in input order), coloured from the summary.
+// Writes the n rows of `rows` (asked for in input order), coloured from the summary; a LAS
+// output when `las` is not null.
 void write_output(const Run_context& c, Temporary_output& output, const Scale& scale,
                   const std::vector<Attribute>& attributes, std::size_t n, const Row_summary& summary,
-                  const Row_source& rows)
+                  const Row_source& rows, const Las_output_options* las)
 {
   const Options& o = c.o;
+  if(las)
+  {
+    // LAS 1.4, the estimates as extra bytes (write_las.h); no colours (refused in run());
+    // the temporary file is created now, when writing starts
+    const std::vector<Output_field> fields = output_fields(o.fields, o.float32, false, attributes);
+    std::FILE* file = output.open(las_output_size(*las, fields, attributes, n),
+                                  cat("LAS of ", plural(n, "point"), ", ", plural(fields.size(), "field")));
+    const std::vector<std::string> w = write_las(file, *las, fields, attributes, n, rows, c.progress.phase("writing"));
+    c.warnings.insert(c.warnings.end(), w.begin(), w.end());
+    c.progress.finish();
+    if(interrupted)
+      throw Cancelled();
+    output.commit();
+    return;
+  }
   int color_quantity = -1;
   double color_range = 0;
   if(!o.color.empty())
@@ -1068,7 +1093,8 @@ std::string memory_argument(double bytes)
 // The run on an input that does not fit in the memory limit: estimated in tiles
 // (tiled_run.h), bitwise as in memory.
 int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_options& read_options,
-                    const Scanned_input& input, double memory_limit, const Orientation_choice& orientation)
+                    const Scanned_input& input, double memory_limit, const Orientation_choice& orientation,
+                    const Las_output_options* las)
 {
   const double count_seconds = seconds_since(c.start);
   const Options& o = c.o;
@@ -1098,7 +1124,7 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
     throw Error(cat(too_large, ": --method vcm needs the whole cloud (its Voronoi cells come from the Delaunay "
                     "triangulation of every point); raise --memory-limit"));
   const Scale scale = estimation_scale(o, !with_normals);
-  reserve_output(o, output, o.drop_attributes ? std::vector<Attribute>() : input.cloud.attributes, n);
+  reserve_output(o, output, o.drop_attributes && !las ? std::vector<Attribute>() : input.cloud.attributes, n, las);
   Tiling tiling;
   tiling.memory_limit = memory_limit;
   if(scale.by_count)
@@ -1216,8 +1242,9 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
     [&summary](std::size_t i, const Output_row& r) { summary.add(i, r); },
     [&](const Row_source& rows) {
       const auto write_start = std::chrono::steady_clock::now();
-      write_output(c, output, scale, o.drop_attributes ? std::vector<Attribute>() : input.cloud.attributes, n,
-                   summary, rows);
+      write_output(c, output, scale,
+                   o.drop_attributes && !las ? std::vector<Attribute>() : input.cloud.attributes, n, summary, rows,
+                   las);
       write_seconds = seconds_since(write_start);
     });
   if(!with_normals)
@@ -1253,9 +1280,15 @@ int run(const Options& o)
 {
   const auto start = std::chrono::steady_clock::now();
   const std::string out_ext = lower_extension(o.output);
-  if(out_ext != ".ply" && out_ext != ".csv")
+  if(out_ext != ".ply" && out_ext != ".csv" && out_ext != ".las")
     throw Error(cat("unsupported output format ", in_quotes(out_ext.empty() ? o.output : out_ext),
-                    " for ", in_quotes(o.output), " (expected .ply or .csv)"));
+                    " for ", in_quotes(o.output), " (expected .ply, .csv or .las)"));
+  const bool las_output = out_ext == ".las";
+  if(las_output && !o.color.empty())
+    throw Error(cat("--color ", o.color, ": a .las output holds no colours of the estimates (LAS viewers colour by "
+                    "a field: choose ", o.color, "); drop --color, or write .ply"));
+  if(las_output && o.ascii)
+    throw Error("--ascii: a .las output is binary; drop --ascii, or write .ply or .csv");
   {
     struct stat in, out;
     if(::stat(o.input.c_str(), &in) == 0 && ::stat(o.output.c_str(), &out) == 0 && in.st_dev == out.st_dev &&
@@ -1302,7 +1335,9 @@ int run(const Options& o)
   read_options.columns = o.columns;
   const bool las = lower_extension(o.input) == ".las";
   // the pulses of --orient scanner, or of --orient auto on a LAS file
-  read_options.keep_attributes = !o.drop_attributes || o.orient_scanner || (las && o.orientation_text == "auto");
+  read_options.keep_attributes =
+    !o.drop_attributes || o.orient_scanner || (las && o.orientation_text == "auto") || las_output;
+  read_options.allow_truncated = o.allow_truncated;
   read_options.progress = progress.phase("reading");
   Scanned_input input = read_or_scan(o.input, read_options, memory_limit > 0 ? memory_limit : HUGE_VAL);
   for(const std::string& w : input.cloud.warnings)
@@ -1313,10 +1348,22 @@ int run(const Options& o)
                     "formats 4, 5, 9 and 10); use --orient +z (airborne scans) or viewpoint:X,Y,Z"));
   const bool has_pulses = *std::min_element(pulse.begin(), pulse.end()) >= 0;
   Orientation_choice orientation = choose_orientation(o, las, has_pulses);
+  // a LAS output: the input's LAS header and records, the bounds of its points (the same in
+  // tiles as in memory)
+  Las_output_options las_options;
+  las_options.source = input.cloud.las;
+  las_options.input_path = o.input;
+  las_options.drop_attributes = o.drop_attributes;
+  for(int a = 0; a < 3; ++a)
+  {
+    las_options.lo[a] = input.lo[a];
+    las_options.hi[a] = input.hi[a];
+  }
+  const Las_output_options* las_out = las_output ? &las_options : nullptr;
   if(!input.fits)
   {
     read_options.progress = Progress();
-    return run_tiled_input(context, output, read_options, input, memory_limit, orientation);
+    return run_tiled_input(context, output, read_options, input, memory_limit, orientation, las_out);
   }
   Point_set ps;
   const std::vector<Attribute> attributes = std::move(input.cloud.attributes);  // written after the estimates
@@ -1324,7 +1371,7 @@ int run(const Options& o)
   const bool had_normals = input.cloud.has_normals();
   fill_point_set(ps, input.cloud.xyz, input.cloud.normals);
   input.cloud = Point_cloud();
-  reserve_output(o, output, o.drop_attributes ? no_attributes : attributes, ps.size());
+  reserve_output(o, output, o.drop_attributes && !las_output ? no_attributes : attributes, ps.size(), las_out);
   const double read_seconds = seconds_since(start);
   check_interrupted();
 
@@ -1390,8 +1437,8 @@ int run(const Options& o)
       summary.add(i, r);
     }
   }
-  write_output(context, output, scale, o.drop_attributes ? no_attributes : attributes, ps.size(), summary,
-               [&](std::size_t i, Output_row& r) { estimate_row(ps, estimates, i, r); });
+  write_output(context, output, scale, o.drop_attributes && !las_output ? no_attributes : attributes, ps.size(),
+               summary, [&](std::size_t i, Output_row& r) { estimate_row(ps, estimates, i, r); }, las_out);
   const double write_seconds = seconds_since(write_start);
   print_report(context, scale, ps.size(),
                had_normals ? std::string() : cat(normal_fit_description(o), ", oriented ", orientation.text), summary,

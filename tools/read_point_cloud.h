@@ -18,7 +18,8 @@
 //                         or normal_x normal_y normal_z.
 //   .off                  OFF or NOFF (normals), faces checked and ignored.
 //   .las                  LAS 1.0-1.4, uncompressed, point data formats 0-10 (read_las.cpp);
-//                         .laz is refused with a message.
+//                         .laz is refused with a message. Extra-bytes fields described by
+//                         an extra-bytes VLR (data types 1-10) are attributes too.
 //
 // With Read_options::keep_attributes, the values that are neither coordinates nor normals
 // are kept as attributes: PLY vertex properties (lists skipped), text columns named by a
@@ -30,7 +31,9 @@
 #include "tool_support.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -50,6 +53,42 @@ struct Attribute
   std::string name;
   Scalar_type type = Scalar_type::FLOAT64;
   std::vector<double> values;  // one per point
+  // From a LAS file: the standard field of the point record it is (Las_field), or -1;
+  // an extra-bytes field: its 192-byte descriptor as read (LAS 1.4 R15), else empty.
+  int las_field = -1;
+  std::string las_descriptor;
+};
+
+// The standard fields of LAS point records, as read_las.cpp names them (the attributes'
+// las_field).
+enum Las_field
+{
+  LAS_INTENSITY, LAS_RETURN_NUMBER, LAS_NUMBER_OF_RETURNS, LAS_SCAN_DIRECTION, LAS_EDGE, LAS_CLASSIFICATION,
+  LAS_SYNTHETIC, LAS_KEY_POINT, LAS_WITHHELD, LAS_OVERLAP, LAS_SCANNER_CHANNEL, LAS_SCAN_ANGLE, LAS_USER_DATA,
+  LAS_POINT_SOURCE, LAS_GPS_TIME, LAS_RED, LAS_GREEN, LAS_BLUE, LAS_NIR, LAS_WAVE_DESCRIPTOR, LAS_WAVE_OFFSET,
+  LAS_WAVE_SIZE, LAS_WAVE_LOCATION, LAS_WAVE_X_T, LAS_WAVE_Y_T, LAS_WAVE_Z_T, LAS_FIELD_COUNT
+};
+
+// What a LAS input's output in LAS needs besides the points (write_las.cpp): the header,
+// the variable length records, where the extended ones are.
+struct Las_source
+{
+  std::string header;           // the public header block as read (its header size, at most 375 bytes kept)
+  int minor = 0, format = 0;    // version 1.minor, point data record format
+  double scale[3] = {1, 1, 1}, offset[3] = {0, 0, 0};
+  struct Vlr
+  {
+    std::string user_id;        // 16 characters, NUL-padded
+    int record_id = 0;
+    std::string description;    // 32 characters, NUL-padded
+    std::string payload;
+  };
+  std::vector<Vlr> vlrs;        // in file order (every one, the extra bytes' included)
+  bool vlrs_complete = true;    // false: the records between the header and the points did not parse
+  // the extended variable length records (LAS 1.4; the waveform record of LAS 1.3), as
+  // (offset, size with their 60-byte header) in the input file
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> evlrs;
+  std::uint64_t waveform_start = 0;  // the header's start of the waveform data packet record
 };
 
 struct Point_cloud
@@ -59,6 +98,7 @@ struct Point_cloud
   std::string normals_source;   // where the normals came from, for messages
   std::vector<Attribute> attributes;  // empty unless Read_options::keep_attributes
   std::vector<std::string> warnings;  // file problems that do not prevent reading it
+  std::shared_ptr<const Las_source> las;  // a LAS input's header and records, else null
   // With Read_options::chunk: the input index of the first point held (the points before it
   // were handed over); 0 otherwise.
   std::size_t first = 0;
@@ -87,6 +127,9 @@ struct Read_options
   // may come after chunks were handed over. .off files come in one chunk.
   std::function<void(const Point_cloud&)> chunk;
   std::size_t chunk_points = std::size_t(1) << 20;
+  // --allow-truncated: a LAS file whose last records are missing is read up to its last
+  // complete record, with a warning (refused otherwise).
+  bool allow_truncated = false;
 };
 
 // The formats read_point_cloud() understands, for messages: ".xyz, .pwn, .txt, .csv, .ply, .off or .las".
