@@ -681,6 +681,36 @@ TEST_CASE("tool: --ply-names scalar names every property but x y z, normals and 
   const Run unknown = run_tool(q(input) + " " + q(file("cc_unknown.ply")) + " --radius 0.4 --ply-names cloudcompare");
   CHECK(unknown.status == 2);
   CHECK(unknown.err.find("--ply-names: unknown naming 'cloudcompare'") != std::string::npos);
+
+  // a text column named with a space (CloudCompare's "Scalar field"): '_' in the PLY header,
+  // whose lines split on white space, so that the output reads back
+  {
+    std::ostringstream asc;
+    asc.precision(17);
+    asc << "//X,Y,Z,Nx,Ny,Nz,Scalar field,Scalar_field\n";
+    for(int i = 0; i < 60; ++i)
+    {
+      const double u = 0.37 * i, v = 0.11 * i;
+      const double x = std::cos(u) * std::sin(v + 0.3), y = std::sin(u) * std::sin(v + 0.3), z = std::cos(v + 0.3);
+      asc << x << "," << y << "," << z << "," << x << "," << y << "," << z << "," << i << "," << 2 * i << "\n";
+    }
+    write_text(file("spaced.asc"), asc.str());
+    for(const char* naming : {"plain", "scalar"})
+    {
+      INFO(naming);
+      const std::string out = file(std::string("spaced_") + naming + ".ply");
+      const Run r = run_tool(q(file("spaced.asc")) + " " + q(out) + " --neighbors 12 --quiet --ply-names " + naming);
+      INFO(r.err);
+      REQUIRE(r.status == 0);
+      const std::vector<std::string> names = ply_property_names(out);
+      const std::string prefix = std::string(naming) == "scalar" ? "scalar_" : "";
+      CHECK(names[names.size() - 2] == prefix + "Scalar_field_");
+      CHECK(names.back() == prefix + "Scalar_field");
+      const Run back = run_tool(q(out) + " " + q(file("spaced_back.csv")) + " --neighbors 12 --quiet");
+      INFO(back.err);
+      CHECK(back.status == 0);
+    }
+  }
 }
 
 // Runs only where CloudCompare is installed (Debian's cloudcompare package): skipped, with a
@@ -2232,6 +2262,31 @@ TEST_CASE("tool: LAS output is LAS 1.4 with the estimates as extra bytes, per an
   CHECK(el.evlrs[0].payload == wkt + std::string(1, '\0'));
   CHECK(el.file.size() == el.first_evlr + 60 + wkt.size() + 1);
   CHECK(el.record(5).substr(0, 30) == v14.substr(375 + 5 * 30, 30));
+
+  // an extra-bytes descriptor held in an EVLR (not read, not copied: the output's VLR
+  // describes its own fields) beside another EVLR: the file ends where the copied EVLR ends (the reserved size
+  // counted both: a file cut at the reservation had zeros after its end)
+  {
+    std::string eb = las_file(pts, 6, 4, 0.001, offset, 4);
+    for(std::size_t i = 0; i < n; ++i)
+      set_le<float>(eb, 375 + i * 34 + 30, 0.25f * float(i));
+    set_le<std::uint64_t>(eb, 235, eb.size());
+    set_le<std::uint32_t>(eb, 243, 2);
+    const std::string mine(100, 'x');
+    eb += evlr("LASF_Spec", 4, descriptor(9, "Amplitude")) + evlr("MyStuff", 7, mine);
+    write_text(file("evlr_eb.las"), eb);
+    const Run r = run_tool(q(file("evlr_eb.las")) + " " + q(file("evlr_eb_out.las")) + " --radius 0.5 --fields mean" +
+                           viewpoint);
+    INFO(r.err);
+    REQUIRE(r.status == 0);
+    const Las l = read_las_1_4(read_text(file("evlr_eb_out.las")));
+    REQUIRE(l.evlr_count == 1);
+    REQUIRE(l.evlrs.size() == 1);
+    CHECK(l.evlrs[0].user_id == "MyStuff");
+    CHECK(l.file.size() == l.first_evlr + 60 + mine.size());
+    CHECK(l.first_evlr == l.point_offset + n * l.record_length);
+    CHECK(l.record_length == 30 + 8);  // mean as double; the undescribed extra bytes are not kept
+  }
 
   // every point format 0-10: the standard fields of each record written back bytewise (flags,
   // scan angles, GPS times, colours, NIR, wave packets with their byte offsets and pulses)

@@ -13,6 +13,10 @@
 #include <cstring>
 #include <ctime>
 #include <limits>
+#include <set>
+#include <string>
+
+#include <sys/types.h>
 
 namespace psc_tool {
 namespace {
@@ -205,6 +209,7 @@ Las_layout las_layout(const Las_output_options& options, const std::vector<Outpu
   std::vector<Extra>& extras = l.extras;
   std::size_t& record_length = l.record_length;
   record_length = format_size[format];
+  std::set<std::string> used_names;
   for(std::size_t c = 0; c < fields.size(); ++c)
   {
     const Output_field& field = fields[c];
@@ -257,8 +262,15 @@ Las_layout las_layout(const Las_output_options& options, const std::vector<Outpu
       std::memcpy(d + 160, text, std::min<std::size_t>(32, std::strlen(text)));
     }
     d[2] = char(x.data_type);
-    const std::string name = padded(field.name, 32);
-    std::memcpy(d + 4, name.data(), 32);
+    // 32 characters at most, unique: readers find the fields by name
+    std::string name = field.name.substr(0, 32);
+    for(int k = 2; used_names.count(name); ++k)
+    {
+      const std::string suffix = "~" + std::to_string(k);
+      name = field.name.substr(0, 32 - suffix.size()) + suffix;
+    }
+    used_names.insert(name);
+    std::memcpy(d + 4, padded(name, 32).data(), 32);
     x.offset = record_length;
     record_length += type_size[x.data_type];
     extras.push_back(x);
@@ -569,7 +581,10 @@ std::vector<std::string> write_las(std::FILE* f, const Las_output_options& optio
   if(std::fseek(f, 0, SEEK_SET) != 0)
     throw Error("cannot write the LAS header: the output is not seekable");
   std::fwrite(header.data(), 1, header.size(), f);
-  std::fseek(f, 0, SEEK_END);
+  // back to the end of what was written: the file may have been allocated longer (the
+  // reservation counts an extra-bytes EVLR that is not copied), and is cut where it ends
+  if(::fseeko(f, off_t(at), SEEK_SET) != 0)
+    throw Error("cannot write the LAS output: the output is not seekable");
   return warnings;
 }
 

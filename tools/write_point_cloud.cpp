@@ -92,9 +92,26 @@ std::vector<Output_field> output_fields(const std::vector<std::string>& selected
 
 std::vector<std::string> ply_property_names(const Output_layout& layout)
 {
+  // A PLY header splits its lines on white space: a name that holds some (a text column
+  // "Scalar field") gets '_' for it, and '_' appended while it equals another name.
+  const auto unfit = [](char c) { return static_cast<unsigned char>(c) <= ' ' || c == 127; };
   std::vector<std::string> names;
+  std::set<std::string> used;
   for(const Output_field& f : layout.fields)
-    names.push_back(f.name);
+    if(!f.name.empty() && std::none_of(f.name.begin(), f.name.end(), unfit))
+      used.insert(f.name);
+  for(const Output_field& f : layout.fields)
+  {
+    std::string name = f.name;
+    if(name.empty() || std::any_of(name.begin(), name.end(), unfit))
+    {
+      std::replace_if(name.begin(), name.end(), unfit, '_');
+      while(name.empty() || used.count(name))
+        name += '_';
+      used.insert(name);
+    }
+    names.push_back(name);
+  }
   if(!layout.scalar_prefix)
     return names;
   // CloudCompare 2.11 loads x y z, nx ny nz and red green blue as what they are, and a
