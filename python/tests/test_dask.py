@@ -236,7 +236,7 @@ def killing_cluster(marker):
 
     cloudpickle.register_pickle_by_value(sys.modules[__name__])  # workers need not import this file
     cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                                       dashboard_address=None, silence_logs=40)
+                                       dashboard_address=":0", silence_logs=40)  # 8787 may be taken
     try:
         with distributed.Client(cluster) as client:
             client.register_worker_plugin(KillOnce(str(marker)), name="kill-once")
