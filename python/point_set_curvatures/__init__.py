@@ -16,13 +16,23 @@ estimated have a ``status`` other than ``Status.VALID`` and NaN in every float f
 Inputs are ``(N, 3)`` arrays of float64 or float32 in any memory layout (C, Fortran or a
 strided view); they are read once, into the C++ structure. The GIL is released while the
 C++ code runs; ``progress(fraction)`` is called on the calling thread and cancels the run
-(raising :class:`Cancelled`) by returning ``False``. ``threads=None`` uses every core
-(``CGAL::Parallel_tag``), ``threads=1`` runs sequentially (``CGAL::Sequential_tag``),
-``threads=n`` runs on a TBB arena of ``n`` threads; results do not depend on it (except
-``"vcm"``, reproducible only up to rounding). Ctrl-C cancels a run too (KeyboardInterrupt).
-Invalid arguments raise ``ValueError`` (with the C++ message when the C++ code detects them).
+(raising :class:`Cancelled`) by returning ``False`` (exactly ``False``, or a numpy
+``False``): any other value (``True``, ``None``, ``0``, ...) continues. ``threads=None``
+uses every core (``CGAL::Parallel_tag``), ``threads=1`` runs sequentially
+(``CGAL::Sequential_tag``), ``threads=n`` runs on a TBB arena of ``n`` threads, capped to the
+cores TBB may use; results do not depend on it (except ``"vcm"``, reproducible only up to
+rounding). Ctrl-C cancels a run too (KeyboardInterrupt).
+
+Invalid arguments raise ``ValueError`` (with the C++ message when the C++ code detects
+them); arguments of a wrong type (a string for a number, a float for a count) raise
+:class:`ArgumentTypeError`, a ``TypeError`` that is also a ``ValueError``. Method names and
+option values are case-insensitive. A scale that makes every neighbourhood the whole cloud
+(a radius larger than the cloud's bounding-box diagonal, ``neighbors`` not less than the
+number of points) gives a :class:`ScaleWarning`.
 """
 
+import numbers
+import warnings
 from enum import IntEnum
 
 import numpy as np
@@ -30,7 +40,13 @@ import numpy as np
 from . import _core
 from ._core import Cancelled, HaloTooSmall
 
+#: The version of the package: the CMake project's (compiled into the extension).
+__version__ = _core.__version__
+
 __all__ = [
+    "__version__",
+    "ArgumentTypeError",
+    "ScaleWarning",
     "Status",
     "ProjectionStatus",
     "Cancelled",
@@ -55,6 +71,19 @@ HaloTooSmall.__doc__ = (
     "beyond the tile's halo; ``required_halo`` is a halo that suffices (a subclass of "
     "RuntimeError)."
 )
+
+
+class ArgumentTypeError(TypeError, ValueError):
+    """An argument of the wrong type, for example a string where a number is expected: a
+    ``TypeError``, and also a ``ValueError`` (what earlier versions raised)."""
+
+
+class ScaleWarning(UserWarning):
+    """The scale makes every neighbourhood the whole cloud (a radius larger than the cloud's
+    bounding-box diagonal, or ``neighbors`` not less than the number of points): the
+    curvatures are those of one fit to the whole cloud (meaningless unless the cloud is one
+    small patch), or ``Status.DEGENERATE_FIT`` everywhere for huge radii, at a cost quadratic
+    in the number of points."""
 
 
 class Status(IntEnum):
@@ -125,30 +154,43 @@ def _choice(name, value, table):
 def _bool(name, value):
     if isinstance(value, (bool, np.bool_)):
         return bool(value)
-    raise ValueError(f"option '{name}': expected a bool, got {value!r}")
+    raise ArgumentTypeError(f"option '{name}': expected a bool (True or False), got {value!r}")
+
+
+def _type_hint(value):
+    """What a wrong value is, and what to do, for the messages."""
+    if isinstance(value, str):
+        return f"{value!r} (a string: convert it, e.g. float({value!r}))"
+    return f"{value!r} (of type {type(value).__name__})"
+
+
+def _real(name, value):
+    """A number (int, float, numpy scalar; not a bool, not a string) as a float."""
+    if isinstance(value, numbers.Real) and not isinstance(value, (bool, np.bool_)):
+        return float(value)
+    raise ArgumentTypeError(f"{name} must be a number, got {_type_hint(value)}")
 
 
 def _float_in(name, value, low, high):
-    if isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(value, (bool, np.bool_)):
-        v = float(value)
-        if low <= v <= high:
-            return v
+    v = _real(f"option '{name}'", value)
+    if low <= v <= high:
+        return v
     raise ValueError(f"option '{name}': expected a number in [{low:g}, {high:g}], got {value!r}")
 
 
 def _int(name, value, least):
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
-        raise ValueError(f"option '{name}': expected an integer, got {value!r}")
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Integral):
+        raise ArgumentTypeError(f"option '{name}': expected an integer, got {_type_hint(value)}")
     if value < least:
         raise ValueError(f"option '{name}': must be at least {least}, got {value}")
     return int(value)
 
 
 def _threads(threads):
+    """0 for None (every core); n capped to 2**30 here, to the cores TBB may use by _core."""
     if threads is None:
         return 0
-    n = _int("threads", threads, 1)
-    return n
+    return min(_int("threads", threads, 1), 1 << 30)
 
 
 def _array(x, name):
@@ -161,9 +203,59 @@ def _array(x, name):
         raise ValueError(f"{name}: cannot be read as an (N, 3) array of floats: {e}") from None
 
 
-def _check_progress(progress):
-    if progress is not None and not callable(progress):
-        raise ValueError(f"progress must be a callable or None, got {progress!r}")
+def _progress(progress):
+    """The callable given to _core: True to continue, False to cancel. Only False (or a numpy
+    False) cancels: a callable returning None, 0 or anything else continues."""
+    if progress is None:
+        return None
+    if not callable(progress):
+        raise ArgumentTypeError(f"progress must be a callable or None, got {progress!r}")
+
+    def call(fraction):
+        r = progress(fraction)
+        return not (r is False or (isinstance(r, np.bool_) and not r))
+
+    return call
+
+
+def _whole_cloud_scale(points, radius, neighbors, what="", stacklevel=3):
+    """(radius, neighbors), with a ScaleWarning when every neighbourhood would be the whole
+    cloud (see _whole_cloud_box). Arrays the C++ side will refuse are passed through."""
+    if not (isinstance(points, np.ndarray) and points.ndim == 2 and points.shape[1] == 3
+            and points.dtype.kind == "f") or (radius is None and neighbors is None):
+        return radius, neighbors
+    finite = np.isfinite(points).all(axis=1)
+    q = points if finite.all() else points[finite]
+    lo, hi = (q.min(axis=0), q.max(axis=0)) if len(q) else (None, None)
+    return _whole_cloud_box(len(q), lo, hi, radius, neighbors, what, stacklevel + 1)
+
+
+def _whole_cloud_box(n, lo, hi, radius, neighbors, what="", stacklevel=3):
+    """(radius, neighbors) for a cloud of n finite points spanning the box [lo, hi], with a
+    ScaleWarning when every neighbourhood would be the whole cloud: neighbors not less than n
+    (capped at n: non-finite points are nobody's neighbours), or a radius larger than the box's
+    diagonal."""
+    if neighbors is not None:
+        if n and neighbors >= n:
+            warnings.warn(
+                f"{what}neighbors={neighbors} is not less than the number of (finite) points ({n}): "
+                "every neighbourhood is the whole cloud"
+                + (f" (capped at {n})" if neighbors > n else "")
+                + "; give about 40 neighbours, fewer than the points",
+                ScaleWarning, stacklevel=stacklevel)
+            neighbors = min(neighbors, n)
+        return radius, neighbors
+    if radius is None or lo is None or not 0 < radius < np.inf or n < 2:
+        return radius, neighbors
+    diagonal = float(np.linalg.norm(np.asarray(hi, dtype=np.float64) - np.asarray(lo, dtype=np.float64)))
+    if 0 < diagonal < radius:
+        warnings.warn(
+            f"{what}radius={radius:g} is larger than the cloud's extent (bounding-box diagonal "
+            f"{diagonal:.6g}): every neighbourhood is the whole cloud, which gives meaningless "
+            "curvatures (or degenerate_fit everywhere) at a quadratic cost; use about 3.5 to 4 "
+            "times the point spacing (about 40 neighbours), or neighbors=40",
+            ScaleWarning, stacklevel=stacklevel)
+    return radius, neighbors
 
 
 def _tile(tile):
@@ -173,13 +265,14 @@ def _tile(tile):
         return (tuple(tile.core_min), tuple(tile.core_max), float(tile.halo))
     try:
         lo, hi, halo = tile
-        lo = tuple(float(v) for v in lo)
-        hi = tuple(float(v) for v in hi)
-        halo = float(halo)
+        lo, hi = tuple(lo), tuple(hi)
     except (TypeError, ValueError):
         raise ValueError(
             "option 'tile': expected (core_min, core_max, halo) or a TileGrid.Tile"
         ) from None
+    lo = tuple(_real("option 'tile': core_min", v) for v in lo)
+    hi = tuple(_real("option 'tile': core_max", v) for v in hi)
+    halo = _real("option 'tile': halo", halo)
     if len(lo) != 3 or len(hi) != 3:
         raise ValueError("option 'tile': core_min and core_max must have 3 coordinates")
     return (lo, hi, halo)
@@ -233,7 +326,7 @@ def _options(method, allowed, given):
         elif name == "degree_monge":
             o.degree_monge = _int(name, value, -(2**62))
         elif name == "vcm_offset_radius":
-            v = float(value)
+            v = _real("option 'vcm_offset_radius'", value)
             if not (v > 0 and np.isfinite(v)):
                 raise ValueError(
                     f"option 'vcm_offset_radius' must be positive and finite, got {value!r}"
@@ -262,14 +355,17 @@ def _scale(radius, neighbors):
     if (radius is None) == (neighbors is None):
         raise ValueError("give exactly one of radius and neighbors")
     if radius is not None:
-        if isinstance(radius, (bool, np.bool_)):
-            raise ValueError(f"radius must be a number, got {radius!r}")
-        try:
-            radius = float(radius)
-        except (TypeError, ValueError):
-            raise ValueError(f"radius must be a number, got {radius!r}") from None
-        return radius, None  # positive and finite: checked by the C++ function
+        return _real("radius", radius), None  # positive and finite: checked by the C++ function
+    if isinstance(neighbors, (bool, np.bool_)) or not isinstance(neighbors, numbers.Integral):
+        raise ArgumentTypeError(f"neighbors must be an integer, got {_type_hint(neighbors)}")
     return None, _int("neighbors", neighbors, 1)
+
+
+def _method(method):
+    """The method's name in lower case; ValueError for unknown names."""
+    if not isinstance(method, str) or method.lower() not in METHODS:
+        raise ValueError(f"unknown method {method!r}; methods: {', '.join(METHODS)} (any case)")
+    return method.lower()
 
 
 def estimate_curvatures(
@@ -293,18 +389,22 @@ def estimate_curvatures(
     method : str
         ``"aso"`` (Algebraic Shape Operator, default), ``"apss"`` (normal and mean curvature),
         ``"barycenter"``, ``"pca_plane"`` (unsigned mean curvature), ``"pss"``, ``"jet"``,
-        ``"wavejet"`` (full tensor), ``"vcm"`` (unsigned principal curvatures).
+        ``"wavejet"`` (full tensor), ``"vcm"`` (unsigned principal curvatures); any case.
     radius : float
         Neighbourhoods are the points at distance ``< radius`` (about 40 neighbours is a good
-        start: 3.5 to 4 times the average spacing).
+        start: 3.5 to 4 times the average spacing). A number (a string is refused); larger
+        than the cloud's bounding-box diagonal, a :class:`ScaleWarning`.
     neighbors : int
         Instead of a radius: each point's radius reaches its ``neighbors``-th nearest point.
-        Give exactly one of ``radius`` and ``neighbors``.
+        Give exactly one of ``radius`` and ``neighbors``. Not less than the number of points:
+        a :class:`ScaleWarning`, and capped at the number of points.
     threads : int or None
-        None: all cores; 1: sequential; n: n threads. Same results whatever the value.
+        None: all cores; 1: sequential; n: n threads (capped to the cores). Same results
+        whatever the value.
     progress : callable or None
         ``progress(fraction) -> bool | None``, called on the calling thread at least every 1%
-        of the points; returning False cancels and raises :class:`Cancelled`.
+        of the points; returning ``False`` cancels and raises :class:`Cancelled` (only
+        ``False``: ``None``, ``0`` or any other value continues).
     **options
         Every option of the C++ function (ValueError for unknown names and for options the
         method does not take):
@@ -342,17 +442,19 @@ def estimate_curvatures(
         (N,) uint8 (values of :class:`Status`). NaN where a point is invalid or the
         estimator does not provide a quantity.
     """
-    if not isinstance(method, str) or method not in METHODS:
-        raise ValueError(f"unknown method {method!r}; methods: {', '.join(METHODS)}")
+    method = _method(method)
     allowed = set(_COMMON_OPTIONS) | set(_METHOD_OPTIONS[method])
     if method == "vcm":
         allowed.discard("tile")
     opts, tile, weights = _options(f"method '{method}'", allowed, options)
     radius, neighbors = _scale(radius, neighbors)
-    _check_progress(progress)
+    progress = _progress(progress)
+    points = _array(points, "points")
+    if tile is None:  # a tile's arrays are a part of the cloud
+        radius, neighbors = _whole_cloud_scale(points, radius, neighbors)
     return _core.estimate_curvatures(
         method,
-        _array(points, "points"),
+        points,
         _array(normals, "normals"),
         radius,
         neighbors,
@@ -394,9 +496,12 @@ def estimate_sphere_features(
     allowed = {"weight_kernel", "sample_weights", "min_neighbors", "accept_unnormalized_normals", "tile"}
     opts, tile, weights = _options("estimate_sphere_features", allowed, options)
     radius, neighbors = _scale(radius, neighbors)
-    _check_progress(progress)
+    progress = _progress(progress)
+    points = _array(points, "points")
+    if tile is None:
+        radius, neighbors = _whole_cloud_scale(points, radius, neighbors)
     return _core.sphere_features(
-        _array(points, "points"),
+        points,
         _array(normals, "normals"),
         radius,
         neighbors,
@@ -433,9 +538,11 @@ def estimate_tangent_voronoi_areas(
     ``progress``); returns a float64 array of shape (N,).
     """
     radius, neighbors = _scale(radius, neighbors)
-    _check_progress(progress)
+    progress = _progress(progress)
+    points = _array(points, "points")
+    radius, neighbors = _whole_cloud_scale(points, radius, neighbors)
     return _core.tangent_voronoi_areas(
-        _array(points, "points"),
+        points,
         _array(normals, "normals"),
         radius,
         neighbors,
@@ -457,13 +564,15 @@ def estimate_multiscale_sphere_features(
     """
     allowed = {"weight_kernel", "min_neighbors", "accept_unnormalized_normals"}
     opts, _, _ = _options("estimate_multiscale_sphere_features", allowed, options)
-    try:
-        radii = [float(r) for r in radii]
-    except (TypeError, ValueError):
-        raise ValueError("radii must be a sequence of numbers") from None
-    _check_progress(progress)
+    if isinstance(radii, (str, bytes)) or not hasattr(radii, "__iter__"):
+        raise ArgumentTypeError(f"radii must be a sequence of numbers, got {_type_hint(radii)}")
+    radii = [_real("radii[{}]".format(i), r) for i, r in enumerate(radii)]
+    progress = _progress(progress)
+    points = _array(points, "points")
+    if radii:
+        _whole_cloud_scale(points, max(radii), None, "the largest radius: ")
     return _core.multiscale_sphere_features(
-        _array(points, "points"), _array(normals, "normals"), radii, _threads(threads), progress, opts
+        points, _array(normals, "normals"), radii, _threads(threads), progress, opts
     )
 
 
@@ -484,7 +593,7 @@ class AlgebraicPointSetSurface:
         self._surface = _core._Surface(
             _array(points, "points"),
             _array(normals, "normals"),
-            float(radius),
+            _real("radius", radius),
             _choice("weight_kernel", weight_kernel, _WEIGHT_KERNELS),
         )
 
@@ -505,7 +614,7 @@ class AlgebraicPointSetSurface:
 
     @tolerance.setter
     def tolerance(self, value):
-        self._surface.tolerance = float(value)
+        self._surface.tolerance = _real("tolerance", value)
 
     @property
     def max_iterations(self):
@@ -550,13 +659,15 @@ def apss_smooth_point_set(
     spheres' normals with ``update_normals=True``, else the input normals), ``status`` (the
     last iteration's, values of :class:`Status`).
     """
-    _check_progress(progress)
+    progress = _progress(progress)
     opts = _core._Options()
     opts.weight_kernel = _choice("weight_kernel", weight_kernel, _WEIGHT_KERNELS)
+    points = _array(points, "points")
+    radius, _ = _whole_cloud_scale(points, _real("radius", radius), None)
     return _core.smooth_point_set(
-        _array(points, "points"),
+        points,
         _array(normals, "normals"),
-        float(radius),
+        radius,
         _int("iterations", iterations, 0),
         _bool("update_normals", update_normals),
         _threads(threads),
@@ -597,6 +708,7 @@ def estimate_normals(points, *, neighbors=None, radius=None, orientation="mst", 
         neighbors = 40 if fit_code == 1 else 18
     radius, neighbors = _scale(radius, neighbors)
     if isinstance(orientation, str):
+        orientation = orientation.lower()
         if orientation == "mst":
             kind, target = 0, (0.0, 0.0, 1.0)
         elif orientation == "auto":
@@ -608,15 +720,18 @@ def estimate_normals(points, *, neighbors=None, radius=None, orientation="mst", 
     else:
         try:
             what, target = orientation
-            target = tuple(float(v) for v in target)
+            target = tuple(_real("orientation vector", v) for v in target)
         except (TypeError, ValueError):
             raise ValueError(f"orientation: expected ('along', (x, y, z)) or ('towards', (x, y, z)), got {orientation!r}") from None
+        what = what.lower() if isinstance(what, str) else what
         if what not in ("along", "towards") or len(target) != 3:
             raise ValueError(f"orientation: expected ('along', (x, y, z)) or ('towards', (x, y, z)), got {orientation!r}")
         kind = 1 if what == "along" else 2
-    _check_progress(progress)
+    progress = _progress(progress)
+    points = _array(points, "points")
+    radius, neighbors = _whole_cloud_scale(points, radius, neighbors)
     normals, _without = _core.estimate_normals(
-        _array(points, "points"), radius, neighbors, kind, [float(v) for v in target], fit_code, _threads(threads), progress
+        points, radius, neighbors, kind, [float(v) for v in target], fit_code, _threads(threads), progress
     )
     return normals
 
@@ -636,7 +751,7 @@ class TileGrid:
             self.index = index
             self.core_min = tuple(core_min)
             self.core_max = tuple(core_max)
-            self.halo = float(halo)
+            self.halo = _real("halo", halo)
 
         def __repr__(self):
             return f"TileGrid.Tile({self.index}, {self.core_min}, {self.core_max}, halo={self.halo})"
@@ -652,10 +767,10 @@ class TileGrid:
 
     def __init__(self, box_min, box_max, tile_side=None, *, counts=None):
         self._grid = _core._TileGrid(
-            [float(v) for v in box_min],
-            [float(v) for v in box_max],
-            None if tile_side is None else float(tile_side),
-            None if counts is None else [int(c) for c in counts],
+            [_real("box_min", v) for v in box_min],
+            [_real("box_max", v) for v in box_max],
+            None if tile_side is None else _real("tile_side", tile_side),
+            None if counts is None else [_int("counts", c, 1) for c in counts],
         )
 
     def __len__(self):
@@ -679,4 +794,4 @@ class TileGrid:
     def tiles_near(self, points, halo):
         """Every (point, tile) pair with the point at distance ``<= halo`` from the tile's
         core: two int64 arrays ``(point_indices, tile_indices)``, sorted by tile, then point."""
-        return self._grid.tiles_near(_array(points, "points"), float(halo))
+        return self._grid.tiles_near(_array(points, "points"), _real("halo", halo))

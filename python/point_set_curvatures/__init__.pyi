@@ -6,7 +6,8 @@ import numpy as np
 import numpy.typing as npt
 
 ArrayN3 = npt.ArrayLike
-Progress = Optional[Callable[[float], Optional[bool]]]
+# returns False to cancel; any other value (True, None, 0, ...) continues
+Progress = Optional[Callable[[float], object]]
 Vec3 = Sequence[float]
 Result = Dict[str, np.ndarray]
 Method = Literal["aso", "apss", "barycenter", "pca_plane", "pss", "jet", "wavejet", "vcm"]
@@ -15,8 +16,13 @@ SampleWeights = Union[Literal["uniform", "tangent_voronoi_area"], npt.ArrayLike]
 TileSpec = Union["TileGrid.Tile", Tuple[Vec3, Vec3, float]]
 Orientation = Union[str, Tuple[Literal["along", "towards"], Vec3]]
 
+# the names in lower case; any case is accepted at run time
 METHODS: Tuple[str, ...]
 
+__version__: str
+
+class ArgumentTypeError(TypeError, ValueError): ...
+class ScaleWarning(UserWarning): ...
 class Cancelled(RuntimeError): ...
 
 class HaloTooSmall(RuntimeError):

@@ -18,22 +18,36 @@ neighbours are found: a tile whose halo is too small fails with
 :func:`estimate_curvatures_file` takes PLY / .npy files that the workers read themselves, tile
 by tile, writing their own points' rows of a .npy output (for clouds larger than the client).
 
+Both survive the loss of workers: a task whose worker dies is run again elsewhere (dask's
+``retries``), and with :func:`estimate_curvatures` a tile whose scattered rows were lost with
+their worker (scattered data cannot be recomputed: dask cancels the tasks that need it) is
+scattered again from the client's arrays and resubmitted, up to ``retries`` times per tile.
+The results are the same bytes as without the fault.
+
 Any ``distributed.Client`` works: a ``LocalCluster`` on one machine, or a scheduler started
 across machines with ``dask-scheduler`` and ``dask-worker tcp://SCHEDULER:8786`` (every
 worker must be able to import ``point_set_curvatures``).
 """
 
+import asyncio
 import contextlib
+import logging
 import math
+import numbers
 import os
 import time
 import uuid
+from concurrent.futures import CancelledError
 
 import numpy as np
 
-from . import HaloTooSmall, Status, TileGrid, _weights, estimate_curvatures as _estimate_curvatures
+from . import HaloTooSmall, Status, TileGrid, _int, _method, _real, _weights
+from . import _whole_cloud_box, _whole_cloud_scale
+from . import estimate_curvatures as _estimate_curvatures
 
 __all__ = ["estimate_curvatures", "estimate_curvatures_file", "read_result", "estimate_tile", "RESULT_DTYPE"]
+
+_log = logging.getLogger(__name__)
 
 _FIELDS3 = ("normal", "min_direction", "max_direction")
 _FIELDS1 = ("k_min", "k_max", "mean", "gaussian", "normal_coherence")
@@ -44,6 +58,24 @@ def _weight_array(options):
     """The option sample_weights if it is per-point weights (not None, not a name)."""
     weights = options.get("sample_weights")
     return None if weights is None or isinstance(weights, str) else weights
+
+
+def _check_tile(radius):
+    """A tile for checking the arguments on no point: its halo the two radii a tile needs (the
+    estimators refuse a smaller one, whatever the points)."""
+    real = isinstance(radius, numbers.Real) and not isinstance(radius, (bool, np.bool_))
+    halo = 2.0 * float(radius) if real and 0 < radius < math.inf else 1.0
+    return ((0.0,) * 3, (1.0,) * 3, halo)
+
+
+def _next_halo(index, halo, required, lo, hi):
+    """The halo of tile `index` resubmitted after HaloTooSmall (at least twice the last one);
+    RuntimeError if the last one already held the whole cloud (whose finite points span the box
+    [lo, hi]): a larger halo would change nothing."""
+    if halo > float(np.linalg.norm(np.asarray(hi, dtype=float) - np.asarray(lo, dtype=float))):
+        raise RuntimeError(f"point_set_curvatures.dask: tile {index} asks for a halo of {required:g} although its "
+                           f"halo {halo:g} holds the whole cloud")
+    return max(float(required), 2.0 * halo)
 
 
 def _first_halo(radius, neighbors, initial_halo, lo, hi, finite_count):
@@ -112,7 +144,8 @@ def estimate_curvatures(client, points, normals, *, method="aso", radius=None, n
     threads : int or None
         Threads of each task (default 1: the workers' threads run the tasks in parallel).
     retries : int
-        Retries of a task whose worker fails (dask's ``retries``).
+        Retries of a task whose worker fails (dask's ``retries``); also the number of times a
+        tile whose scattered rows were lost with a worker is scattered and submitted again.
     initial_halo : float or None
         By neighbour count, the first halo tried (default: a guess from the density); tiles
         that need more are resubmitted with the halo they ask for.
@@ -121,6 +154,10 @@ def estimate_curvatures(client, points, normals, *, method="aso", radius=None, n
         raise ValueError("option 'tile' is chosen by point_set_curvatures.dask")
     if (radius is None) == (neighbors is None):
         raise ValueError("give exactly one of radius and neighbors")
+    method = _method(method)
+    retries = _int("retries", retries, 0)
+    tile_size = None if tile_size is None else _real("tile_size", tile_size)
+    initial_halo = None if initial_halo is None else _real("initial_halo", initial_halo)
     points = np.asarray(points)
     normals = np.asarray(normals)
     if points.ndim != 2 or points.shape[1:] != (3,) or normals.shape != points.shape:
@@ -136,6 +173,13 @@ def estimate_curvatures(client, points, normals, *, method="aso", radius=None, n
         # nothing to distribute: validate the arguments as the single-process run does
         return _estimate_curvatures(points, normals, method=method, radius=radius, neighbors=neighbors,
                                     threads=threads, **options)
+    # the checks of the single-process run (a tile sees only a part of the cloud), before any
+    # data travels: the arguments (on no point), then the scale against the whole cloud
+    _estimate_curvatures(np.zeros((0, 3)), np.zeros((0, 3)), method=method, radius=radius, neighbors=neighbors,
+                         threads=threads, tile=_check_tile(radius),
+                         **{k: v for k, v in options.items() if k != "sample_weights" or isinstance(v, str)})
+    if points.dtype.kind == "f":
+        radius, neighbors = _whole_cloud_scale(points, radius, neighbors)
     lo, hi = points[finite].min(axis=0), points[finite].max(axis=0)
     if tile_size is None:
         workers = max(1, sum(client.nthreads().values()))
@@ -160,34 +204,61 @@ def estimate_curvatures(client, points, normals, *, method="aso", radius=None, n
             raise ValueError(f"option 'sample_weights': the weight of point {bad[0]} is {weights[bad[0]]}, "
                              "weights must be finite and non-negative")
     kwargs = dict(method=method, radius=radius, neighbors=neighbors, threads=threads, **options)
+    token = uuid.uuid4().hex[:8]
 
-    def submit(index, h):
+    def scatter(data):
+        """Scatters `data` (a list of arrays), again if the worker chosen dies meanwhile."""
+        for attempt in range(retries + 1):
+            try:
+                return client.scatter(data, hash=False)  # fresh keys: never those of lost or released data
+            except (OSError, TimeoutError) as e:  # CommClosedError is an OSError
+                error = e
+                if attempt < retries:
+                    _log.warning("scatter failed (%s: a worker lost?), scattering again (attempt %d of %d)",
+                                 type(e).__name__, attempt + 1, retries)
+        raise error
+
+    def submit(index, h, attempt=0):
         tile = grid.tile(index, h)
         sel = np.nonzero(tile.halo_mask(points))[0]
-        p, q = client.scatter([np.ascontiguousarray(points[sel]), np.ascontiguousarray(normals[sel])])
-        extra = {}
+        data = [np.ascontiguousarray(points[sel]), np.ascontiguousarray(normals[sel])]
         if weights is not None:
-            extra["sample_weights"] = client.scatter(np.ascontiguousarray(weights[sel]))
-        future = client.submit(estimate_tile, p, q, tile.core_min, tile.core_max, h, pure=False,
-                               retries=retries, **kwargs, **extra)
-        return future, sel
+            data.append(np.ascontiguousarray(weights[sel]))
+        data = scatter(data)
+        extra = {} if weights is None else {"sample_weights": data[2]}
+        future = client.submit(estimate_tile, data[0], data[1], tile.core_min, tile.core_max, h,
+                               key=f"psc-tile-{token}-{index}-{h!r}-{attempt}", retries=retries, **kwargs,
+                               **extra)
+        pending[future] = (index, sel, h, attempt)
+        done.add(future)
 
     from distributed import as_completed
 
     pending = {}
-    for i in range(len(grid)):
-        if counts[i]:
-            future, sel = submit(i, halo)
-            pending[future] = (i, sel, halo)
+    done = as_completed()
     with _cancel_on_error(client, pending):
-        done = as_completed(list(pending))
+        for i in range(len(grid)):
+            if counts[i]:
+                submit(i, halo)
         for future in done:
-            i, sel, h = pending.pop(future)
-            result = future.result()
+            i, sel, h, attempt = pending.pop(future)
+            try:
+                if future.status in ("cancelled", "lost"):
+                    raise CancelledError(future.key)
+                result = future.result()
+            except (CancelledError, asyncio.CancelledError):
+                # its scattered rows were lost with a worker before it ran, or its result after
+                # (they cannot be recomputed): scattered again from the client's arrays
+                future.release()
+                if attempt >= retries:
+                    raise
+                _log.warning("tile %d was cancelled (its data lost with a worker?): scattered and submitted "
+                             "again (attempt %d of %d)", i, attempt + 1, retries)
+                submit(i, h, attempt + 1)
+                continue
+            future.release()
             if isinstance(result, tuple) and len(result) == 2 and isinstance(result[0], str):
-                new, sel = submit(i, max(result[1], 2 * h))
-                pending[new] = (i, sel, max(result[1], 2 * h))
-                done.add(new)
+                submit(i, _next_halo(i, h, result[1], lo, hi), attempt)
                 continue
             own, r = result
             rows = sel[own]
@@ -557,13 +628,15 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
                          "clouds in files; use 'uniform' or 'tangent_voronoi_area'")
     if (radius is None) == (neighbors is None):
         raise ValueError("give exactly one of radius and neighbors")
-    block_rows = int(block_rows)
-    if block_rows < 1:
-        raise ValueError("block_rows must be positive")
+    method = _method(method)
+    retries = _int("retries", retries, 0)
+    block_rows = _int("block_rows", block_rows, 1)
+    tile_size = None if tile_size is None else _real("tile_size", tile_size)
+    initial_halo = None if initial_halo is None else _real("initial_halo", initial_halo)
     t_start = time.perf_counter()
     kwargs = dict(method=method, radius=radius, neighbors=neighbors, threads=threads, **options)
     # the arguments checked here, not by every task (dask would retry a failing task)
-    _estimate_curvatures(np.zeros((0, 3)), np.zeros((0, 3)), tile=((0.0,) * 3, (1.0,) * 3, 1.0), **kwargs)
+    _estimate_curvatures(np.zeros((0, 3)), np.zeros((0, 3)), tile=_check_tile(radius), **kwargs)
     sources = _open_sources(input_path)
     blocks = _blocks(sources, block_rows)
     n = sum(s[3] for s in sources)
@@ -593,6 +666,8 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
         report["seconds"] = {"scan": t_scan - t_start, "count": 0.0, "tiles": 0.0, "total": t}
         return report
     lo, hi = block_lo.min(axis=0), block_hi.max(axis=0)
+    radius, neighbors = _whole_cloud_box(finite, lo, hi, radius, neighbors)
+    kwargs.update(radius=radius, neighbors=neighbors)
     if tile_size is None:
         tile_size = _tile_side(lo, hi, max(4 * nthreads, math.ceil(finite / 500_000)))
     grid_args = (tuple(lo), tuple(hi), float(tile_size))
@@ -632,7 +707,7 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
             result = future.result()
             future.release()
             if isinstance(result, tuple):
-                h = max(result[1], 2 * h)
+                h = _next_halo(i, h, result[1], lo, hi)
                 new = submit(i, h)
                 pending[new] = (i, h)
                 done.add(new)

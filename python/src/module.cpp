@@ -17,9 +17,11 @@
 #include <pybind11/stl.h>
 
 #include <tbb/blocked_range.h>
+#include <tbb/info.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -164,6 +166,17 @@ Tile_arg read_tile(const py::object& tile)
 
 // ---- Running: worker thread, progress on the calling thread, threads ----
 
+// The thread count of a run: 0 (all cores) as it is, more than the cores TBB may use capped
+// to them (the results do not depend on it; an arena larger than that would only make TBB
+// print a warning on stderr). Negative values are refused.
+long long checked_threads(long long threads)
+{
+  if(threads < 0)
+    throw py::value_error("threads must be None or at least 1, got " + std::to_string(threads));
+  const long long cores = std::max(1, tbb::info::default_concurrency());
+  return std::min(threads, cores);
+}
+
 // Runs f(parallel, callback) in a worker thread while the calling thread, with the GIL
 // released, waits for progress reports and calls `progress(fraction)` with the GIL: the
 // worker waits for its answer, so that False stops the run at that report exactly as the
@@ -172,8 +185,7 @@ Tile_arg read_tile(const py::object& tile)
 template <class F>
 void run(const F& f, const py::object& progress, long long threads)
 {
-  if(threads < 0)
-    throw py::value_error("threads must be None or at least 1, got " + std::to_string(threads));
+  threads = checked_threads(threads);
   struct State
   {
     std::mutex m;
@@ -656,8 +668,7 @@ private:
   template <class F>
   static void for_all(std::size_t n, long long threads, const F& f)
   {
-    if(threads < 0)
-      throw py::value_error("threads must be None or at least 1, got " + std::to_string(threads));
+    threads = checked_threads(threads);
     py::gil_scoped_release release;
     auto parallel = [&] {
       tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n), [&](const tbb::blocked_range<std::size_t>& r) {
@@ -758,6 +769,9 @@ PYBIND11_MODULE(_core, m)
 {
   using namespace psc_py;
   m.doc() = "Compiled part of point_set_curvatures (use the functions of the package, not these).";
+  // The CMake project's version (CMakeLists.txt), which setup.py gives the pip package too.
+  m.attr("__version__") = PSC_PYTHON_VERSION;
+  m.attr("MAX_THREADS") = std::max(1, tbb::info::default_concurrency());
 
   py::register_exception<Cancelled_error>(m, "Cancelled", PyExc_RuntimeError);
   // HaloTooSmall carries required_halo; the type lives as long as the interpreter.

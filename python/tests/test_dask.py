@@ -3,6 +3,7 @@
 """point_set_curvatures.dask on a LocalCluster of 2 worker processes: bitwise equal to the
 single-process run."""
 
+import contextlib
 import time
 
 import numpy as np
@@ -74,7 +75,7 @@ def test_dask_error_cancels_pending_tiles(client, cloud):
         psc_dask.estimate_curvatures(client, points, normals, radius=0.03, tile_size=0.2, no_such_option=1)
 
     def tiles_held(dask_scheduler):
-        return sum(1 for key in dask_scheduler.tasks if "estimate_tile" in str(key))
+        return sum(1 for key in dask_scheduler.tasks if str(key).startswith("psc-tile"))
 
     for _ in range(100):
         held = client.run_on_scheduler(tiles_held)
@@ -194,38 +195,125 @@ def test_file_1m_bitwise(client, big_files):
 class KillOnce(distributed.WorkerPlugin):
     """Kills its worker process (os._exit) as the first tile task starts executing anywhere in
     the cluster, once: a marker file records it. At once rather than after a delay: a tile of
-    the test takes about 0.1 s, and a kill after the task had finished would test no retry."""
+    the test takes about 0.1 s, and a kill after the task had finished would test no retry.
+    The tile tasks of both entry points have keys psc-tile-..."""
 
     def __init__(self, marker):
         self.marker = marker
 
     def transition(self, key, start, finish, **kwargs):
         if finish == "executing" and str(key).startswith("psc-tile") and not os.path.exists(self.marker):
-            with open(self.marker, "w") as f:
-                f.write(f"{os.getpid()} {key}\n")
+            try:  # created atomically: when both workers start a tile at once, only one dies
+                fd = os.open(self.marker, os.O_WRONLY | os.O_CREAT | os.O_EXCL)
+            except FileExistsError:
+                return
+            os.write(fd, f"{os.getpid()} {key}\n".encode())
+            os.close(fd)
             os._exit(1)  # the task is executing: the scheduler must run it again elsewhere
 
 
-def test_file_worker_killed(client, big_files):
+def test_file_worker_killed(big_files):
     paths, single, d = big_files
     marker = d / "killed"
-    import cloudpickle
-
-    cloudpickle.register_pickle_by_value(sys.modules[__name__])  # workers need not import this file
-    client.register_worker_plugin(KillOnce(str(marker)), name="kill-once")
-    try:
+    with killing_cluster(marker) as client:
         pids_before = set(client.run(os.getpid).values())
         report = psc_dask.estimate_curvatures_file(client, paths, d / "out_killed.npy", radius=R_BIG,
                                                    tile_size=0.7)
-    finally:
-        client.unregister_worker_plugin("kill-once")
-        cloudpickle.unregister_pickle_by_value(sys.modules[__name__])
     assert marker.exists()
     killed_pid = int(marker.read_text().split()[0])
     assert killed_pid in pids_before
     assert killed_pid not in {t["pid"] for t in report["tile_reports"]}  # its task ran again elsewhere
     check_report(report, N_BIG - 2)  # every point exactly once (also checked inside)
     assert_same(single, read_output(d / "out_killed.npy"))
+
+
+@contextlib.contextmanager
+def killing_cluster(marker):
+    """A client of a LocalCluster of its own (2 worker processes) whose workers carry KillOnce
+    (the nanny restarts the killed worker): a cluster per fault, closed after, so that a worker
+    still restarting cannot disturb the next test."""
+    import cloudpickle
+
+    cloudpickle.register_pickle_by_value(sys.modules[__name__])  # workers need not import this file
+    cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                       dashboard_address=":0", silence_logs=40)  # 8787 may be taken
+    try:
+        with distributed.Client(cluster) as client:
+            client.register_worker_plugin(KillOnce(str(marker)), name="kill-once")
+            yield client
+    finally:
+        cluster.close()
+        cloudpickle.unregister_pickle_by_value(sys.modules[__name__])
+
+
+@pytest.mark.parametrize("run", ["radius", "count", "weights"])
+def test_in_memory_worker_killed(run, cloud, tmp_path, caplog):
+    """The in-memory entry point with a worker killed as a tile starts: the tiles whose scattered
+    rows died with it (dask cancels them: their data cannot be recomputed) are scattered again and
+    resubmitted; the result is bitwise the single-process run. Both scales (by count, tiles also
+    resubmitted with a larger halo), and per-point sample weights (scattered too)."""
+    points, normals = cloud
+    kwargs, dask_kwargs = {
+        "radius": (dict(radius=0.03), {}),
+        "count": (dict(neighbors=30, aso_variant="paper"), dict(initial_halo=1e-3)),
+        "weights": (dict(radius=0.03, sample_weights=np.random.default_rng(3).random(len(points)) + 0.5), {}),
+    }[run]
+    single = psc.estimate_curvatures(points, normals, **kwargs)
+    marker = tmp_path / "killed"
+    with killing_cluster(marker) as client:
+        pids_before = set(client.run(os.getpid).values())
+        result = psc_dask.estimate_curvatures(client, points, normals, tile_size=0.5, **kwargs, **dask_kwargs)
+    assert marker.exists()
+    assert int(marker.read_text().split()[0]) in pids_before
+    assert_same(single, result)
+    # the tiles of the dead worker were scattered again (logged by the module)
+    logged = [r.getMessage() for r in caplog.records if r.name == "point_set_curvatures.dask"]
+    assert any("submitted again" in m for m in logged), logged
+
+
+def test_in_memory_lost_rows_without_retries(cloud, tmp_path):
+    """retries=0: the tile whose rows were lost is not resubmitted, the run fails (dask's
+    CancelledError) rather than returning a partial result."""
+    points, normals = cloud
+    with killing_cluster(tmp_path / "killed") as client:
+        with pytest.raises(Exception) as e:
+            psc_dask.estimate_curvatures(client, points, normals, radius=0.03, tile_size=0.5, retries=0)
+    assert (tmp_path / "killed").exists()
+    # the lost rows (CancelledError), or a scatter to the dying worker (CommClosedError, an OSError)
+    assert type(e.value).__name__ == "CancelledError" or isinstance(e.value, OSError), repr(e.value)
+
+
+def test_dask_arguments(client, cloud, tmp_path):
+    points, normals = cloud
+    p, n = points[:20000], normals[:20000]
+    with pytest.raises(TypeError, match="radius must be a number"):
+        psc_dask.estimate_curvatures(client, p, n, radius="0.1")
+    with pytest.raises(TypeError, match="tile_size must be a number"):
+        psc_dask.estimate_curvatures(client, p, n, radius=0.1, tile_size="1")
+    with pytest.raises(TypeError, match="retries"):
+        psc_dask.estimate_curvatures(client, p, n, radius=0.1, retries=1.5)
+    assert_same(psc.estimate_curvatures(p, n, method="pss", radius=0.1),
+                psc_dask.estimate_curvatures(client, p, n, method="PSS", radius=0.1))
+    with pytest.warns(psc.ScaleWarning, match="whole cloud"):
+        psc_dask.estimate_curvatures(client, p[:500], n[:500], radius=1e300)
+    # point 17 is not finite: 499 points can be neighbours (a cap at 500 made every tile ask for
+    # a larger halo, forever)
+    with pytest.warns(psc.ScaleWarning, match=r"\(499\): every neighbourhood is the whole cloud \(capped at 499\)"):
+        r = psc_dask.estimate_curvatures(client, p[:500], n[:500], neighbors=10**12, aso_variant="paper")
+    with pytest.warns(psc.ScaleWarning):
+        assert_same(psc.estimate_curvatures(p[:500], n[:500], neighbors=10**12, aso_variant="paper"), r)
+    # the file variant with a radius above 0.5 (its check of the arguments on no point used a halo
+    # of 1, which the estimators refuse for radii above half of it), and method names in any case
+    q, m = fibonacci_sphere(3000, radius=2.0)
+    np.save(tmp_path / "c.npy", np.hstack([q, m]))
+    psc_dask.estimate_curvatures_file(client, tmp_path / "c.npy", tmp_path / "o.npy", radius=0.6, method="ASO")
+    assert_same(psc.estimate_curvatures(q, m, radius=0.6), read_output(tmp_path / "o.npy"))
+    r32 = np.float32(0.6)  # any real number
+    assert_same(psc.estimate_curvatures(q, m, radius=r32), psc_dask.estimate_curvatures(client, q, m, radius=r32))
+    with pytest.warns(psc.ScaleWarning, match="whole cloud"):
+        psc_dask.estimate_curvatures_file(client, tmp_path / "c.npy", tmp_path / "o.npy", radius=1e300)
+    with pytest.raises(TypeError, match="block_rows"):
+        psc_dask.estimate_curvatures_file(client, tmp_path / "c.npy", tmp_path / "o.npy", radius=0.6, block_rows="9")
 
 
 def test_file_float32_ply_and_count(client, tmp_path):
