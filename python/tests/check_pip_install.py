@@ -35,9 +35,9 @@ def run(args, **kwargs):
 
 def main():
     source, build = (os.path.abspath(a) for a in sys.argv[1:3])
-    for module in ("pip", "venv"):
+    for module in ("pip", "venv", "ensurepip", "wheel"):
         if subprocess.run([sys.executable, "-c", f"import {module}"], capture_output=True).returncode != 0:
-            print(f"skipped: {sys.executable} has no {module} (Debian: apt-get install python3-pip python3-venv)")
+            print(f"skipped: {sys.executable} has no {module} (Debian: apt-get install python3-pip python3-venv python3-wheel)")
             return 77
     with open(os.path.join(source, "CMakeLists.txt"), encoding="utf-8") as f:
         version = re.search(r"project\(\s*Point_set_curvatures\s+VERSION\s+([0-9.]+)", f.read()).group(1)
