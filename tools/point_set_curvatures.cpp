@@ -349,6 +349,22 @@ public:
     };
   }
 
+  // Prints `line` at once above the bar, which goes on below it; false (nothing printed)
+  // when no bar is drawn (stderr not a terminal, --quiet): the warnings then wait for the end
+  // of the run, so that a failure stays one line.
+  bool note(const std::string& line)
+  {
+    if(!m_enabled)
+      return false;
+    std::lock_guard<std::mutex> lock(m_mutex);
+    if(m_drawn)
+      std::fputc('\n', stderr);
+    std::fprintf(stderr, "%s\n", line.c_str());
+    m_drawn = false;
+    draw_locked(true);
+    return true;
+  }
+
   // Ends the current phase's line.
   void finish()
   {
@@ -1134,6 +1150,21 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
   tiling.temporary_prefix = temporary_prefix(o.output);
   tiling.phase = [&c](const std::string& name) { return c.progress.phase(name); };
   tiling.interrupted = []() { return interrupted != 0; };
+  // a limit making many tiles is said at once on a terminal (the run may be long), else with
+  // the other warnings at the end
+  const auto slow_tiling = [&](const char* makes, std::size_t tiles, std::size_t few_grid, double few_points) {
+    return cat("--memory-limit ", size_text(memory_limit), makes, tiles, " tiles, each read again from the input "
+               "with its halo: slow; --memory-limit ",
+               memory_argument(few_points * bytes_per_point(input.cloud.attributes.size())), " gives at most ",
+               plural(few_grid, "tile"));
+  };
+  bool slow_tiling_said = false;
+  tiling.grid_chosen = [&](std::size_t tiles, std::size_t few_grid, double few_points) {
+    if(tiles > many_tiles)
+      slow_tiling_said =
+        c.progress.note(cat(program, ": warning: ", slow_tiling(" makes up to ", tiles, few_grid, few_points),
+                            " (Ctrl-C to stop)"));
+  };
   // Without normals, a tile's halo H is shared by two needs: the curvatures of its own points
   // read the points within the curvature halo h of its core (guessed from the density by
   // count, then grown to what the estimator asks for), and their normals are those of the
@@ -1259,11 +1290,8 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
                                "such as a single scan line: try a larger --normal-neighbors; non-finite "
                                "coordinates) and are invalid_normal"));
   }
-  if(report.tiles > many_tiles)
-    c.warnings.push_back(cat("--memory-limit ", size_text(memory_limit), " makes ", report.tiles, " tiles, each read "
-                             "again from the input with its halo: slow (", s3(seconds_since(c.start)), " s here); --memory-limit ",
-                             memory_argument(report.few_tiles_points * bytes_per_point(input.cloud.attributes.size())),
-                             " gives at most ", plural(report.few_tiles_grid, "tile")));
+  if(report.tiles > many_tiles && !slow_tiling_said)
+    c.warnings.push_back(slow_tiling(" makes ", report.tiles, report.few_tiles_grid, report.few_tiles_points));
   print_report(c, scale, n,
                with_normals ? std::string() : cat(normal_fit_description(o), ", oriented ", orientation.text), summary,
                cat("count ", s3(count_seconds), ", density ", s3(report.density_seconds), ", tile reads ",

@@ -401,6 +401,19 @@ Tiled_report run_tiled(const std::string& path, const Read_options& options, con
       throw Cancelled();
   }
 
+  if(tiling.grid_chosen)
+  {
+    // the tiles with own points (as counted by the loop below)
+    std::size_t tiles = 0;
+    for(std::size_t t = 0; t < grid.size(); ++t)
+    {
+      double b[3], e[3];
+      tile_box(grid, t, lo, hi, 0, b, e);
+      tiles += t == 0 || density.at_most(b, e) > 0;
+    }
+    tiling.grid_chosen(tiles, report.few_tiles_grid, report.few_tiles_points);
+  }
+
   // 2. The tiles, each read from the file with its halo, estimated, and its own rows written
   // to a temporary file. Non-finite points are nobody's own: the first tile writes their rows.
   std::vector<std::unique_ptr<Row_file>> files;

@@ -87,6 +87,9 @@ struct Tiling
   std::function<Progress(const std::string&)> phase;
   // called after every tile; true to cancel (Cancelled is thrown)
   std::function<bool()> interrupted;
+  // called once the tile grid is chosen, before the tiles: its size, and the finest grid of
+  // at most Tiled_report::few_tiles tiles (its size, the most points a tile of it reads)
+  std::function<void(std::size_t tiles, std::size_t few_tiles_grid, double few_tiles_points)> grid_chosen;
 };
 
 // Estimates the points of a tile, reporting to `progress`, and returns the source of their
