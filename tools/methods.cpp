@@ -6,7 +6,7 @@
 
 #include "methods.h"
 
-#include <CGAL/Point_set_curvatures/internal/local_estimate.h>
+#include <CGAL/Point_set_curvatures/parameters.h>
 #include <CGAL/estimate_apss_curvatures.h>
 #include <CGAL/estimate_aso_curvatures.h>
 // The baseline estimators, when the package has them (same signatures as the ones above).
@@ -45,7 +45,7 @@ namespace PSC = CGAL::Point_set_curvatures;
          [](const Point_set& points, const Scale& scale, const Progress& callback,             \
             const PSC::Tile& tile) -> Estimates {                                               \
            const auto np = PSC::parameters::min_neighbors(                                      \
-             scale.min_neighbors ? scale.min_neighbors : PSC::internal::default_min_neighbors::NAME, \
+             scale.min_neighbors ? scale.min_neighbors : PSC::default_min_neighbors::NAME, \
              PSC::parameters::aso_variant(scale.variant, PSC::parameters::position_fit_blend(   \
                scale.position_fit_blend, PSC::parameters::tile(tile, CGAL::parameters::callback(callback))))); \
            if(scale.by_count)                                                                   \
@@ -53,7 +53,7 @@ namespace PSC = CGAL::Point_set_curvatures;
                points, PSC::parameters::neighbor_count(scale.neighbors, np));                   \
            return CGAL::estimate_##NAME##_curvatures<CGAL::Parallel_tag>(points, scale.radius, np); \
          },                                                                                     \
-         PSC::internal::default_min_neighbors::NAME, GOOD}
+         PSC::default_min_neighbors::NAME, GOOD}
 
 const std::vector<Method>& methods()
 {

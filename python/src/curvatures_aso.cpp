@@ -23,7 +23,7 @@ std::vector<Estimate> estimate_aso(const Cloud& cloud, const Scale& s, const Opt
     o.sample_weights >= 0 ? CGAL::Sample_weights(o.sample_weights) : preset.sample_weights;
   const bool robust = o.robust_orientation >= 0 ? o.robust_orientation != 0 : preset.robust_orientation;
   const bool blend = o.normal_field_blend >= 0 ? o.normal_field_blend != 0 : preset.normal_field_blend;
-  const auto np = common_parameters(s, o, cb, CGAL::Point_set_curvatures::internal::default_min_neighbors::aso,
+  const auto np = common_parameters(s, o, cb, CGAL::Point_set_curvatures::default_min_neighbors::aso,
     [&](const auto& base) {
       return P::aso_variant(variant,
              P::weight_kernel(kernel,

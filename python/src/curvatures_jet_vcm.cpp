@@ -16,7 +16,7 @@ namespace psc_py {
 std::vector<Estimate> estimate_jet(const Cloud& cloud, const Scale& s, const Options& o, const Tile_arg& t,
                                    bool parallel, const Callback& cb)
 {
-  namespace D = CGAL::Point_set_curvatures::internal::default_min_neighbors;
+  namespace D = CGAL::Point_set_curvatures::default_min_neighbors;
   // CGAL's degree parameters are read as integers and checked by the function itself.
   const auto np = common_parameters(s, o, cb, D::jet, [&](const auto& base) {
     return base.degree_fitting(static_cast<int>(o.degree_fitting)).degree_monge(static_cast<int>(o.degree_monge));
@@ -27,7 +27,7 @@ std::vector<Estimate> estimate_jet(const Cloud& cloud, const Scale& s, const Opt
 std::vector<Estimate> estimate_vcm(const Cloud& cloud, const Scale& s, const Options& o, const Tile_arg& t,
                                    bool parallel, const Callback& cb)
 {
-  namespace D = CGAL::Point_set_curvatures::internal::default_min_neighbors;
+  namespace D = CGAL::Point_set_curvatures::default_min_neighbors;
   namespace P = CGAL::Point_set_curvatures::parameters;
   if(t.has)
     throw std::invalid_argument("estimate_vcm_curvatures: parameter 'tile' is not supported (VCM has no fixed halo)");

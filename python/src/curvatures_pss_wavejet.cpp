@@ -14,7 +14,7 @@ std::vector<Estimate> estimate_pss_wavejet(const std::string& method, const Clou
                                            const Options& o, const Tile_arg& t, bool parallel,
                                            const Callback& cb)
 {
-  namespace D = CGAL::Point_set_curvatures::internal::default_min_neighbors;
+  namespace D = CGAL::Point_set_curvatures::default_min_neighbors;
   const auto same = [](const auto& base) { return base; };
   if(method == "pss")
     return dispatch(cloud, s, t, parallel, common_parameters(s, o, cb, D::pss, same),

@@ -13,7 +13,7 @@ namespace psc_py {
 std::vector<Estimate> estimate_simple(const std::string& method, const Cloud& cloud, const Scale& s,
                                       const Options& o, const Tile_arg& t, bool parallel, const Callback& cb)
 {
-  namespace D = CGAL::Point_set_curvatures::internal::default_min_neighbors;
+  namespace D = CGAL::Point_set_curvatures::default_min_neighbors;
   const auto same = [](const auto& base) { return base; };
   if(method == "barycenter")
     return dispatch(cloud, s, t, parallel, common_parameters(s, o, cb, D::barycenter, same),

@@ -27,7 +27,7 @@ std::vector<Features> sphere_features(const Cloud& cloud, const Scale& s, const 
   const CGAL::Sample_weights weights =
     o.sample_weights >= 0 ? CGAL::Sample_weights(o.sample_weights) : CGAL::Sample_weights::UNIFORM;
   const auto np = common_parameters(s, o, cb,
-    CGAL::Point_set_curvatures::internal::default_min_neighbors::sphere_features,
+    CGAL::Point_set_curvatures::default_min_neighbors::sphere_features,
     [&](const auto& base) { return P::weight_kernel(sphere_kernel(o), P::sample_weights(weights, base)); });
   return with_given_weights(cloud, o, np, [&](const auto& np2) {
     return dispatch(cloud, s, t, parallel, np2, PSC_PY_FUNCTION(estimate_algebraic_sphere_features));
@@ -61,7 +61,7 @@ std::vector<std::vector<Features> > multiscale_sphere_features(const Cloud& clou
   const CGAL::Sample_weights weights =
     o.sample_weights >= 0 ? CGAL::Sample_weights(o.sample_weights) : CGAL::Sample_weights::UNIFORM;
   const auto np = common_parameters(by_radius, o, cb,
-    CGAL::Point_set_curvatures::internal::default_min_neighbors::sphere_features,
+    CGAL::Point_set_curvatures::default_min_neighbors::sphere_features,
     [&](const auto& base) { return P::weight_kernel(sphere_kernel(o), P::sample_weights(weights, base)); });
   if(parallel)
     return CGAL::estimate_multiscale_algebraic_sphere_features<CGAL::Parallel_tag>(cloud, radii, np);

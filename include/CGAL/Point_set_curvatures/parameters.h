@@ -88,6 +88,34 @@ enum tile_t { tile };
 
 } // namespace internal_np
 
+/// \ingroup PkgPointSetCurvaturesRef
+/// The default of `parameters::min_neighbors()` for each estimation function: its measured
+/// least neighbour count (query point included), the smallest count from which its mean error
+/// stays within 3 times its error at 40 neighbours on four Goursat clouds (blue noise 10K and
+/// 50K, i.i.d. random 10K, simulated LiDAR scan lines; measured with `paper_experiments --only
+/// neighbors`, user manual, "Neighbourhoods and scale"). Below it errors grow 5 to 1000 times
+/// (jets, wavejets and PSS on scan lines). The tool and the Python bindings read these values.
+namespace default_min_neighbors {
+/// `estimate_aso_curvatures()`
+constexpr std::size_t aso = 12;
+/// `estimate_apss_curvatures()`
+constexpr std::size_t apss = 12;
+/// `estimate_algebraic_sphere_features()`
+constexpr std::size_t sphere_features = apss;
+/// `estimate_barycenter_curvatures()`
+constexpr std::size_t barycenter = 20;
+/// `estimate_pca_plane_curvatures()`
+constexpr std::size_t pca_plane = 10;
+/// `estimate_jet_curvatures()`
+constexpr std::size_t jet = 12;
+/// `estimate_wavejet_curvatures()`
+constexpr std::size_t wavejet = 12;
+/// `estimate_pss_curvatures()`
+constexpr std::size_t pss = 15;
+/// `estimate_vcm_curvatures()`
+constexpr std::size_t vcm = 20;
+} // namespace default_min_neighbors
+
 namespace parameters {
 
 /// \ingroup PkgPointSetCurvaturesRef
@@ -95,16 +123,10 @@ namespace parameters {
 /// distance `< r`, the query point included) for which an estimate is computed; below it the
 /// estimate is `TOO_FEW_NEIGHBORS`, with NaN fields and its `neighbor_count` set.
 ///
-/// The default of each function is its measured minimum: the smallest count from which its
-/// mean error stays within 3 times its error at 40 neighbours on four Goursat clouds (blue
-/// noise, i.i.d. random, simulated LiDAR scan lines; user manual, "Neighbourhoods and scale"):
-/// 12 for `estimate_aso_curvatures()`, `estimate_apss_curvatures()`,
-/// `estimate_algebraic_sphere_features()`, `estimate_jet_curvatures()` and
-/// `estimate_wavejet_curvatures()`; 10 for `estimate_pca_plane_curvatures()`; 15 for
-/// `estimate_pss_curvatures()`; 20 for `estimate_barycenter_curvatures()` and
-/// `estimate_vcm_curvatures()`. A smaller value is raised to what the fit itself needs (3 for
-/// the sphere fits, the barycenter, the PCA plane and VCM, 6 for PSS, wavejets and order-2
-/// jets).
+/// The default of each function is its measured minimum, the constant of its name in
+/// `CGAL::Point_set_curvatures::default_min_neighbors`. A smaller value is raised to what the
+/// fit itself needs (3 for the sphere fits, the barycenter, the PCA plane and VCM, 6 for PSS,
+/// wavejets and order-2 jets).
 template <class NamedParameters = CGAL::parameters::Default_named_parameters>
 CGAL::Named_function_parameters<std::size_t, internal_np::min_neighbors_t, NamedParameters>
 min_neighbors(std::size_t count, const NamedParameters& np = CGAL::parameters::default_values())

@@ -10,6 +10,7 @@
 #define CGAL_POINT_SET_CURVATURES_INTERNAL_LOCAL_ESTIMATE_H
 
 #include <CGAL/Curvature_estimate.h>
+#include <CGAL/Point_set_curvatures/parameters.h>
 
 #include <cmath>
 #include <cstddef>
@@ -20,16 +21,8 @@ namespace CGAL {
 namespace Point_set_curvatures {
 namespace internal {
 
-// The default least neighbour count (query included) of a valid estimate of each estimator
-// (named parameter min_neighbors), measured with `paper_experiments --only neighbors`
-// (benchmark/README.md, user manual "Neighbourhoods and scale"): the smallest count k from
-// which the estimator's mean error stays within 3 times its error at 40 neighbours on four
-// Goursat clouds (blue noise 10K and 50K, i.i.d. random 10K, simulated LiDAR scan lines).
-// Below it errors grow 5 to 1000 times (jets, wavejets and PSS on scan lines). Never below 6.
-namespace default_min_neighbors {
-constexpr std::size_t aso = 12, apss = 12, sphere_features = apss, barycenter = 20, pca_plane = 10,
-                      jet = 12, wavejet = 12, pss = 15, vcm = 20;
-} // namespace default_min_neighbors
+// The measured least neighbour counts (public: parameters.h), under their former name.
+namespace default_min_neighbors = CGAL::Point_set_curvatures::default_min_neighbors;
 
 // The neighbours of one query point. Coordinates are centred at the query point and
 // divided by the radius (q = (p - x) / r, so |q| < 1), which keeps every sum of the
