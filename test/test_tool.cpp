@@ -723,22 +723,27 @@ TEST_CASE("tool: CloudCompare loads every estimate and attribute of a --ply-name
     return;
   }
   const std::string input = write_ply_with_attributes("cc_in.ply");
-  const fs::path dir = work_dir() / "cloudcompare";
-  fs::create_directories(dir);
-  const std::string output = (dir / "cc_out.ply").string();
-  REQUIRE(run_tool(q(input) + " " + q(output) + " --radius 0.4 --color mean --quiet --ply-names scalar").status == 0);
-  // CloudCompare headless: open the PLY, save it as ASCII with a header line naming the
-  // columns (X Y Z R G B, the scalar fields, Nx Ny Nz), in the folder of the PLY
-  const std::string command = "cd " + q(dir.string()) +
-                              " && QT_QPA_PLATFORM=offscreen CloudCompare -SILENT -O cc_out.ply -C_EXPORT_FMT ASC"
-                              " -ADD_HEADER -SAVE_CLOUDS > cloudcompare.log 2>&1";
-  REQUIRE(std::system(command.c_str()) == 0);
-  std::string asc;
-  for(const auto& entry : fs::directory_iterator(dir))
-    if(entry.path().extension() == ".asc")
-      asc = entry.path().string();
-  INFO(read_text((dir / "cloudcompare.log").string()));
-  REQUIRE(!asc.empty());
+  // The tool's output with `options` in a folder of its own, opened by CloudCompare headless
+  // and saved as ASCII with a header line naming the columns (X Y Z R G B, the scalar fields,
+  // Nx Ny Nz): the path of that .asc file
+  const auto cloudcompare_export = [&](const std::string& folder, const std::string& options) {
+    const fs::path dir = work_dir() / folder;
+    fs::create_directories(dir);
+    REQUIRE(run_tool(q(input) + " " + q((dir / "out.ply").string()) + " --radius 0.4 --color mean --quiet" +
+                     options).status == 0);
+    const std::string command = "cd " + q(dir.string()) +
+                                " && QT_QPA_PLATFORM=offscreen CloudCompare -SILENT -O out.ply -C_EXPORT_FMT ASC"
+                                " -ADD_HEADER -SAVE_CLOUDS > cloudcompare.log 2>&1";
+    REQUIRE(std::system(command.c_str()) == 0);
+    std::string asc;
+    for(const auto& entry : fs::directory_iterator(dir))
+      if(entry.path().extension() == ".asc")
+        asc = entry.path().string();
+    INFO(read_text((dir / "cloudcompare.log").string()));
+    REQUIRE(!asc.empty());
+    return asc;
+  };
+  const std::string asc = cloudcompare_export("cloudcompare", " --ply-names scalar");
   std::istringstream lines(read_text(asc));
   std::string header;
   std::getline(lines, header);
@@ -756,7 +761,7 @@ TEST_CASE("tool: CloudCompare loads every estimate and attribute of a --ply-name
 
   // the values: CloudCompare's scalar fields are float32; NaN (invalid points) stays NaN
   Point_set ps;
-  REQUIRE(CGAL::IO::read_PLY(output, ps));
+  REQUIRE(CGAL::IO::read_PLY((work_dir() / "cloudcompare" / "out.ply").string(), ps));
   const char* checked[] = {"mean", "k_min", "gaussian", "dmax_z", "normal_coherence"};
   std::vector<Point_set::Property_map<double> > maps;
   for(const char* name : checked)
@@ -790,20 +795,9 @@ TEST_CASE("tool: CloudCompare loads every estimate and attribute of a --ply-name
 
   // without the option CloudCompare loads none of the estimates (the reason for it); it does
   // load a property named intensity, and the input's scalar_Intensity and scalar_mean
-  const fs::path plain_dir = work_dir() / "cloudcompare_plain";
-  fs::create_directories(plain_dir);
-  REQUIRE(run_tool(q(input) + " " + q((plain_dir / "plain.ply").string()) + " --radius 0.4 --color mean --quiet").status == 0);
-  const std::string plain_command = "cd " + q(plain_dir.string()) +
-                                    " && QT_QPA_PLATFORM=offscreen CloudCompare -SILENT -O plain.ply -C_EXPORT_FMT ASC"
-                                    " -ADD_HEADER -SAVE_CLOUDS > cloudcompare.log 2>&1";
-  REQUIRE(std::system(plain_command.c_str()) == 0);
+  std::istringstream plain_lines(read_text(cloudcompare_export("cloudcompare_plain", "")));
   std::string plain_header;
-  for(const auto& entry : fs::directory_iterator(plain_dir))
-    if(entry.path().extension() == ".asc")
-    {
-      std::istringstream plain_lines(read_text(entry.path().string()));
-      std::getline(plain_lines, plain_header);
-    }
+  std::getline(plain_lines, plain_header);
   CHECK(plain_header == "//X Y Z R G B intensity Intensity mean Nx Ny Nz");
 }
 

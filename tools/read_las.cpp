@@ -33,6 +33,7 @@
 // missing is read to its last complete record, with a warning.
 
 #include "input_bytes.h"
+#include "las_format.h"
 
 #include <cctype>
 #include <cmath>
@@ -73,20 +74,7 @@ T little(const char* p)
   return v;
 }
 
-// Size in bytes of the fields of each point data record format.
-const std::size_t format_size[11] = {20, 28, 26, 34, 57, 63, 30, 36, 38, 59, 67};
-
-bool has_gps_time(int f) { return f != 0 && f != 2; }
-bool has_rgb(int f) { return f == 2 || f == 3 || f == 5 || f == 7 || f == 8 || f == 10; }
-bool has_nir(int f) { return f == 8 || f == 10; }
-// offset of red (formats 2, 3, 5: after the legacy fields or the GPS time; 7, 8, 10: after
-// the 30 bytes of format 6)
-std::size_t rgb_offset(int f) { return f == 2 ? 20 : f < 6 ? 28 : 30; }
-bool has_wave_packet(int f) { return f == 4 || f == 5 || f == 9 || f == 10; }
-// where the wave packet fields start: descriptor index (uchar), byte offset to the waveform
-// (uint64), packet size (uint32), return point location (float, picoseconds), then the
-// parametric line of the pulse x(t) y(t) z(t) (floats, coordinate units per picosecond)
-std::size_t wave_offset(int f) { return f == 4 ? 28 : f == 5 ? 34 : f == 9 ? 30 : 38; }
+using namespace las;  // format_size, has_rgb, ... (las_format.h)
 
 // The user id of a VLR is `id` (16 characters, NUL-padded).
 bool user_id_is(const std::string& user_id, const char* id)
@@ -153,8 +141,6 @@ struct Extra_field
   double scale = 1, shift = 0;
   std::size_t attribute = 0;
 };
-
-const std::size_t extra_type_size[11] = {0, 1, 1, 2, 2, 4, 4, 8, 8, 4, 8};
 
 double extra_value(const char* p, int data_type)
 {

@@ -6,6 +6,8 @@
 
 #include "write_las.h"
 
+#include "las_format.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -50,42 +52,21 @@ T get(const char* at)
   return v;
 }
 
-// A value rounded and clamped to an integer type (0 for NaN).
-template <class T>
-T integer(double v)
-{
-  if(std::isnan(v))
-    return 0;
-  v = std::nearbyint(v);
-  if(v <= double(std::numeric_limits<T>::min()))
-    return std::numeric_limits<T>::min();
-  if(v >= double(std::numeric_limits<T>::max()))
-    return std::numeric_limits<T>::max();
-  return static_cast<T>(v);
-}
-
-const std::size_t format_size[11] = {20, 28, 26, 34, 57, 63, 30, 36, 38, 59, 67};
-const std::size_t type_size[11] = {0, 1, 1, 2, 2, 4, 4, 8, 8, 4, 8};
-bool has_gps_time(int f) { return f != 0 && f != 2; }
-bool has_rgb(int f) { return f == 2 || f == 3 || f == 5 || f == 7 || f == 8 || f == 10; }
-bool has_nir(int f) { return f == 8 || f == 10; }
-std::size_t rgb_offset(int f) { return f == 2 ? 20 : f < 6 ? 28 : 30; }
-bool has_wave_packet(int f) { return f == 4 || f == 5 || f == 9 || f == 10; }
-std::size_t wave_offset(int f) { return f == 4 ? 28 : f == 5 ? 34 : f == 9 ? 30 : 38; }
+using namespace las;  // format_size, extra_type_size, has_rgb, ... (las_format.h)
 
 // Writes `v` (the data type's raw value) at `at`.
 void put_extra(char* at, int data_type, double v)
 {
   switch(data_type)
   {
-    case 1: put(at, integer<std::uint8_t>(v)); break;
-    case 2: put(at, integer<std::int8_t>(v)); break;
-    case 3: put(at, integer<std::uint16_t>(v)); break;
-    case 4: put(at, integer<std::int16_t>(v)); break;
-    case 5: put(at, integer<std::uint32_t>(v)); break;
-    case 6: put(at, integer<std::int32_t>(v)); break;
-    case 7: put(at, integer<std::uint64_t>(v)); break;
-    case 8: put(at, integer<std::int64_t>(v)); break;
+    case 1: put(at, to_integer<std::uint8_t>(v)); break;
+    case 2: put(at, to_integer<std::int8_t>(v)); break;
+    case 3: put(at, to_integer<std::uint16_t>(v)); break;
+    case 4: put(at, to_integer<std::int16_t>(v)); break;
+    case 5: put(at, to_integer<std::uint32_t>(v)); break;
+    case 6: put(at, to_integer<std::int32_t>(v)); break;
+    case 7: put(at, to_integer<std::uint64_t>(v)); break;
+    case 8: put(at, to_integer<std::int64_t>(v)); break;
     case 9: put(at, static_cast<float>(v)); break;
     default: put(at, v); break;
   }
@@ -272,7 +253,7 @@ Las_layout las_layout(const Las_output_options& options, const std::vector<Outpu
     used_names.insert(name);
     std::memcpy(d + 4, padded(name, 32).data(), 32);
     x.offset = record_length;
-    record_length += type_size[x.data_type];
+    record_length += extra_type_size[x.data_type];
     extras.push_back(x);
   }
   if(record_length > 65535 || 192 * extras.size() > 65535)
@@ -423,7 +404,7 @@ std::vector<std::string> write_las(std::FILE* f, const Las_output_options& optio
     if(finite)
       for(int a = 0; a < 3; ++a)
       {
-        const std::int32_t X = integer<std::int32_t>((r.value[a] - offset[a]) / scale[a]);
+        const std::int32_t X = to_integer<std::int32_t>((r.value[a] - offset[a]) / scale[a]);
         put(p + 4 * a, X);
         const double v = double(X) * scale[a] + offset[a];
         lo[a] = std::min(lo[a], v);
@@ -432,22 +413,22 @@ std::vector<std::string> write_las(std::FILE* f, const Las_output_options& optio
     else
       ++not_finite;
     const double withheld = finite ? field(LAS_WITHHELD, 0) : 1;
-    const unsigned return_number = integer<std::uint8_t>(field(LAS_RETURN_NUMBER, 1));
-    put(p + 12, integer<std::uint16_t>(field(LAS_INTENSITY, 0)));
-    const unsigned returns = integer<std::uint8_t>(field(LAS_NUMBER_OF_RETURNS, 1));
-    const unsigned direction = integer<std::uint8_t>(field(LAS_SCAN_DIRECTION, 0)) & 1;
-    const unsigned edge = integer<std::uint8_t>(field(LAS_EDGE, 0)) & 1;
-    const unsigned synthetic = integer<std::uint8_t>(field(LAS_SYNTHETIC, 0)) & 1;
-    const unsigned key = integer<std::uint8_t>(field(LAS_KEY_POINT, 0)) & 1;
-    const unsigned held = integer<std::uint8_t>(withheld) & 1;
-    const unsigned classification = integer<std::uint8_t>(field(LAS_CLASSIFICATION, 0));
+    const unsigned return_number = to_integer<std::uint8_t>(field(LAS_RETURN_NUMBER, 1));
+    put(p + 12, to_integer<std::uint16_t>(field(LAS_INTENSITY, 0)));
+    const unsigned returns = to_integer<std::uint8_t>(field(LAS_NUMBER_OF_RETURNS, 1));
+    const unsigned direction = to_integer<std::uint8_t>(field(LAS_SCAN_DIRECTION, 0)) & 1;
+    const unsigned edge = to_integer<std::uint8_t>(field(LAS_EDGE, 0)) & 1;
+    const unsigned synthetic = to_integer<std::uint8_t>(field(LAS_SYNTHETIC, 0)) & 1;
+    const unsigned key = to_integer<std::uint8_t>(field(LAS_KEY_POINT, 0)) & 1;
+    const unsigned held = to_integer<std::uint8_t>(withheld) & 1;
+    const unsigned classification = to_integer<std::uint8_t>(field(LAS_CLASSIFICATION, 0));
     if(!extended)
     {
       p[14] = char((return_number & 7) | ((returns & 7) << 3) | (direction << 6) | (edge << 7));
       p[15] = char((classification & 31) | (synthetic << 5) | (key << 6) | (held << 7));
-      put(p + 16, integer<std::int8_t>(field(LAS_SCAN_ANGLE, 0)));
-      put(p + 17, integer<std::uint8_t>(field(LAS_USER_DATA, 0)));
-      put(p + 18, integer<std::uint16_t>(field(LAS_POINT_SOURCE, 0)));
+      put(p + 16, to_integer<std::int8_t>(field(LAS_SCAN_ANGLE, 0)));
+      put(p + 17, to_integer<std::uint8_t>(field(LAS_USER_DATA, 0)));
+      put(p + 18, to_integer<std::uint16_t>(field(LAS_POINT_SOURCE, 0)));
       if(has_gps_time(format))
         put(p + 20, field(LAS_GPS_TIME, 0));
       if(return_number >= 1 && (return_number & 7) <= 5)
@@ -455,15 +436,15 @@ std::vector<std::string> write_las(std::FILE* f, const Las_output_options& optio
     }
     else
     {
-      const unsigned overlap = integer<std::uint8_t>(field(LAS_OVERLAP, 0)) & 1;
-      const unsigned channel = integer<std::uint8_t>(field(LAS_SCANNER_CHANNEL, 0)) & 3;
+      const unsigned overlap = to_integer<std::uint8_t>(field(LAS_OVERLAP, 0)) & 1;
+      const unsigned channel = to_integer<std::uint8_t>(field(LAS_SCANNER_CHANNEL, 0)) & 3;
       p[14] = char((return_number & 15) | ((returns & 15) << 4));
       p[15] = char(synthetic | (key << 1) | (held << 2) | (overlap << 3) | (channel << 4) | (direction << 6) |
                    (edge << 7));
       p[16] = char(classification);
-      put(p + 17, integer<std::uint8_t>(field(LAS_USER_DATA, 0)));
-      put(p + 18, integer<std::int16_t>(field(LAS_SCAN_ANGLE, 0) / 0.006));
-      put(p + 20, integer<std::uint16_t>(field(LAS_POINT_SOURCE, 0)));
+      put(p + 17, to_integer<std::uint8_t>(field(LAS_USER_DATA, 0)));
+      put(p + 18, to_integer<std::int16_t>(field(LAS_SCAN_ANGLE, 0) / 0.006));
+      put(p + 20, to_integer<std::uint16_t>(field(LAS_POINT_SOURCE, 0)));
       put(p + 22, field(LAS_GPS_TIME, 0));
       if((return_number & 15) >= 1)
         ++by_return[(return_number & 15) - 1];
@@ -471,18 +452,18 @@ std::vector<std::string> write_las(std::FILE* f, const Las_output_options& optio
     if(has_rgb(format))
     {
       const std::size_t c = rgb_offset(format);
-      put(p + c, integer<std::uint16_t>(field(LAS_RED, 0)));
-      put(p + c + 2, integer<std::uint16_t>(field(LAS_GREEN, 0)));
-      put(p + c + 4, integer<std::uint16_t>(field(LAS_BLUE, 0)));
+      put(p + c, to_integer<std::uint16_t>(field(LAS_RED, 0)));
+      put(p + c + 2, to_integer<std::uint16_t>(field(LAS_GREEN, 0)));
+      put(p + c + 4, to_integer<std::uint16_t>(field(LAS_BLUE, 0)));
       if(has_nir(format))
-        put(p + c + 6, integer<std::uint16_t>(field(LAS_NIR, 0)));
+        put(p + c + 6, to_integer<std::uint16_t>(field(LAS_NIR, 0)));
     }
     if(has_wave_packet(format))
     {
       char* w = p + wave_offset(format);
-      put(w, integer<std::uint8_t>(field(LAS_WAVE_DESCRIPTOR, 0)));
-      put(w + 1, integer<std::uint64_t>(field(LAS_WAVE_OFFSET, 0)));
-      put(w + 9, integer<std::uint32_t>(field(LAS_WAVE_SIZE, 0)));
+      put(w, to_integer<std::uint8_t>(field(LAS_WAVE_DESCRIPTOR, 0)));
+      put(w + 1, to_integer<std::uint64_t>(field(LAS_WAVE_OFFSET, 0)));
+      put(w + 9, to_integer<std::uint32_t>(field(LAS_WAVE_SIZE, 0)));
       put(w + 13, static_cast<float>(field(LAS_WAVE_LOCATION, 0)));
       put(w + 17, static_cast<float>(field(LAS_WAVE_X_T, 0)));
       put(w + 21, static_cast<float>(field(LAS_WAVE_Y_T, 0)));

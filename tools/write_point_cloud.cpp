@@ -144,20 +144,6 @@ bool little_endian_host()
   return first == 1;
 }
 
-// A value converted to an integer type: rounded, clamped to the type's range, 0 for NaN.
-template <class T>
-T to_integer(double v)
-{
-  if(std::isnan(v))
-    return 0;
-  v = std::nearbyint(v);
-  if(v <= double(std::numeric_limits<T>::min()))
-    return std::numeric_limits<T>::min();
-  if(v >= double(std::numeric_limits<T>::max()))
-    return std::numeric_limits<T>::max();
-  return static_cast<T>(v);
-}
-
 template <class T>
 void put_binary(std::vector<char>& out, T v, bool swap)
 {

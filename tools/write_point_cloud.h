@@ -11,14 +11,30 @@
 #include "read_point_cloud.h"
 #include "tool_support.h"
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
 namespace psc_tool {
+
+// A value converted to an integer type: rounded, clamped to the type's range, 0 for NaN.
+template <class T>
+T to_integer(double v)
+{
+  if(std::isnan(v))
+    return 0;
+  v = std::nearbyint(v);
+  if(v <= double(std::numeric_limits<T>::min()))
+    return std::numeric_limits<T>::min();
+  if(v >= double(std::numeric_limits<T>::max()))
+    return std::numeric_limits<T>::max();
+  return static_cast<T>(v);
+}
 
 // The doubles of a row, in order: x y z nx ny nz k_min k_max mean gaussian dmin_x dmin_y
 // dmin_z dmax_x dmax_y dmax_z normal_coherence; then neighbors (int), valid (uchar) and, with
