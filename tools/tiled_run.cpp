@@ -401,16 +401,19 @@ Tiled_report run_tiled(const std::string& path, const Read_options& options, con
       throw Cancelled();
   }
 
+  // false for a tile whose core holds no point by the density (the first tile also writes
+  // the rows of the non-finite points)
+  const auto may_own_points = [&](std::size_t t) {
+    double b[3], e[3];
+    tile_box(grid, t, lo, hi, 0, b, e);
+    return t == 0 || density.at_most(b, e) > 0;
+  };
   if(tiling.grid_chosen)
   {
     // the tiles with own points (as counted by the loop below)
     std::size_t tiles = 0;
     for(std::size_t t = 0; t < grid.size(); ++t)
-    {
-      double b[3], e[3];
-      tile_box(grid, t, lo, hi, 0, b, e);
-      tiles += t == 0 || density.at_most(b, e) > 0;
-    }
+      tiles += may_own_points(t);
     tiling.grid_chosen(tiles, report.few_tiles_grid, report.few_tiles_points);
   }
 
@@ -419,12 +422,8 @@ Tiled_report run_tiled(const std::string& path, const Read_options& options, con
   std::vector<std::unique_ptr<Row_file>> files;
   for(std::size_t t = 0; t < grid.size(); ++t)
   {
-    {
-      double b[3], e[3];
-      tile_box(grid, t, lo, hi, 0, b, e);
-      if(t > 0 && density.at_most(b, e) == 0)
-        continue;  // no own point
-    }
+    if(!may_own_points(t))
+      continue;
     const std::string name = cat("tile ", t + 1, "/", grid.size());
     halo = first_halo;  // each tile grows its own (by count: an outlier needs a large one)
     for(;;)
