@@ -9,6 +9,8 @@
 //
 //   scan_experiments [--neighbors K] [--normal-neighbors K1,K2...] [--only torus,airborne,merged]
 //                    [--noise SIGMA_IN_SPACINGS] [--quantum Q] [--line-spacing S] [--dump PREFIX]
+//                    [--auto LARGEST]  (the automatic scale: normals and ASO, ladder 40 .. LARGEST)
+//                    [--rows exact,default,auto640,...]  (the normal sources to run)
 
 #include "bench_support.h"
 #include "../test/scan_simulator.h"
@@ -41,12 +43,15 @@ struct Options
 {
   std::size_t k = 40;
   std::set<std::string> only;
+  std::set<std::string> rows;  // normal sources to run (empty: all)
   double noise = 0;    // range noise, in median spacings
   double quantum = 0;  // coordinate grid
   std::vector<std::size_t> normal_neighbors = {40};
   std::string dump;  // prefix of per-point CSV files (x, y, z, true H, estimated H, neighbours)
   double line_spacing = 0.5;  // of the airborne lines (points 0.1 apart along a line)
+  std::size_t automatic = 0;  // the automatic scale's largest count (0: not run)
 };
+std::size_t automatic_largest = 0;
 
 struct Named_cloud
 {
@@ -110,6 +115,11 @@ std::vector<Normal_source> normal_sources(const Options& o)
                   }});
   for(std::size_t k : o.normal_neighbors)
     list.push_back({"quadric" + std::to_string(k), library(CGAL::Normal_fit::QUADRIC, k)});
+  if(o.automatic > 0)
+    list.push_back({"auto" + std::to_string(o.automatic), [&o](Cloud& c) {
+                      CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
+                        c, P::automatic_scale(o.automatic, P::neighbor_count(40, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()))));
+                    }});
   // what a user gets: the library's defaults, orientation included
   list.push_back({"default", [](Cloud& c) {
                     CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
@@ -143,6 +153,13 @@ std::vector<Curvature_method> curvature_methods()
                       c, P::neighbor_count(k, P::aso_variant(CGAL::Aso_variant::PAPER,
                                                              CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()))));
                   }});
+  if(automatic_largest > 0)
+    list.push_back({"auto", [](const Cloud& c, std::size_t k) {
+                      return CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
+                        c, P::automatic_scale(std::max(k, automatic_largest),
+                             P::neighbor_count(k, P::position_fit_blend(0.5, CGAL::parameters::point_map(Point_map())
+                                                                              .normal_map(Normal_map())))));
+                    }});
   PSC_METHOD("apss", estimate_apss_curvatures, );
   PSC_METHOD("pss", estimate_pss_curvatures, );
   PSC_METHOD("jet", estimate_jet_curvatures, );
@@ -220,12 +237,21 @@ int main(int argc, char** argv)
       while(std::getline(s, part, ','))
         o.normal_neighbors.push_back(std::stoul(part));
     }
+    else if(a == "--auto")
+      automatic_largest = o.automatic = std::stoul(value());
     else if(a == "--line-spacing")
       o.line_spacing = std::stod(value());
     else if(a == "--dump")
       o.dump = value();
     else if(a == "--quantum")
       o.quantum = std::stod(value());
+    else if(a == "--rows")
+    {
+      std::stringstream s(value());
+      std::string part;
+      while(std::getline(s, part, ','))
+        o.rows.insert(part);
+    }
     else if(a == "--only")
     {
       std::stringstream s(value());
@@ -259,6 +285,8 @@ int main(int argc, char** argv)
     std::cout << "\n";
     for(const Normal_source& ns : normal_sources(o))
     {
+      if(!o.rows.empty() && o.rows.count(ns.name) == 0)
+        continue;
       Cloud c = scan::with_true_normals(nc.samples);
       const auto t0 = std::chrono::steady_clock::now();
       ns.estimate(c);

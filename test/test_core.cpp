@@ -14,6 +14,7 @@
 #include <CGAL/Algebraic_sphere_fit.h>
 #include <CGAL/estimate_apss_curvatures.h>
 #include <CGAL/estimate_aso_curvatures.h>
+#include <CGAL/estimate_oriented_normals.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Point_set_3.h>
@@ -26,6 +27,7 @@
 #include <stdexcept>
 #include <tuple>
 #include <list>
+#include <random>
 #include <vector>
 
 using namespace psc_test;
@@ -1759,4 +1761,231 @@ TEST_CASE("Tiles: bitwise with a far outlier, Halo_too_small below k points, pro
   // at most 1% of the own points, rounded up (0.20 before the fix)
   CHECK(widest <= double((own_points + 99) / 100) / double(own_points) + 1e-12);
   CHECK(progress.back() == 1.0);
+}
+
+// ---- The automatic scale (named parameter automatic_scale) ----
+
+// A height field z = f(x, y) sampled on a grid of unit spacing, 2 half_side + 1 points a side,
+// with Gaussian noise of deviation `sigma` on z and the exact normals of f.
+std::vector<Oriented_point> noisy_height_field(int half_side, double sigma, double amplitude, double wavelength,
+                                               unsigned seed)
+{
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  std::vector<Oriented_point> pts;
+  for(int i = -half_side; i <= half_side; ++i)
+    for(int j = -half_side; j <= half_side; ++j)
+    {
+      const double x = i, y = j, w = 2 * M_PI / wavelength;
+      const double z = amplitude * std::sin(w * x), dz = amplitude * w * std::cos(w * x);
+      pts.emplace_back(Point(x, y, z + sigma * noise(rng)), Vector(-dz, 0, 1) / std::sqrt(1 + dz * dz));
+    }
+  return pts;
+}
+
+// The median chosen count and the mean |H - H*| over the points at least `margin` from the
+// border, for a wave z = A sin(2 pi x / L) (H* from its curvature in x).
+std::pair<double, double> median_count_and_error(const std::vector<Oriented_point>& pts,
+                                                 const std::vector<Estimate>& e, int half_side, double margin,
+                                                 double amplitude, double wavelength)
+{
+  std::vector<double> counts;
+  double error = 0;
+  for(std::size_t i = 0; i < pts.size(); ++i)
+  {
+    const double x = std::round(pts[i].first.x()), y = pts[i].first.y();
+    if(std::abs(x) > half_side - margin || std::abs(y) > half_side - margin || !e[i].is_valid())
+      continue;
+    const double w = 2 * M_PI / wavelength, d1 = amplitude * w * std::cos(w * x),
+                 d2 = -amplitude * w * w * std::sin(w * x);
+    // the graph's curvature in x, halved; positive where it bends away from the up normal
+    const double h = -0.5 * d2 / std::pow(1 + d1 * d1, 1.5);
+    counts.push_back(double(e[i].neighbor_count));
+    error += std::abs(e[i].mean_curvature - h);
+  }
+  REQUIRE(counts.size() > 100);
+  std::nth_element(counts.begin(), counts.begin() + counts.size() / 2, counts.end());
+  return {counts[counts.size() / 2], error / double(counts.size())};
+}
+
+// The cloud with its normals estimated as the tool does without normals (a quadric of 40, or
+// its automatic scale up to `largest`), oriented up.
+std::vector<Oriented_point> with_estimated_normals(std::vector<Oriented_point> pts, std::size_t largest)
+{
+  CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
+    pts, PSC::parameters::neighbor_count(
+           40, PSC::parameters::automatic_scale(
+                 largest, PSC::parameters::normal_orientation(CGAL::Normal_orientation::along_vector(0, 0, 1), maps()))));
+  return pts;
+}
+
+TEST_CASE("Automatic scale: the chosen count grows with the noise and shrinks with the curvature's variation",
+          "[aso][automatic_scale]")
+{
+  const int half = 45;
+  // as the tool runs a cloud without normals: normals and curvatures at the automatic scale,
+  // against both at 40 neighbours
+  auto run = [](const std::vector<Oriented_point>& pts, std::size_t largest) {
+    const std::vector<Oriented_point> cloud = with_estimated_normals(pts, largest);
+    return CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
+      cloud, PSC::parameters::neighbor_count(
+               40, PSC::parameters::automatic_scale(largest, PSC::parameters::position_fit_blend(0.5, maps()))));
+  };
+  // a gentle wave (wavelength 60 spacings, curvature up to 0.022): more noise, larger scales,
+  // and a smaller error than at 40 neighbours
+  double previous_count = 0;
+  for(double sigma : {0.0, 0.1, 0.4})
+  {
+    const auto pts = noisy_height_field(half, sigma, 2.0, 60, 11);
+    const auto chosen = median_count_and_error(pts, run(pts, 640), half, 16, 2.0, 60);
+    const auto at_40 = median_count_and_error(pts, run(pts, 0), half, 16, 2.0, 60);
+    measured("automatic scale, sigma " + std::to_string(sigma) + ": median count", chosen.first);
+    measured("  mean |H - H*| automatic", chosen.second);
+    measured("  mean |H - H*| at 40", at_40.second);
+    CHECK(chosen.first >= previous_count);
+    previous_count = chosen.first;
+    if(sigma == 0)
+    {
+      CHECK(chosen.first < 60);                           // the smallest scale without noise
+      CHECK(chosen.second <= 1.2 * at_40.second + 1e-6);  // and as accurate as k = 40
+    }
+    else
+      CHECK(chosen.second < 0.2 * at_40.second);
+  }
+  CHECK(previous_count >= 320);
+  // the same noise on a wave 4 times shorter and half as high (curvature 8 times larger,
+  // varying 32 times faster): smaller scales, and no less accurate than 40 neighbours
+  // (measured: 1.073e-2 against 1.069e-2)
+  const auto short_wave = noisy_height_field(half, 0.1, 1.0, 15, 11);
+  const auto short_chosen = median_count_and_error(short_wave, run(short_wave, 640), half, 16, 1.0, 15);
+  const auto short_40 = median_count_and_error(short_wave, run(short_wave, 0), half, 16, 1.0, 15);
+  measured("automatic scale, short wave, sigma 0.1: median count", short_chosen.first);
+  measured("  mean |H - H*| automatic", short_chosen.second);
+  measured("  mean |H - H*| at 40", short_40.second);
+  CHECK(short_chosen.first < 320);
+  CHECK(short_chosen.second < 1.1 * short_40.second);
+}
+
+TEST_CASE("Automatic scale: exact on a plane and on a sphere, the count and error fields set", "[aso][automatic_scale]")
+{
+  const auto auto_np = PSC::parameters::neighbor_count(40, PSC::parameters::automatic_scale(320, maps()));
+  const auto plane = noisy_height_field(20, 0.0, 0.0, 60, 1);
+  for(const Estimate& e : CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(plane, auto_np))
+  {
+    REQUIRE(e.is_valid());
+    CHECK(std::abs(e.mean_curvature) < 1e-9);
+    CHECK(std::abs(e.gaussian_curvature) < 1e-9);
+    CHECK(e.neighbor_count >= 40);
+    CHECK(e.mean_curvature_error >= 0);
+  }
+  const double R = 2;
+  const auto ball = sphere(20000, R);
+  std::size_t larger = 0;
+  for(const Estimate& e : CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(ball, auto_np))
+  {
+    REQUIRE(e.is_valid());
+    CHECK(e.mean_curvature == Approx(1 / R).epsilon(1e-6));
+    CHECK(e.min_curvature == Approx(1 / R).epsilon(1e-4));
+    CHECK(e.max_curvature == Approx(1 / R).epsilon(1e-4));
+    CHECK(e.neighbor_count >= 40);
+    CHECK(e.neighbor_count <= 330);
+    larger += e.neighbor_count > 60 ? 1 : 0;
+  }
+  measured("sphere: points at a count above 60", double(larger));
+  // without automatic_scale the field is NaN
+  CHECK(std::isnan(CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(ball, PSC::parameters::neighbor_count(40, maps()))[0]
+                     .mean_curvature_error));
+}
+
+TEST_CASE("Automatic scale: sequential == parallel, tiles == whole, normals too", "[aso][automatic_scale][tile]")
+{
+  const auto pts = noisy_height_field(40, 0.3, 2.0, 60, 5);
+  const auto np = PSC::parameters::neighbor_count(40, PSC::parameters::automatic_scale(320, maps()));
+  const auto par = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, np);
+  const auto seq = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, np);
+  std::size_t differ = 0;
+  for(std::size_t i = 0; i < pts.size(); ++i)
+    differ += !same_estimate(par[i], seq[i]) || bits(par[i].mean_curvature_error) != bits(seq[i].mean_curvature_error);
+  CHECK(differ == 0);
+  // two passes (the largest neighbourhood only where the second rung was kept): progress
+  // non-decreasing, ending at 1; cancelled, the points not reached are NOT_COMPUTED
+  std::vector<double> progress;
+  const std::function<bool(double)> record = [&progress](double f) {
+    progress.push_back(f);
+    return true;
+  };
+  CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
+    pts, PSC::parameters::neighbor_count(40, PSC::parameters::automatic_scale(320, maps().callback(record))));
+  REQUIRE(progress.size() > 10);
+  CHECK(std::is_sorted(progress.begin(), progress.end()));
+  CHECK(progress.back() == 1.0);
+  const std::function<bool(double)> stop = [](double f) { return f < 0.6; };
+  const auto cancelled = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
+    pts, PSC::parameters::neighbor_count(40, PSC::parameters::automatic_scale(320, maps().callback(stop))));
+  std::size_t not_computed = 0;
+  for(std::size_t i = 0; i < pts.size(); ++i)
+    if(cancelled[i].status == Status::NOT_COMPUTED)
+      ++not_computed;
+    else
+      CHECK(same_estimate(cancelled[i], par[i]));
+  CHECK(not_computed > 0);
+  // tiles with the halo the largest scale needs (retried while too small)
+  const PSC::Tile_grid tiles(CGAL::Bbox_3(-40, -40, -10, 40, 40, 10), {{2, 2, 1}});
+  std::size_t owned = 0;
+  differ = 0;
+  for(std::size_t t = 0; t < tiles.size(); ++t)
+    for(double halo = 4;; halo *= 2)
+    {
+      const PSC::Tile tile = tiles.tile(t, halo);
+      std::vector<std::size_t> origin;
+      const auto range = tile_range(pts, tile, origin);
+      try
+      {
+        const auto e = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
+          range, PSC::parameters::neighbor_count(40, PSC::parameters::automatic_scale(320, PSC::parameters::tile(tile, maps()))));
+        for(std::size_t j = 0; j < range.size(); ++j)
+          if(tile.owns(range[j].first.x(), range[j].first.y(), range[j].first.z()))
+          {
+            ++owned;
+            differ += !same_estimate(e[j], par[origin[j]]);
+          }
+        break;
+      }
+      catch(const PSC::Halo_too_small&)
+      {
+        REQUIRE(halo < 100);
+      }
+    }
+  CHECK(owned == pts.size());
+  CHECK(differ == 0);
+  // normals: the chosen quadric's, the same in both modes
+  std::vector<Oriented_point> a = pts, b = pts;
+  CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
+    a, PSC::parameters::neighbor_count(40, PSC::parameters::automatic_scale(320, maps())));
+  CGAL::estimate_oriented_normals<CGAL::Sequential_tag>(
+    b, PSC::parameters::neighbor_count(40, PSC::parameters::automatic_scale(320, maps())));
+  std::size_t up = 0;
+  differ = 0;
+  for(std::size_t i = 0; i < a.size(); ++i)
+  {
+    differ += bits(a[i].second.x()) != bits(b[i].second.x()) || bits(a[i].second.z()) != bits(b[i].second.z());
+    up += line_angle_degrees(a[i].second, pts[i].second) < 5 ? 1 : 0;
+  }
+  CHECK(differ == 0);
+  CHECK(up >= 0.99 * double(a.size()));
+}
+
+TEST_CASE("Automatic scale: refused with a radius, below neighbor_count, and for plane normals", "[bad_input][automatic_scale]")
+{
+  const auto pts = noisy_height_field(10, 0.0, 0.0, 60, 1);
+  CHECK_THROWS_AS(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, 3.0, PSC::parameters::automatic_scale(320, maps())),
+                  std::invalid_argument);
+  CHECK_THROWS_AS(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
+                    pts, PSC::parameters::neighbor_count(40, PSC::parameters::automatic_scale(20, maps()))),
+                  std::invalid_argument);
+  std::vector<Oriented_point> copy = pts;
+  CHECK_THROWS_AS(CGAL::estimate_oriented_normals<CGAL::Sequential_tag>(
+                    copy, PSC::parameters::neighbor_count(
+                            18, PSC::parameters::automatic_scale(320, PSC::parameters::normal_fit(CGAL::Normal_fit::PLANE, maps())))),
+                  std::invalid_argument);
 }

@@ -30,8 +30,23 @@ std::size_t normal_neighbor_count(const Options& o)
   return CGAL::Point_set_curvatures::default_normal_neighbors(o.normal_fit);
 }
 
+std::size_t normal_automatic_largest(const Options& o)
+{
+  if(o.normal_fit != CGAL::Normal_fit::QUADRIC || o.scale.automatic_largest == 0)
+    return 0;
+  return std::max(o.scale.automatic_largest, normal_neighbor_count(o));
+}
+
+std::size_t normal_reach_neighbors(const Options& o)
+{
+  return normal_automatic_largest(o) > 0 ? normal_automatic_largest(o) : normal_neighbor_count(o);
+}
+
 std::string normal_fit_description(const Options& o)
 {
+  if(normal_automatic_largest(o) > 0)
+    return cat("a quadric fitted to the nearest neighbours, their count chosen per point from ", normal_neighbor_count(o),
+               " to ", normal_automatic_largest(o));
   return cat(o.normal_fit == CGAL::Normal_fit::QUADRIC ? "a quadric fitted to the " : "the PCA plane of the ",
              normal_neighbor_count(o), " nearest neighbours");
 }
@@ -73,6 +88,8 @@ void print_usage(std::ostream& os)
      << "                     of Lejemble et al. 2021 exactly)\n"
      << "  --neighbors K      neighbourhoods by count: each point's radius is the distance to its\n"
      << "                     K-th nearest neighbour, itself counted (default: --neighbors 40)\n"
+     << "  --neighbors auto   aso: each point's count chosen among 40, 80, ..., 640 by the noise\n"
+     << "                     its fits measure (noisy scans; the neighbors field gives the count)\n"
      << "  --radius R         neighbourhoods of radius R, in the unit of the coordinates; or Nx\n"
      << "                     (e.g. 3.5x): N times the average spacing (CGAL::compute_average_\n"
      << "                     spacing, 6 neighbours); on even samplings 3x gives about 27\n"
@@ -290,9 +307,18 @@ Options parse_command_line(int argc, char** argv)
     {
       const std::string v = take_value();
       std::size_t k = 0;
-      if(!parse_positive_integer(v, k) || k < 3)
-        throw Error(cat(name, " must be an integer >= 3 (the fits need 3 points), got ", in_quotes(v)));
-      o.scale.neighbors = k;
+      if(v == "auto")
+      {
+        o.scale.neighbors = automatic_smallest;
+        o.scale.automatic_largest = automatic_largest;
+      }
+      else if(!parse_positive_integer(v, k) || k < 3)
+        throw Error(cat(name, " must be an integer >= 3 (the fits need 3 points) or auto, got ", in_quotes(v)));
+      else
+      {
+        o.scale.neighbors = k;
+        o.scale.automatic_largest = 0;
+      }
       o.neighbors_given = true;
     }
     else if(name == "--min-neighbors" || name == "--min-neighbours")
@@ -394,6 +420,9 @@ Options parse_command_line(int argc, char** argv)
                     " INPUT OUTPUT [options])"));
   if(o.radius_given && o.neighbors_given)
     throw Error("give either --radius or --neighbors, not both");
+  if(o.scale.automatic_largest > 0 && std::string(o.method->name) != "aso")
+    throw Error(cat("--neighbors auto chooses the scale of --method aso only; give --method ", o.method->name,
+                    " a count (--neighbors K)"));
   if(o.normal_fit == CGAL::Normal_fit::QUADRIC && o.normal_neighbors != 0 && o.normal_neighbors < 6)
     throw Error(cat("--normal-neighbors ", o.normal_neighbors, " is below the 6 points a quadric needs: use "
                     "--normal-neighbors 6 or more, or --normal-fit plane"));

@@ -49,8 +49,18 @@ struct Options
   double memory_limit = 0;               // --memory-limit in bytes; 0: a quarter of the RAM
 };
 
+// --neighbors auto: the ladder of counts of the automatic scale (curvatures and, with the
+// quadric fit, normals), chosen by measurement (benchmark/README.md, "Automatic scale").
+inline constexpr std::size_t automatic_smallest = 40;
+inline constexpr std::size_t automatic_largest = 640;
+
 // The neighbour count of the normal estimation: --normal-neighbors, else the fit's default.
 std::size_t normal_neighbor_count(const Options& o);
+
+// The largest count of the normals' automatic scale (--neighbors auto with the quadric fit),
+// else 0; and the largest neighbourhood a normal reads.
+std::size_t normal_automatic_largest(const Options& o);
+std::size_t normal_reach_neighbors(const Options& o);
 
 // "quadric fit of the 40 nearest neighbours": how the normals are estimated.
 std::string normal_fit_description(const Options& o);

@@ -41,6 +41,10 @@ struct Scale
   std::size_t min_neighbors = 0;  // --min-neighbors; 0: the method's default
   CGAL::Aso_variant variant = CGAL::Aso_variant::ROBUST;  // --variant (aso)
   double position_fit_blend = 0;  // --position-blend (aso)
+  // --neighbors auto (aso): the automatic scale's largest count, `neighbors` its smallest; 0: off
+  std::size_t automatic_largest = 0;
+  // the largest neighbourhood a point's estimate reads, by count
+  std::size_t reach_neighbors() const { return automatic_largest > 0 ? automatic_largest : neighbors; }
 };
 
 // Every point is estimated with PSC::Tile::whole_space(), a tile's own points otherwise.

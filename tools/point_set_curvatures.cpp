@@ -267,8 +267,10 @@ std::size_t estimate_normals(Point_set& ps, const Options& o, Orientation_choice
   const std::size_t without = CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
     ps, PSC::parameters::neighbor_count(
           normal_neighbor_count(o),
-          PSC::parameters::normal_fit(o.normal_fit, PSC::parameters::normal_orientation(
-                                                      choice.orientation, CGAL::parameters::callback(progress)))));
+          PSC::parameters::automatic_scale(
+            normal_automatic_largest(o),
+            PSC::parameters::normal_fit(o.normal_fit, PSC::parameters::normal_orientation(
+                                                        choice.orientation, CGAL::parameters::callback(progress))))));
   if(interrupted)
     throw Cancelled();
   if(choice.orientation.kind == CGAL::Normal_orientation::AUTOMATIC)
@@ -730,6 +732,9 @@ std::string s3(double seconds)
 
 std::string scale_description(const Scale& s)
 {
+  if(s.by_count && s.automatic_largest > 0)
+    return cat("automatic scale: ", s.neighbors, " to ", s.automatic_largest,
+               " nearest neighbours, the count chosen per point (field neighbors)");
   if(s.by_count)
     return cat(s.neighbors, " nearest neighbours per point (itself included)");
   if(s.spacing_multiple > 0)
@@ -1144,7 +1149,7 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
   Tiling tiling;
   tiling.memory_limit = memory_limit;
   if(scale.by_count)
-    tiling.neighbors = scale.neighbors;
+    tiling.neighbors = scale.reach_neighbors();
   else
     tiling.halo = 2 * scale.radius;  // the reach of the sample weights' areas
   tiling.temporary_prefix = temporary_prefix(o.output);
@@ -1177,8 +1182,8 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
   const double inf = std::numeric_limits<double>::infinity();
   auto normal_share = [inf](double H, double h) { return std::nextafter(H - h, -inf); };
   auto total_halo = [inf](double h, double normal) { return std::nextafter(h + normal, inf); };
-  const double normal_halo_guess = with_normals ? 0.0 : density_halo(input, normal_neighbor_count(o));
-  const double curvature_halo_guess = scale.by_count ? density_halo(input, scale.neighbors) : tiling.halo;
+  const double normal_halo_guess = with_normals ? 0.0 : density_halo(input, normal_reach_neighbors(o));
+  const double curvature_halo_guess = scale.by_count ? density_halo(input, scale.reach_neighbors()) : tiling.halo;
   tiling.extra_halo = normal_halo_guess;
   tiling.box_halo = !with_normals;
   // the current tile's curvature halo (grown over the retries of a tile)
@@ -1217,10 +1222,10 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
           CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
             *ps, PSC::parameters::neighbor_count(
                    normal_neighbor_count(o),
-                   PSC::parameters::normal_fit(
+                   PSC::parameters::automatic_scale(normal_automatic_largest(o), PSC::parameters::normal_fit(
                      o.normal_fit, PSC::parameters::normal_orientation(
                                      orientation.orientation,
-                                     PSC::parameters::tile(normal_tile, CGAL::parameters::callback(progress))))));
+                                     PSC::parameters::tile(normal_tile, CGAL::parameters::callback(progress)))))));
         }
         catch(const PSC::Halo_too_small& e)
         {

@@ -103,7 +103,13 @@ struct Curvature_estimate
   /// medians 0.996 to 1 on ground and roofs, 0.85 to 0.93 in the vegetation classes; about 0.6
   /// for normals pointing anywhere. Filter with a threshold such as 0.95 to keep surfaces.
   FT normal_coherence = nan();
+  /// with the named parameter `Point_set_curvatures::parameters::automatic_scale()`: the
+  /// standard error of `mean_curvature` estimated at the chosen scale from the residuals of a
+  /// quadric fitted to the neighbours' positions (an estimate of the noise's share of the
+  /// error, not of the bias); NaN otherwise
+  FT mean_curvature_error = nan();
   /// number of input points at distance `< r` from the query point, the query point included
+  /// (with `automatic_scale()`: at the chosen scale)
   std::size_t neighbor_count = 0;
   /// why the estimate is (in)valid
   Curvature_estimate_status status = Curvature_estimate_status::NOT_COMPUTED;

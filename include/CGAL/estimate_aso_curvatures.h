@@ -8,6 +8,7 @@
 #include <CGAL/Algebraic_shape_operator_fit.h>
 #include <CGAL/Point_set_curvatures/parameters.h>
 #include <CGAL/Point_set_curvatures/internal/algebraic_shape_operator.h>
+#include <CGAL/Point_set_curvatures/internal/automatic_scale.h>
 #include <CGAL/Point_set_curvatures/internal/estimate_at_every_point.h>
 #include <CGAL/estimate_apss_curvatures.h>
 
@@ -280,6 +281,7 @@ std::vector<Curvature_estimate<
 estimate_aso_curvatures(const PointRange& points, double radius,
                         const NamedParameters& np = parameters::default_values())
 {
+  Point_set_curvatures::internal::automatic_scale_parameter(np, true, "estimate_aso_curvatures");
   return Point_set_curvatures::internal::estimate_at_every_point<ConcurrencyTag>(
     points, true, radius, np, Point_set_curvatures::internal::aso_estimator_from(np),
     "estimate_aso_curvatures");
@@ -295,9 +297,18 @@ template <typename ConcurrencyTag, typename PointRange, typename NamedParameters
 typename Point_set_curvatures::internal::Estimates_without_radius<PointRange, NamedParameters>::type
 estimate_aso_curvatures(const PointRange& points, const NamedParameters& np)
 {
-  return Point_set_curvatures::internal::estimate_at_every_point<ConcurrencyTag>(
-    points, false, 0.0, np, Point_set_curvatures::internal::aso_estimator_from(np),
-    "estimate_aso_curvatures");
+  namespace I = Point_set_curvatures::internal;
+  const char* name = "estimate_aso_curvatures";
+  const I::Aso_estimator aso = I::aso_estimator_from(np);
+  const std::size_t largest = I::automatic_scale_parameter(np, false, name);
+  if(largest == 0)
+    return I::estimate_at_every_point<ConcurrencyTag>(points, false, 0.0, np, aso, name);
+  I::Apss_estimator sphere;
+  sphere.orient_neighbors = aso.settings.orient_neighbors;
+  I::Scale_ladder ladder;
+  ladder.smallest = I::checked_scale<PointRange>(0.0, false, np, name);
+  ladder.largest = largest;
+  return I::estimate_at_automatic_scale<ConcurrencyTag>(points, np, aso, sphere, ladder, name);
 }
 
 /// \ingroup PkgPointSetCurvaturesRef

@@ -9,6 +9,7 @@
 #ifndef CGAL_ESTIMATE_ORIENTED_NORMALS_H
 #define CGAL_ESTIMATE_ORIENTED_NORMALS_H
 
+#include <CGAL/Point_set_curvatures/internal/automatic_scale.h>
 #include <CGAL/Point_set_curvatures/internal/estimate_at_every_point.h>
 #include <CGAL/Point_set_curvatures/internal/pca_plane.h>
 #include <CGAL/Point_set_curvatures/internal/quadric_fit.h>
@@ -168,6 +169,7 @@ struct Normal_record
   double normal[3] = {0, 0, 0};
   std::uint32_t neighbor[normal_graph_degree];
   std::uint8_t degree = 0;
+  std::size_t count = 0;  // with the automatic scale: the chosen neighbourhood's size
   Curvature_estimate_status status = Curvature_estimate_status::NOT_COMPUTED;
 };
 
@@ -176,6 +178,7 @@ struct Normal_record
 struct Normal_at_point
 {
   Normal_fit fit;
+  Scale_ladder ladder;  // ladder.largest 0: the driver's neighbourhood; else the automatic scale
   Normal_record operator()(const Neighborhood& nb) const;
 };
 
@@ -189,7 +192,16 @@ inline Normal_record Normal_at_point::operator()(const Neighborhood& nb) const
     return r;
   }
   bool found = false;
-  if(fit == Normal_fit::QUADRIC)
+  if(ladder.largest > 0)
+  {
+    thread_local std::vector<double> d2;
+    thread_local Sub_neighborhood chosen, trial;
+    Quadric_fit quadric;  // with the penalty that scan lines need
+    const Scale_choice c = ladder.choose(nb, d2, chosen, trial);
+    found = c.found && quadric.compute(chosen.nb) && quadric.normal(r.normal);
+    r.count = c.count;
+  }
+  else if(fit == Normal_fit::QUADRIC)
   {
     Quadric_fit quadric;
     found = quadric.compute(nb) && quadric.normal(r.normal);
@@ -208,26 +220,18 @@ inline Normal_record Normal_at_point::operator()(const Neighborhood& nb) const
   }
   r.status = Curvature_estimate_status::VALID;
   // the nearest neighbours other than the point itself, ties by input index
-  std::pair<double, std::uint32_t> candidates[64];
-  std::size_t c = 0;
+  thread_local std::vector<std::pair<double, std::uint32_t> > candidates;
+  candidates.clear();
   for(std::size_t i = 0; i < nb.size; ++i)
   {
     const double d2 = nb.qx[i] * nb.qx[i] + nb.qy[i] * nb.qy[i] + nb.qz[i] * nb.qz[i];
     if(d2 == 0)
       continue;  // the point itself, or a copy of it: no orientation to learn from it
-    const std::pair<double, std::uint32_t> e(d2, nb.input_index[nb.index[i]]);
-    if(c < 64)
-      candidates[c++] = e;
-    else
-    {
-      // keep the 64 nearest: replace the farthest if closer
-      std::pair<double, std::uint32_t>* far = std::max_element(candidates, candidates + c);
-      if(e < *far)
-        *far = e;
-    }
+    candidates.emplace_back(d2, nb.input_index[nb.index[i]]);
   }
+  const std::size_t c = candidates.size();
   const std::size_t degree = std::min(c, normal_graph_degree);
-  std::partial_sort(candidates, candidates + degree, candidates + c);
+  std::partial_sort(candidates.begin(), candidates.begin() + degree, candidates.end());
   for(std::size_t i = 0; i < degree; ++i)
     r.neighbor[i] = candidates[i].second;
   r.degree = static_cast<std::uint8_t>(degree);
@@ -406,6 +410,12 @@ std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, dou
   const std::size_t k = choose_parameter(get_parameter(np, internal_np::neighbor_count),
                                          radius_given ? std::size_t(0) : default_normal_neighbors(fit));
   check_scale(radius, k, !radius_given, name);
+  Scale_ladder ladder;
+  ladder.largest = automatic_scale_parameter(np, radius_given, name);
+  ladder.smallest = k;
+  ladder.statistic = Scale_ladder::Statistic::NORMAL;
+  if(ladder.largest > 0 && fit != Normal_fit::QUADRIC)
+    throw std::invalid_argument("estimate_oriented_normals: parameter 'automatic_scale' needs Normal_fit::QUADRIC");
   const Normal_orientation orientation =
     choose_parameter(get_parameter(np, internal_np::normal_orientation), Normal_orientation());
   for(double t : orientation.target)
@@ -435,8 +445,43 @@ std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, dou
   const auto point_map = NP_helper::get_const_point_map(points, np);
   typedef typename boost::property_traits<decltype(point_map)>::key_type Key;
   const CGAL::Constant_property_map<Key, Vector_3> no_normal(Vector_3(0, 0, 1));
-  const std::vector<Normal_record> records = evaluate_with_maps<Normal_record, ConcurrencyTag>(
-    points, radius_given, radius, k, point_map, no_normal, options, Normal_at_point{fit});
+  // (the automatic scale: every point on the first two rungs, then the whole ladder for the
+  // points whose second rung was kept, as estimate_at_automatic_scale() does)
+  Scale_ladder first = ladder;
+  if(ladder.largest > 0)
+    first.largest = std::min(ladder.largest, 2 * k);
+  const bool second_pass = ladder.largest > 0 && ladder.rungs() > first.rungs();
+  const std::function<bool(double)> one_pass_callback = options.callback;
+  if(second_pass && one_pass_callback)
+    options.callback = [&one_pass_callback](double f) { return one_pass_callback(0.4 * f); };
+  std::vector<Normal_record> records = evaluate_with_maps<Normal_record, ConcurrencyTag>(
+    points, radius_given, radius, ladder.largest > 0 ? first.largest : k, point_map, no_normal, options,
+    Normal_at_point{fit, first});
+  if(second_pass && !cancelled)
+  {
+    std::vector<char> larger(records.size(), 0);
+    bool any = false;
+    for(std::size_t i = 0; i < records.size(); ++i)
+      if(records[i].status == Curvature_estimate_status::VALID && records[i].count >= first.largest)
+      {
+        larger[i] = 1;
+        any = true;
+      }
+    Neighborhood_options o = options;
+    o.visit = &larger;
+    if(one_pass_callback)
+      o.callback = [&one_pass_callback](double f) { return one_pass_callback(0.4 + 0.6 * f); };
+    if(!any && o.callback)
+      o.callback(1.0);
+    if(any)
+    {
+      const std::vector<Normal_record> more = evaluate_with_maps<Normal_record, ConcurrencyTag>(
+        points, radius_given, radius, ladder.largest, point_map, no_normal, o, Normal_at_point{fit, ladder});
+      for(std::size_t i = 0; i < records.size(); ++i)
+        if(larger[i])
+          records[i] = more[i];
+    }
+  }
   if(!options.has_tile)  // (with a tile, the other points are not computed)
     for(const Normal_record& r : records)
       cancelled = cancelled || r.status == Curvature_estimate_status::NOT_COMPUTED;

@@ -42,6 +42,7 @@ namespace internal_np {
 
 enum aso_projection_t { aso_projection };
 enum neighbor_count_t { neighbor_count };
+enum automatic_scale_t { automatic_scale };
 
 } // namespace internal_np
 
@@ -73,6 +74,29 @@ neighbor_count(std::size_t k, const NamedParameters& np = CGAL::parameters::defa
 {
   return CGAL::Named_function_parameters<std::size_t, internal_np::neighbor_count_t,
                                          NamedParameters>(k, np);
+}
+
+/// Named parameter of `estimate_aso_curvatures()` (by count) and `estimate_oriented_normals()`
+/// (`Normal_fit::QUADRIC`): the scale is chosen per point among the neighbour counts `k`,
+/// `2k`, `4k`, ... up to `largest` (`k` that of `neighbor_count`), for clouds with position
+/// noise (scans). A quadric fitted to the positions at each count gives the mean curvature
+/// (for normals: the normal) and its standard error under the noise that its residuals
+/// show; the count kept is the largest whose value agrees with those of every smaller count
+/// within three standard errors (the intersection of confidence intervals, a Lepski-type
+/// rule). Without noise (less than half of the smallest count's residuals) the smallest
+/// count is kept and the estimate is that of `neighbor_count(k)`. Where a larger count is
+/// chosen, the mean curvature is that of the APSS sphere on its neighbourhood when it agrees
+/// with the quadric's, the difference of the principal curvatures and the directions the
+/// ASO's. `Curvature_estimate::neighbor_count` is then the chosen count and
+/// `Curvature_estimate::mean_curvature_error` the standard error of the mean curvature there.
+/// Costs a neighbourhood of `largest` points per point. Default: none (the scale of
+/// `neighbor_count`); 0 is none too. Not supported with a radius.
+/// Measurements: benchmark/README.md, "Automatic scale".
+template <class NamedParameters = CGAL::parameters::Default_named_parameters>
+CGAL::Named_function_parameters<std::size_t, internal_np::automatic_scale_t, NamedParameters>
+automatic_scale(std::size_t largest, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return CGAL::Named_function_parameters<std::size_t, internal_np::automatic_scale_t, NamedParameters>(largest, np);
 }
 
 } // namespace parameters

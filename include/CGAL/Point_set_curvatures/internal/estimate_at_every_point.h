@@ -297,6 +297,18 @@ Local_estimate refinement_estimate(const Estimator& estimator, const Neighborhoo
     return estimator(nb);
 }
 
+// What a pass of estimate_at_every_point() may change: the neighbour count the estimator
+// receives (0: that of the named parameters, which the sample weights use), the points it
+// visits (null: all), the share of the callback's [0, 1] it reports in, and a flag set if the
+// callback cancels it.
+struct Pass_options
+{
+  std::size_t visit_k = 0;
+  const std::vector<char>* visit = nullptr;
+  double progress_start = 0, progress_size = 1;
+  bool* cancelled = nullptr;
+};
+
 // The evaluation of estimate_at_every_point() at one point: TOO_FEW_NEIGHBORS below
 // `min_neighbors`, else the estimator (`refinement`: its normal fit, for a refinement pass),
 // DEGENERATE_FIT without tangent spread where the estimator asks for that test. With
@@ -340,14 +352,25 @@ std::vector<Curvature_estimate<
   typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
 estimate_at_every_point(const PointRange& points, bool radius_given, double radius,
                         const NamedParameters& np, const Estimator& estimator,
-                        const char* function_name)
+                        const char* function_name, const Pass_options& pass = Pass_options())
 {
   typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
   typedef typename NP_helper::Geom_traits Geom_traits;
   typedef Curvature_estimate<Geom_traits> Estimate;
+  // k: the scale of the named parameters, which the sample weights use; visit_k (if not 0):
+  // the neighbourhoods the estimator receives (the automatic scale's largest)
   const std::size_t k = checked_scale<PointRange>(radius, radius_given, np, function_name);
+  const std::size_t visit_k = pass.visit_k > 0 ? pass.visit_k : k;
   const std::size_t min_neighbors = min_neighbors_parameter(np, estimator.min_neighbors);
   Neighborhood_options options = neighborhood_options(np, function_name, estimator.normalize_normals);
+  options.visit = pass.visit;
+  if(options.callback && (pass.progress_start != 0 || pass.progress_size != 1 || pass.cancelled))
+    options.callback = [callback = options.callback, pass](double f) {
+      const bool go_on = callback(pass.progress_start + pass.progress_size * f);
+      if(!go_on && pass.cancelled)
+        *pass.cancelled = true;
+      return go_on;
+    };
   // With a tile, sample weights and neighbourhoods by count: how far from the core the
   // neighbours of the own points lie (see below).
   Atomic_max* neighbor_extent = nullptr;
@@ -367,7 +390,7 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
     options.sample_weights = &given_weights;
   const bool area_pass = estimator.sample_weights && !weights_given;
   if(!area_pass && estimator.refinement == 0)
-    return evaluate_with_maps<Estimate, ConcurrencyTag>(points, radius_given, radius, k, point_map,
+    return evaluate_with_maps<Estimate, ConcurrencyTag>(points, radius_given, radius, visit_k, point_map,
                                                         normal_map, options, evaluation(false));
 
   if(options.has_tile && estimator.refinement > 0)
@@ -395,7 +418,7 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
       start += c;
     }
   }
-  std::size_t pass = 0;
+  std::size_t pass_index = 0;
   const std::function<bool(double)> callback = options.callback;
   bool cancelled = false;
   auto share = [&](std::size_t p) {
@@ -421,8 +444,9 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
     // area reaches r/2 beyond it). By count, the estimation records how far from the core
     // the own points' neighbours lie, and the areas of the points that close to the core must
     // reach no farther than the halo (checked after the estimation).
-    Neighborhood_options o = share(pass++);
+    Neighborhood_options o = share(pass_index++);
     o.has_tile = false;
+    o.visit = nullptr;  // every point's area: the visited points' neighbours are weighted
     // the areas use the query's normal direction only: unit normals whatever the estimator
     // wants, so that they are bitwise those of estimate_tangent_voronoi_areas()
     o.normalize_normals = true;
@@ -443,9 +467,9 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
   for(std::size_t r = 0; r <= estimator.refinement; ++r)
   {
     const bool last = r == estimator.refinement;
-    Neighborhood_options o = share(pass++);
+    Neighborhood_options o = share(pass_index++);
     if(r == 0)
-      result = evaluate_with_maps<Estimate, ConcurrencyTag>(points, radius_given, radius, k, point_map,
+      result = evaluate_with_maps<Estimate, ConcurrencyTag>(points, radius_given, radius, visit_k, point_map,
                                                             normal_map, o, evaluation(!last));
     else
     {
@@ -456,7 +480,7 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
         refined.emplace_back(get(point_map, *it), result[i].is_valid() ? result[i].normal : get(normal_map, *it));
       const CGAL::First_of_pair_property_map<Oriented> refined_points;
       const CGAL::Second_of_pair_property_map<Oriented> refined_normals;
-      result = evaluate_with_maps<Estimate, ConcurrencyTag>(refined, radius_given, radius, k, refined_points,
+      result = evaluate_with_maps<Estimate, ConcurrencyTag>(refined, radius_given, radius, visit_k, refined_points,
                                                             refined_normals, o, evaluation(!last));
     }
     if(cancelled && !last)

@@ -149,7 +149,7 @@ Curvature_estimate<GeomTraits> to_curvature_estimate(const Local_estimate& e, st
   typedef typename GeomTraits::FT FT;
   typedef typename GeomTraits::Vector_3 Vector_3;
   Curvature_estimate<GeomTraits> r;
-  r.neighbor_count = count;
+  r.neighbor_count = e.neighbor_count > 0 ? e.neighbor_count : count;
   r.status = e.status;
   // NaN marks a quantity the estimator does not provide; an infinite value is an overflow
   // (e.g. K = k_min k_max for curvatures near 1e160): never hand it out as valid.
@@ -169,6 +169,7 @@ Curvature_estimate<GeomTraits> to_curvature_estimate(const Local_estimate& e, st
   r.min_direction = Vector_3(FT(e.d_min[0]), FT(e.d_min[1]), FT(e.d_min[2]));
   r.max_direction = Vector_3(FT(e.d_max[0]), FT(e.d_max[1]), FT(e.d_max[2]));
   r.normal_coherence = FT(e.normal_coherence);
+  r.mean_curvature_error = FT(e.mean_error);
   return r;
 }
 
@@ -187,6 +188,9 @@ struct Neighborhood_options
   double reach = 1;
   // Per input point, a weight the visitor receives per neighbour (nb.sample_weight), or null.
   const std::vector<double>* sample_weights = nullptr;
+  // Per input point, whether it is visited (non-zero), or null for every point: the others
+  // (of the tile's own points) stay NOT_COMPUTED but are neighbours as usual.
+  const std::vector<char>* visit = nullptr;
 };
 
 // Usable normal: non-zero, finite and, unless accepted, of length in [1e-3, 1e3].
@@ -364,16 +368,19 @@ void read_and_sort(const PointRange& points, PointMap point_map, NormalMap norma
     });
   }
 
-  // The tile's own points.
+  // The tile's own points (among those to visit).
   cloud.own_count = n_usable;
-  if(options.has_tile)
+  if(options.has_tile || options.visit)
   {
     cloud.own.assign(n_usable, 0);
     for_index_chunks<ConcurrencyTag>(n_usable, [&](std::size_t first, std::size_t last) {
       for(std::size_t k = first; k < last; ++k)
       {
         const double* x = &cloud.position[3 * k];
-        cloud.own[k] = options.tile.owns(x[0], x[1], x[2]) ? 1 : 0;
+        cloud.own[k] = (!options.has_tile || options.tile.owns(x[0], x[1], x[2])) &&
+                           (!options.visit || (*options.visit)[cloud.input_index[k]])
+                         ? 1
+                         : 0;
       }
     });
     cloud.own_count = static_cast<std::size_t>(std::count(cloud.own.begin(), cloud.own.end(), char(1)));

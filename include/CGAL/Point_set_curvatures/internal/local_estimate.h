@@ -167,6 +167,10 @@ struct Local_estimate
   double d_min[3] = {nan, nan, nan};
   double d_max[3] = {nan, nan, nan};
   double normal_coherence = nan;  // |sum w n| / sum w of the fit (ASO, APSS)
+  // With the automatic scale: the standard error of `mean` estimated at the chosen scale, and
+  // that scale's neighbour count (0: the driver's neighbourhood size).
+  double mean_error = nan;
+  std::size_t neighbor_count = 0;
   Curvature_estimate_status status = Curvature_estimate_status::NOT_COMPUTED;
 
   static Local_estimate invalid(Curvature_estimate_status s)

@@ -42,6 +42,7 @@
 #include <CGAL/Point_set_curvatures/internal/pss.h>
 #include <CGAL/Point_set_curvatures/internal/symmetric_eigen_3.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 
@@ -67,6 +68,22 @@ struct Quadric_fit
 {
   double t1[3], t2[3], n0[3];  // the frame of the fit, n0 oriented like the query's normal
   double a[6];                 // the height field's coefficients (scaled frame)
+  Quadratic_height_fit equations;  // the weighted normal equations solved, penalty included
+
+  // Neighbour i in the fit's frame: its kernel weight, tangent coordinates and height; false
+  // for a weight of 0 (the neighbourhood's border).
+  bool in_frame(const Neighborhood& nb, std::size_t i, double& w, double& u, double& v, double& h) const
+  {
+    const double q[3] = {nb.qx[i], nb.qy[i], nb.qz[i]};
+    w = pss_weight(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+    u = t1[0] * q[0] + t1[1] * q[1] + t1[2] * q[2];
+    v = t2[0] * q[0] + t2[1] * q[1] + t2[2] * q[2];
+    h = n0[0] * q[0] + n0[1] * q[1] + n0[2] * q[2];
+    return w > 0;
+  }
+
+  // The penalty's weight (see the header comment); 0: the plain least-squares quadric.
+  double anisotropy_penalty = 5e-4;
 
   // Fits the neighbourhood; false if its neighbours do not spread in two directions or the
   // fit has no solution.
@@ -103,26 +120,68 @@ struct Quadric_fit
       t2[i] = vectors[1][i];
     }
 
-    Quadratic_height_fit fit;
+    Quadratic_height_fit& fit = equations;
+    fit = Quadratic_height_fit();
     double fourth = 0;
     for(std::size_t i = 0; i < nb.size; ++i)
     {
-      const double q[3] = {nb.qx[i], nb.qy[i], nb.qz[i]};
-      const double w = pss_weight(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
-      if(!(w > 0))
+      double w, u, v, h;
+      if(!in_frame(nb, i, w, u, v, h))
         continue;
-      const double u = t1[0] * q[0] + t1[1] * q[1] + t1[2] * q[2];
-      const double v = t2[0] * q[0] + t2[1] * q[1] + t2[2] * q[2];
-      fit.add(u, v, n0[0] * q[0] + n0[1] * q[1] + n0[2] * q[2], w);
+      fit.add(u, v, h, w);
       fourth += w * (u * u + v * v) * (u * u + v * v);
     }
     // the penalty lambda ((a3 - a5)² + a4²) / 2 in the normal equations (upper triangle)
-    const double lambda = 5e-4 * fourth;
+    const double lambda = anisotropy_penalty * fourth;
     fit.ata[3][3] += lambda;
     fit.ata[3][5] -= lambda;
     fit.ata[5][5] += lambda;
     fit.ata[4][4] += lambda;
     return fit.solve(a);
+  }
+
+  // After compute(): what the variances of linear combinations g[i] . a of the coefficients
+  // are made of under independent position noise of variance sigma²: the sandwich covariance
+  // of weighted least squares gives sigma² times factor[i] = g[i]ᵀ M⁻¹ (sum w² m mᵀ) M⁻¹ g[i],
+  // M the normal equations; `sigma2` is the weighted mean squared residual with n_eff /
+  // (n_eff - 6), n_eff = (sum w)² / sum w², for the six coefficients (scaled frame). False if
+  // these have no value.
+  bool variance_factors(const Neighborhood& nb, const double (*g)[6], int count, double* factor, double& sigma2) const
+  {
+    double b[6][6] = {}, sw = 0, sw2 = 0, ssr = 0;
+    for(std::size_t i = 0; i < nb.size; ++i)
+    {
+      double w, u, v, e;
+      if(!in_frame(nb, i, w, u, v, e))
+        continue;
+      const double m[6] = {1.0, u, v, u * u, u * v, v * v};
+      for(int j = 0; j < 6; ++j)
+        e -= a[j] * m[j];
+      sw += w;
+      sw2 += w * w;
+      ssr += w * e * e;
+      for(int j = 0; j < 6; ++j)
+        for(int l = j; l < 6; ++l)
+          b[j][l] += w * w * m[j] * m[l];
+    }
+    const double n_eff = sw2 > 0 ? sw * sw / sw2 : 0.0;
+    if(!(n_eff > 6.5))
+      return false;
+    sigma2 = ssr / sw * n_eff / (n_eff - 6.0);
+    for(int c = 0; c < count; ++c)
+    {
+      Quadratic_height_fit solve_for = equations;
+      std::copy(g[c], g[c] + 6, solve_for.atb);
+      double y[6];
+      if(!solve_for.solve(y))
+        return false;
+      double var = 0;
+      for(int j = 0; j < 6; ++j)
+        for(int l = 0; l < 6; ++l)
+          var += y[j] * (j <= l ? b[j][l] : b[l][j]) * y[l];
+      factor[c] = std::max(0.0, var);
+    }
+    return std::isfinite(sigma2);
   }
 
   // The unit normal of the fitted surface at the query, oriented like the query's normal.

@@ -1,0 +1,378 @@
+// Copyright (c) 2026 The Point_set_curvatures authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The automatic scale (named parameter automatic_scale): for each point, the neighbour count
+// among a ladder k0, 2 k0, 4 k0, ... up to the largest one, chosen by the rule of the
+// intersection of confidence intervals (Goldenshluger and Nemirovski 1997; Katkovnik 1999),
+// a Lepski-type rule.
+//
+// The driver hands the estimator the neighbourhood of the largest count. On each rung j, the
+// k_j nearest of it (with the driver's rule for ties: every point closer than
+// (1 + 2^-20) d_{k_j}) are fitted with the weighted quadric of positions of quadric_fit.h
+// (without its anisotropy penalty), which gives the statistic the rungs are compared by (the
+// mean curvature H_j for curvatures; for normals, the normal's two components in the first
+// rung's tangent frame) and, by the sandwich formula of weighted least squares, its variance
+// per unit of noise variance.
+//
+// The noise. A fit's residual variance is the position noise's plus the surface's own
+// third-order terms, which grow as r⁶; the first two rungs separate the two. Where the noise
+// is less than half of the first rung's residual variance (smooth surfaces without noise),
+// the first rung is kept: its estimate is the one of the fixed count k.
+//
+// The rule. Each rung's interval is its statistic plus or minus kappa standard errors; the
+// rule keeps the largest rung whose interval meets those of every smaller rung. Under noise
+// the standard error falls as the scale grows (about k^-1.5) and the rungs agree until the
+// surface's variation (bias) shows.
+//
+// The estimate is then the wrapped estimator on the chosen rung's neighbourhood. Where a
+// rung above the first is chosen (noise dominates), the mean curvature is that of the APSS
+// sphere on the same neighbourhood (a fit of the sphere, 2 to 4 times more robust to
+// position noise than estimators that differentiate a tensor) if it lies within kappa
+// standard errors of the rung's quadric (strongly anisotropic shapes bias the sphere at large
+// scales), and the anisotropic part (k_max - k_min, the directions) is the wrapped
+// estimator's. kappa, the noise share and the sphere's rule were chosen on the simulated
+// scans of benchmark/scan_experiments (benchmark/README.md, "Automatic scale").
+
+#ifndef CGAL_POINT_SET_CURVATURES_INTERNAL_AUTOMATIC_SCALE_H
+#define CGAL_POINT_SET_CURVATURES_INTERNAL_AUTOMATIC_SCALE_H
+
+#include <CGAL/Point_set_curvatures/internal/estimate_at_every_point.h>
+#include <CGAL/Point_set_curvatures/internal/estimation_driver.h>
+#include <CGAL/Point_set_curvatures/internal/knn_neighborhoods.h>
+#include <CGAL/Point_set_curvatures/internal/local_estimate.h>
+#include <CGAL/Point_set_curvatures/internal/quadric_fit.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Point_set_curvatures {
+namespace internal {
+
+// The half-width of the confidence intervals, in standard errors (see the header comment).
+constexpr double automatic_scale_kappa = 3.0;
+// The least share of the smallest scale's residual variance that must be noise for a larger
+// scale to be considered (see the header comment).
+constexpr double automatic_scale_noise_share = 0.5;
+
+// A neighbourhood of the first points of another, in its own scaled frame.
+struct Sub_neighborhood
+{
+  std::vector<double> qx, qy, qz, nx, ny, nz, weight;
+  std::vector<std::uint32_t> index;
+  Neighborhood nb;
+
+  // The points of `whole` closer than `radius` (in whole's scaled units), in whole's order,
+  // scaled by `radius`.
+  void take(const Neighborhood& whole, double radius)
+  {
+    const double r2 = radius * radius, inverse = 1.0 / radius;
+    for(auto* v : {&qx, &qy, &qz, &nx, &ny, &nz, &weight})
+      v->clear();
+    index.clear();
+    for(std::size_t i = 0; i < whole.size; ++i)
+    {
+      const double d2 = whole.qx[i] * whole.qx[i] + whole.qy[i] * whole.qy[i] + whole.qz[i] * whole.qz[i];
+      if(!(d2 < r2))
+        continue;
+      qx.push_back(whole.qx[i] * inverse);
+      qy.push_back(whole.qy[i] * inverse);
+      qz.push_back(whole.qz[i] * inverse);
+      nx.push_back(whole.nx[i]);
+      ny.push_back(whole.ny[i]);
+      nz.push_back(whole.nz[i]);
+      if(whole.sample_weight)
+        weight.push_back(whole.sample_weight[i]);
+      if(whole.index)
+        index.push_back(whole.index[i]);
+    }
+    nb = whole;
+    nb.size = qx.size();
+    nb.qx = qx.data();
+    nb.qy = qy.data();
+    nb.qz = qz.data();
+    nb.nx = nx.data();
+    nb.ny = ny.data();
+    nb.nz = nz.data();
+    nb.sample_weight = whole.sample_weight ? weight.data() : nullptr;
+    nb.index = whole.index ? index.data() : nullptr;
+    nb.radius = whole.radius * radius;
+  }
+};
+
+// The chosen rung (its neighbourhood is left in `chosen`): its rank on the ladder, its
+// neighbour count, the standard error of H there (input units).
+struct Scale_choice
+{
+  std::size_t rung = 0;
+  std::size_t count = 0;
+  double mean_error = std::numeric_limits<double>::quiet_NaN();
+  double mean = 0;  // the quadric's H at the chosen rung (mean curvature statistic)
+  bool found = false;
+};
+
+// The ladder's settings: the smallest and the largest neighbour count.
+struct Scale_ladder
+{
+  std::size_t smallest = 40;
+  std::size_t largest = 640;
+
+  std::size_t rungs() const
+  {
+    std::size_t n = 1;
+    for(std::size_t k = smallest; 2 * k <= largest; k *= 2)
+      ++n;
+    return n;
+  }
+
+  // What the rungs are compared by: the mean curvature (for curvatures), or the normal's two
+  // tangent components in the smallest rung's frame (for normals, whose bias shows at smaller
+  // scales than the curvature's).
+  enum class Statistic { MEAN_CURVATURE, NORMAL };
+  Statistic statistic = Statistic::MEAN_CURVATURE;
+
+  // Chooses the rung of `whole` (the neighbourhood of `largest`, scaled by its radius) and
+  // leaves its neighbourhood in `chosen`; `d2`, `trial`: scratch.
+  Scale_choice choose(const Neighborhood& whole, std::vector<double>& d2, Sub_neighborhood& chosen,
+                      Sub_neighborhood& trial) const
+  {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    Scale_choice c;
+    d2.resize(whole.size);
+    for(std::size_t i = 0; i < whole.size; ++i)
+      d2[i] = whole.qx[i] * whole.qx[i] + whole.qy[i] * whole.qy[i] + whole.qz[i] * whole.qz[i];
+    std::size_t ordered = 0;  // d2[0, ordered) holds the smallest values, each below the rest
+    const bool by_normal = statistic == Statistic::NORMAL;
+    const int m = by_normal ? 2 : 1;
+    // the statistic's coefficients: a3 + a5 (H = -(a3 + a5) / r), or the slopes a1, a2
+    const double g_mean[1][6] = {{0, 0, 0, 1, 0, 1}};
+    const double g_normal[2][6] = {{0, 1, 0, 0, 0, 0}, {0, 0, 1, 0, 0, 0}};
+    const double (*g)[6] = by_normal ? g_normal : g_mean;
+    double lo[2] = {-inf, -inf}, hi[2] = {inf, inf};
+    bool compared = false;  // intervals started (second rung reached)
+    double reference[3] = {whole.query_normal[0], whole.query_normal[1], whole.query_normal[2]};
+    double axis[2][3] = {};  // the smallest rung's tangent frame (normals)
+    // the smallest rung's values, variance factors and residual variance (input units), kept
+    // until the second rung tells the noise
+    double v0[2] = {0, 0}, factor0[2] = {0, 0}, residual0 = 0, radius0 = 0, noise2 = 0;
+    std::size_t k = smallest;
+    for(std::size_t j = 0; k <= whole.size && j < rungs(); ++j, k *= 2)
+    {
+      // the driver's radius rule: the k nearest and those tied with the k-th (the k-th smallest
+      // of d2, found among those not below a previous rung's)
+      std::nth_element(d2.begin() + ordered, d2.begin() + (k - 1), d2.end());
+      ordered = k;
+      const double r2 = d2[k - 1];
+      if(r2 == 0)
+        continue;
+      Sub_neighborhood& target = c.found ? trial : chosen;
+      target.take(whole, std::min(knn_radius_factor * std::sqrt(r2), 1.0));
+      std::copy(reference, reference + 3, target.nb.query_normal);
+      // the plain quadric: the penalty of the normals' fit adds a bias that does not grow as r³
+      Quadric_fit fit;
+      fit.anisotropy_penalty = 0;
+      double sigma2 = 0, factor[2] = {0, 0}, v[2] = {0, 0}, n[3];
+      if(!fit.compute(target.nb) || !fit.variance_factors(target.nb, g, m, factor, sigma2) || !fit.normal(n))
+        break;
+      // to input units: a residual variance times r²; H = -(a3 + a5) / r, its variance factor
+      // over r⁴; a slope is a ratio of lengths, its variance factor over r²
+      const double r = target.nb.radius;
+      sigma2 *= r * r;
+      if(!c.found && by_normal)
+        for(int a = 0; a < 3; ++a)
+        {
+          axis[0][a] = fit.t1[a];
+          axis[1][a] = fit.t2[a];
+        }
+      for(int i = 0; i < m; ++i)
+      {
+        if(by_normal)
+        {
+          v[i] = n[0] * axis[i][0] + n[1] * axis[i][1] + n[2] * axis[i][2];
+          factor[i] /= r * r;
+        }
+        else
+        {
+          v[i] = -(fit.a[3] + fit.a[5]) / r;
+          factor[i] /= r * r * r * r;
+        }
+      }
+      if(!c.found)
+      {
+        std::copy(v, v + 2, v0);
+        std::copy(factor, factor + 2, factor0);
+        residual0 = sigma2;
+        radius0 = r;
+        noise2 = sigma2;  // (an upper bound while no other rung tells)
+      }
+      else
+      {
+        if(!compared)
+        {
+          // The residuals' variance is the noise's plus the surface's third-order terms,
+          // which grow as r⁶: two rungs separate them.
+          compared = true;
+          const double growth = std::pow(r / radius0, 6);
+          noise2 = growth > 1.01 ? std::clamp((growth * residual0 - sigma2) / (growth - 1), 0.0, residual0) : residual0;
+          for(int i = 0; i < m; ++i)
+          {
+            const double s0 = std::sqrt(noise2 * factor0[i]);
+            lo[i] = v0[i] - automatic_scale_kappa * s0;
+            hi[i] = v0[i] + automatic_scale_kappa * s0;
+          }
+          c.mean_error = std::sqrt(noise2 * factor0[0]);
+          // Without noise dominating the smallest scale's residuals, its fit is the best one
+          // (the estimate of the noise, from about 20 effective points, is itself noisy).
+          if(noise2 < automatic_scale_noise_share * residual0)
+            break;
+        }
+        bool meet = true;
+        for(int i = 0; i < m; ++i)
+        {
+          const double s = std::sqrt(noise2 * factor[i]);
+          lo[i] = std::max(lo[i], v[i] - automatic_scale_kappa * s);
+          hi[i] = std::min(hi[i], v[i] + automatic_scale_kappa * s);
+          meet = meet && lo[i] <= hi[i];
+        }
+        if(!meet)
+          break;
+        std::swap(chosen, trial);
+      }
+      c.mean_error = std::sqrt(noise2 * factor[0]);
+      c.found = true;
+      c.rung = j;
+      c.mean = v[0];
+      c.count = chosen.nb.size;  // (after the swap: target is the rung given up)
+      std::copy(fit.n0, fit.n0 + 3, reference);  // one side for every rung
+    }
+    return c;
+  }
+};
+
+// The automatic scale around an estimator (see the header comment).
+template <class Estimator, class Sphere>
+struct Automatic_scale_estimator : Estimator_base
+{
+  Estimator estimator;
+  Sphere sphere;
+  Scale_ladder ladder;
+
+  Automatic_scale_estimator(const Estimator& e, const Sphere& s, const Scale_ladder& l)
+    : Estimator_base(e), estimator(e), sphere(s), ladder(l)
+  {
+  }
+
+  Local_estimate operator()(const Neighborhood& nb) const
+  {
+    thread_local std::vector<double> d2;
+    thread_local Sub_neighborhood chosen, trial;
+    const Scale_choice c = ladder.choose(nb, d2, chosen, trial);
+    if(!c.found)
+      return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
+    Local_estimate e = estimator(chosen.nb);
+    if(e.status == Curvature_estimate_status::VALID && c.rung > 0)
+    {
+      // the sphere's mean curvature where it agrees with the chosen rung's quadric (elsewhere
+      // the sphere is biased: strongly anisotropic shapes at large scales)
+      double mean = e.mean;
+      const Local_estimate s = sphere(chosen.nb);
+      if(s.status == Curvature_estimate_status::VALID && std::isfinite(s.mean) &&
+         std::abs(s.mean - c.mean) <= automatic_scale_kappa * c.mean_error)
+        mean = s.mean;
+      const double half = 0.5 * (e.k_max - e.k_min);
+      e.mean = mean;
+      e.k_min = mean - half;
+      e.k_max = mean + half;
+      e.gaussian = e.k_min * e.k_max;
+    }
+    e.neighbor_count = c.count;
+    e.mean_error = c.mean_error;
+    return e;
+  }
+};
+
+// The two passes of the automatic scale: every point on the ladder's first two rungs (the
+// neighbourhood of 2 k), then, on the whole ladder (the neighbourhood of `largest`), only the
+// points whose second rung was kept; the others (smooth surfaces without noise) do not pay
+// the largest neighbourhood. A point's result does not depend on the pass that computed it
+// being shared with other points (the tiles, the concurrency). The callback sees the passes
+// as 40% and 60% of [0, 1].
+template <class ConcurrencyTag, class PointRange, class NamedParameters, class Estimator, class Sphere>
+auto estimate_at_automatic_scale(const PointRange& points, const NamedParameters& np, const Estimator& estimator,
+                                 const Sphere& sphere, const Scale_ladder& ladder, const char* function_name)
+{
+  typedef Automatic_scale_estimator<Estimator, Sphere> Wrapped;
+  Scale_ladder first = ladder;
+  first.largest = std::min(ladder.largest, 2 * ladder.smallest);
+  const bool second_pass = ladder.rungs() > first.rungs();
+  bool cancelled = false;
+  Pass_options pass;
+  pass.visit_k = first.largest;
+  pass.progress_size = second_pass ? 0.4 : 1.0;
+  pass.cancelled = &cancelled;
+  auto result = estimate_at_every_point<ConcurrencyTag>(points, false, 0.0, np, Wrapped(estimator, sphere, first),
+                                                        function_name, pass);
+  if(!second_pass || cancelled)
+    return result;
+  std::vector<char> larger(result.size(), 0);
+  bool any = false;
+  for(std::size_t i = 0; i < result.size(); ++i)
+    if(result[i].is_valid() && result[i].neighbor_count >= first.largest)
+    {
+      larger[i] = 1;
+      any = true;
+    }
+  if(!any)
+  {
+    const std::function<bool(double)> callback = CGAL::parameters::choose_parameter(
+      CGAL::parameters::get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
+    if(callback)
+      callback(1.0);
+    return result;
+  }
+  pass.visit_k = ladder.largest;
+  pass.visit = &larger;
+  pass.progress_start = 0.4;
+  pass.progress_size = 0.6;
+  const auto more = estimate_at_every_point<ConcurrencyTag>(points, false, 0.0, np, Wrapped(estimator, sphere, ladder),
+                                                            function_name, pass);
+  for(std::size_t i = 0; i < result.size(); ++i)
+    if(larger[i])
+      result[i] = more[i];
+  return result;
+}
+
+// The largest count of the named parameter automatic_scale, 0 without it. Throws
+// std::invalid_argument with a radius, or below the count of neighbor_count.
+template <class NamedParameters>
+std::size_t automatic_scale_parameter(const NamedParameters& np, bool radius_given, const char* function_name)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const std::size_t largest = choose_parameter(get_parameter(np, internal_np::automatic_scale), std::size_t(0));
+  if(largest == 0)
+    return 0;
+  const std::size_t k = choose_parameter(get_parameter(np, internal_np::neighbor_count), std::size_t(0));
+  std::ostringstream msg;
+  msg << function_name << ": parameter 'automatic_scale' ";
+  if(radius_given)
+    msg << "chooses among neighbour counts: use the overload without a radius, with neighbor_count";
+  else if(k > 0 && largest < k)
+    msg << "(" << largest << ") must be at least neighbor_count (" << k << ")";
+  else
+    return largest;
+  throw std::invalid_argument(msg.str());
+}
+
+} // namespace internal
+} // namespace Point_set_curvatures
+} // namespace CGAL
+
+#endif
