@@ -194,11 +194,10 @@ inline Normal_record Normal_at_point::operator()(const Neighborhood& nb) const
   bool found = false;
   if(ladder.largest > 0)
   {
-    thread_local std::vector<double> d2;
-    thread_local Sub_neighborhood chosen, trial;
+    thread_local Ladder_scratch scratch;
     Quadric_fit quadric;  // with the penalty that scan lines need
-    const Scale_choice c = ladder.choose(nb, d2, chosen, trial);
-    found = c.found && quadric.compute(chosen.nb) && quadric.normal(r.normal);
+    const Scale_choice c = ladder.choose(nb, scratch);
+    found = c.found && quadric.compute(scratch.chosen.nb) && quadric.normal(r.normal);
     r.count = c.count;
   }
   else if(fit == Normal_fit::QUADRIC)
@@ -445,42 +444,28 @@ std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, dou
   const auto point_map = NP_helper::get_const_point_map(points, np);
   typedef typename boost::property_traits<decltype(point_map)>::key_type Key;
   const CGAL::Constant_property_map<Key, Vector_3> no_normal(Vector_3(0, 0, 1));
-  // (the automatic scale: every point on the first two rungs, then the whole ladder for the
-  // points whose second rung was kept, as estimate_at_automatic_scale() does)
-  Scale_ladder first = ladder;
-  if(ladder.largest > 0)
-    first.largest = std::min(ladder.largest, 2 * k);
-  const bool second_pass = ladder.largest > 0 && ladder.rungs() > first.rungs();
-  const std::function<bool(double)> one_pass_callback = options.callback;
-  if(second_pass && one_pass_callback)
-    options.callback = [&one_pass_callback](double f) { return one_pass_callback(0.4 * f); };
-  std::vector<Normal_record> records = evaluate_with_maps<Normal_record, ConcurrencyTag>(
-    points, radius_given, radius, ladder.largest > 0 ? first.largest : k, point_map, no_normal, options,
-    Normal_at_point{fit, first});
-  if(second_pass && !cancelled)
+  std::vector<Normal_record> records;
+  if(ladder.largest == 0)
+    records = evaluate_with_maps<Normal_record, ConcurrencyTag>(points, radius_given, radius, k, point_map, no_normal,
+                                                                options, Normal_at_point{fit, ladder});
+  else
   {
-    std::vector<char> larger(records.size(), 0);
-    bool any = false;
-    for(std::size_t i = 0; i < records.size(); ++i)
-      if(records[i].status == Curvature_estimate_status::VALID && records[i].count >= first.largest)
-      {
-        larger[i] = 1;
-        any = true;
-      }
-    Neighborhood_options o = options;
-    o.visit = &larger;
-    if(one_pass_callback)
-      o.callback = [&one_pass_callback](double f) { return one_pass_callback(0.4 + 0.6 * f); };
-    if(!any && o.callback)
-      o.callback(1.0);
-    if(any)
-    {
-      const std::vector<Normal_record> more = evaluate_with_maps<Normal_record, ConcurrencyTag>(
-        points, radius_given, radius, ladder.largest, point_map, no_normal, o, Normal_at_point{fit, ladder});
-      for(std::size_t i = 0; i < records.size(); ++i)
-        if(larger[i])
-          records[i] = more[i];
-    }
+    const std::function<bool(double)> one_pass_callback = options.callback;  // (sets `cancelled`)
+    const auto run = [&](const Scale_ladder& l, const std::vector<char>* visit, double start, double size,
+                         bool& pass_cancelled) {
+      Neighborhood_options o = options;
+      o.visit = visit;
+      if(one_pass_callback)
+        o.callback = [&one_pass_callback, start, size](double f) { return one_pass_callback(start + size * f); };
+      std::vector<Normal_record> r = evaluate_with_maps<Normal_record, ConcurrencyTag>(
+        points, radius_given, radius, l.largest, point_map, no_normal, o, Normal_at_point{fit, l});
+      pass_cancelled = cancelled;
+      return r;
+    };
+    records = automatic_scale_passes<Normal_record>(
+      ladder, run,
+      [](const Normal_record& r) { return r.status == Curvature_estimate_status::VALID ? r.count : std::size_t(0); },
+      one_pass_callback);
   }
   if(!options.has_tile)  // (with a tile, the other points are not computed)
     for(const Normal_record& r : records)

@@ -46,6 +46,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -107,7 +108,15 @@ struct Sub_neighborhood
   }
 };
 
-// The chosen rung (its neighbourhood is left in `chosen`): its rank on the ladder, its
+// One thread's scratch of Scale_ladder::choose(); the chosen rung's neighbourhood is left in
+// `chosen`.
+struct Ladder_scratch
+{
+  std::vector<double> d2;
+  Sub_neighborhood chosen, trial;
+};
+
+// The chosen rung (its neighbourhood is left in the scratch's `chosen`): its rank on the ladder, its
 // neighbour count, the standard error of H there (input units).
 struct Scale_choice
 {
@@ -139,10 +148,11 @@ struct Scale_ladder
   Statistic statistic = Statistic::MEAN_CURVATURE;
 
   // Chooses the rung of `whole` (the neighbourhood of `largest`, scaled by its radius) and
-  // leaves its neighbourhood in `chosen`; `d2`, `trial`: scratch.
-  Scale_choice choose(const Neighborhood& whole, std::vector<double>& d2, Sub_neighborhood& chosen,
-                      Sub_neighborhood& trial) const
+  // leaves its neighbourhood in `scratch.chosen`.
+  Scale_choice choose(const Neighborhood& whole, Ladder_scratch& scratch) const
   {
+    std::vector<double>& d2 = scratch.d2;
+    Sub_neighborhood &chosen = scratch.chosen, &trial = scratch.trial;
     constexpr double inf = std::numeric_limits<double>::infinity();
     Scale_choice c;
     d2.resize(whole.size);
@@ -271,9 +281,9 @@ struct Automatic_scale_estimator : Estimator_base
 
   Local_estimate operator()(const Neighborhood& nb) const
   {
-    thread_local std::vector<double> d2;
-    thread_local Sub_neighborhood chosen, trial;
-    const Scale_choice c = ladder.choose(nb, d2, chosen, trial);
+    thread_local Ladder_scratch scratch;
+    const Scale_choice c = ladder.choose(nb, scratch);
+    const Sub_neighborhood& chosen = scratch.chosen;
     if(!c.found)
       return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
     Local_estimate e = estimator(chosen.nb);
@@ -302,51 +312,68 @@ struct Automatic_scale_estimator : Estimator_base
 // neighbourhood of 2 k), then, on the whole ladder (the neighbourhood of `largest`), only the
 // points whose second rung was kept; the others (smooth surfaces without noise) do not pay
 // the largest neighbourhood. A point's result does not depend on the pass that computed it
-// being shared with other points (the tiles, the concurrency). The callback sees the passes
-// as 40% and 60% of [0, 1].
-template <class ConcurrencyTag, class PointRange, class NamedParameters, class Estimator, class Sphere>
-auto estimate_at_automatic_scale(const PointRange& points, const NamedParameters& np, const Estimator& estimator,
-                                 const Sphere& sphere, const Scale_ladder& ladder, const char* function_name)
+// being shared with other points (the tiles, the concurrency).
+// `run(ladder, visit, progress_start, progress_size, cancelled)` evaluates the points of the
+// mask `visit` (null: all) with neighbourhoods of ladder.largest, reporting progress in that
+// share of [0, 1] (40% and 60%) and setting `cancelled` if the callback stopped it;
+// `chosen_count(result)` is a valid result's chosen neighbour count, else 0; `callback` is
+// told 1 when no point needs the second pass.
+template <class Result, class Run, class Chosen_count>
+std::vector<Result> automatic_scale_passes(const Scale_ladder& ladder, const Run& run,
+                                           const Chosen_count& chosen_count,
+                                           const std::function<bool(double)>& callback)
 {
-  typedef Automatic_scale_estimator<Estimator, Sphere> Wrapped;
   Scale_ladder first = ladder;
   first.largest = std::min(ladder.largest, 2 * ladder.smallest);
   const bool second_pass = ladder.rungs() > first.rungs();
   bool cancelled = false;
-  Pass_options pass;
-  pass.visit_k = first.largest;
-  pass.progress_size = second_pass ? 0.4 : 1.0;
-  pass.cancelled = &cancelled;
-  auto result = estimate_at_every_point<ConcurrencyTag>(points, false, 0.0, np, Wrapped(estimator, sphere, first),
-                                                        function_name, pass);
+  std::vector<Result> result = run(first, nullptr, 0.0, second_pass ? 0.4 : 1.0, cancelled);
   if(!second_pass || cancelled)
     return result;
   std::vector<char> larger(result.size(), 0);
   bool any = false;
   for(std::size_t i = 0; i < result.size(); ++i)
-    if(result[i].is_valid() && result[i].neighbor_count >= first.largest)
+    if(chosen_count(result[i]) >= first.largest)
     {
       larger[i] = 1;
       any = true;
     }
   if(!any)
   {
-    const std::function<bool(double)> callback = CGAL::parameters::choose_parameter(
-      CGAL::parameters::get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
     if(callback)
       callback(1.0);
     return result;
   }
-  pass.visit_k = ladder.largest;
-  pass.visit = &larger;
-  pass.progress_start = 0.4;
-  pass.progress_size = 0.6;
-  const auto more = estimate_at_every_point<ConcurrencyTag>(points, false, 0.0, np, Wrapped(estimator, sphere, ladder),
-                                                            function_name, pass);
+  const std::vector<Result> more = run(ladder, &larger, 0.4, 0.6, cancelled);
   for(std::size_t i = 0; i < result.size(); ++i)
     if(larger[i])
       result[i] = more[i];
   return result;
+}
+
+// The automatic scale of the estimator (automatic_scale_passes() on estimate_at_every_point()).
+template <class ConcurrencyTag, class PointRange, class NamedParameters, class Estimator, class Sphere>
+auto estimate_at_automatic_scale(const PointRange& points, const NamedParameters& np, const Estimator& estimator,
+                                 const Sphere& sphere, const Scale_ladder& ladder, const char* function_name)
+{
+  typedef decltype(estimate_at_every_point<ConcurrencyTag>(points, false, 0.0, np, estimator, function_name)) Results;
+  typedef typename Results::value_type Estimate;
+  const auto run = [&](const Scale_ladder& l, const std::vector<char>* visit, double start, double size,
+                       bool& cancelled) {
+    Pass_options pass;
+    pass.visit_k = l.largest;
+    pass.visit = visit;
+    pass.progress_start = start;
+    pass.progress_size = size;
+    pass.cancelled = &cancelled;
+    return estimate_at_every_point<ConcurrencyTag>(points, false, 0.0, np,
+                                                   Automatic_scale_estimator<Estimator, Sphere>(estimator, sphere, l),
+                                                   function_name, pass);
+  };
+  return automatic_scale_passes<Estimate>(
+    ladder, run, [](const Estimate& e) { return e.is_valid() ? e.neighbor_count : std::size_t(0); },
+    CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::callback),
+                                       std::function<bool(double)>()));
 }
 
 // The largest count of the named parameter automatic_scale, 0 without it. Throws
