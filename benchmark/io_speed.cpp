@@ -105,7 +105,7 @@ int main(int argc, char** argv)
                                                                    .normal_map(Normal_map())));
   const double estimate_seconds = psc_bench::seconds_since(t0);
   psc_tool::Output_layout layout;
-  layout.fields = psc_tool::output_fields({}, false, false, cloud.attributes);
+  layout.fields = psc_tool::output_fields({}, false, false, cloud.attributes, false);
   layout.attributes = &cloud.attributes;
   const double write_seconds = best_of_3([&]() {
     std::FILE* f = std::fopen(out.c_str(), "wb");

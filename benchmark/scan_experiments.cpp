@@ -47,7 +47,8 @@ struct Options
   double noise = 0;    // range noise, in median spacings
   double quantum = 0;  // coordinate grid
   std::vector<std::size_t> normal_neighbors = {40};
-  std::string dump;  // prefix of per-point CSV files (x, y, z, true H, estimated H, neighbours)
+  std::string dump;  // prefix of per-point CSV files (x, y, z, true H, estimated H, neighbours,
+                     // standard error of H of the automatic scale)
   double line_spacing = 0.5;  // of the airborne lines (points 0.1 apart along a line)
   std::size_t automatic = 0;  // the automatic scale's largest count (0: not run)
 };
@@ -309,7 +310,8 @@ int main(int argc, char** argv)
           f << std::setprecision(10);
           for(std::size_t i = 0; i < est.size(); ++i)
             f << nc.samples[i].p.x() << "," << nc.samples[i].p.y() << "," << nc.samples[i].p.z() << ","
-              << nc.samples[i].truth.mean << "," << est[i].mean_curvature << "," << est[i].neighbor_count << "\n";
+              << nc.samples[i].truth.mean << "," << est[i].mean_curvature << "," << est[i].neighbor_count << ","
+              << est[i].mean_curvature_error << "\n";
         }
         const Score s = score(est, nc.samples);
         std::cout << " " << g3(s.mean_abs_H) << (s.valid < 0.995 ? " (" + g3(100 * s.valid) + "% valid)" : "") << " |";

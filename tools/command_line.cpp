@@ -8,6 +8,7 @@
 #include "read_point_cloud.h"
 #include "write_point_cloud.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -67,8 +68,9 @@ void print_usage(std::ostream& os)
      << "          in input order with x y z, the corrected normal nx ny nz, k_min k_max mean\n"
      << "          gaussian, the principal directions dmin_x dmin_y dmin_z dmax_x dmax_y dmax_z,\n"
      << "          normal_coherence (a quality value in [0, 1]: 1 where the neighbours' normals\n"
-     << "          agree, low in foliage; aso and apss) (doubles; NaN where the estimate is\n"
-     << "          invalid or the method does not provide the quantity), neighbors (int) and\n"
+     << "          agree, low in foliage; aso and apss), with --neighbors auto mean_error (the\n"
+     << "          standard error of mean at the chosen scale) (doubles; NaN where the estimate\n"
+     << "          is invalid or the method does not provide the quantity), neighbors (int) and\n"
      << "          valid (0 or 1); then the input's other values in their own types (PLY\n"
      << "          properties, named text columns, LAS fields such as intensity,\n"
      << "          classification, gps_time, red green blue, and the extra bytes an extra-bytes\n"
@@ -106,7 +108,7 @@ void print_usage(std::ostream& os)
      << "  --ascii            ASCII PLY output (NaN written as nan)\n"
      << "  --fields LIST      estimator fields to write, comma-separated (x y z always): nx ny nz\n"
      << "                     or normal, k_min, k_max, mean, gaussian, dmin, dmax (or dmin_x...),\n"
-     << "                     normal_coherence, neighbors, valid (default: all)\n"
+     << "                     normal_coherence, mean_error, neighbors, valid (default: all)\n"
      << "  --float            write the estimator fields as float32 (x y z stay double)\n"
      << "  --ply-names N      names of the PLY properties: plain (default: mean, k_min, ...) or\n"
      << "                     scalar (scalar_mean, scalar_k_min, ...: every property but x y z,\n"
@@ -423,6 +425,8 @@ Options parse_command_line(int argc, char** argv)
   if(o.scale.automatic_largest > 0 && std::string(o.method->name) != "aso")
     throw Error(cat("--neighbors auto chooses the scale of --method aso only; give --method ", o.method->name,
                     " a count (--neighbors K)"));
+  if(o.scale.automatic_largest == 0 && std::find(o.fields.begin(), o.fields.end(), "mean_error") != o.fields.end())
+    throw Error("--fields: mean_error is the error of the automatic scale: add --neighbors auto, or leave it out");
   if(o.normal_fit == CGAL::Normal_fit::QUADRIC && o.normal_neighbors != 0 && o.normal_neighbors < 6)
     throw Error(cat("--normal-neighbors ", o.normal_neighbors, " is below the 6 points a quadric needs: use "
                     "--normal-neighbors 6 or more, or --normal-fit plane"));

@@ -875,7 +875,7 @@ void estimate_row(const Point_set& ps, const Estimates& estimates, std::size_t i
                                         e.min_curvature, e.max_curvature, e.mean_curvature, e.gaussian_curvature,
                                         e.min_direction.x(), e.min_direction.y(), e.min_direction.z(),
                                         e.max_direction.x(), e.max_direction.y(), e.max_direction.z(),
-                                        e.normal_coherence};
+                                        e.normal_coherence, e.mean_curvature_error};
   std::copy(v, v + output_value_count, r.value);
   r.neighbors = static_cast<std::int32_t>(std::min<std::size_t>(e.neighbor_count, INT32_MAX));
   r.valid = e.is_valid() ? 1 : 0;
@@ -946,7 +946,7 @@ Output_layout output_layout(const Options& o, const Scale& scale, const std::vec
   if(color_quantity >= 0)
     layout.comments.push_back(
       cat("colors: ", o.color, ", blue -", color_range, " white 0 red +", color_range, ", grey invalid"));
-  layout.fields = output_fields(o.fields, o.float32, color_quantity >= 0, attributes);
+  layout.fields = output_fields(o.fields, o.float32, color_quantity >= 0, attributes, scale.automatic_largest > 0);
   layout.attributes = &attributes;
   layout.scalar_prefix = o.ply_scalar_names;
   if(!attributes.empty())
@@ -975,7 +975,7 @@ void reserve_output(const Options& o, Temporary_output& output, const std::vecto
 {
   if(las)
   {
-    const std::vector<Output_field> fields = output_fields(o.fields, o.float32, false, attributes);
+    const std::vector<Output_field> fields = output_fields(o.fields, o.float32, false, attributes, o.scale.automatic_largest > 0);
     output.reserve(las_output_size(*las, fields, attributes, n),
                    cat("LAS of ", plural(n, "point"), ", ", plural(fields.size(), "field")));
     return;
@@ -996,7 +996,7 @@ void write_output(const Run_context& c, Temporary_output& output, const Scale& s
   {
     // LAS 1.4, the estimates as extra bytes (write_las.h); no colours (refused in run());
     // the temporary file is created now, when writing starts
-    const std::vector<Output_field> fields = output_fields(o.fields, o.float32, false, attributes);
+    const std::vector<Output_field> fields = output_fields(o.fields, o.float32, false, attributes, o.scale.automatic_largest > 0);
     std::FILE* file = output.open(las_output_size(*las, fields, attributes, n),
                                   cat("LAS of ", plural(n, "point"), ", ", plural(fields.size(), "field")));
     const std::vector<std::string> w = write_las(file, *las, fields, attributes, n, rows, c.progress.phase("writing"));

@@ -105,6 +105,7 @@ const char* description_of(const std::string& name)
     {"dmax_y", "direction of k_max, y"},
     {"dmax_z", "direction of k_max, z"},
     {"normal_coherence", "agreement of the normals, 0-1"},
+    {"mean_error", "standard error of mean"},
     {"neighbors", "neighbours of the estimate"},
     {"valid", "1 valid estimate, 0 invalid"}};
   for(const auto& e : d)

@@ -16,12 +16,12 @@ namespace psc_tool {
 
 const char* const output_field_names[output_value_count] = {
   "x",      "y",      "z",      "nx",     "ny",     "nz",     "k_min", "k_max",  "mean",
-  "gaussian", "dmin_x", "dmin_y", "dmin_z", "dmax_x", "dmax_y", "dmax_z", "normal_coherence"};
+  "gaussian", "dmin_x", "dmin_y", "dmin_z", "dmax_x", "dmax_y", "dmax_z", "normal_coherence", "mean_error"};
 
 const char* selectable_fields()
 {
   return "nx, ny, nz (or normal), k_min, k_max, mean, gaussian, dmin_x, dmin_y, dmin_z (or dmin), dmax_x, "
-         "dmax_y, dmax_z (or dmax), normal_coherence, neighbors, valid";
+         "dmax_y, dmax_z (or dmax), normal_coherence, mean_error (with --neighbors auto), neighbors, valid";
 }
 
 std::vector<std::string> parse_fields(const std::string& text)
@@ -53,14 +53,14 @@ std::vector<std::string> parse_fields(const std::string& text)
 }
 
 std::vector<Output_field> output_fields(const std::vector<std::string>& selected, bool float32, bool color,
-                                        const std::vector<Attribute>& attributes)
+                                        const std::vector<Attribute>& attributes, bool automatic_scale)
 {
   auto chosen = [&](const std::string& name) {
     return selected.empty() || std::find(selected.begin(), selected.end(), name) != selected.end();
   };
   std::vector<Output_field> fields;
   for(int i = 0; i < output_value_count; ++i)
-    if(i < 3 || chosen(output_field_names[i]))
+    if(i < 3 || (chosen(output_field_names[i]) && (i != mean_error_value || automatic_scale)))
       fields.push_back(Output_field{output_field_names[i],
                                     float32 && i >= 3 ? Scalar_type::FLOAT32 : Scalar_type::FLOAT64,
                                     Output_field::VALUE + i});

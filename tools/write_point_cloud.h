@@ -37,9 +37,10 @@ T to_integer(double v)
 }
 
 // The doubles of a row, in order: x y z nx ny nz k_min k_max mean gaussian dmin_x dmin_y
-// dmin_z dmax_x dmax_y dmax_z normal_coherence; then neighbors (int), valid (uchar) and, with
-// colours, red green blue (uchar).
-constexpr int output_value_count = 17;
+// dmin_z dmax_x dmax_y dmax_z normal_coherence mean_error (written with the automatic scale
+// only); then neighbors (int), valid (uchar) and, with colours, red green blue (uchar).
+constexpr int output_value_count = 18;
+constexpr int mean_error_value = 17;
 extern const char* const output_field_names[output_value_count];
 
 struct Output_row
@@ -90,11 +91,12 @@ std::vector<std::string> parse_fields(const std::string& text);
 
 // The columns of the output: x y z (always, in double: coordinates near 1e6 need it), then the
 // selected estimator fields (all if `selected` is empty) in the order of output_field_names,
-// as float32 if `float32`, neighbors and valid if selected, red green blue with `color`,
-// then the input's attributes in their own types (renamed input_NAME when NAME is one of the
-// tool's fields, selected or not, or red green blue with `color`).
+// as float32 if `float32` (mean_error only with `automatic_scale`), neighbors and valid if
+// selected, red green blue with `color`, then the input's attributes in their own types
+// (renamed input_NAME when NAME is one of the tool's fields, selected or not, or red green
+// blue with `color`).
 std::vector<Output_field> output_fields(const std::vector<std::string>& selected, bool float32, bool color,
-                                        const std::vector<Attribute>& attributes);
+                                        const std::vector<Attribute>& attributes, bool automatic_scale);
 
 // The size of the file write_point_cloud() writes for `n` rows: exact for binary PLY, an
 // upper bound for the text formats (every number at its widest: "-2.2250738585072014e-308").

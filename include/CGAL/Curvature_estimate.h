@@ -104,9 +104,12 @@ struct Curvature_estimate
   /// for normals pointing anywhere. Filter with a threshold such as 0.95 to keep surfaces.
   FT normal_coherence = nan();
   /// with the named parameter `Point_set_curvatures::parameters::automatic_scale()`: the
-  /// standard error of `mean_curvature` estimated at the chosen scale from the residuals of a
-  /// quadric fitted to the neighbours' positions (an estimate of the noise's share of the
-  /// error, not of the bias); NaN otherwise
+  /// standard error of the mean curvature of a quadric fitted to the neighbours' positions at
+  /// the chosen scale, from the noise its residuals show (0 where they show none). It measures
+  /// the noise's share of the error, not the bias (surface variation within the
+  /// neighbourhood, biased normals), and the estimate itself, which also uses the normals, is
+  /// often more accurate than it says (see benchmark/README.md, "Automatic scale"); NaN
+  /// otherwise
   FT mean_curvature_error = nan();
   /// number of input points at distance `< r` from the query point, the query point included
   /// (with `automatic_scale()`: at the chosen scale)

@@ -52,6 +52,7 @@ __all__ = [
     "Cancelled",
     "HaloTooSmall",
     "METHODS",
+    "AUTOMATIC_NEIGHBORS",
     "estimate_curvatures",
     "estimate_sphere_features",
     "estimate_multiscale_sphere_features",
@@ -235,6 +236,8 @@ def _whole_cloud_box(n, lo, hi, radius, neighbors, what="", stacklevel=3):
     ScaleWarning when every neighbourhood would be the whole cloud: neighbors not less than n
     (capped at n: non-finite points are nobody's neighbours), or a radius larger than the box's
     diagonal."""
+    if neighbors == "auto":
+        return radius, neighbors
     if neighbors is not None:
         if n and neighbors >= n:
             warnings.warn(
@@ -351,11 +354,22 @@ def _weights(value):
     return w
 
 
-def _scale(radius, neighbors):
+# neighbors="auto": each point's count chosen among 40, 80, ..., 640 (the tool's --neighbors auto).
+AUTOMATIC_NEIGHBORS = (40, 640)
+
+
+def _scale(radius, neighbors, automatic=False):
+    """(radius, neighbors); ``neighbors="auto"`` (any case) only where ``automatic``, else a
+    ValueError."""
     if (radius is None) == (neighbors is None):
         raise ValueError("give exactly one of radius and neighbors")
     if radius is not None:
         return _real("radius", radius), None  # positive and finite: checked by the C++ function
+    if isinstance(neighbors, str) and neighbors.lower() == "auto":
+        if not automatic:
+            raise ValueError("neighbors='auto' chooses the scale of estimate_curvatures with method 'aso' and of "
+                             "estimate_normals with fit 'quadric' only: give a count here")
+        return None, "auto"
     if isinstance(neighbors, (bool, np.bool_)) or not isinstance(neighbors, numbers.Integral):
         raise ArgumentTypeError(f"neighbors must be an integer, got {_type_hint(neighbors)}")
     return None, _int("neighbors", neighbors, 1)
@@ -394,10 +408,13 @@ def estimate_curvatures(
         Neighbourhoods are the points at distance ``< radius`` (about 40 neighbours is a good
         start: 3.5 to 4 times the average spacing). A number (a string is refused); larger
         than the cloud's bounding-box diagonal, a :class:`ScaleWarning`.
-    neighbors : int
+    neighbors : int or "auto"
         Instead of a radius: each point's radius reaches its ``neighbors``-th nearest point.
         Give exactly one of ``radius`` and ``neighbors``. Not less than the number of points:
-        a :class:`ScaleWarning`, and capped at the number of points.
+        a :class:`ScaleWarning`, and capped at the number of points. ``"auto"`` (method
+        ``"aso"``): each point's count is chosen among 40, 80, ..., 640 by the noise its fits
+        measure (noisy scans), as the tool's ``--neighbors auto``; the result then has
+        ``mean_error``.
     threads : int or None
         None: all cores; 1: sequential; n: n threads (capped to the cores). Same results
         whatever the value.
@@ -438,16 +455,18 @@ def estimate_curvatures(
         ``normal_coherence`` (N,; a quality value in [0, 1], the length of the weighted mean of
         the neighbours' unit normals: 1 on smooth surfaces, low in foliage; ``"aso"`` and
         ``"apss"`` only, NaN otherwise),
-        ``min_direction``, ``max_direction`` (N, 3), ``neighbors`` (N,) int64 and ``status``
-        (N,) uint8 (values of :class:`Status`). NaN where a point is invalid or the
-        estimator does not provide a quantity.
+        ``min_direction``, ``max_direction`` (N, 3), ``neighbors`` (N,) int64 (with
+        ``"auto"``: the chosen count) and ``status`` (N,) uint8 (values of :class:`Status`);
+        with ``neighbors="auto"`` also ``mean_error`` (N,; the standard error of ``mean`` at
+        the chosen scale, from the noise the fits measure). NaN where a point is invalid or
+        the estimator does not provide a quantity.
     """
     method = _method(method)
     allowed = set(_COMMON_OPTIONS) | set(_METHOD_OPTIONS[method])
     if method == "vcm":
         allowed.discard("tile")
     opts, tile, weights = _options(f"method '{method}'", allowed, options)
-    radius, neighbors = _scale(radius, neighbors)
+    radius, neighbors = _scale(radius, neighbors, automatic=method == "aso")
     progress = _progress(progress)
     points = _array(points, "points")
     if tile is None:  # a tile's arrays are a part of the cloud
@@ -686,8 +705,9 @@ def estimate_normals(points, *, neighbors=None, radius=None, orientation="mst", 
     oriented.
 
     ``fit``: ``"quadric"`` (a weighted quadric, smooth from point to point: the input the ASO
-    needs; default, 40 neighbours by default) or ``"plane"`` (the PCA plane, 18 neighbours by
-    default). With estimated normals, pass ``position_fit_blend=0.5`` to
+    needs; default, 40 neighbours by default, or ``neighbors="auto"``: each point's count
+    chosen among 40, 80, ..., 640 by the noise its fits measure) or ``"plane"`` (the PCA
+    plane, 18 neighbours by default). With estimated normals, pass ``position_fit_blend=0.5`` to
     :func:`estimate_curvatures` (method ``"aso"``): on simulated scans its error was within
     1.35 times that with exact normals.
 
@@ -706,7 +726,7 @@ def estimate_normals(points, *, neighbors=None, radius=None, orientation="mst", 
     fit_code = fits[fit.lower()]
     if radius is None and neighbors is None:
         neighbors = 40 if fit_code == 1 else 18
-    radius, neighbors = _scale(radius, neighbors)
+    radius, neighbors = _scale(radius, neighbors, automatic=fit_code == 1)
     if isinstance(orientation, str):
         orientation = orientation.lower()
         if orientation == "mst":

@@ -44,13 +44,15 @@ class ProjectionStatus(IntEnum):
     DEGENERATE_FIT = 3
     NON_FINITE_POINT = 4
 
+AUTOMATIC_NEIGHBORS: Tuple[int, int]
+
 def estimate_curvatures(
     points: ArrayN3,
     normals: ArrayN3,
     *,
     method: Method = "aso",
     radius: Optional[float] = None,
-    neighbors: Optional[int] = None,
+    neighbors: Union[int, Literal["auto"], None] = None,
     threads: Optional[int] = None,
     progress: Progress = None,
     min_neighbors: Optional[int] = None,
@@ -70,7 +72,7 @@ def estimate_curvatures(
 ) -> Result:
     """Curvatures at every point: dict with normal (N,3), k_min, k_max, mean, gaussian,
     normal_coherence, min_direction (N,3), max_direction (N,3), neighbors (int64), status
-    (uint8, Status)."""
+    (uint8, Status); with neighbors="auto" (method "aso") also mean_error."""
 
 def estimate_sphere_features(
     points: ArrayN3,
@@ -147,7 +149,7 @@ def apss_smooth_point_set(
 def estimate_normals(
     points: ArrayN3,
     *,
-    neighbors: Optional[int] = None,
+    neighbors: Union[int, Literal["auto"], None] = None,
     radius: Optional[float] = None,
     orientation: Orientation = "mst",
     fit: Literal["quadric", "plane"] = "quadric",

@@ -41,7 +41,7 @@ from concurrent.futures import CancelledError
 
 import numpy as np
 
-from . import HaloTooSmall, Status, TileGrid, _int, _method, _real, _weights
+from . import AUTOMATIC_NEIGHBORS, HaloTooSmall, Status, TileGrid, _int, _method, _real, _weights
 from . import _whole_cloud_box, _whole_cloud_scale
 from . import estimate_curvatures as _estimate_curvatures
 
@@ -87,6 +87,8 @@ def _first_halo(radius, neighbors, initial_halo, lo, hi, finite_count):
     if initial_halo is not None:
         return float(initial_halo)
     area = max(float(np.prod(np.sort(hi - lo)[1:])), 1e-300)
+    if isinstance(neighbors, str):  # "auto": the largest count of the ladder
+        neighbors = AUTOMATIC_NEIGHBORS[1]
     return 2.0 * math.sqrt(area * neighbors / (math.pi * finite_count))
 
 def estimate_tile(points, normals, core_min, core_max, halo, *, method="aso", radius=None, neighbors=None,
@@ -168,6 +170,9 @@ def estimate_curvatures(client, points, normals, *, method="aso", radius=None, n
     out.update({k: np.full(n, np.nan) for k in _FIELDS1})
     out["neighbors"] = np.zeros(n, dtype=np.int64)
     out["status"] = np.full(n, Status.NON_FINITE_POINT, dtype=np.uint8)
+    if isinstance(neighbors, str) and neighbors.lower() == "auto":
+        neighbors = "auto"
+        out["mean_error"] = np.full(n, np.nan)
     finite = np.isfinite(points).all(axis=1)
     if not finite.any():
         # nothing to distribute: validate the arguments as the single-process run does
@@ -628,6 +633,9 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
                          "clouds in files; use 'uniform' or 'tangent_voronoi_area'")
     if (radius is None) == (neighbors is None):
         raise ValueError("give exactly one of radius and neighbors")
+    if isinstance(neighbors, str):
+        raise ValueError("neighbors='auto' is not available for files here: use the tool's --neighbors auto, or "
+                         "point_set_curvatures.dask.estimate_curvatures on arrays")
     method = _method(method)
     retries = _int("retries", retries, 0)
     block_rows = _int("block_rows", block_rows, 1)

@@ -3,7 +3,7 @@
 """Type stubs of point_set_curvatures.dask."""
 
 import os
-from typing import Any, Dict, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, Literal, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -33,7 +33,7 @@ def estimate_curvatures(
     *,
     method: str = ...,
     radius: Optional[float] = ...,
-    neighbors: Optional[int] = ...,
+    neighbors: Union[int, Literal["auto"], None] = ...,
     tile_size: Optional[float] = ...,
     threads: Optional[int] = ...,
     retries: int = ...,
@@ -47,7 +47,7 @@ def estimate_curvatures_file(
     *,
     method: str = ...,
     radius: Optional[float] = ...,
-    neighbors: Optional[int] = ...,
+    neighbors: Union[int, Literal["auto"], None] = ...,
     tile_size: Optional[float] = ...,
     threads: Optional[int] = ...,
     retries: int = ...,

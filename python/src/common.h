@@ -92,6 +92,7 @@ struct Scale
   bool by_count = false;
   double radius = 0;
   std::size_t k = 0;
+  std::size_t automatic_largest = 0;  // neighbors="auto": the ladder k, 2 k, ... up to this
 };
 
 // An optional tile.

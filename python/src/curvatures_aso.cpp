@@ -32,7 +32,8 @@ std::vector<Estimate> estimate_aso(const Cloud& cloud, const Scale& s, const Opt
              P::normal_field_blend(blend,
              P::normal_refinement(static_cast<std::size_t>(o.normal_refinement),
              P::position_fit_blend(o.position_fit_blend,
-             P::aso_projection(CGAL::Aso_projection(o.aso_projection), base))))))));
+             P::aso_projection(CGAL::Aso_projection(o.aso_projection),
+             P::automatic_scale(s.automatic_largest, base)))))))));
     });
   return with_given_weights(cloud, o, np, [&](const auto& np2) {
     return dispatch(cloud, s, t, parallel, np2, PSC_PY_FUNCTION(estimate_aso_curvatures));

@@ -97,10 +97,11 @@ std::size_t oriented_normals(Cloud& cloud, const Scale& s, int orientation, cons
   else if(orientation == 3)
     o = CGAL::Normal_orientation::automatic();
   const auto np = P::normal_orientation(o, P::normal_fit(fit == 0 ? CGAL::Normal_fit::PLANE : CGAL::Normal_fit::QUADRIC,
+                    P::automatic_scale(s.automatic_largest,
                     P::neighbor_count(s.by_count ? s.k : 0,
                       CGAL::parameters::point_map(CGAL::First_of_pair_property_map<Oriented>())
                         .normal_map(CGAL::Second_of_pair_property_map<Oriented>())
-                        .callback(cb))));
+                        .callback(cb)))));
   if(parallel)
     return s.by_count ? CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(cloud, np)
                       : CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(cloud, s.radius, np);

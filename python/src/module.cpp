@@ -136,6 +136,15 @@ Scale read_scale(const py::object& radius, const py::object& neighbors)
     throw py::value_error("give radius or neighbors");
   if(!radius.is_none())
     s.radius = radius.cast<double>();  // checked by the C++ function (positive and finite)
+  else if(py::isinstance<py::str>(neighbors))
+  {
+    // "auto" (checked by the module): the tool's ladder of --neighbors auto
+    if(neighbors.cast<std::string>() != "auto")
+      throw py::value_error("neighbors: expected a count or 'auto'");
+    s.by_count = true;
+    s.k = 40;
+    s.automatic_largest = 640;
+  }
   else
   {
     const long long k = neighbors.cast<long long>();
@@ -324,7 +333,7 @@ void put3(double* out, std::size_t i, const V& v)
   out[3 * i + 2] = CGAL::to_double(v.z());
 }
 
-py::dict estimates_to_dict(const std::vector<Estimate>& e)
+py::dict estimates_to_dict(const std::vector<Estimate>& e, bool with_mean_error)
 {
   const std::size_t n = e.size();
   auto normal = array_n3(n), dmin = array_n3(n), dmax = array_n3(n);
@@ -364,6 +373,14 @@ py::dict estimates_to_dict(const std::vector<Estimate>& e)
   d["max_direction"] = dmax;
   d["neighbors"] = count;
   d["status"] = status;
+  if(with_mean_error)
+  {
+    auto error = array_1<double>(n);
+    double* pe = error.mutable_data();
+    for(std::size_t i = 0; i < n; ++i)
+      pe[i] = e[i].mean_curvature_error;
+    d["mean_error"] = error;
+  }
   return d;
 }
 
@@ -490,7 +507,7 @@ py::dict estimate_curvatures(const std::string& method, const py::handle& points
           result = estimate_vcm(cloud, scale, o, t, parallel, cb);
       },
       progress, threads);
-  return estimates_to_dict(result);
+  return estimates_to_dict(result, scale.automatic_largest > 0);
 }
 
 py::dict sphere_features_py(const py::handle& points, const py::handle& normals, const py::object& radius,

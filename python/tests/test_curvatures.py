@@ -393,3 +393,53 @@ def test_tiles_bitwise(reference):
     assert e.value.required_halo > 1e-3
     with pytest.raises(ValueError, match="halo"):
         psc.estimate_curvatures(points[sel], normals[sel], radius=1.5, tile=tile)
+
+
+def noisy_sphere(n=20000, noise=0.0, seed=11):
+    """A unit sphere of n points, moved along the normal by Gaussian noise of `noise` times
+    the spacing; the exact normals."""
+    points, normals = fibonacci_sphere(n)
+    spacing = np.sqrt(4 * np.pi / n)
+    rng = np.random.default_rng(seed)
+    return points + normals * (noise * spacing * rng.standard_normal(n))[:, None], normals
+
+
+def test_automatic_scale():
+    # clean: the first rung (40) everywhere, H = 1 as with neighbors=40
+    points, normals = noisy_sphere()
+    auto = psc.estimate_curvatures(points, normals, neighbors="AUTO")
+    fixed = psc.estimate_curvatures(points, normals, neighbors=40)
+    assert (auto["status"] == psc.Status.VALID).all()
+    assert (auto["neighbors"] < 80).all()
+    np.testing.assert_allclose(auto["mean"], fixed["mean"], rtol=1e-9, atol=1e-12)
+    assert "mean_error" in auto and "mean_error" not in fixed
+    assert np.isfinite(auto["mean_error"]).all() and (auto["mean_error"] >= 0).all()
+    # noise of 0.3 times the spacing: larger counts, H far closer to 1 than at 40; mean_error,
+    # the standard error of the positions' quadric at the chosen scale, bounds the error of
+    # the estimate made with exact normals (measured: mean |H - 1| 0.0026, median mean_error
+    # 0.0285)
+    points, normals = noisy_sphere(noise=0.3)
+    auto = psc.estimate_curvatures(points, normals, neighbors="auto")
+    fixed = psc.estimate_curvatures(points, normals, neighbors=40)
+    error_auto = np.abs(auto["mean"] - 1).mean()
+    assert np.median(auto["neighbors"]) >= 160
+    assert error_auto < 0.1 * np.abs(fixed["mean"] - 1).mean()
+    assert error_auto < 0.05
+    assert error_auto < np.median(auto["mean_error"]) < 30 * error_auto
+    # sequential == parallel, bitwise
+    seq = psc.estimate_curvatures(points, normals, neighbors="auto", threads=1)
+    for k in auto:
+        assert np.array_equal(auto[k].view(np.uint8), seq[k].view(np.uint8)), k
+    # normals: the automatic scale of the quadric fit, outward and close to the exact ones
+    n_auto = psc.estimate_normals(points, neighbors="auto")
+    n_fixed = psc.estimate_normals(points, neighbors=40)
+    angle_auto = np.degrees(np.arccos(np.clip((n_auto * normals).sum(axis=1), -1, 1)))
+    angle_fixed = np.degrees(np.arccos(np.clip((n_fixed * normals).sum(axis=1), -1, 1)))
+    assert np.median(angle_auto) < 0.5 * np.median(angle_fixed)
+    # only where the automatic scale is defined
+    for call in (lambda: psc.estimate_curvatures(points, normals, method="jet", neighbors="auto"),
+                 lambda: psc.estimate_sphere_features(points, normals, neighbors="auto"),
+                 lambda: psc.estimate_normals(points, neighbors="auto", fit="plane"),
+                 lambda: psc.estimate_curvatures(points, normals, neighbors="automatic")):
+        with pytest.raises((ValueError, psc.ArgumentTypeError)):
+            call()

@@ -308,46 +308,58 @@ struct Automatic_scale_estimator : Estimator_base
   }
 };
 
-// The two passes of the automatic scale: every point on the ladder's first two rungs (the
-// neighbourhood of 2 k), then, on the whole ladder (the neighbourhood of `largest`), only the
-// points whose second rung was kept; the others (smooth surfaces without noise) do not pay
-// the largest neighbourhood. A point's result does not depend on the pass that computed it
-// being shared with other points (the tiles, the concurrency).
+// The passes of the automatic scale: every point on the ladder's first two rungs (the
+// neighbourhood of 2 k), then, with the neighbourhood of 4 k, 8 k, ... up to `largest` in
+// turn, only the points whose previous pass kept its top rung (the rule looks at the rungs
+// from the bottom up and stops at the first that disagrees, so a point that stopped below the
+// top rung of its pass has its choice on the whole ladder). Smooth surfaces without noise stop
+// at the first pass, and no point pays a neighbourhood more than twice the size of the one it
+// was given. A point's result does not depend on the pass that computed it being shared with
+// other points (the tiles, the concurrency).
 // `run(ladder, visit, progress_start, progress_size, cancelled)` evaluates the points of the
 // mask `visit` (null: all) with neighbourhoods of ladder.largest, reporting progress in that
-// share of [0, 1] (40% and 60%) and setting `cancelled` if the callback stopped it;
-// `chosen_count(result)` is a valid result's chosen neighbour count, else 0; `callback` is
-// told 1 when no point needs the second pass.
+// share of [0, 1] (the first pass half of it, each next one half of what is left) and setting
+// `cancelled` if the callback stopped it; `chosen_count(result)` is a valid result's chosen
+// neighbour count, else 0; `callback` is told 1 when the passes end before the last.
+// Cancelled, the points without their final estimate are a default Result (NOT_COMPUTED).
 template <class Result, class Run, class Chosen_count>
 std::vector<Result> automatic_scale_passes(const Scale_ladder& ladder, const Run& run,
                                            const Chosen_count& chosen_count,
                                            const std::function<bool(double)>& callback)
 {
-  Scale_ladder first = ladder;
-  first.largest = std::min(ladder.largest, 2 * ladder.smallest);
-  const bool second_pass = ladder.rungs() > first.rungs();
+  Scale_ladder pass = ladder;
+  pass.largest = std::min(ladder.largest, 2 * ladder.smallest);
   bool cancelled = false;
-  std::vector<Result> result = run(first, nullptr, 0.0, second_pass ? 0.4 : 1.0, cancelled);
-  if(!second_pass || cancelled)
-    return result;
-  std::vector<char> larger(result.size(), 0);
-  bool any = false;
-  for(std::size_t i = 0; i < result.size(); ++i)
-    if(chosen_count(result[i]) >= first.largest)
-    {
-      larger[i] = 1;
-      any = true;
-    }
-  if(!any)
+  const bool more_passes = ladder.rungs() > pass.rungs();
+  std::vector<Result> result = run(pass, nullptr, 0.0, more_passes ? 0.5 : 1.0, cancelled);
+  std::vector<char> climb(result.size(), 0);
+  for(double start = 0.5; !cancelled && ladder.rungs() > pass.rungs(); start += 0.5 * (1 - start))
   {
-    if(callback)
-      callback(1.0);
-    return result;
+    // the points that kept the previous pass's top rung climb to the next
+    bool any = false;
+    for(std::size_t i = 0; i < result.size(); ++i)
+    {
+      climb[i] = chosen_count(result[i]) >= pass.largest ? 1 : 0;
+      any = any || climb[i];
+    }
+    if(!any)
+    {
+      if(callback)
+        callback(1.0);
+      break;
+    }
+    pass.largest = std::min(ladder.largest, 2 * pass.largest);
+    const bool last = ladder.rungs() == pass.rungs();
+    const std::vector<Result> more = run(pass, &climb, start, last ? 1 - start : 0.5 * (1 - start), cancelled);
+    for(std::size_t i = 0; i < result.size(); ++i)  // (cancelled: the points not reached are NOT_COMPUTED)
+      if(climb[i])
+        result[i] = more[i];
   }
-  const std::vector<Result> more = run(ladder, &larger, 0.4, 0.6, cancelled);
-  for(std::size_t i = 0; i < result.size(); ++i)
-    if(larger[i])
-      result[i] = more[i];
+  // cancelled: the points that would have climbed further have no final estimate either
+  if(cancelled && ladder.rungs() > pass.rungs())
+    for(Result& r : result)
+      if(chosen_count(r) >= pass.largest)
+        r = Result();
   return result;
 }
 
@@ -358,9 +370,11 @@ auto estimate_at_automatic_scale(const PointRange& points, const NamedParameters
 {
   typedef decltype(estimate_at_every_point<ConcurrencyTag>(points, false, 0.0, np, estimator, function_name)) Results;
   typedef typename Results::value_type Estimate;
+  Area_cache areas;  // (the same in every pass)
   const auto run = [&](const Scale_ladder& l, const std::vector<char>* visit, double start, double size,
                        bool& cancelled) {
     Pass_options pass;
+    pass.areas = &areas;
     pass.visit_k = l.largest;
     pass.visit = visit;
     pass.progress_start = start;

@@ -297,16 +297,26 @@ Local_estimate refinement_estimate(const Estimator& estimator, const Neighborhoo
     return estimator(nb);
 }
 
+// The tangent Voronoi areas of an estimator's first pass, kept for the next passes over the
+// same points (they depend on the named parameters' scale only): the areas and, on a tile by
+// count, how far each reaches.
+struct Area_cache
+{
+  std::vector<double> areas, reach;
+  bool filled = false;
+};
+
 // What a pass of estimate_at_every_point() may change: the neighbour count the estimator
 // receives (0: that of the named parameters, which the sample weights use), the points it
-// visits (null: all), the share of the callback's [0, 1] it reports in, and a flag set if the
-// callback cancels it.
+// visits (null: all), the share of the callback's [0, 1] it reports in, a flag set if the
+// callback cancels it, and a cache of the areas (null: none).
 struct Pass_options
 {
   std::size_t visit_k = 0;
   const std::vector<char>* visit = nullptr;
   double progress_start = 0, progress_size = 1;
   bool* cancelled = nullptr;
+  Area_cache* areas = nullptr;
 };
 
 // The evaluation of estimate_at_every_point() at one point: TOO_FEW_NEIGHBORS below
@@ -396,13 +406,16 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
   if(options.has_tile && estimator.refinement > 0)
     throw std::invalid_argument(std::string(function_name) + ": parameter 'tile' is not supported with "
                                 "normal_refinement");
+  Area_cache own_areas;
+  Area_cache& cache = pass.areas ? *pass.areas : own_areas;
+  const bool compute_areas = area_pass && !cache.filled;
   // Progress over the passes, each a share of [0, 1] in proportion to its cost: the area
   // pass (a quarter of the neighbours) and a refinement pass (a sphere fit) cost about half
   // an estimation pass (measured with benchmark/aso_speed).
   std::vector<double> share_start, share_size;
   {
     std::vector<double> cost;
-    if(area_pass)
+    if(compute_areas)
       cost.push_back(0.5);
     for(std::size_t r = 0; r < estimator.refinement; ++r)
       cost.push_back(Has_refinement_fit<Estimator>::value ? 0.5 : 1.0);
@@ -432,12 +445,12 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
     return o;
   };
 
-  std::vector<double> areas;
+  std::vector<double>& areas = cache.areas;
   // By count on a tile: per point of the range, how far from the core its area reaches.
-  std::vector<double> area_reach;
+  std::vector<double>& area_reach = cache.reach;
   Atomic_max own_neighbor_extent;
   const bool tile_by_count = options.has_tile && !radius_given;
-  if(area_pass)
+  if(compute_areas)
   {
     // The areas of the neighbours of a tile's own points need their own neighbours: every
     // point of the range is weighted. By radius, the halo must reach two radii (a neighbour's
@@ -455,6 +468,10 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
                                                   tile_by_count ? &area_reach : nullptr);
     if(cancelled)
       return std::vector<Estimate>(areas.size());  // every point NOT_COMPUTED
+    cache.filled = true;
+  }
+  if(area_pass)
+  {
     options.sample_weights = &areas;
     options.reach = radius_given ? 2 : 1;
     if(tile_by_count)

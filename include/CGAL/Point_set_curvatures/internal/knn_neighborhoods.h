@@ -280,12 +280,14 @@ void visit_points_knn(const Sorted_cloud& cloud, std::size_t k, std::uint32_t fi
 // otherwise by the tree, at a fixed cost. The side minimises the sum of these costs over the
 // samples (measured on this machine: 0.2 us per grid query plus 3 ns per point scanned, 4 us
 // per tree query), so that clouds of varying density (scans) keep their dense parts on the
-// grid and send the sparse ones to the tree. Returns 0 if the tree alone is cheaper.
+// grid and send the sparse ones to the tree. The samples are taken among the m points of
+// `xyz`: the points to visit (the tree holds them all). Returns 0 if the tree alone is
+// cheaper.
 inline double knn_grid_side(const Point_kd_tree& tree, const double* xyz, std::size_t m, std::size_t k,
                             const double lo[3], const double hi[3])
 {
   const std::size_t samples = std::min<std::size_t>(m, 4096);
-  const std::size_t count = std::min(k + 1, m);
+  const std::size_t count = std::min(k + 1, tree.size());
   std::vector<double> r;
   std::vector<Point_kd_tree::Candidate> nearest;
   r.reserve(samples);
@@ -293,7 +295,7 @@ inline double knn_grid_side(const Point_kd_tree& tree, const double* xyz, std::s
   {
     const std::size_t i = (2 * s + 1) * m / (2 * samples);
     tree.nearest(xyz + 3 * i, count, nearest);
-    double d2 = nearest[std::min(k, m) - 1].first;
+    double d2 = nearest[std::min(k, tree.size()) - 1].first;
     for(std::size_t j = 0; d2 == 0 && j < nearest.size(); ++j)
       d2 = nearest[j].first;
     const double ri = knn_radius_factor * std::sqrt(d2);
@@ -439,7 +441,15 @@ for_each_neighborhood_knn(const PointRange& points, PointMap point_map, NormalMa
     tree.build<ConcurrencyTag>(input.position.data(), m);
     // the bounding box read_and_sort() will grid again, so that the cost model sees its cells
     const double *lo = input.lo, *hi = input.hi;
-    side = knn_grid_side(tree, input.position.data(), m, k, lo, hi);
+    // the cost model's samples among the points to visit (the automatic scale's later passes
+    // visit a few)
+    std::vector<double> visited;
+    if(options.visit)
+      for(std::size_t g = 0; g < m; ++g)
+        if((*options.visit)[input.input_index[g]])
+          visited.insert(visited.end(), &input.position[3 * g], &input.position[3 * g] + 3);
+    side = options.visit ? knn_grid_side(tree, visited.data(), visited.size() / 3, k, lo, hi)
+                         : knn_grid_side(tree, input.position.data(), m, k, lo, hi);
     if(side == 0)
     {
       use_grid = false;
