@@ -1981,9 +1981,14 @@ TEST_CASE("Automatic scale: sequential == parallel, tiles == whole, normals too"
   CHECK(up >= 0.99 * double(a.size()));
 }
 
-TEST_CASE("Automatic scale: refused with a radius, below neighbor_count, and for plane normals", "[bad_input][automatic_scale]")
+TEST_CASE("Automatic scale: refused with a radius, below neighbor_count, with refinement, and for plane normals",
+          "[bad_input][automatic_scale]")
 {
   const auto pts = noisy_height_field(10, 0.0, 0.0, 60, 1);
+  CHECK_THROWS_AS(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
+                    pts, PSC::parameters::neighbor_count(
+                           40, PSC::parameters::automatic_scale(320, PSC::parameters::normal_refinement(1, maps())))),
+                  std::invalid_argument);
   CHECK_THROWS_AS(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, 3.0, PSC::parameters::automatic_scale(320, maps())),
                   std::invalid_argument);
   CHECK_THROWS_AS(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(

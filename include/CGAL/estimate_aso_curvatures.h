@@ -171,7 +171,8 @@ Aso_estimator aso_estimator_from(const NamedParameters& np)
 ///     \cgalParamDescription{called with the fraction of points processed so far (in `[0,1]`),
 ///       from the calling thread, at least every 1% of the points and about every 0.25 s
 ///       on long runs; if it returns `false` the
-///       estimation stops and the points not yet processed keep the status `NOT_COMPUTED`}
+///       estimation stops and the points not yet processed keep the status `NOT_COMPUTED` (with
+///       `automatic_scale()`, also those whose count would have been chosen in a later pass)}
 ///     \cgalParamType{an instance of `std::function<bool(double)>`}
 ///     \cgalParamDefault{no callback}
 ///   \cgalParamNEnd
@@ -303,6 +304,10 @@ estimate_aso_curvatures(const PointRange& points, const NamedParameters& np)
   const std::size_t largest = I::automatic_scale_parameter(np, false, name);
   if(largest == 0)
     return I::estimate_at_every_point<ConcurrencyTag>(points, false, 0.0, np, aso, name);
+  // (a refinement pass would read the refined normals of the points its pass visits only)
+  if(aso.refinement > 0)
+    throw std::invalid_argument(std::string(name) + ": parameter 'automatic_scale' is not supported with "
+                                "normal_refinement");
   I::Apss_estimator sphere;
   sphere.orient_neighbors = aso.settings.orient_neighbors;
   I::Scale_ladder ladder;

@@ -47,7 +47,7 @@ def estimate_curvatures_file(
     *,
     method: str = ...,
     radius: Optional[float] = ...,
-    neighbors: Union[int, Literal["auto"], None] = ...,
+    neighbors: Optional[int] = ...,
     tile_size: Optional[float] = ...,
     threads: Optional[int] = ...,
     retries: int = ...,

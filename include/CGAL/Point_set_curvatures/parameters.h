@@ -89,8 +89,10 @@ neighbor_count(std::size_t k, const NamedParameters& np = CGAL::parameters::defa
 /// with the quadric's, the difference of the principal curvatures and the directions the
 /// ASO's. `Curvature_estimate::neighbor_count` is then the chosen count and
 /// `Curvature_estimate::mean_curvature_error` the standard error of the mean curvature there.
-/// Costs a neighbourhood of `largest` points per point. Default: none (the scale of
-/// `neighbor_count`); 0 is none too. Not supported with a radius.
+/// The counts are climbed in passes (2k for every point, then 4k, 8k, ... only where the
+/// previous pass kept its largest): a point pays at most twice the neighbourhood it ends
+/// with. Default: none (the scale of `neighbor_count`); 0 is none too. Not supported with a
+/// radius, nor with `normal_refinement`.
 /// Measurements: benchmark/README.md, "Automatic scale".
 template <class NamedParameters = CGAL::parameters::Default_named_parameters>
 CGAL::Named_function_parameters<std::size_t, internal_np::automatic_scale_t, NamedParameters>

@@ -22,7 +22,7 @@
 // Search. Most neighbourhoods come from the sorted grid of the radius driver: with cells of
 // side s, the 27 cells around a point hold every point within s of it, so if at least k of
 // them are within s and (1 + 2^-20) d_k <= s, the neighbourhood is exact. The side comes
-// from d_k at 4096 points spread over the cloud, found with a k-d tree (point_kd_tree.h),
+// from d_k at 4096 points spread over those to visit, found with a k-d tree (point_kd_tree.h),
 // by a cost model (knn_grid_side). The other points (sparser regions, isolated points, more
 // copies than k, k at least the number of points) take their neighbourhood from that tree:
 // the k+1 nearest tell whether points are tied with the k-th, and a ball query then gathers
