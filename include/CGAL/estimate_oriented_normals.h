@@ -197,7 +197,8 @@ inline Normal_record Normal_at_point::operator()(const Neighborhood& nb) const
     thread_local Ladder_scratch scratch;
     Quadric_fit quadric;  // with the penalty that scan lines need
     const Scale_choice c = ladder.choose(nb, scratch);
-    found = c.found && quadric.compute(scratch.chosen.nb) && quadric.normal(r.normal);
+    // (climbing: a provisional record, replaced by the next pass's)
+    found = c.found && (c.climb || (quadric.compute(scratch.chosen.nb) && quadric.normal(r.normal)));
     r.count = c.count;
   }
   else if(fit == Normal_fit::QUADRIC)

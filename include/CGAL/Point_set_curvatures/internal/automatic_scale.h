@@ -17,7 +17,9 @@
 // The noise. A fit's residual variance is the position noise's plus the surface's own
 // third-order terms, which grow as r⁶; the first two rungs separate the two. Where the noise
 // is less than half of the first rung's residual variance (smooth surfaces without noise),
-// the first rung is kept: its estimate is the one of the fixed count k.
+// the first rung is kept: its estimate is the one of the fixed count k. A first test, on the
+// first rung alone (its nearest half against all of it), keeps it where the noise is clearly
+// absent, so that most points of a clean cloud never need the neighbourhood of 2 k.
 //
 // The rule. Each rung's interval is its statistic plus or minus kappa standard errors; the
 // rule keeps the largest rung whose interval meets those of every smaller rung. Under noise
@@ -62,6 +64,14 @@ constexpr double automatic_scale_kappa = 3.0;
 // The least share of the smallest scale's residual variance that must be noise for a larger
 // scale to be considered (see the header comment).
 constexpr double automatic_scale_noise_share = 0.5;
+// The first pass's test (Scale_ladder::gate) keeps the smallest rung only where the noise is
+// less than this share of its residual variance: the fit of half the rung (about 10
+// effective points for 20) estimates the noise poorly, so only its clear absence is trusted
+// (chosen on the simulated scans: benchmark/README.md, "Automatic scale").
+constexpr double automatic_scale_gate_share = 0.05;
+// The least size of the half of the smallest rung that the first pass's test fits (a quadric
+// has 6 coefficients); below it every point goes on to the next pass.
+constexpr std::size_t gate_least_half = 12;
 
 // A neighbourhood of the first points of another, in its own scaled frame.
 struct Sub_neighborhood
@@ -125,6 +135,9 @@ struct Scale_choice
   double mean_error = std::numeric_limits<double>::quiet_NaN();
   double mean = 0;  // the quadric's H at the chosen rung (mean curvature statistic)
   bool found = false;
+  // With Scale_ladder::gate: noise may dominate, the next pass decides (`count` is then twice
+  // the smallest count, the neighbourhood that pass gives).
+  bool climb = false;
 };
 
 // The ladder's settings: the smallest and the largest neighbour count.
@@ -146,6 +159,14 @@ struct Scale_ladder
   // scales than the curvature's).
   enum class Statistic { MEAN_CURVATURE, NORMAL };
   Statistic statistic = Statistic::MEAN_CURVATURE;
+
+  // The first pass's test, on the smallest rung alone (largest == smallest): the noise from
+  // the growth of the residuals between the nearest half of it and all of it, as between two
+  // rungs; where it is less than automatic_scale_gate_share of the rung's residual variance
+  // the rung is kept (smooth surfaces without noise: every point pays the neighbourhood of the smallest
+  // count only), elsewhere the choice climbs (Scale_choice::climb) and the next pass, on
+  // rungs k and 2 k, applies the rule itself.
+  bool gate = false;
 
   // Chooses the rung of `whole` (the neighbourhood of `largest`, scaled by its radius) and
   // leaves its neighbourhood in `scratch.chosen`.
@@ -172,6 +193,29 @@ struct Scale_ladder
     // the smallest rung's values, variance factors and residual variance (input units), kept
     // until the second rung tells the noise
     double v0[2] = {0, 0}, factor0[2] = {0, 0}, residual0 = 0, radius0 = 0, noise2 = 0;
+    // the gate's fit of the nearest half of the smallest rung: its residual variance (input
+    // units; negative if it has none) and radius
+    double residual_half = -1, radius_half = 0;
+    const std::size_t half = smallest / 2;
+    if(gate && half >= gate_least_half && half <= whole.size)
+    {
+      std::nth_element(d2.begin(), d2.begin() + (half - 1), d2.end());
+      ordered = half;
+      const double r2 = d2[half - 1];
+      Quadric_fit fit;
+      fit.anisotropy_penalty = 0;
+      double sigma2 = 0, factor[2] = {0, 0};
+      if(r2 > 0)
+      {
+        trial.take(whole, std::min(knn_radius_factor * std::sqrt(r2), 1.0));
+        std::copy(reference, reference + 3, trial.nb.query_normal);
+        if(fit.compute(trial.nb) && fit.variance_factors(trial.nb, g, m, factor, sigma2))
+        {
+          radius_half = trial.nb.radius;
+          residual_half = sigma2 * radius_half * radius_half;
+        }
+      }
+    }
     std::size_t k = smallest;
     for(std::size_t j = 0; k <= whole.size && j < rungs(); ++j, k *= 2)
     {
@@ -262,6 +306,21 @@ struct Scale_ladder
       c.count = chosen.nb.size;  // (after the swap: target is the rung given up)
       std::copy(fit.n0, fit.n0 + 3, reference);  // one side for every rung
     }
+    if(gate && c.found)
+    {
+      const double growth = radius_half > 0 ? std::pow(radius0 / radius_half, 6) : 0.0;
+      if(residual_half >= 0 && growth > 1.01)
+      {
+        noise2 = std::clamp((growth * residual_half - residual0) / (growth - 1), 0.0, residual_half);
+        if(noise2 < automatic_scale_gate_share * residual0)
+        {
+          c.mean_error = std::sqrt(noise2 * factor0[0]);
+          return c;
+        }
+      }
+      c.climb = true;
+      c.count = 2 * smallest;
+    }
     return c;
   }
 };
@@ -286,6 +345,14 @@ struct Automatic_scale_estimator : Estimator_base
     const Sub_neighborhood& chosen = scratch.chosen;
     if(!c.found)
       return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
+    if(c.climb)
+    {
+      // to be replaced by the next pass's estimate (or NOT_COMPUTED if it is cancelled)
+      Local_estimate provisional;
+      provisional.status = Curvature_estimate_status::VALID;
+      provisional.neighbor_count = c.count;
+      return provisional;
+    }
     Local_estimate e = estimator(chosen.nb);
     if(e.status == Curvature_estimate_status::VALID && c.rung > 0)
     {
@@ -308,38 +375,43 @@ struct Automatic_scale_estimator : Estimator_base
   }
 };
 
-// The passes of the automatic scale: every point on the ladder's first two rungs (the
-// neighbourhood of 2 k), then, with the neighbourhood of 4 k, 8 k, ... up to `largest` in
-// turn, only the points whose previous pass kept its top rung (the rule looks at the rungs
-// from the bottom up and stops at the first that disagrees, so a point that stopped below the
-// top rung of its pass has its choice on the whole ladder). Smooth surfaces without noise stop
-// at the first pass, and no point pays a neighbourhood more than twice the size of the one it
-// was given. A point's result does not depend on the pass that computed it being shared with
-// other points (the tiles, the concurrency).
+// The passes of the automatic scale: every point on the ladder's first rung with the test of
+// Scale_ladder::gate (the neighbourhood of k); then the points it sends on, on the first two
+// rungs (the neighbourhood of 2 k); then, with the neighbourhood of 4 k, 8 k, ... up to
+// `largest` in turn, only the points whose previous pass kept its top rung (the rule looks at
+// the rungs from the bottom up and stops at the first that disagrees, so a point that stopped
+// below the top rung of its pass has its choice on the whole ladder). Smooth surfaces without
+// noise stop at the first pass, and no point pays a neighbourhood more than twice the size of
+// the one it was given. A point's result does not depend on the pass that computed it being
+// shared with other points (the tiles, the concurrency).
 // `run(ladder, visit, progress_start, progress_size, cancelled)` evaluates the points of the
 // mask `visit` (null: all) with neighbourhoods of ladder.largest, reporting progress in that
 // share of [0, 1] (the first pass half of it, each next one half of what is left) and setting
 // `cancelled` if the callback stopped it; `chosen_count(result)` is a valid result's chosen
-// neighbour count, else 0; `callback` is told 1 when the passes end before the last.
-// Cancelled, the points without their final estimate are a default Result (NOT_COMPUTED).
+// neighbour count (the one asked for where the gate sends it on), else 0; `callback` is told
+// 1 when the passes end before the last. Cancelled, the points without their final estimate
+// are a default Result (NOT_COMPUTED).
 template <class Result, class Run, class Chosen_count>
 std::vector<Result> automatic_scale_passes(const Scale_ladder& ladder, const Run& run,
                                            const Chosen_count& chosen_count,
                                            const std::function<bool(double)>& callback)
 {
   Scale_ladder pass = ladder;
-  pass.largest = std::min(ladder.largest, 2 * ladder.smallest);
+  const bool more_passes = ladder.rungs() > 1;
+  pass.largest = ladder.smallest;
+  pass.gate = more_passes;
+  // a point goes on to the next pass if its count reaches this one (the gate's points ask for
+  // the next rung; the others kept the top rung of their pass)
+  auto climbs_from = [](const Scale_ladder& l) { return l.gate ? 2 * l.largest : l.largest; };
   bool cancelled = false;
-  const bool more_passes = ladder.rungs() > pass.rungs();
   std::vector<Result> result = run(pass, nullptr, 0.0, more_passes ? 0.5 : 1.0, cancelled);
   std::vector<char> climb(result.size(), 0);
   for(double start = 0.5; !cancelled && ladder.rungs() > pass.rungs(); start += 0.5 * (1 - start))
   {
-    // the points that kept the previous pass's top rung climb to the next
     bool any = false;
     for(std::size_t i = 0; i < result.size(); ++i)
     {
-      climb[i] = chosen_count(result[i]) >= pass.largest ? 1 : 0;
+      climb[i] = chosen_count(result[i]) >= climbs_from(pass) ? 1 : 0;
       any = any || climb[i];
     }
     if(!any)
@@ -348,6 +420,7 @@ std::vector<Result> automatic_scale_passes(const Scale_ladder& ladder, const Run
         callback(1.0);
       break;
     }
+    pass.gate = false;
     pass.largest = std::min(ladder.largest, 2 * pass.largest);
     const bool last = ladder.rungs() == pass.rungs();
     const std::vector<Result> more = run(pass, &climb, start, last ? 1 - start : 0.5 * (1 - start), cancelled);
@@ -358,7 +431,7 @@ std::vector<Result> automatic_scale_passes(const Scale_ladder& ladder, const Run
   // cancelled: the points that would have climbed further have no final estimate either
   if(cancelled && ladder.rungs() > pass.rungs())
     for(Result& r : result)
-      if(chosen_count(r) >= pass.largest)
+      if(chosen_count(r) >= climbs_from(pass))
         r = Result();
   return result;
 }
