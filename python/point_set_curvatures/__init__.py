@@ -237,6 +237,11 @@ def _whole_cloud_box(n, lo, hi, radius, neighbors, what="", stacklevel=3):
     (capped at n: non-finite points are nobody's neighbours), or a radius larger than the box's
     diagonal."""
     if neighbors == "auto":
+        if n and AUTOMATIC_NEIGHBORS[0] >= n:
+            warnings.warn(
+                f"{what}neighbors='auto' starts at {AUTOMATIC_NEIGHBORS[0]} neighbours, not less than the number "
+                f"of (finite) points ({n}): every neighbourhood is the whole cloud",
+                ScaleWarning, stacklevel=stacklevel)
         return radius, neighbors
     if neighbors is not None:
         if n and neighbors >= n:

@@ -127,7 +127,7 @@ Cloud read_cloud(const py::handle& points, const py::handle& normals)
   return cloud;
 }
 
-Scale read_scale(const py::object& radius, const py::object& neighbors)
+Scale read_scale(const py::object& radius, const py::object& neighbors, bool automatic = false)
 {
   Scale s;
   if(!radius.is_none() && !neighbors.is_none())
@@ -138,9 +138,9 @@ Scale read_scale(const py::object& radius, const py::object& neighbors)
     s.radius = radius.cast<double>();  // checked by the C++ function (positive and finite)
   else if(py::isinstance<py::str>(neighbors))
   {
-    // "auto" (checked by the module): the tool's ladder of --neighbors auto
-    if(neighbors.cast<std::string>() != "auto")
-      throw py::value_error("neighbors: expected a count or 'auto'");
+    // "auto" (where `automatic`): the tool's ladder of --neighbors auto
+    if(!automatic || neighbors.cast<std::string>() != "auto")
+      throw py::value_error("neighbors: expected a count" + std::string(automatic ? " or 'auto'" : ""));
     s.by_count = true;
     s.k = 40;
     s.automatic_largest = 640;
@@ -483,7 +483,7 @@ py::dict estimate_curvatures(const std::string& method, const py::handle& points
                              const py::object& progress, const Options& options, const py::object& tile,
                              const py::object& weights)
 {
-  const Scale scale = read_scale(radius, neighbors);
+  const Scale scale = read_scale(radius, neighbors, method == "aso");
   const Tile_arg t = read_tile(tile);
   static const char* methods[] = {"aso", "apss", "barycenter", "pca_plane", "pss", "jet", "wavejet", "vcm"};
   if(std::find(std::begin(methods), std::end(methods), method) == std::end(methods))
@@ -591,7 +591,7 @@ py::tuple normals_py(const py::handle& points, const py::object& radius, const p
                      int orientation, const std::vector<double>& target, int fit, long long threads,
                      const py::object& progress)
 {
-  const Scale scale = read_scale(radius, neighbors);
+  const Scale scale = read_scale(radius, neighbors, true);
   if(target.size() != 3)
     throw py::value_error("the orientation target must have 3 coordinates");
   Cloud cloud = read_cloud(points, py::none());

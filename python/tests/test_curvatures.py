@@ -436,6 +436,10 @@ def test_automatic_scale():
     angle_auto = np.degrees(np.arccos(np.clip((n_auto * normals).sum(axis=1), -1, 1)))
     angle_fixed = np.degrees(np.arccos(np.clip((n_fixed * normals).sum(axis=1), -1, 1)))
     assert np.median(angle_auto) < 0.5 * np.median(angle_fixed)
+    # a cloud smaller than the first rung: the whole cloud, with a ScaleWarning as for a count
+    tiny_points, tiny_normals = fibonacci_sphere(30)
+    with pytest.warns(psc.ScaleWarning, match="'auto' starts at 40"):
+        psc.estimate_curvatures(tiny_points, tiny_normals, neighbors="auto")
     # only where the automatic scale is defined
     for call in (lambda: psc.estimate_curvatures(points, normals, method="jet", neighbors="auto"),
                  lambda: psc.estimate_sphere_features(points, normals, neighbors="auto"),
