@@ -439,7 +439,13 @@ def test_automatic_scale():
     # a cloud smaller than the first rung: the whole cloud, with a ScaleWarning as for a count
     tiny_points, tiny_normals = fibonacci_sphere(30)
     with pytest.warns(psc.ScaleWarning, match="'auto' starts at 40"):
-        psc.estimate_curvatures(tiny_points, tiny_normals, neighbors="auto")
+        tiny = psc.estimate_curvatures(tiny_points, tiny_normals, neighbors="auto")
+    with pytest.warns(psc.ScaleWarning):
+        tiny_fixed = psc.estimate_curvatures(tiny_points, tiny_normals, neighbors=40)
+    assert (tiny["status"] == psc.Status.VALID).all() and (tiny["neighbors"] == 30).all()
+    # (not bitwise: the wrapper caps a count at the points, 30, while "auto" keeps 40 for the
+    # tangent Voronoi areas, whose neighbourhoods are a quarter of the count; measured 3e-4)
+    np.testing.assert_allclose(tiny["mean"], tiny_fixed["mean"], rtol=2e-3)
     # only where the automatic scale is defined
     for call in (lambda: psc.estimate_curvatures(points, normals, method="jet", neighbors="auto"),
                  lambda: psc.estimate_sphere_features(points, normals, neighbors="auto"),

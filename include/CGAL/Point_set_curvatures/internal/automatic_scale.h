@@ -163,9 +163,9 @@ struct Scale_ladder
   // The first pass's test, on the smallest rung alone (largest == smallest): the noise from
   // the growth of the residuals between the nearest half of it and all of it, as between two
   // rungs; where it is less than automatic_scale_gate_share of the rung's residual variance
-  // the rung is kept (smooth surfaces without noise: every point pays the neighbourhood of the smallest
-  // count only), elsewhere the choice climbs (Scale_choice::climb) and the next pass, on
-  // rungs k and 2 k, applies the rule itself.
+  // the rung is kept (smooth surfaces without noise: most points pay the neighbourhood of
+  // the smallest count only), elsewhere the choice climbs (Scale_choice::climb) and the next
+  // pass, on rungs k and 2 k, applies the rule itself.
   bool gate = false;
 
   // Chooses the rung of `whole` (the neighbourhood of `largest`, scaled by its radius) and
@@ -216,8 +216,9 @@ struct Scale_ladder
         }
       }
     }
-    std::size_t k = smallest;
-    for(std::size_t j = 0; k <= whole.size && j < rungs(); ++j, k *= 2)
+    // (a cloud of fewer points than the smallest count: every point, as with neighbor_count)
+    std::size_t k = std::min(smallest, whole.size);
+    for(std::size_t j = 0; k > 0 && k <= whole.size && j < rungs(); ++j, k *= 2)
     {
       // the driver's radius rule: the k nearest and those tied with the k-th (the k-th smallest
       // of d2, found among those not below a previous rung's)
