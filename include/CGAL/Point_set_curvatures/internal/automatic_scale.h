@@ -73,6 +73,19 @@ constexpr double automatic_scale_gate_share = 0.05;
 // has 6 coefficients); below it every point goes on to the next pass.
 constexpr std::size_t gate_least_half = 12;
 
+// The noise variance from the fits of a point's nearest neighbours at two radii
+// (r_small < r_large; residual variances in input units): the residuals are the noise plus
+// the surface's third-order terms, which grow as r⁶, so the two separate them. NaN where the
+// radii are too close for the growth to tell (within 0.17%).
+inline double separated_noise(double residual_small, double radius_small, double residual_large,
+                              double radius_large)
+{
+  const double growth = std::pow(radius_large / radius_small, 6);
+  if(!(growth > 1.01))
+    return std::numeric_limits<double>::quiet_NaN();
+  return std::clamp((growth * residual_small - residual_large) / (growth - 1), 0.0, residual_small);
+}
+
 // A neighbourhood of the first points of another, in its own scaled frame.
 struct Sub_neighborhood
 {
@@ -168,6 +181,45 @@ struct Scale_ladder
   // pass, on rungs k and 2 k, applies the rule itself.
   bool gate = false;
 
+  // The fit of one rung: the plain quadric (the penalty of the normals' fit adds a bias that
+  // does not grow as r³), the variance factors of the statistic's coefficients `g` (m of
+  // them; scaled frame) and the residual variance (input units) at the rung's radius.
+  struct Rung_fit
+  {
+    enum Outcome { NO_RUNG, FAILED, FITTED } outcome = FAILED;
+    Quadric_fit fit;
+    double factor[2] = {0, 0}, residual = 0, radius = 0;
+  };
+
+  // Fits the k nearest of `whole` with the driver's radius rule (the k nearest and those tied
+  // with the k-th: the k-th smallest of d2, found among those not below a previous rung's,
+  // d2[0, ordered) holding the smallest values) in `target`, the fit oriented by `reference`.
+  // NO_RUNG where the k-th nearest is at the query (copies of it).
+  static Rung_fit fit_rung(const Neighborhood& whole, std::vector<double>& d2, std::size_t& ordered, std::size_t k,
+                           const double reference[3], const double (*g)[6], int m, Sub_neighborhood& target)
+  {
+    Rung_fit rung;
+    std::nth_element(d2.begin() + ordered, d2.begin() + (k - 1), d2.end());
+    ordered = k;
+    const double r2 = d2[k - 1];
+    if(r2 == 0)
+    {
+      rung.outcome = Rung_fit::NO_RUNG;
+      return rung;
+    }
+    target.take(whole, std::min(knn_radius_factor * std::sqrt(r2), 1.0));
+    std::copy(reference, reference + 3, target.nb.query_normal);
+    rung.fit.anisotropy_penalty = 0;
+    double sigma2 = 0;
+    if(rung.fit.compute(target.nb) && rung.fit.variance_factors(target.nb, g, m, rung.factor, sigma2))
+    {
+      rung.outcome = Rung_fit::FITTED;
+      rung.radius = target.nb.radius;
+      rung.residual = sigma2 * (rung.radius * rung.radius);
+    }
+    return rung;
+  }
+
   // Chooses the rung of `whole` (the neighbourhood of `largest`, scaled by its radius) and
   // leaves its neighbourhood in `scratch.chosen`.
   Scale_choice choose(const Neighborhood& whole, Ladder_scratch& scratch) const
@@ -199,47 +251,28 @@ struct Scale_ladder
     const std::size_t half = smallest / 2;
     if(gate && half >= gate_least_half && half <= whole.size)
     {
-      std::nth_element(d2.begin(), d2.begin() + (half - 1), d2.end());
-      ordered = half;
-      const double r2 = d2[half - 1];
-      Quadric_fit fit;
-      fit.anisotropy_penalty = 0;
-      double sigma2 = 0, factor[2] = {0, 0};
-      if(r2 > 0)
+      const Rung_fit rung = fit_rung(whole, d2, ordered, half, reference, g, m, trial);
+      if(rung.outcome == Rung_fit::FITTED)
       {
-        trial.take(whole, std::min(knn_radius_factor * std::sqrt(r2), 1.0));
-        std::copy(reference, reference + 3, trial.nb.query_normal);
-        if(fit.compute(trial.nb) && fit.variance_factors(trial.nb, g, m, factor, sigma2))
-        {
-          radius_half = trial.nb.radius;
-          residual_half = sigma2 * radius_half * radius_half;
-        }
+        radius_half = rung.radius;
+        residual_half = rung.residual;
       }
     }
     // (a cloud of fewer points than the smallest count: every point, as with neighbor_count)
     std::size_t k = std::min(smallest, whole.size);
     for(std::size_t j = 0; k > 0 && k <= whole.size && j < rungs(); ++j, k *= 2)
     {
-      // the driver's radius rule: the k nearest and those tied with the k-th (the k-th smallest
-      // of d2, found among those not below a previous rung's)
-      std::nth_element(d2.begin() + ordered, d2.begin() + (k - 1), d2.end());
-      ordered = k;
-      const double r2 = d2[k - 1];
-      if(r2 == 0)
+      Rung_fit rung = fit_rung(whole, d2, ordered, k, reference, g, m, c.found ? trial : chosen);
+      if(rung.outcome == Rung_fit::NO_RUNG)
         continue;
-      Sub_neighborhood& target = c.found ? trial : chosen;
-      target.take(whole, std::min(knn_radius_factor * std::sqrt(r2), 1.0));
-      std::copy(reference, reference + 3, target.nb.query_normal);
-      // the plain quadric: the penalty of the normals' fit adds a bias that does not grow as r³
-      Quadric_fit fit;
-      fit.anisotropy_penalty = 0;
-      double sigma2 = 0, factor[2] = {0, 0}, v[2] = {0, 0}, n[3];
-      if(!fit.compute(target.nb) || !fit.variance_factors(target.nb, g, m, factor, sigma2) || !fit.normal(n))
+      const Quadric_fit& fit = rung.fit;
+      double* factor = rung.factor;
+      double v[2] = {0, 0}, n[3];
+      if(rung.outcome != Rung_fit::FITTED || !fit.normal(n))
         break;
-      // to input units: a residual variance times r²; H = -(a3 + a5) / r, its variance factor
-      // over r⁴; a slope is a ratio of lengths, its variance factor over r²
-      const double r = target.nb.radius;
-      sigma2 *= r * r;
+      // to input units (the residual variance already is): H = -(a3 + a5) / r, its variance
+      // factor over r⁴; a slope is a ratio of lengths, its variance factor over r²
+      const double r = rung.radius, sigma2 = rung.residual;
       if(!c.found && by_normal)
         for(int a = 0; a < 3; ++a)
         {
@@ -274,8 +307,9 @@ struct Scale_ladder
           // The residuals' variance is the noise's plus the surface's third-order terms,
           // which grow as r⁶: two rungs separate them.
           compared = true;
-          const double growth = std::pow(r / radius0, 6);
-          noise2 = growth > 1.01 ? std::clamp((growth * residual0 - sigma2) / (growth - 1), 0.0, residual0) : residual0;
+          noise2 = separated_noise(residual0, radius0, sigma2, r);
+          if(std::isnan(noise2))
+            noise2 = residual0;
           for(int i = 0; i < m; ++i)
           {
             const double s0 = std::sqrt(noise2 * factor0[i]);
@@ -309,15 +343,13 @@ struct Scale_ladder
     }
     if(gate && c.found)
     {
-      const double growth = radius_half > 0 ? std::pow(radius0 / radius_half, 6) : 0.0;
-      if(residual_half >= 0 && growth > 1.01)
+      // (NaN without the half's fit, or where the growth cannot tell: the point climbs)
+      const double gate_noise2 = residual_half >= 0 ? separated_noise(residual_half, radius_half, residual0, radius0)
+                                                    : std::numeric_limits<double>::quiet_NaN();
+      if(gate_noise2 < automatic_scale_gate_share * residual0)
       {
-        noise2 = std::clamp((growth * residual_half - residual0) / (growth - 1), 0.0, residual_half);
-        if(noise2 < automatic_scale_gate_share * residual0)
-        {
-          c.mean_error = std::sqrt(noise2 * factor0[0]);
-          return c;
-        }
+        c.mean_error = std::sqrt(gate_noise2 * factor0[0]);
+        return c;
       }
       c.climb = true;
       c.count = 2 * smallest;
