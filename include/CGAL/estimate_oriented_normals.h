@@ -197,9 +197,16 @@ inline Normal_record Normal_at_point::operator()(const Neighborhood& nb) const
     thread_local Ladder_scratch scratch;
     Quadric_fit quadric;  // with the penalty that scan lines need
     const Scale_choice c = ladder.choose(nb, scratch);
-    // (climbing: a provisional record, replaced by the next pass's)
-    found = c.found && (c.climb || (quadric.compute(scratch.chosen.nb) && quadric.normal(r.normal)));
     r.count = c.count;
+    if(ladder.climbs(c))
+    {
+      // a provisional record (no normal, no neighbours), replaced by the next pass's
+      r.status = Curvature_estimate_status::VALID;
+      return r;
+    }
+    // (as_first_rung: the ladder's plain quadric failed there, the penalised one may not, as
+    // with a fixed count)
+    found = (c.found || c.as_first_rung) && quadric.compute(scratch.chosen.nb) && quadric.normal(r.normal);
   }
   else if(fit == Normal_fit::QUADRIC)
   {

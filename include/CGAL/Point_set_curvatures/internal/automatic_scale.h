@@ -148,6 +148,10 @@ struct Scale_choice
   double mean_error = std::numeric_limits<double>::quiet_NaN();
   double mean = 0;  // the quadric's H at the chosen rung (mean curvature statistic)
   bool found = false;
+  // Not found because the first rung's quadric could not be fitted (too few points, or all
+  // along one line): no fit tells the noise, so the first rung is estimated as it is, as with
+  // a fixed count (its neighbourhood is in `chosen`, mean_error NaN).
+  bool as_first_rung = false;
   // With Scale_ladder::gate: noise may dominate, the next pass decides (`count` is then twice
   // the smallest count, the neighbourhood that pass gives).
   bool climb = false;
@@ -180,6 +184,15 @@ struct Scale_ladder
   // the smallest count only), elsewhere the choice climbs (Scale_choice::climb) and the next
   // pass, on rungs k and 2 k, applies the rule itself.
   bool gate = false;
+
+  // False for the passes before the last (automatic_scale_passes): a point keeping the top
+  // rung there climbs to the next pass, which replaces its estimate, so none is computed.
+  bool final_pass = true;
+
+  // The least chosen count that goes on to the next pass (automatic_scale_passes()): the
+  // gate's points ask for the next rung, the others kept the top rung of their pass.
+  std::size_t climb_count() const { return gate ? 2 * largest : largest; }
+  bool climbs(const Scale_choice& c) const { return c.found && !final_pass && c.count >= climb_count(); }
 
   // The fit of one rung: the plain quadric (the penalty of the normals' fit adds a bias that
   // does not grow as r³), the variance factors of the statistic's coefficients `g` (m of
@@ -269,7 +282,14 @@ struct Scale_ladder
       double* factor = rung.factor;
       double v[2] = {0, 0}, n[3];
       if(rung.outcome != Rung_fit::FITTED || !fit.normal(n))
+      {
+        if(!c.found)
+        {
+          c.as_first_rung = true;
+          c.count = chosen.nb.size;
+        }
         break;
+      }
       // to input units (the residual variance already is): H = -(a3 + a5) / r, its variance
       // factor over r⁴; a slope is a ratio of lengths, its variance factor over r²
       const double r = rung.radius, sigma2 = rung.residual;
@@ -376,9 +396,15 @@ struct Automatic_scale_estimator : Estimator_base
     thread_local Ladder_scratch scratch;
     const Scale_choice c = ladder.choose(nb, scratch);
     const Sub_neighborhood& chosen = scratch.chosen;
-    if(!c.found)
+    if(!c.found && !c.as_first_rung)
       return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
-    if(c.climb)
+    if(c.as_first_rung)
+    {
+      Local_estimate e = estimator(chosen.nb);
+      e.neighbor_count = c.count;
+      return e;
+    }
+    if(ladder.climbs(c))
     {
       // to be replaced by the next pass's estimate (or NOT_COMPUTED if it is cancelled)
       Local_estimate provisional;
@@ -433,9 +459,7 @@ std::vector<Result> automatic_scale_passes(const Scale_ladder& ladder, const Run
   const bool more_passes = ladder.rungs() > 1;
   pass.largest = ladder.smallest;
   pass.gate = more_passes;
-  // a point goes on to the next pass if its count reaches this one (the gate's points ask for
-  // the next rung; the others kept the top rung of their pass)
-  auto climbs_from = [](const Scale_ladder& l) { return l.gate ? 2 * l.largest : l.largest; };
+  pass.final_pass = !more_passes;
   bool cancelled = false;
   std::vector<Result> result = run(pass, nullptr, 0.0, more_passes ? 0.5 : 1.0, cancelled);
   std::vector<char> climb(result.size(), 0);
@@ -444,7 +468,7 @@ std::vector<Result> automatic_scale_passes(const Scale_ladder& ladder, const Run
     bool any = false;
     for(std::size_t i = 0; i < result.size(); ++i)
     {
-      climb[i] = chosen_count(result[i]) >= climbs_from(pass) ? 1 : 0;
+      climb[i] = chosen_count(result[i]) >= pass.climb_count() ? 1 : 0;
       any = any || climb[i];
     }
     if(!any)
@@ -456,6 +480,7 @@ std::vector<Result> automatic_scale_passes(const Scale_ladder& ladder, const Run
     pass.gate = false;
     pass.largest = std::min(ladder.largest, 2 * pass.largest);
     const bool last = ladder.rungs() == pass.rungs();
+    pass.final_pass = last;
     const std::vector<Result> more = run(pass, &climb, start, last ? 1 - start : 0.5 * (1 - start), cancelled);
     for(std::size_t i = 0; i < result.size(); ++i)  // (cancelled: the points not reached are NOT_COMPUTED)
       if(climb[i])
@@ -464,7 +489,7 @@ std::vector<Result> automatic_scale_passes(const Scale_ladder& ladder, const Run
   // cancelled: the points that would have climbed further have no final estimate either
   if(cancelled && ladder.rungs() > pass.rungs())
     for(Result& r : result)
-      if(chosen_count(r) >= climbs_from(pass))
+      if(chosen_count(r) >= pass.climb_count())
         r = Result();
   return result;
 }
