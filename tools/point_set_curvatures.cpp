@@ -7,7 +7,9 @@
 // estimates normals if the file has none, estimates curvatures at every point and writes them
 // (.ply, .csv or .las), every input point in input order. The options are parsed in
 // command_line.cpp, the estimators run from methods.cpp, the files are read and written in
-// read_*.cpp and write_point_cloud.cpp, and inputs larger than memory go through tiled_run.cpp.
+// read_*.cpp and write_point_cloud.cpp (the output file's safety in output_file.cpp), normals
+// are estimated in estimated_normals.cpp, interruption and progress are in interruption.cpp and
+// progress_bar.h, and inputs larger than memory go through tiled_run.cpp.
 // Run with --help for the options. Exit status: 0 on success, 2 on invalid arguments or
 // unreadable/malformed/unwritable files (one line on stderr, no output file left behind), 3
 // when no point got a valid estimate (the output written, the reason on stderr), 130 when
@@ -21,8 +23,11 @@
 #include <tbb/global_control.h>
 
 #include "command_line.h"
+#include "estimated_normals.h"
+#include "interruption.h"
 #include "methods.h"
-#include "progress_line.h"
+#include "output_file.h"
+#include "progress_bar.h"
 #include "read_point_cloud.h"
 #include "run_summary.h"
 #include "tiled_run.h"
@@ -30,19 +35,14 @@
 #include "write_las.h"
 #include "write_point_cloud.h"
 
-#include <dirent.h>
-#include <fcntl.h>
 #include <sys/stat.h>
-#include <sys/statvfs.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
-#include <condition_variable>
 #include <csignal>
 #include <cstdint>
 #include <cstdio>
@@ -53,11 +53,9 @@
 #include <limits>
 #include <map>
 #include <memory>
-#include <mutex>
 #include <sstream>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <vector>
 
 namespace {
@@ -66,103 +64,7 @@ using namespace psc_tool;
 namespace PSC = CGAL::Point_set_curvatures;
 
 // ---------------------------------------------------------------------------------------
-// --orient scanner
-
-// The attributes holding the pulse directions x(t) y(t) z(t) of LAS wave packets (read_las.cpp).
-std::array<int, 3> pulse_attributes(const std::vector<Attribute>& attributes)
-{
-  std::array<int, 3> found = {{-1, -1, -1}};
-  for(std::size_t j = 0; j < attributes.size(); ++j)
-    for(int a = 0; a < 3; ++a)
-      if(attributes[j].name == std::string("wave_") + "xyz"[a] + "_t")
-        found[a] = int(j);
-  return found;
-}
-
-// Turns each normal towards the origin of its point's pulse: against the pulse's direction
-// (x(t), y(t), z(t): from the scanner to the point). Points without a direction (zero or not
-// finite) keep the +z orientation; returns their number.
-template <class Normal_of, class Pulse_of>
-std::size_t orient_towards_scanner(std::size_t n, const Normal_of& normal, const Pulse_of& pulse)
-{
-  std::size_t without = 0;
-  for(std::size_t i = 0; i < n; ++i)
-  {
-    const std::array<double, 3> d = pulse(i);
-    const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-    if(!(dd > 0) || !std::isfinite(dd))
-    {
-      ++without;
-      continue;
-    }
-    Vector& v = normal(i);
-    if(v.x() * d[0] + v.y() * d[1] + v.z() * d[2] > 0)
-      v = -v;
-  }
-  return without;
-}
-
-// ---------------------------------------------------------------------------------------
-// Progress and interruption
-
-volatile std::sig_atomic_t interrupted = 0;
-// The signal that interrupted the run (SIGINT or SIGTERM): the exit status is 128 + it.
-volatile std::sig_atomic_t interrupt_signal = SIGINT;
-// The temporary output file, removed by a second Ctrl-C (a fixed buffer: the handler may only
-// call async-signal-safe functions). Empty when there is none.
-char temporary_output_path[4096] = "";
-
-// The phase running (its name in the progress bar), named in the message of an interrupted
-// run: the phase that stopped.
-std::string current_phase = "startup";
-
-// Test hook (test_tool): PSC_TOOL_TEST_SIGNAL=INT@NAME, TERM@NAME or KILL@NAME raises SIGINT,
-// SIGTERM or SIGKILL when the first phase whose name starts with NAME begins ('*' in NAME: any
-// text, as in "tile *curvatures"; NAME#N: the N-th such phase), so that a test can check that
-// every phase stops at the signal (within a progress report: about 1% of its work, 0.25 s),
-// and what a run killed in a phase leaves behind.
-void test_signal_at_phase_start(const std::string& phase)
-{
-  static const char* const hook = std::getenv("PSC_TOOL_TEST_SIGNAL");
-  static int seen = 0;
-  if(!hook || seen < 0)
-    return;
-  const std::string h = hook;
-  const std::size_t at = h.find('@'), hash = h.find('#');
-  if(at == std::string::npos)
-    return;
-  const std::string name = h.substr(at + 1, hash == std::string::npos ? std::string::npos : hash - at - 1);
-  const int nth = hash == std::string::npos ? 1 : std::atoi(h.c_str() + hash + 1);
-  const std::size_t star = name.find('*');
-  const std::string head = name.substr(0, star), tail = star == std::string::npos ? "" : name.substr(star + 1);
-  if(phase.compare(0, head.size(), head) != 0 ||
-     (star != std::string::npos &&
-      (phase.size() < head.size() + tail.size() || phase.compare(phase.size() - tail.size(), tail.size(), tail) != 0)))
-    return;
-  if(++seen < nth)
-    return;
-  seen = -1;  // once
-  const std::string signal = h.substr(0, at);
-  std::raise(signal == "TERM" ? SIGTERM : signal == "KILL" ? SIGKILL : SIGINT);
-}
-
-// The first Ctrl-C (or SIGTERM) cancels the current phase at its next progress report; a
-// second one removes the temporary output and exits at once. Exit status 128 + the signal,
-// as a shell reports a process the signal killed: 130 for SIGINT, 143 for SIGTERM.
-extern "C" void on_interrupt(int signal)
-{
-  if(interrupted)
-  {
-    if(temporary_output_path[0] != '\0')
-      ::unlink(temporary_output_path);
-    ::_exit(128 + signal);
-  }
-  interrupt_signal = signal;
-  interrupted = 1;
-}
-
-// ---------------------------------------------------------------------------------------
-// Normals
+// Average spacing (--radius Nx)
 
 bool is_finite(const Point& p)
 {
@@ -178,6 +80,7 @@ std::vector<Point_set::Index> finite_points(const Point_set& ps)
       indices.push_back(i);
   return indices;
 }
+
 
 // The average spacing of --radius Nx, as CGAL::compute_average_spacing() computes it with 6
 // neighbours: the mean, over the finite points, of the mean distance from a point to its 7
@@ -222,479 +125,8 @@ double average_spacing(const Point_set& ps, const Progress& progress)
   return count ? sum / double(count) : 0;
 }
 
-// How the estimated normals are oriented: --orient, or for "auto" (the default) what suits
-// the input (LAS files are airborne or mobile scans, seen from above, unless they hold pulse
-// directions), and why, for the summary.
-struct Orientation_choice
-{
-  CGAL::Normal_orientation orientation;
-  bool scanner = false;  // then each normal is turned towards its pulse's origin afterwards
-  std::string text;      // what the summary says
-};
-
-Orientation_choice choose_orientation(const Options& o, bool las, bool has_pulses)
-{
-  Orientation_choice c;
-  c.orientation = o.orientation;
-  c.scanner = o.orient_scanner;
-  if(o.orientation_text != "auto")
-  {
-    c.text = cat(o.orientation_text, " (--orient)");
-    return c;
-  }
-  if(las && has_pulses)
-  {
-    c.orientation = CGAL::Normal_orientation::along_vector(0, 0, 1);
-    c.scanner = true;
-    c.text = "towards the scanner (LAS pulse directions; --orient auto)";
-  }
-  else if(las)
-    c.orientation = CGAL::Normal_orientation::automatic();  // text once the normals are known
-  else
-  {
-    c.orientation = CGAL::Normal_orientation::minimum_spanning_tree();
-    c.text = "mst: along a minimum spanning tree, closed parts outward, open parts up (--orient auto)";
-  }
-  return c;
-}
-
-// Estimates the normals of the point set as the options say, oriented as `choice` says (its
-// text completed for the automatic orientation). Returns the number of points left without a
-// normal.
-std::size_t estimate_normals(Point_set& ps, const Options& o, Orientation_choice& choice, const Progress& progress)
-{
-  ps.add_normal_map();
-  const std::size_t without = CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
-    ps, PSC::parameters::neighbor_count(
-          normal_neighbor_count(o),
-          PSC::parameters::automatic_scale(
-            normal_automatic_largest(o),
-            PSC::parameters::normal_fit(o.normal_fit, PSC::parameters::normal_orientation(
-                                                        choice.orientation, CGAL::parameters::callback(progress))))));
-  if(interrupted)
-    throw Cancelled();
-  if(choice.orientation.kind == CGAL::Normal_orientation::AUTOMATIC)
-  {
-    std::size_t usable = 0, vertical = 0;
-    for(Point_set::Index i : ps)
-    {
-      const Vector& n = ps.normal(i);
-      usable += n == CGAL::NULL_VECTOR ? 0 : 1;
-      vertical += PSC::is_near_vertical(n.x(), n.y(), n.z()) ? 1 : 0;
-    }
-    const double share = usable ? std::round(1000.0 * double(vertical) / double(usable)) / 10 : 0.0;
-    choice.text = PSC::is_two_and_a_half_d(vertical, usable)
-                    ? cat("+z (LAS file, 2.5-D: ", share, "% of the normals within 60 degrees of the vertical; "
-                          "closed parts outward; --orient auto)")
-                    : cat("mst (LAS file, not 2.5-D: ", share, "% of the normals within 60 degrees of the "
-                          "vertical; closed parts outward, open parts up; --orient auto)");
-  }
-  return without;
-}
-
-// One line per phase on a terminal ("reading     [#######.....]  58%   1.2 s  ETA 1 s"),
-// redrawn at every new percent and, from a timer thread, twice a second: the elapsed time and
-// the ETA move on while a phase reports no progress for long (a radius covering the whole
-// cloud). Nothing is drawn when stderr is not a terminal, and then no thread is started.
-// The callbacks return false once Ctrl-C was pressed, which cancels the phase. CGAL's
-// Parallel_tag functions call them from threads of their own: a mutex keeps one drawer at a
-// time (the signal handler never draws).
-class Progress_bar
-{
-public:
-  explicit Progress_bar(bool enabled) : m_enabled(enabled)
-  {
-    if(m_enabled)
-      m_timer = std::thread([this]() { redraw_periodically(); });
-  }
-
-  ~Progress_bar()
-  {
-    if(m_timer.joinable())
-    {
-      {
-        std::lock_guard<std::mutex> lock(m_mutex);
-        m_stop = true;
-      }
-      m_wake.notify_all();
-      m_timer.join();
-    }
-  }
-
-  Progress_bar(const Progress_bar&) = delete;
-  Progress_bar& operator=(const Progress_bar&) = delete;
-
-  // Starts a phase (ending the previous one) and returns its callback.
-  Progress phase(const std::string& name)
-  {
-    {
-      std::lock_guard<std::mutex> lock(m_mutex);
-      finish_locked();
-      m_name = name;
-      current_phase = name;
-      m_start = std::chrono::steady_clock::now();
-      m_fraction = 0;
-      m_last = -1;
-      m_active = true;
-      draw_locked(true);
-    }
-    test_signal_at_phase_start(name);
-    return [this](double fraction) {
-      // (the lock only at a new percent: the line shows no finer fraction)
-      if(m_enabled && percent_of(fraction) != m_last)
-      {
-        std::lock_guard<std::mutex> lock(m_mutex);
-        m_fraction = fraction;
-        draw_locked(false);
-      }
-      return !interrupted;
-    };
-  }
-
-  // Prints `line` at once above the bar, which goes on below it; false (nothing printed)
-  // when no bar is drawn (stderr not a terminal, --quiet): the warnings then wait for the end
-  // of the run, so that a failure stays one line.
-  bool note(const std::string& line)
-  {
-    if(!m_enabled)
-      return false;
-    std::lock_guard<std::mutex> lock(m_mutex);
-    if(m_drawn)
-      std::fputc('\n', stderr);
-    std::fprintf(stderr, "%s\n", line.c_str());
-    m_drawn = false;
-    draw_locked(true);
-    return true;
-  }
-
-  // Ends the current phase's line.
-  void finish()
-  {
-    std::lock_guard<std::mutex> lock(m_mutex);
-    finish_locked();
-  }
-
-private:
-  void finish_locked()
-  {
-    if(m_drawn)
-      std::fputc('\n', stderr);
-    m_drawn = false;
-    m_active = false;
-  }
-
-  // Draws the line at a new percent, or always with `force` (the timer's redraws).
-  void draw_locked(bool force)
-  {
-    if(!m_enabled || !m_active)
-      return;
-    const double f = std::isfinite(m_fraction) ? std::max(0.0, std::min(1.0, m_fraction)) : 0.0;
-    const int percent = percent_of(f);
-    if(percent == m_last && !force)
-      return;
-    m_last = percent;
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
-    std::fprintf(stderr, "\r%s", progress_line(m_name, f, seconds).c_str());
-    std::fflush(stderr);
-    m_drawn = true;
-  }
-
-  static int percent_of(double fraction)
-  {
-    return std::isfinite(fraction) ? static_cast<int>(100 * std::max(0.0, std::min(1.0, fraction))) : 0;
-  }
-
-  void redraw_periodically()
-  {
-    std::unique_lock<std::mutex> lock(m_mutex);
-    while(!m_stop)
-    {
-      m_wake.wait_for(lock, std::chrono::milliseconds(500));
-      if(!m_stop && m_active && !interrupted)
-        draw_locked(true);
-    }
-  }
-
-  const bool m_enabled;
-  std::mutex m_mutex;
-  std::condition_variable m_wake;
-  std::thread m_timer;
-  bool m_stop = false;
-  bool m_active = false;  // a phase is running (between phase() and finish())
-  std::string m_name;
-  std::chrono::steady_clock::time_point m_start;
-  double m_fraction = 0;
-  std::atomic<int> m_last{-1};  // the percent drawn last (read without the lock by the callbacks)
-  bool m_drawn = false;
-};
-
 // ---------------------------------------------------------------------------------------
 // Output
-
-// "120.3 MB": a size for messages.
-std::string size_text(double bytes)
-{
-  char text[64];
-  if(bytes < 1024)
-    std::snprintf(text, sizeof text, "%.0f bytes", bytes);
-  else if(bytes < 1024.0 * 1024)
-    std::snprintf(text, sizeof text, "%.1f KB", bytes / 1024);
-  else if(bytes < 1024.0 * 1024 * 1024)
-    std::snprintf(text, sizeof text, "%.1f MB", bytes / (1024.0 * 1024));
-  else if(bytes < 1024.0 * 1024 * 1024 * 1024)
-    std::snprintf(text, sizeof text, "%.1f GB", bytes / (1024.0 * 1024 * 1024));
-  else
-    std::snprintf(text, sizeof text, "%.1f TB", bytes / (1024.0 * 1024 * 1024 * 1024));
-  return text;
-}
-
-// The folder of a path ("." for a bare name) and its name in it.
-std::string folder_of(const std::string& path)
-{
-  const std::size_t slash = path.find_last_of('/');
-  return slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
-}
-
-// The temporary files of OUTPUT are named ".NAME.tmp-PID-" and six characters of mkstemp
-// (the output while it is written) or "tileN-" and six (the rows of a tiled run's tiles,
-// unlinked at once): the PID tells the files of a killed run (its process is gone) from
-// those of a run still going.
-std::string temporary_prefix(const std::string& output)
-{
-  return hidden_sibling(output, cat(".tmp-", ::getpid(), "-"));
-}
-
-// Refuses, before any computation, an OUTPUT that cannot be written: a directory, a folder
-// that does not exist, is not a directory or is not writable.
-void check_output_path(const std::string& output)
-{
-  struct stat st;
-  if(::stat(output.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
-    throw Error(cat("the output ", in_quotes(output), " is a directory: give a file name, such as ",
-                    in_quotes(output + "/curvatures" + lower_extension(output))));
-  const std::string folder = folder_of(output);
-  if(::stat(folder.c_str(), &st) != 0)
-    throw Error(cat("cannot write output ", in_quotes(output), ": its folder ", in_quotes(folder), " ",
-                    errno == ENOENT ? "does not exist (create it with mkdir -p, or choose another OUTPUT)"
-                                    : cat("cannot be read (", std::strerror(errno), "); choose another OUTPUT")));
-  if(!S_ISDIR(st.st_mode))
-    throw Error(cat("cannot write output ", in_quotes(output), ": ", in_quotes(folder),
-                    " is not a directory; choose another OUTPUT"));
-  if(::access(folder.c_str(), W_OK | X_OK) != 0)
-    throw Error(cat("cannot write output ", in_quotes(output), ": its folder ", in_quotes(folder),
-                    " is not writable (", std::strerror(errno), "); choose another OUTPUT or change its permissions"));
-}
-
-// Removes the temporary files that runs writing `output` left when they were killed (SIGKILL,
-// a power cut): ".NAME.tmp-PID-..." whose process is gone, and ".NAME.tmp-XXXXXX" of the
-// tool's earlier versions. Returns their number.
-std::size_t remove_stale_temporaries(const std::string& output)
-{
-  const std::size_t slash = output.find_last_of('/');
-  const std::string folder = slash == std::string::npos ? "" : output.substr(0, slash + 1);
-  const std::string head = hidden_sibling(output, ".tmp-").substr(folder.size());
-  if(head.size() <= 5)
-    return 0;
-  std::size_t removed = 0;
-  DIR* d = ::opendir(folder.empty() ? "." : folder.c_str());
-  if(!d)
-    return 0;
-  while(const dirent* e = ::readdir(d))
-  {
-    const std::string name = e->d_name;
-    if(name.compare(0, head.size(), head) != 0)
-      continue;
-    const std::string rest = name.substr(head.size());
-    const std::size_t dash = rest.find('-');
-    bool stale = false;
-    if(dash == std::string::npos)
-      stale = rest.size() == 6;  // ".NAME.tmp-XXXXXX": an earlier version's
-    else if(dash > 0 && dash < 10 && rest.find_first_not_of("0123456789") == dash)
-    {
-      const long pid = std::strtol(rest.c_str(), nullptr, 10);
-      stale = pid > 0 && pid != long(::getpid()) && ::kill(pid_t(pid), 0) != 0 && errno == ESRCH;
-    }
-    struct stat st;
-    const std::string path = folder + name;
-    if(stale && ::lstat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode) && ::unlink(path.c_str()) == 0)
-      ++removed;
-  }
-  ::closedir(d);
-  return removed;
-}
-
-// Allocates `bytes` to the file: 0, or the error (ENOSPC for a full disk, EDQUOT, EFBIG for a
-// file size limit). A file system without fallocate is checked for its free space instead.
-int allocate(int fd, std::uint64_t bytes)
-{
-  if(bytes == 0)
-    return 0;
-#ifdef __linux__
-  for(;;)
-  {
-    if(::fallocate(fd, 0, 0, off_t(bytes)) == 0)
-      return 0;
-    if(errno != EINTR || interrupted)
-      break;
-  }
-  if(errno != EOPNOTSUPP && errno != ENOSYS)
-    return errno;
-  struct statvfs v;
-  if(::fstatvfs(fd, &v) == 0 && double(v.f_bavail) * double(v.f_frsize) < double(bytes))
-    return ENOSPC;
-  return 0;
-#else
-  return ::posix_fallocate(fd, 0, off_t(bytes));
-#endif
-}
-
-// The output file. Its size is reserved on its file system before the estimation (reserve()),
-// so that a full disk, a quota or a file size limit fails in the first second, not after the
-// computation; the space is held by a temporary file unlinked at once, so that a killed run
-// leaves nothing. When writing starts (open()), the output is written under a temporary name
-// in the same folder (the reservation passing to it), and renamed when complete (commit()):
-// a failure or an interruption never leaves a partial OUTPUT.
-class Temporary_output
-{
-public:
-  explicit Temporary_output(const std::string& output) : m_output(output) {}
-
-  ~Temporary_output()
-  {
-    discard();
-    release();
-  }
-
-  // Reserves `bytes` (the output's size, or an upper bound) for the output; `what` describes
-  // it for the message.
-  void reserve(std::uint64_t bytes, const std::string& what)
-  {
-    std::string path;
-    const int fd = create(path);
-    ::unlink(path.c_str());
-    temporary_output_path[0] = '\0';
-    const int e = allocate(fd, bytes);
-    if(e != 0)
-    {
-      ::close(fd);
-      if(interrupted)
-        throw Cancelled();
-      throw reservation_error(e, bytes, what);
-    }
-    release();
-    m_reserved = fd;
-  }
-
-  // Creates the temporary file, `bytes` allocated to it, and returns it for writing.
-  std::FILE* open(std::uint64_t bytes, const std::string& what)
-  {
-    const int fd = create(m_path);
-    release();  // the space reserved passes to the file
-    const int e = allocate(fd, bytes);
-    if(e != 0)
-    {
-      ::close(fd);
-      discard();
-      if(interrupted)
-        throw Cancelled();
-      throw reservation_error(e, bytes, what);
-    }
-    m_file = ::fdopen(fd, "wb");
-    if(!m_file)
-    {
-      ::close(fd);
-      discard();
-      throw Error(cat("cannot write output ", in_quotes(m_output), ": ", std::strerror(errno)));
-    }
-    static char buffer_space[1 << 16];
-    std::setvbuf(m_file, buffer_space, _IOFBF, sizeof(buffer_space));
-    return m_file;
-  }
-
-  std::FILE* file() { return m_file; }
-
-  void commit()
-  {
-    // the allocation may exceed what was written (text formats): cut the file where it ends
-    bool written = std::fflush(m_file) == 0 && !std::ferror(m_file);
-    const off_t end = ::ftello(m_file);
-    written = written && end >= 0 && ::ftruncate(::fileno(m_file), end) == 0;
-    const int error = errno;
-    const bool closed = std::fclose(m_file) == 0;
-    m_file = nullptr;
-    if(!written || !closed)
-      throw Error(cat("cannot write output ", in_quotes(m_output), ": ", std::strerror(written ? errno : error)));
-    temporary_output_path[0] = '\0';
-    if(std::rename(m_path.c_str(), m_output.c_str()) != 0)
-      throw Error(cat("cannot write output ", in_quotes(m_output), ": ", std::strerror(errno)));
-    m_path.clear();
-  }
-
-  void discard()
-  {
-    if(m_file)
-      std::fclose(m_file);
-    m_file = nullptr;
-    temporary_output_path[0] = '\0';
-    if(!m_path.empty())
-      std::remove(m_path.c_str());
-    m_path.clear();
-  }
-
-private:
-  // A new temporary file ".NAME.tmp-PID-XXXXXX" with the usual permissions; its name in `path`
-  // and in temporary_output_path (removed by a second Ctrl-C).
-  int create(std::string& path)
-  {
-    const std::string pattern = temporary_prefix(m_output) + "XXXXXX";
-    std::vector<char> buffer(pattern.begin(), pattern.end());
-    buffer.push_back('\0');
-    const int fd = ::mkstemp(buffer.data());
-    if(fd < 0)
-      throw Error(cat("cannot write output ", in_quotes(m_output), ": ", std::strerror(errno)));
-    path = buffer.data();
-    if(path.size() < sizeof(temporary_output_path))
-      std::memcpy(temporary_output_path, path.c_str(), path.size() + 1);
-    // mkstemp creates the file readable by its owner only: give it the usual permissions
-    const mode_t mask = ::umask(0);
-    ::umask(mask);
-    ::fchmod(fd, 0666 & ~mask);
-    return fd;
-  }
-
-  void release()
-  {
-    if(m_reserved >= 0)
-      ::close(m_reserved);
-    m_reserved = -1;
-  }
-
-  Error reservation_error(int e, std::uint64_t bytes, const std::string& what) const
-  {
-    const std::string needs = cat(size_text(double(bytes)), " (", what, ")");
-    if(e == ENOSPC)
-    {
-      struct statvfs v;
-      const std::string free_space = ::statvfs(folder_of(m_output).c_str(), &v) == 0
-                                       ? cat(", the file system holding it has ", size_text(double(v.f_bavail) * double(v.f_frsize)), " free")
-                                       : std::string();
-      return Error(cat("not enough space for output ", in_quotes(m_output), ": it needs up to ", needs, free_space,
-                       "; free some space or write OUTPUT elsewhere"));
-    }
-    if(e == EDQUOT)
-      return Error(cat("output ", in_quotes(m_output), " needs up to ", needs, ", beyond your disk quota; free some "
-                       "space or write OUTPUT elsewhere"));
-    if(e == EFBIG)
-      return Error(cat("output ", in_quotes(m_output), " needs up to ", needs, ", more than the largest file allowed "
-                       "(the shell's file size limit, ulimit -f, or the file system's); raise the limit or write "
-                       "OUTPUT elsewhere"));
-    return Error(cat("cannot reserve ", needs, " for output ", in_quotes(m_output), ": ", std::strerror(e)));
-  }
-
-  std::string m_output, m_path;
-  std::FILE* m_file = nullptr;
-  int m_reserved = -1;  // the unlinked file holding the space reserved, until open()
-};
 
 // Diverging colour map centred on 0 (Moreland's cool-warm end points): blue for negative,
 // near-white at zero, red for positive, saturated beyond +-range.

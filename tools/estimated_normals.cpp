@@ -1,0 +1,83 @@
+// Copyright (c) 2026 The Point_set_curvatures authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// See estimated_normals.h.
+
+#include "estimated_normals.h"
+
+#include "interruption.h"
+
+#include <CGAL/Point_set_curvatures/parameters.h>
+
+namespace psc_tool {
+
+namespace PSC = CGAL::Point_set_curvatures;
+
+std::array<int, 3> pulse_attributes(const std::vector<Attribute>& attributes)
+{
+  std::array<int, 3> found = {{-1, -1, -1}};
+  for(std::size_t j = 0; j < attributes.size(); ++j)
+    for(int a = 0; a < 3; ++a)
+      if(attributes[j].name == std::string("wave_") + "xyz"[a] + "_t")
+        found[a] = int(j);
+  return found;
+}
+
+Orientation_choice choose_orientation(const Options& o, bool las, bool has_pulses)
+{
+  Orientation_choice c;
+  c.orientation = o.orientation;
+  c.scanner = o.orient_scanner;
+  if(o.orientation_text != "auto")
+  {
+    c.text = cat(o.orientation_text, " (--orient)");
+    return c;
+  }
+  if(las && has_pulses)
+  {
+    c.orientation = CGAL::Normal_orientation::along_vector(0, 0, 1);
+    c.scanner = true;
+    c.text = "towards the scanner (LAS pulse directions; --orient auto)";
+  }
+  else if(las)
+    c.orientation = CGAL::Normal_orientation::automatic();  // text once the normals are known
+  else
+  {
+    c.orientation = CGAL::Normal_orientation::minimum_spanning_tree();
+    c.text = "mst: along a minimum spanning tree, closed parts outward, open parts up (--orient auto)";
+  }
+  return c;
+}
+
+std::size_t estimate_normals(Point_set& ps, const Options& o, Orientation_choice& choice, const Progress& progress)
+{
+  ps.add_normal_map();
+  const std::size_t without = CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
+    ps, PSC::parameters::neighbor_count(
+          normal_neighbor_count(o),
+          PSC::parameters::automatic_scale(
+            normal_automatic_largest(o),
+            PSC::parameters::normal_fit(o.normal_fit, PSC::parameters::normal_orientation(
+                                                        choice.orientation, CGAL::parameters::callback(progress))))));
+  if(interrupted)
+    throw Cancelled();
+  if(choice.orientation.kind == CGAL::Normal_orientation::AUTOMATIC)
+  {
+    std::size_t usable = 0, vertical = 0;
+    for(Point_set::Index i : ps)
+    {
+      const Vector& n = ps.normal(i);
+      usable += n == CGAL::NULL_VECTOR ? 0 : 1;
+      vertical += PSC::is_near_vertical(n.x(), n.y(), n.z()) ? 1 : 0;
+    }
+    const double share = usable ? std::round(1000.0 * double(vertical) / double(usable)) / 10 : 0.0;
+    choice.text = PSC::is_two_and_a_half_d(vertical, usable)
+                    ? cat("+z (LAS file, 2.5-D: ", share, "% of the normals within 60 degrees of the vertical; "
+                          "closed parts outward; --orient auto)")
+                    : cat("mst (LAS file, not 2.5-D: ", share, "% of the normals within 60 degrees of the "
+                          "vertical; closed parts outward, open parts up; --orient auto)");
+  }
+  return without;
+}
+
+} // namespace psc_tool

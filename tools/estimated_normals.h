@@ -1,0 +1,73 @@
+// Copyright (c) 2026 The Point_set_curvatures authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The normals of a cloud without them in the point_set_curvatures tool: the orientation that
+// --orient (and what "auto" picks for the input) asks for, their estimation by the package,
+// and their turning towards the scanner (--orient scanner).
+
+#ifndef POINT_SET_CURVATURES_TOOL_ESTIMATED_NORMALS_H
+#define POINT_SET_CURVATURES_TOOL_ESTIMATED_NORMALS_H
+
+#include "command_line.h"
+#include "methods.h"
+#include "read_point_cloud.h"
+#include "tool_support.h"
+
+#include <CGAL/estimate_oriented_normals.h>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace psc_tool {
+
+// The attributes holding the pulse directions x(t) y(t) z(t) of LAS wave packets (read_las.cpp).
+std::array<int, 3> pulse_attributes(const std::vector<Attribute>& attributes);
+
+// Turns each normal towards the origin of its point's pulse: against the pulse's direction
+// (x(t), y(t), z(t): from the scanner to the point). Points without a direction (zero or not
+// finite) keep the +z orientation; returns their number.
+template <class Normal_of, class Pulse_of>
+std::size_t orient_towards_scanner(std::size_t n, const Normal_of& normal, const Pulse_of& pulse)
+{
+  std::size_t without = 0;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const std::array<double, 3> d = pulse(i);
+    const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    if(!(dd > 0) || !std::isfinite(dd))
+    {
+      ++without;
+      continue;
+    }
+    Vector& v = normal(i);
+    if(v.x() * d[0] + v.y() * d[1] + v.z() * d[2] > 0)
+      v = -v;
+  }
+  return without;
+}
+
+// How the estimated normals are oriented: --orient, or for "auto" (the default) what suits
+// the input (LAS files are airborne or mobile scans, seen from above, unless they hold pulse
+// directions), and why, for the summary.
+struct Orientation_choice
+{
+  CGAL::Normal_orientation orientation;
+  bool scanner = false;  // then each normal is turned towards its pulse's origin afterwards
+  std::string text;      // what the summary says
+};
+
+// The orientation for a LAS input (`las`) with or without pulse directions, or another input.
+Orientation_choice choose_orientation(const Options& o, bool las, bool has_pulses);
+
+// Estimates the normals of the point set as the options say, oriented as `choice` says (its
+// text completed for the automatic orientation). Returns the number of points left without a
+// normal.
+std::size_t estimate_normals(Point_set& ps, const Options& o, Orientation_choice& choice,
+                             const Progress& progress);
+
+} // namespace psc_tool
+
+#endif
