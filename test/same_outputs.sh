@@ -16,40 +16,41 @@ if [ $# -lt 2 ]; then
 fi
 old=$(realpath "$1")
 new=$(realpath "$2")
-work=${3:-$(mktemp -d)}
+work=$(realpath -m "${3:-$(mktemp -d)}")
 data=$(realpath "$(dirname "$0")/../data")
 mkdir -p "$work"
+export SOURCE_DATE_EPOCH=0  # (the LAS header's creation date)
 
 # a cloud without normals (the first three columns of the Goursat sample) and a malformed one
 awk 'NR > 1 && NR <= 5001 { print $1, $2, $3 }' "$data/goursat_010000.xyz" > "$work/goursat_xyz.xyz"
 printf '0 0 0\n1 0\n' > "$work/malformed.xyz"
 
-# name|input|output|options
+# name|expected exit status|input|output|options
 runs=(
-  "radius_color|$data/goursat_010000.xyz|out.ply|--radius 1.5 --color mean"
-  "default_normals|$data/goursat_010000.xyz|out.csv|"
-  "fixed_count|$data/goursat_010000.xyz|out.csv|--neighbors 40"
-  "no_normals|$work/goursat_xyz.xyz|out.ply|"
-  "no_normals_plane|$work/goursat_xyz.xyz|out.csv|--normal-fit plane --neighbors 30 --orient mst"
-  "lidar_paper|$data/goursat-lidar.xyz|out.csv|--variant paper --neighbors 40"
-  "las_scalar|$data/real/sample_c.las|out.ply|--ply-names scalar"
-  "las_to_las|$data/real/sample_c.las|out.las|--float --neighbors 40"
-  "las_tiled|$data/real/warsaw_small.las|out.csv|--neighbors 40 --orient +z --memory-limit 200K"
-  "las_fields|$data/real/warsaw_small.las|out.csv|--fields mean,k_min,dmax,neighbors,valid --drop-attributes"
-  "pss|$data/goursat_010000.xyz|out.ply|--method pss --neighbors 30 --ascii"
-  "jet|$data/goursat_010000.xyz|out.csv|--method jet --neighbors 40"
-  "apss|$data/goursat_010000.xyz|out.csv|--method apss --radius 1.5"
-  "vcm|$data/goursat_010000.xyz|out.csv|--method vcm --radius 1.5"
-  "wavejet|$data/goursat-lidar.xyz|out.csv|--method wavejet --neighbors 40"
-  "barycenter|$data/goursat-lidar.xyz|out.csv|--method barycenter --radius 3.5x"
-  "small_radius|$data/goursat-lidar.xyz|out.csv|--radius 0.01"
-  "malformed|$work/malformed.xyz|out.csv|"
-  "bad_option|$data/goursat-lidar.xyz|out.csv|--neighbors two"
+  "radius_color|0|$data/goursat_010000.xyz|out.ply|--radius 1.5 --color mean"
+  "default_normals|0|$data/goursat_010000.xyz|out.csv|"
+  "fixed_count|0|$data/goursat_010000.xyz|out.csv|--neighbors 40"
+  "no_normals|0|$work/goursat_xyz.xyz|out.ply|"
+  "no_normals_plane|0|$work/goursat_xyz.xyz|out.csv|--normal-fit plane --neighbors 30 --orient mst"
+  "lidar_paper|0|$data/goursat-lidar.xyz|out.csv|--variant paper --neighbors 40"
+  "las_scalar|0|$data/real/sample_c.las|out.ply|--ply-names scalar"
+  "las_to_las|0|$data/real/sample_c.las|out.las|--float --neighbors 40"
+  "las_tiled|0|$data/real/warsaw_small.las|out.csv|--neighbors 40 --orient +z --memory-limit 200K"
+  "las_fields|0|$data/real/warsaw_small.las|out.csv|--fields mean,k_min,dmax,neighbors,valid --drop-attributes"
+  "pss|0|$data/goursat_010000.xyz|out.ply|--method pss --neighbors 30 --ascii"
+  "jet|0|$data/goursat_010000.xyz|out.csv|--method jet --neighbors 40"
+  "apss|0|$data/goursat_010000.xyz|out.csv|--method apss --radius 1.5"
+  "vcm|0|$data/goursat_010000.xyz|out.csv|--method vcm --radius 1.5"
+  "wavejet|0|$data/goursat-lidar.xyz|out.csv|--method wavejet --neighbors 40"
+  "barycenter|0|$data/goursat-lidar.xyz|out.csv|--method barycenter --radius 3.5x"
+  "small_radius|3|$data/goursat-lidar.xyz|out.csv|--radius 0.01"
+  "malformed|2|$work/malformed.xyz|out.csv|"
+  "bad_option|2|$data/goursat-lidar.xyz|out.csv|--neighbors two"
 )
 
 differ=0
 for run in "${runs[@]}"; do
-  IFS='|' read -r name input output options <<< "$run"
+  IFS='|' read -r name expected input output options <<< "$run"
   for side in old new; do
     dir="$work/$side/$name"
     rm -rf "$dir" && mkdir -p "$dir"
@@ -61,6 +62,11 @@ for run in "${runs[@]}"; do
     # times differ from run to run
     sed -i -E '/^  time  /d' "$dir/stdout"
   done
+  # (a run that fails in both builds alike would pass unseen: each has its expected status)
+  if [ "$(cat "$work/new/$name/status")" != "$expected" ]; then
+    echo "unexpected: $name: exit status $(cat "$work/new/$name/status"), expected $expected" >&2
+    differ=1
+  fi
   for f in status stdout stderr "$output"; do
     [ ! -e "$work/old/$name/$f" ] && [ ! -e "$work/new/$name/$f" ] && continue  # (none written)
     if ! cmp -s "$work/old/$name/$f" "$work/new/$name/$f"; then

@@ -12,6 +12,7 @@
 
 #include <CGAL/Algebraic_shape_operator_fit.h>
 #include <CGAL/Algebraic_sphere_fit.h>
+#include <CGAL/Point_set_curvatures/average_spacing.h>
 #include <CGAL/estimate_apss_curvatures.h>
 #include <CGAL/estimate_aso_curvatures.h>
 #include <CGAL/estimate_oriented_normals.h>
@@ -1999,4 +2000,55 @@ TEST_CASE("Automatic scale: refused with a radius, below neighbor_count, with re
                     copy, PSC::parameters::neighbor_count(
                             18, PSC::parameters::automatic_scale(320, PSC::parameters::normal_fit(CGAL::Normal_fit::PLANE, maps())))),
                   std::invalid_argument);
+}
+
+// =======================================================================================
+// The average spacing (what --radius Nx is measured in)
+
+TEST_CASE("average_spacing: the mean distance to the k + 1 nearest, itself included, over the finite points",
+          "[average_spacing]")
+{
+  std::vector<Oriented_point> pts = sphere(600, 2.0);
+  // a point far away, and a non-finite one that must be left out
+  pts.emplace_back(Point(30, 0, 0), Vector(0, 0, 1));
+  pts.emplace_back(Point(std::numeric_limits<double>::quiet_NaN(), 0, 0), Vector(0, 0, 1));
+  const CGAL::First_of_pair_property_map<Oriented_point> point_map;
+  const std::size_t k = 6;
+  // brute force: every finite point's distances to every finite point (its own 0 included)
+  double expected = 0;
+  std::size_t finite = 0;
+  for(const Oriented_point& p : pts)
+  {
+    if(!std::isfinite(p.first.x()))
+      continue;
+    std::vector<double> d;
+    for(const Oriented_point& q : pts)
+      if(std::isfinite(q.first.x()))
+        d.push_back(std::sqrt(CGAL::squared_distance(p.first, q.first)));
+    std::sort(d.begin(), d.end());
+    double sum = 0;
+    for(std::size_t j = 0; j <= k; ++j)
+      sum += d[j];
+    expected += sum / double(k + 1);
+    ++finite;
+  }
+  expected /= double(finite);
+  const double sequential = PSC::average_spacing<CGAL::Sequential_tag>(pts, k, CGAL::parameters::point_map(point_map));
+  CHECK(std::abs(sequential - expected) <= 1e-12 * expected);
+#ifdef CGAL_LINKED_WITH_TBB
+  const double parallel = PSC::average_spacing<CGAL::Parallel_tag>(pts, k, CGAL::parameters::point_map(point_map));
+  CHECK(bits(parallel) == bits(sequential));
+#endif
+  // a Point_set_3, its own point map
+  CGAL::Point_set_3<Point> ps;
+  for(const Oriented_point& p : pts)
+    ps.insert(p.first);
+  CHECK(bits(PSC::average_spacing<CGAL::Sequential_tag>(ps, k)) == bits(sequential));
+  // cancelled: 0; k = 0 refused; no finite point: 0
+  const std::function<bool(double)> stop = [](double) { return false; };
+  CHECK(PSC::average_spacing<CGAL::Sequential_tag>(pts, k, CGAL::parameters::point_map(point_map).callback(stop)) == 0);
+  CHECK_THROWS_AS(PSC::average_spacing<CGAL::Sequential_tag>(pts, 0, CGAL::parameters::point_map(point_map)),
+                  std::invalid_argument);
+  const std::vector<Oriented_point> none = {{Point(std::numeric_limits<double>::infinity(), 0, 0), Vector(0, 0, 1)}};
+  CHECK(PSC::average_spacing<CGAL::Sequential_tag>(none, k, CGAL::parameters::point_map(point_map)) == 0);
 }

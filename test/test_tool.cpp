@@ -1310,8 +1310,8 @@ TEST_CASE("tool: 3-neighbour estimates are invalid, and a run without a valid es
   CHECK(run_tool(q(repo_data("goursat-lidar.xyz")) + " " + q(file("lidar.csv")) + " --neighbors 5 --min-neighbors 5 --quiet").status == 0);
 }
 
-// Issue 28: a file smaller than a good neighbourhood is told so, not to try the default
-// --neighbors 40 it ran with; counts of one are singular.
+// Issue 28: a file smaller than a good neighbourhood is told so, not to try the count it ran
+// with; counts of one are singular.
 TEST_CASE("tool: a file with fewer points than a good neighbourhood is told it is too small, and one point is one point")
 {
   // 10 points of a plane and one point far from them; --min-neighbors 5 lets the 10 be valid
@@ -1327,7 +1327,7 @@ TEST_CASE("tool: a file with fewer points than a good neighbourhood is told it i
   CHECK(ten.out.find("valid       10 (100.00 %)") != std::string::npos);
   CHECK(ten.err.find("warning: '" + file("ten.xyz") + "' is too small for aso: it holds 10 usable points") !=
         std::string::npos);
-  CHECK(ten.err.find("--neighbors 40") == std::string::npos);  // the default it ran with
+  CHECK(ten.err.find("--neighbors 40") == std::string::npos);  // the smallest count it ran with
   CHECK(std::count(ten.err.begin(), ten.err.end(), '\n') == 1);
   // the default automatic scale on 10 points: the estimate of the fixed count, with an error
   // of 0 where a quadric fits the plane exactly, NaN where too few neighbours weigh for one
@@ -2805,7 +2805,7 @@ TEST_CASE("tool: tiles of clouds smaller than a neighbourhood give the whole run
 {
   for(std::size_t n : {std::size_t(3), std::size_t(39)})
   {
-    INFO(n << " points with normals, 40 neighbours");
+    INFO(n << " points with normals, the default scale");
     write_xyz(file("few.xyz"), sphere(n, 1.0));
     // (3 points: no valid estimate, exit status 3 in both runs)
     const std::string csv =
@@ -2963,17 +2963,18 @@ TEST_CASE("tool: SIGINT and SIGTERM stop every phase of a tiled run, with and wi
   {
     std::string input, options, phase;
   };
-  // (1000 points of about 300 bytes: 60K gives 56 to 345 tiles with normals, 250K 8 without)
+  // (1000 points of about 300 bytes: 60K gives 56 to 345 tiles with normals, 250K 8 without;
+  // fixed counts: the automatic scale's halo of 640 neighbours would cover this small sphere)
   const Case cases[] = {
-    {"phases.xyz", "--memory-limit 60K", "reading"},
-    {"phases.xyz", "--memory-limit 60K", "density"},
-    {"phases.xyz", "--memory-limit 60K", "tile *read"},
-    {"phases.xyz", "--memory-limit 60K", "tile *curvatures"},
+    {"phases.xyz", "--memory-limit 60K --neighbors 40", "reading"},
+    {"phases.xyz", "--memory-limit 60K --neighbors 40", "density"},
+    {"phases.xyz", "--memory-limit 60K --neighbors 40", "tile *read"},
+    {"phases.xyz", "--memory-limit 60K --neighbors 40", "tile *curvatures"},
     {"phases.xyz", "--memory-limit 60K --neighbors 30", "tile *read#9"},  // a halo grown: tiles read again
     {"phases.xyz", "--memory-limit 60K --neighbors 30", "tile *curvatures#9"},
     {"phases.xyz", "--memory-limit 60K --radius 0.25", "tile *curvatures#20"},
     {"phases.xyz", "--memory-limit 60K --radius 0.25", "writing"},
-    {"phases_nn.xyz", "--memory-limit 250K --orient +z", "tile *curvatures#3"},  // the normals, then the curvatures
+    {"phases_nn.xyz", "--memory-limit 250K --orient +z --neighbors 40", "tile *curvatures#3"},  // the normals, then the curvatures
     {"phases_nn.xyz", "--memory-limit 250K --orient +z --radius 0.25", "writing"},
   };
   for(const Case& c : cases)
@@ -3294,6 +3295,34 @@ TEST_CASE("tool: without normals, the default pipeline and what the summary says
   CHECK(run_tool(q(file("terrain.xyz")) + " " + q(file("x.csv")) + " --position-blend 1.5").status == 2);
   CHECK(run_tool(q(file("terrain.xyz")) + " " + q(file("x.csv")) + " --normal-fit cubic").status == 2);
   CHECK(run_tool(q(file("terrain.xyz")) + " " + q(file("x.csv")) + " --normal-neighbors 5").status == 2);
+}
+
+// The default scale: automatic for the ASO's robust variant only (with its mean_error
+// column); 40 neighbours for the paper's variant and the other methods; a radius is a radius.
+TEST_CASE("tool: the default scale is automatic for the robust ASO only, 40 neighbours otherwise")
+{
+  const std::string in = q(repo_data("goursat-lidar.xyz"));
+  const Run aso = run_tool(in + " " + q(file("default.csv")));
+  REQUIRE(aso.status == 0);
+  CHECK(aso.out.find("scale       automatic scale: 40 to 640 nearest neighbours") != std::string::npos);
+  const std::vector<std::string> error = csv_column(read_text(file("default.csv")), "mean_error");
+  REQUIRE(error.size() == 2947);
+  CHECK(std::count(error.begin(), error.end(), "<missing>") == 0);
+  CHECK(std::count(error.begin(), error.end(), "nan") == 0);  // (every first rung fits a quadric here)
+  for(const std::string options : {"--variant paper", "--method jet", "--method pss", "--method apss"})
+  {
+    INFO(options);
+    const Run r = run_tool(in + " " + q(file("other.csv")) + " " + options);
+    REQUIRE(r.status == 0);
+    CHECK(r.out.find("scale       40 nearest neighbours per point (itself included)") != std::string::npos);
+    CHECK(read_text(file("other.csv")).find("mean_error") == std::string::npos);
+  }
+  const Run radius = run_tool(in + " " + q(file("radius.csv")) + " --radius 3.5x");
+  REQUIRE(radius.status == 0);
+  CHECK(radius.out.find("scale       radius ") != std::string::npos);
+  CHECK(radius.out.find("automatic") == std::string::npos);
+  // the fields asked for by default: mean_error is one of them
+  CHECK(run_tool(in + " " + q(file("fields.csv")) + " --fields mean,mean_error --quiet").status == 0);
 }
 
 // The automatic scale (issue 27): on real airborne tiles without normals, the ground is

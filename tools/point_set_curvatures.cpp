@@ -16,7 +16,7 @@
 // interrupted by Ctrl-C (SIGINT), 143 by SIGTERM, 1 on unexpected failures.
 
 #include <CGAL/Point_set_curvatures/Tile.h>
-#include <CGAL/Point_set_curvatures/internal/knn_neighborhoods.h>
+#include <CGAL/Point_set_curvatures/average_spacing.h>
 #include <CGAL/Point_set_curvatures/parameters.h>
 #include <CGAL/estimate_oriented_normals.h>
 
@@ -64,7 +64,7 @@ using namespace psc_tool;
 namespace PSC = CGAL::Point_set_curvatures;
 
 // ---------------------------------------------------------------------------------------
-// Average spacing (--radius Nx)
+// Finite points (--radius Nx needs 7)
 
 bool is_finite(const Point& p)
 {
@@ -79,50 +79,6 @@ std::vector<Point_set::Index> finite_points(const Point_set& ps)
     if(is_finite(ps.point(i)))
       indices.push_back(i);
   return indices;
-}
-
-
-// The average spacing of --radius Nx, as CGAL::compute_average_spacing() computes it with 6
-// neighbours: the mean, over the finite points, of the mean distance from a point to its 7
-// nearest points, itself included (CGAL 5.5 searches k + 1 points and divides by k + 1). Computed on the package's k-nearest driver: faster than
-// CGAL's k-d tree, and CGAL 5.5's function keeps a reference to a destroyed temporary of its
-// callback (AddressSanitizer: stack-use-after-scope). Every finite point counts, with or without
-// a normal (a constant normal is given to the driver).
-double average_spacing(const Point_set& ps, const Progress& progress)
-{
-  namespace PSI = CGAL::Point_set_curvatures::internal;
-  const std::size_t k = 7;
-  PSI::Neighborhood_options options;
-  options.function_name = "--radius Nx (average spacing)";
-  options.callback = progress;
-  options.check_normal_length = false;
-  std::vector<double> spacing(ps.size(), -1.0);
-  const CGAL::Constant_property_map<Point_set::Index, Vector> any_normal(Vector(0, 0, 1));
-  PSI::for_each_neighborhood_knn<CGAL::Parallel_tag>(
-    ps, ps.point_map(), any_normal, k, options, [&spacing, k](std::size_t i, const PSI::Neighborhood& nb) {
-      // nb holds the k nearest and any point tied with the k-th: the k smallest distances
-      thread_local std::vector<double> d;
-      d.clear();
-      for(std::size_t j = 0; j < nb.size; ++j)
-        d.push_back(std::sqrt(nb.qx[j] * nb.qx[j] + nb.qy[j] * nb.qy[j] + nb.qz[j] * nb.qz[j]) * nb.radius);
-      const std::size_t used = std::min(k, d.size());
-      if(used == 0)
-        return;
-      std::nth_element(d.begin(), d.begin() + (used - 1), d.end());
-      double sum = 0;
-      for(std::size_t j = 0; j < used; ++j)
-        sum += d[j];
-      spacing[i] = sum / double(used);
-    });
-  double sum = 0;
-  std::size_t count = 0;
-  for(double s : spacing)
-    if(s >= 0)
-    {
-      sum += s;
-      ++count;
-    }
-  return count ? sum / double(count) : 0;
 }
 
 // ---------------------------------------------------------------------------------------
@@ -876,7 +832,9 @@ int run(const Options& o)
     if(indices.size() < 7)
       throw Error(cat("--radius ", scale.spacing_multiple, "x: ", in_quotes(o.input),
                       " has fewer than 7 points, too few for an average spacing"));
-    scale.spacing = average_spacing(ps, progress.phase("spacing"));
+    // (6 neighbours, as CGAL::compute_average_spacing() is usually called)
+    scale.spacing =
+      PSC::average_spacing<CGAL::Parallel_tag>(ps, 6, CGAL::parameters::callback(progress.phase("spacing")));
     check_interrupted();
     scale.radius = scale.spacing_multiple * scale.spacing;
     if(!(scale.radius > 0) || !std::isfinite(scale.radius))

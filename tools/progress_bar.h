@@ -11,8 +11,6 @@
 #include "progress_line.h"
 #include "tool_support.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <atomic>
 #include <chrono>

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The Point_set_curvatures authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// The text of the tool's progress bar (point_set_curvatures.cpp draws it on a terminal):
+// The text of the tool's progress bar (progress_bar.h draws it on a terminal):
 // "curvatures   [##########....................]  34%     6.6 s  ETA 12 s". Header-only and
 // free of the rest of the tool, so that test_tool checks the text without a terminal.
 

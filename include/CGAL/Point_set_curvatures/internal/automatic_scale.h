@@ -150,7 +150,8 @@ struct Scale_choice
   bool found = false;
   // Not found because the first rung's quadric could not be fitted (too few points, or all
   // along one line): no fit tells the noise, so the first rung is estimated as it is, as with
-  // a fixed count (its neighbourhood is in `chosen`, mean_error NaN).
+  // a fixed count (its neighbourhood is in `chosen`, mean_error NaN). (A first rung at the
+  // query, copies of it, gives no rung at all: DEGENERATE_FIT, as before.)
   bool as_first_rung = false;
   // With Scale_ladder::gate: noise may dominate, the next pass decides (`count` is then twice
   // the smallest count, the neighbourhood that pass gives).
@@ -186,7 +187,9 @@ struct Scale_ladder
   bool gate = false;
 
   // False for the passes before the last (automatic_scale_passes): a point keeping the top
-  // rung there climbs to the next pass, which replaces its estimate, so none is computed.
+  // rung there climbs to the next pass, which replaces its estimate, so none is computed; its
+  // choice is thus the ladder's whatever the estimator would have said at that rung (an
+  // invalid estimate there, two_sheets, used to stop it).
   bool final_pass = true;
 
   // The least chosen count that goes on to the next pass (automatic_scale_passes()): the
@@ -283,7 +286,7 @@ struct Scale_ladder
       double v[2] = {0, 0}, n[3];
       if(rung.outcome != Rung_fit::FITTED || !fit.normal(n))
       {
-        if(!c.found)
+        if(!c.found && j == 0)
         {
           c.as_first_rung = true;
           c.count = chosen.nb.size;
