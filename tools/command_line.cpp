@@ -168,6 +168,13 @@ void print_usage(std::ostream& os)
 
 namespace {
 
+// --neighbors auto: the ladder of counts from automatic_smallest to automatic_largest.
+void use_automatic_scale(Scale& s)
+{
+  s.neighbors = automatic_smallest;
+  s.automatic_largest = automatic_largest;
+}
+
 // A finite number, the whole string (std::stod would accept "1.5abc").
 bool parse_double(const std::string& s, double& value)
 {
@@ -315,10 +322,7 @@ Options parse_command_line(int argc, char** argv)
       const std::string v = take_value();
       std::size_t k = 0;
       if(v == "auto")
-      {
-        o.scale.neighbors = automatic_smallest;
-        o.scale.automatic_largest = automatic_largest;
-      }
+        use_automatic_scale(o.scale);
       else if(!parse_positive_integer(v, k) || k < 3)
         throw Error(cat(name, " must be an integer >= 3 (the fits need 3 points) or auto, got ", in_quotes(v)));
       else
@@ -431,10 +435,7 @@ Options parse_command_line(int argc, char** argv)
   // the fits see no noise and grows where noise dominates, as on most real scans), else 40.
   if(!o.radius_given && !o.neighbors_given && std::string(o.method->name) == "aso" &&
      o.scale.variant == CGAL::Aso_variant::ROBUST)
-  {
-    o.scale.neighbors = automatic_smallest;
-    o.scale.automatic_largest = automatic_largest;
-  }
+    use_automatic_scale(o.scale);
   if(o.scale.automatic_largest > 0 && std::string(o.method->name) != "aso")
     throw Error(cat("--neighbors auto chooses the scale of --method aso only; give --method ", o.method->name,
                     " a count (--neighbors K)"));

@@ -66,19 +66,12 @@ namespace PSC = CGAL::Point_set_curvatures;
 // ---------------------------------------------------------------------------------------
 // Finite points (--radius Nx needs 7)
 
-bool is_finite(const Point& p)
+std::size_t finite_point_count(const Point_set& ps)
 {
-  return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z());
-}
-
-std::vector<Point_set::Index> finite_points(const Point_set& ps)
-{
-  std::vector<Point_set::Index> indices;
-  indices.reserve(ps.size());
-  for(Point_set::Index i : ps)
-    if(is_finite(ps.point(i)))
-      indices.push_back(i);
-  return indices;
+  return std::size_t(std::count_if(ps.begin(), ps.end(), [&ps](Point_set::Index i) {
+    const Point& p = ps.point(i);
+    return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z());
+  }));
 }
 
 // ---------------------------------------------------------------------------------------
@@ -828,8 +821,7 @@ int run(const Options& o)
   const auto spacing_start = std::chrono::steady_clock::now();
   if(!scale.by_count && scale.spacing_multiple > 0)
   {
-    const std::vector<Point_set::Index> indices = finite_points(ps);
-    if(indices.size() < 7)
+    if(finite_point_count(ps) < 7)
       throw Error(cat("--radius ", scale.spacing_multiple, "x: ", in_quotes(o.input),
                       " has fewer than 7 points, too few for an average spacing"));
     // (6 neighbours, as CGAL::compute_average_spacing() is usually called)

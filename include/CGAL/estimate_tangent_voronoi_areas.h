@@ -40,15 +40,7 @@ bool tangent_voronoi_areas_into_map(PointRange& points, bool radius_given, doubl
     throw std::invalid_argument(std::string(name) + ": parameter 'tile' is not supported: compute the areas "
                                 "of the whole cloud, or let each estimator compute them on its tile (no sample_weight_map)");
   bool cancelled = false;
-  if(options.callback)
-  {
-    const std::function<bool(double)> callback = options.callback;
-    options.callback = [callback, &cancelled](double f) {
-      const bool go_on = callback(f);
-      cancelled = cancelled || (!go_on && f < 1.0);  // false after the last batch cancels nothing
-      return go_on;
-    };
-  }
+  options.callback = noting_cancellation(options.callback, cancelled);
   const std::vector<double> areas =
     tangent_voronoi_areas<ConcurrencyTag>(points, radius_given, radius, k, NP_helper::get_const_point_map(points, np),
                                           NP_helper::get_normal_map(points, np), options);

@@ -78,12 +78,7 @@ double average_spacing(const PointRange& points, std::size_t k,
   options.callback = CGAL::parameters::choose_parameter(
     CGAL::parameters::get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
   bool cancelled = false;
-  if(options.callback)
-    options.callback = [callback = options.callback, &cancelled](double f) {
-      const bool go_on = callback(f);
-      cancelled = cancelled || (!go_on && f < 1.0);  // false after the last batch cancels nothing
-      return go_on;
-    };
+  options.callback = internal::noting_cancellation(options.callback, cancelled);
   options.check_normal_length = false;
   const std::size_t searched = k + 1;  // the point itself and its k nearest
   const std::size_t n = static_cast<std::size_t>(std::distance(points.begin(), points.end()));

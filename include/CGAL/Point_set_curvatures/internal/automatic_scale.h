@@ -399,14 +399,14 @@ struct Automatic_scale_estimator : Estimator_base
     thread_local Ladder_scratch scratch;
     const Scale_choice c = ladder.choose(nb, scratch);
     const Sub_neighborhood& chosen = scratch.chosen;
-    if(!c.found && !c.as_first_rung)
-      return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
     if(c.as_first_rung)
     {
       Local_estimate e = estimator(chosen.nb);
       e.neighbor_count = c.count;
       return e;
     }
+    if(!c.found)
+      return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
     if(ladder.climbs(c))
     {
       // to be replaced by the next pass's estimate (or NOT_COMPUTED if it is cancelled)

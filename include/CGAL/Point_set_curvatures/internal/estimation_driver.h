@@ -193,6 +193,19 @@ struct Neighborhood_options
   const std::vector<char>* visit = nullptr;
 };
 
+// `callback` wrapped so that `cancelled` tells whether it stopped the work: it returned false
+// before the end (false at the last report, 1, cancels nothing). Empty stays empty.
+inline std::function<bool(double)> noting_cancellation(const std::function<bool(double)>& callback, bool& cancelled)
+{
+  if(!callback)
+    return callback;
+  return [callback, &cancelled](double f) {
+    const bool go_on = callback(f);
+    cancelled = cancelled || (!go_on && f < 1.0);
+    return go_on;
+  };
+}
+
 // Usable normal: non-zero, finite and, unless accepted, of length in [1e-3, 1e3].
 inline bool usable_normal(double squared_length, bool check_length)
 {
