@@ -26,6 +26,7 @@
 #include <CGAL/estimate_vcm_curvatures.h>
 #include <CGAL/estimate_wavejet_curvatures.h>
 
+#include <CGAL/Point_set_curvatures/estimators.h>
 #include <CGAL/Monge_via_jet_fitting.h>
 #include <CGAL/vcm_estimate_normals.h>
 #include <CGAL/Point_set_3.h>
@@ -1934,4 +1935,57 @@ TEST_CASE("estimate_tangent_voronoi_areas + sample_weight_map: one area pass giv
   CHECK_THROWS_AS(CGAL::estimate_tangent_voronoi_areas<CGAL::Sequential_tag>(
                     items, r, PSC::parameters::tile(PSC::Tile(CGAL::Bbox_3(0, 0, 0, 1, 1, 1), 0.6), wnp)),
                   std::invalid_argument);
+}
+
+TEST_CASE("Every estimator fills the fields its description declares (estimators.h), and only those", "[baselines][api]")
+{
+  namespace F = PSC::estimate_fields;
+  const double R = 2, r = 0.5;
+  const auto pts = sphere(2000, R);
+  auto run_named = [&](const std::string& name) -> Estimates {
+    if(name == "aso") return run(Method::ASO, pts, r);
+    if(name == "apss") return CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(pts, r, maps());
+    if(name == "barycenter") return run(Method::BARYCENTER, pts, r);
+    if(name == "pca_plane") return run(Method::PCA_PLANE, pts, r);
+    if(name == "pss") return run(Method::PSS, pts, r);
+    if(name == "jet") return run(Method::JET, pts, r);
+    if(name == "wavejet") return run(Method::WAVEJET, pts, r);
+    if(name == "vcm") return run(Method::VCM, pts, r);
+    FAIL("no estimator named " << name);
+    return {};
+  };
+  auto finite = [](const Vector& v) { return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z()); };
+  std::size_t described = 0;
+  for(const PSC::Estimator_description& d : PSC::estimators)
+  {
+    INFO(d.name);
+    CHECK(PSC::find_estimator(d.name) == &d);
+    const Estimates estimates = run_named(d.name);
+    std::size_t valid = 0;
+    for(const auto& e : estimates)
+    {
+      if(!e.is_valid())
+        continue;
+      ++valid;
+      CHECK(finite(e.normal) == bool(d.fields & F::normal));
+      CHECK(std::isfinite(e.mean_curvature) == bool(d.fields & F::mean_curvature));
+      CHECK(std::isfinite(e.gaussian_curvature) == bool(d.fields & F::gaussian_curvature));
+      CHECK(std::isfinite(e.min_curvature) == bool(d.fields & F::principal_curvatures));
+      CHECK(std::isfinite(e.max_curvature) == bool(d.fields & F::principal_curvatures));
+      CHECK(finite(e.min_direction) == bool(d.fields & F::principal_directions));
+      CHECK(finite(e.max_direction) == bool(d.fields & F::principal_directions));
+      CHECK(std::isfinite(e.normal_coherence) == bool(d.fields & F::normal_coherence));
+      CHECK(std::isnan(e.mean_curvature_error));  // only with the automatic scale
+    }
+    CHECK(valid == pts.size());
+    ++described;
+  }
+  CHECK(described == 8);
+  // the declared least counts are the library's defaults, and the test's own measured values
+  CHECK(PSC::find_estimator("aso")->min_neighbors == minimum_neighbors(Method::ASO));
+  CHECK(PSC::find_estimator("pss")->min_neighbors == minimum_neighbors(Method::PSS));
+  CHECK(PSC::find_estimator("pca_plane")->min_neighbors == minimum_neighbors(Method::PCA_PLANE));
+  CHECK(PSC::find_estimator("vcm")->min_neighbors == minimum_neighbors(Method::VCM));
+  CHECK(PSC::find_estimator("barycenter")->min_neighbors == minimum_neighbors(Method::BARYCENTER));
+  CHECK(PSC::find_estimator("nonexistent") == nullptr);
 }

@@ -1347,6 +1347,22 @@ TEST_CASE("tool: a file with fewer points than a good neighbourhood is told it i
   CHECK(eleven.err.find("1 points") == std::string::npos);
   CHECK(eleven.err.find("try --") == std::string::npos);  // no scale gives more points
 
+  // the count the warning uses is the variant's (estimators.h): 15 points are enough for the
+  // default ASO (12), too few for the paper's (20)
+  std::vector<Oriented_point> fifteen;
+  for(int i = 0; i < 15; ++i)
+    fifteen.emplace_back(Point(0.1 * (i % 4), 0.1 * (i / 4), 0.01 * (i % 3)), Vector(0, 0, 1));
+  write_xyz(file("fifteen.xyz"), fifteen);
+  const Run robust = run_tool(q(file("fifteen.xyz")) + " " + q(file("fifteen.csv")) + " --neighbors 40");
+  INFO(robust.err);
+  CHECK(robust.status == 0);
+  CHECK(robust.err.find("too small") == std::string::npos);
+  const Run paper = run_tool(q(file("fifteen.xyz")) + " " + q(file("fifteen.csv")) + " --neighbors 40 --variant paper");
+  INFO(paper.err);
+  CHECK(paper.status == 0);
+  CHECK(paper.err.find("is too small for aso: it holds 15 usable points (finite, with a normal), fewer than the 20 "
+                       "neighbours") != std::string::npos);
+
   // without --min-neighbors nothing is valid: exit 3, one line saying the file is too small
   const Run none = run_tool(q(file("ten.xyz")) + " " + q(file("ten.csv")));
   INFO(none.err);

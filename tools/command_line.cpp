@@ -52,6 +52,28 @@ std::string normal_fit_description(const Options& o)
              normal_neighbor_count(o), " nearest neighbours");
 }
 
+namespace {
+
+// "pca_plane 10; aso, apss, jet, wavejet 12; ...": each method's default --min-neighbors, by
+// increasing count.
+std::size_t quadric_normal_neighbors()
+{
+  return CGAL::Point_set_curvatures::default_normal_neighbors(CGAL::Normal_fit::QUADRIC);
+}
+
+std::string least_neighbor_counts()
+{
+  std::map<std::size_t, std::string> by_count;
+  for(const Method& m : methods())
+    by_count[m.min_neighbors] += (by_count[m.min_neighbors].empty() ? "" : ", ") + std::string(m.name);
+  std::string s;
+  for(const auto& c : by_count)
+    s += (s.empty() ? "" : "; ") + cat(c.second, " ", c.first);
+  return s;
+}
+
+} // namespace
+
 void print_usage(std::ostream& os)
 {
   os << "usage: " << program << " INPUT OUTPUT [options]\n"
@@ -62,7 +84,8 @@ void print_usage(std::ostream& os)
      << "          header line naming the columns, or --columns; .ply (ASCII or binary, normals\n"
      << "          nx ny nz or normal_x normal_y normal_z), .off, .las (LAS 1.0-1.4 uncompressed,\n"
      << "          point formats 0-10; .laz: decompress first). Without normals, they are\n"
-     << "          estimated (a quadric fitted to the 40 nearest neighbours, or 40 to 640 with the\n"
+     << "          estimated (a quadric fitted to the " << quadric_normal_neighbors() << " nearest neighbours, or "
+     << quadric_normal_neighbors() << " to " << automatic_largest << " with the\n"
      << "          automatic scale; see --normal-fit and --orient) with a warning.\n"
      << "  OUTPUT  .ply (binary unless --ascii) or .csv (with a header line): every input point\n"
      << "          in input order with x y z, the corrected normal nx ny nz, k_min k_max mean\n"
@@ -91,7 +114,8 @@ void print_usage(std::ostream& os)
      << "  --neighbors K      neighbourhoods by count: each point's radius is the distance to its\n"
      << "                     K-th nearest neighbour, itself counted (default: auto for the\n"
      << "                     aso's robust variant, else 40)\n"
-     << "  --neighbors auto   aso: each point's count chosen among 40, 80, ..., 640 by the noise\n"
+     << "  --neighbors auto   aso: each point's count chosen among " << automatic_smallest << ", "
+     << 2 * automatic_smallest << ", ..., " << automatic_largest << " by the noise\n"
      << "                     its fits measure: 40 on clean surfaces, more on noisy scans (the\n"
      << "                     neighbors field gives the count); --neighbors 40 is faster: 3x on\n"
      << "                     clean surfaces, 22x on a real airborne tile, where most counts grow\n"
@@ -101,7 +125,7 @@ void print_usage(std::ostream& os)
      << "                     neighbours, 3.5x about 37, 4x about 47\n"
      << "  --min-neighbors M  estimates with fewer than M neighbours are invalid\n"
      << "                     (too_few_neighbors); default: the method's measured minimum\n"
-     << "                     (aso, apss, jet, wavejet 12; pca_plane 10; pss 15; barycenter, vcm 20)\n"
+     << "                     (" << least_neighbor_counts() << ")\n"
      << "  --columns LIST     names of the values of a text line, comma-separated: x y z, nx ny nz\n"
      << "                     (or normal_x ...), anything else skipped (e.g. x,y,z,r,g,b or\n"
      << "                     x,y,z,_,_,_,nx,ny,nz)\n"
@@ -134,8 +158,10 @@ void print_usage(std::ostream& os)
      << "                     y(t) z(t)). The summary says which was used and why\n"
      << "  --normal-fit F     fit of the normal estimation: quadric (default: a weighted quadric,\n"
      << "                     smooth from point to point, which the ASO needs) or plane (PCA)\n"
-     << "  --normal-neighbors K  neighbours of the normal estimation (default 40, the least with\n"
-     << "                     the automatic scale; plane 18)\n"
+     << "  --normal-neighbors K  neighbours of the normal estimation (default " << quadric_normal_neighbors()
+     << ", the least with\n"
+     << "                     the automatic scale; plane "
+     << CGAL::Point_set_curvatures::default_normal_neighbors(CGAL::Normal_fit::PLANE) << ")\n"
      << "  --position-blend W aso: weight in [0, 1] of a quadric fitted to the positions alone,\n"
      << "                     blended with the ASO's tensor (default 0.5 for the robust variant\n"
      << "                     when the normals are estimated: within 1.35x of the error with\n"
@@ -147,7 +173,7 @@ void print_usage(std::ostream& os)
      << "                     bounded memory (--radius as a length; without normals, a local\n"
      << "                     --orient: an axis, viewpoint or scanner, not mst or auto; not\n"
      << "                     --method vcm, which needs every point; the automatic scale's halos\n"
-     << "                     reach 640 neighbours). A limit that makes more than 500 tiles, or\n"
+     << "                     reach " << automatic_largest << " neighbours). A limit that makes more than 500 tiles, or\n"
      << "                     above the machine's RAM, is warned of\n"
      << "  --threads N        use at most N threads (default: every core)\n"
      << "  --quiet            print errors only (no progress bar, warnings, notes or summary;\n"

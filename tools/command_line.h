@@ -49,10 +49,10 @@ struct Options
   double memory_limit = 0;               // --memory-limit in bytes; 0: a quarter of the RAM
 };
 
-// --neighbors auto: the ladder of counts of the automatic scale (curvatures and, with the
-// quadric fit, normals), chosen by measurement (benchmark/README.md, "Automatic scale").
-inline constexpr std::size_t automatic_smallest = 40;
-inline constexpr std::size_t automatic_largest = 640;
+// --neighbors auto: the library's ladder of counts of the automatic scale (curvatures and,
+// with the quadric fit, normals).
+inline constexpr std::size_t automatic_smallest = CGAL::Point_set_curvatures::automatic_scale_ladder::smallest;
+inline constexpr std::size_t automatic_largest = CGAL::Point_set_curvatures::automatic_scale_ladder::largest;
 
 // The neighbour count of the normal estimation: --normal-neighbors, else the fit's default.
 std::size_t normal_neighbor_count(const Options& o);

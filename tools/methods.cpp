@@ -39,47 +39,65 @@ namespace psc_tool {
 
 namespace PSC = CGAL::Point_set_curvatures;
 
-// One table entry per estimator; the Point_set_3's point and normal maps are the defaults.
-#define PSC_TOOL_METHOD(NAME, DESCRIPTION, GOOD)                                               \
-  Method{#NAME, DESCRIPTION,                                                                   \
-         [](const Point_set& points, const Scale& scale, const Progress& callback,             \
-            const PSC::Tile& tile) -> Estimates {                                               \
-           const auto np = PSC::parameters::min_neighbors(                                      \
-             scale.min_neighbors ? scale.min_neighbors : PSC::default_min_neighbors::NAME, \
-             PSC::parameters::aso_variant(scale.variant, PSC::parameters::position_fit_blend(   \
-               scale.position_fit_blend, PSC::parameters::automatic_scale(scale.automatic_largest, \
-               PSC::parameters::tile(tile, CGAL::parameters::callback(callback)))))); \
-           if(scale.by_count)                                                                   \
-             return CGAL::estimate_##NAME##_curvatures<CGAL::Parallel_tag>(                    \
-               points, PSC::parameters::neighbor_count(scale.neighbors, np));                   \
-           return CGAL::estimate_##NAME##_curvatures<CGAL::Parallel_tag>(points, scale.radius, np); \
-         },                                                                                     \
-         PSC::default_min_neighbors::NAME, GOOD}
+// The run function of an estimator; the Point_set_3's point and normal maps are the defaults.
+#define PSC_TOOL_RUN(NAME)                                                                     \
+  Run{#NAME, [](const Point_set& points, const Scale& scale, const Progress& callback,          \
+                const PSC::Tile& tile) -> Estimates {                                           \
+        const auto np = PSC::parameters::min_neighbors(                                         \
+          scale.min_neighbors ? scale.min_neighbors : PSC::default_min_neighbors::NAME,         \
+          PSC::parameters::aso_variant(scale.variant, PSC::parameters::position_fit_blend(      \
+            scale.position_fit_blend, PSC::parameters::automatic_scale(scale.automatic_largest, \
+            PSC::parameters::tile(tile, CGAL::parameters::callback(callback))))));              \
+        if(scale.by_count)                                                                      \
+          return CGAL::estimate_##NAME##_curvatures<CGAL::Parallel_tag>(                       \
+            points, PSC::parameters::neighbor_count(scale.neighbors, np));                      \
+        return CGAL::estimate_##NAME##_curvatures<CGAL::Parallel_tag>(points, scale.radius, np); \
+      }}
+
+namespace {
+
+struct Run
+{
+  const char* name;
+  Run_method run;
+};
+
+// The estimators this build of the tool has.
+const Run runs[] = {
+  PSC_TOOL_RUN(aso),
+  PSC_TOOL_RUN(apss),
+#ifdef PSC_TOOL_HAS_BARYCENTER
+  PSC_TOOL_RUN(barycenter),
+#endif
+#ifdef PSC_TOOL_HAS_PCA_PLANE
+  PSC_TOOL_RUN(pca_plane),
+#endif
+#ifdef PSC_TOOL_HAS_PSS
+  PSC_TOOL_RUN(pss),
+#endif
+#ifdef PSC_TOOL_HAS_JET
+  PSC_TOOL_RUN(jet),
+#endif
+#ifdef PSC_TOOL_HAS_VCM
+  PSC_TOOL_RUN(vcm),
+#endif
+#ifdef PSC_TOOL_HAS_WAVEJET
+  PSC_TOOL_RUN(wavejet),
+#endif
+};
+
+} // namespace
 
 const std::vector<Method>& methods()
 {
-  static const std::vector<Method> table = {
-    PSC_TOOL_METHOD(aso, "Algebraic Shape Operator (Lejemble et al. 2021): full curvature tensor", 12),
-    PSC_TOOL_METHOD(apss, "APSS algebraic sphere: corrected normal and mean curvature only", 20),
-#ifdef PSC_TOOL_HAS_BARYCENTER
-    PSC_TOOL_METHOD(barycenter, "baseline: distance to the barycentre", 25),
-#endif
-#ifdef PSC_TOOL_HAS_PCA_PLANE
-    PSC_TOOL_METHOD(pca_plane, "baseline: distance to the PCA plane", 15),
-#endif
-#ifdef PSC_TOOL_HAS_PSS
-    PSC_TOOL_METHOD(pss, "baseline: point set surface", 20),
-#endif
-#ifdef PSC_TOOL_HAS_JET
-    PSC_TOOL_METHOD(jet, "baseline: osculating jet", 12),
-#endif
-#ifdef PSC_TOOL_HAS_VCM
-    PSC_TOOL_METHOD(vcm, "baseline: Voronoi covariance measure", 25),
-#endif
-#ifdef PSC_TOOL_HAS_WAVEJET
-    PSC_TOOL_METHOD(wavejet, "baseline: wavejet", 12),
-#endif
-  };
+  static const std::vector<Method> table = [] {
+    std::vector<Method> t;
+    for(const PSC::Estimator_description& e : PSC::estimators)
+      for(const Run& r : runs)
+        if(std::string(r.name) == e.name)
+          t.push_back(Method{e, r.run});
+    return t;
+  }();
   return table;
 }
 

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // The estimators the point_set_curvatures tool can run: one entry per estimate_*_curvatures()
-// function of the package, with its run function and its neighbour-count thresholds; `Scale`
+// function of the package (CGAL::Point_set_curvatures::estimators), with its run function; `Scale`
 // carries the neighbourhood size and the options every method reads. The curvature
 // estimators are instantiated in methods.cpp alone: the rest of the tool only sees this table.
 
@@ -15,6 +15,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Point_set_3.h>
 #include <CGAL/Point_set_curvatures/Tile.h>
+#include <CGAL/Point_set_curvatures/estimators.h>
 #include <CGAL/Point_set_curvatures/parameters.h>
 
 #include <cstddef>
@@ -50,20 +51,14 @@ struct Scale
 // Every point is estimated with PSC::Tile::whole_space(), a tile's own points otherwise.
 typedef Estimates (*Run_method)(const Point_set&, const Scale&, const Progress&, const CGAL::Point_set_curvatures::Tile&);
 
-struct Method
+// A method: the library's description of its estimator (name, summary, fields, neighbour
+// counts, options) and the function that runs it.
+struct Method : CGAL::Point_set_curvatures::Estimator_description
 {
-  const char* name;
-  const char* description;
   Run_method run;
-  // The least neighbour count of a valid estimate (the library's default min_neighbors), and
-  // the count from which the method's mean error stays within twice its error at 40
-  // neighbours: both measured with `paper_experiments --only neighbors` (user manual,
-  // "Neighbourhoods and scale"). Below `good`, the tool warns.
-  std::size_t min_neighbors;
-  std::size_t good_neighbors;
 };
 
-// Every method of the package, "aso" first.
+// Every method of the package, in the order of CGAL::Point_set_curvatures::estimators.
 const std::vector<Method>& methods();
 
 // The method named `name`, null if there is none.

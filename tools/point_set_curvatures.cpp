@@ -144,13 +144,14 @@ std::string fewer_than_least(const Method& m, const Scale& scale)
 
 // When the input holds fewer usable points than the method's `good_neighbors`, no scale
 // helps: what to say instead of a suggested scale ("" otherwise).
-std::string too_small_input(const Method& m, const std::string& input, const Row_summary& summary)
+std::string too_small_input(const Method& m, const Scale& scale, const std::string& input, const Row_summary& summary)
 {
   const std::size_t usable = usable_points(summary);
-  if(usable >= m.good_neighbors)
+  const std::size_t good = m.good_neighbors_of(scale.variant);
+  if(usable >= good)
     return "";
   return cat(in_quotes(input), " is too small for ", m.name, ": it holds ", plural(usable, "usable point"),
-             " (finite, with a normal), fewer than the ", m.good_neighbors, " neighbours from which ", m.name,
+             " (finite, with a normal), fewer than the ", good, " neighbours from which ", m.name,
              "'s errors stay within twice those at 40 (measured, see the manual), whatever --radius or --neighbors");
 }
 
@@ -159,7 +160,7 @@ std::string too_small_input(const Method& m, const std::string& input, const Row
 std::string suggested_scale(const Method& m, const Scale& scale, double median)
 {
   if(scale.by_count)
-    return cat("--neighbors ", std::max<std::size_t>(40, m.good_neighbors));
+    return cat("--neighbors ", std::max<std::size_t>(40, m.good_neighbors_of(scale.variant)));
   const double factor = std::sqrt(40.0 / std::max(median, 1.0));
   return scale.spacing_multiple > 0 ? cat("--radius ", scale.spacing_multiple * factor, "x")
                                     : cat("--radius ", scale.radius * factor);
@@ -173,16 +174,17 @@ std::string small_neighborhood_warning(const Method& m, const Scale& scale, cons
   if(summary.neighbor_sample().empty())
     return "";
   const double median = percentile(summary.neighbor_sample(), 0.5);
-  if(median >= double(m.good_neighbors))
+  const std::size_t good = m.good_neighbors_of(scale.variant);
+  if(median >= double(good))
     return "";
   const std::string invalid = summary.too_few() == 0 ? std::string()
                               : cat("; ", plural(summary.too_few(), "point"), summary.too_few() == 1 ? " has " : " have ",
                                     fewer_than_least(m, scale), " and ", summary.too_few() == 1 ? "is" : "are",
                                     " invalid (too_few_neighbors)");
-  const std::string too_small = too_small_input(m, input, summary);
+  const std::string too_small = too_small_input(m, scale, input, summary);
   if(!too_small.empty())
     return too_small + invalid;
-  return cat("the median neighbourhood holds ", plural(std::size_t(median), "point"), ", fewer than the ", m.good_neighbors,
+  return cat("the median neighbourhood holds ", plural(std::size_t(median), "point"), ", fewer than the ", good,
              " from which ", m.name, "'s errors stay within twice those at 40 neighbours (measured, see the "
              "manual)", invalid, ". For about 40 neighbours, try ", suggested_scale(m, scale, median));
 }
@@ -212,7 +214,7 @@ std::string no_valid_estimate_reason(const Method& m, const Scale& scale, const 
   {
     case Status::TOO_FEW_NEIGHBORS:
     {
-      const std::string too_small = too_small_input(m, input, summary);
+      const std::string too_small = too_small_input(m, scale, input, summary);
       if(!too_small.empty())
         why = too_small + " (--min-neighbors lowers the least count of a valid estimate, at a cost in accuracy)";
       else if(!summary.neighbor_sample().empty())
@@ -431,7 +433,7 @@ void print_summary(const Run_context& c, const Scale& scale, std::size_t n, cons
                CGAL::to_string(static_cast<CGAL::Curvature_estimate_status>(s.first)));
   const std::size_t valid = summary.valid();
   std::printf("%s: %s -> %s\n", program, o.input.c_str(), o.output.c_str());
-  std::printf("  method      %s: %s\n", method_label(o, scale).c_str(), o.method->description);
+  std::printf("  method      %s: %s\n", method_label(o, scale).c_str(), o.method->summary);
   std::printf("  scale       %s\n", scale_description(scale).c_str());
   std::printf("  points      %zu%s\n", n, estimated_normals.empty() ? "" : " (normals estimated)");
   if(!estimated_normals.empty())

@@ -32,6 +32,7 @@ number of points) gives a :class:`ScaleWarning`.
 """
 
 import numbers
+import types
 import warnings
 from enum import IntEnum
 
@@ -52,6 +53,7 @@ __all__ = [
     "Cancelled",
     "HaloTooSmall",
     "METHODS",
+    "ESTIMATORS",
     "AUTOMATIC_NEIGHBORS",
     "estimate_curvatures",
     "estimate_sphere_features",
@@ -114,34 +116,25 @@ class ProjectionStatus(IntEnum):
 assert {s.name.lower(): s.value for s in Status} == dict(_core.STATUS_VALUES)
 assert {s.name.lower(): s.value for s in ProjectionStatus} == dict(_core.PROJECTION_STATUS_VALUES)
 
+#: What each estimator of ``estimate_curvatures`` is, from the C++ library's description
+#: (``CGAL::Point_set_curvatures::estimators``): name -> dict with ``function``, ``summary``,
+#: ``fields`` (the result's keys it fills; NaN in the others), ``min_neighbors`` (the default
+#: of the option), ``good_neighbors`` (the count from which its error stays within twice its
+#: error at 40 neighbours) and ``options`` (its own options: dicts with ``name``, ``values``,
+#: ``default`` and, for a choice, ``choices``).
+ESTIMATORS = types.MappingProxyType({e["name"]: e for e in _core.ESTIMATORS})
+
 #: The estimators of ``estimate_curvatures``.
-METHODS = ("aso", "apss", "barycenter", "pca_plane", "pss", "jet", "wavejet", "vcm")
+METHODS = tuple(ESTIMATORS)
 
 _COMMON_OPTIONS = ("min_neighbors", "accept_unnormalized_normals", "tile")
-_METHOD_OPTIONS = {
-    "aso": (
-        "aso_variant",
-        "weight_kernel",
-        "sample_weights",
-        "robust_orientation",
-        "normal_field_blend",
-        "normal_refinement",
-        "position_fit_blend",
-        "aso_projection",
-    ),
-    "apss": ("weight_kernel", "sample_weights", "robust_orientation"),
-    "barycenter": (),
-    "pca_plane": (),
-    "pss": (),
-    "jet": ("degree_fitting", "degree_monge"),
-    "wavejet": (),
-    "vcm": ("vcm_offset_radius",),
-}
+_METHOD_OPTIONS = {name: tuple(o["name"] for o in e["options"]) for name, e in ESTIMATORS.items()}
 
-_ASO_VARIANTS = {"paper": 0, "robust": 1}
-_WEIGHT_KERNELS = {"smooth": 0, "constant": 1, "smooth_cubic": 2, "smooth_quartic": 3}
-_SAMPLE_WEIGHTS = {"uniform": 0, "tangent_voronoi_area": 1}
-_ASO_PROJECTIONS = {"corrected_normal": 0, "authors_implementation": 1}
+# The names of the C++ enumerations' values: name -> value.
+_ASO_VARIANTS, _WEIGHT_KERNELS, _SAMPLE_WEIGHTS, _ASO_PROJECTIONS = (
+    {n: v for v, n in enumerate(_core.ENUM_NAMES[option])}
+    for option in ("aso_variant", "weight_kernel", "sample_weights", "aso_projection")
+)
 
 
 def _choice(name, value, table):
@@ -359,8 +352,9 @@ def _weights(value):
     return w
 
 
-# neighbors="auto": each point's count chosen among 40, 80, ..., 640 (the tool's --neighbors auto).
-AUTOMATIC_NEIGHBORS = (40, 640)
+#: ``neighbors="auto"``: each point's count chosen among the smallest, twice it, ... up to the
+#: largest (the library's ladder, that of the tool's --neighbors auto).
+AUTOMATIC_NEIGHBORS = tuple(_core.AUTOMATIC_NEIGHBORS)
 
 
 def _scale(radius, neighbors, automatic=False):

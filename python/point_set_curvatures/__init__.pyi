@@ -1,6 +1,6 @@
 # Type stubs of point_set_curvatures (Python bindings of Point_set_curvatures).
 from enum import IntEnum
-from typing import Callable, Dict, Literal, Optional, Sequence, Tuple, Union
+from typing import Any, Callable, Dict, Literal, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -10,14 +10,18 @@ ArrayN3 = npt.ArrayLike
 Progress = Optional[Callable[[float], object]]
 Vec3 = Sequence[float]
 Result = Dict[str, np.ndarray]
-Method = Literal["aso", "apss", "barycenter", "pca_plane", "pss", "jet", "wavejet", "vcm"]
+Method = Literal["aso", "apss", "barycenter", "pca_plane", "pss", "jet", "vcm", "wavejet"]
 WeightKernel = Literal["smooth", "constant", "smooth_cubic", "smooth_quartic"]
 SampleWeights = Union[Literal["uniform", "tangent_voronoi_area"], npt.ArrayLike]
+AsoVariant = Literal["paper", "robust"]
+AsoProjection = Literal["corrected_normal", "authors_implementation"]
 TileSpec = Union["TileGrid.Tile", Tuple[Vec3, Vec3, float]]
 Orientation = Union[str, Tuple[Literal["along", "towards"], Vec3]]
 
 # the names in lower case; any case is accepted at run time
 METHODS: Tuple[str, ...]
+# name -> function, summary, fields, min_neighbors, good_neighbors, options
+ESTIMATORS: Mapping[str, Dict[str, Any]]
 
 __version__: str
 
@@ -58,14 +62,14 @@ def estimate_curvatures(
     min_neighbors: Optional[int] = None,
     accept_unnormalized_normals: Optional[bool] = None,
     tile: Optional[TileSpec] = None,
-    aso_variant: Optional[Literal["robust", "paper"]] = None,
+    aso_variant: Optional[AsoVariant] = None,
     weight_kernel: Optional[WeightKernel] = None,
     sample_weights: Optional[SampleWeights] = None,
     robust_orientation: Optional[bool] = None,
     normal_field_blend: Optional[bool] = None,
     normal_refinement: Optional[int] = None,
     position_fit_blend: Optional[float] = None,
-    aso_projection: Optional[Literal["corrected_normal", "authors_implementation"]] = None,
+    aso_projection: Optional[AsoProjection] = None,
     degree_fitting: Optional[int] = None,
     degree_monge: Optional[int] = None,
     vcm_offset_radius: Optional[float] = None,
@@ -82,7 +86,7 @@ def estimate_sphere_features(
     neighbors: Optional[int] = None,
     threads: Optional[int] = None,
     progress: Progress = None,
-    weight_kernel: Optional[Literal["smooth", "constant"]] = None,
+    weight_kernel: Optional[WeightKernel] = None,
     sample_weights: Optional[SampleWeights] = None,
     min_neighbors: Optional[int] = None,
     accept_unnormalized_normals: Optional[bool] = None,
@@ -110,7 +114,7 @@ def estimate_multiscale_sphere_features(
     *,
     threads: Optional[int] = None,
     progress: Progress = None,
-    weight_kernel: Optional[Literal["smooth", "constant"]] = None,
+    weight_kernel: Optional[WeightKernel] = None,
     min_neighbors: Optional[int] = None,
     accept_unnormalized_normals: Optional[bool] = None,
 ) -> Result:
@@ -120,7 +124,7 @@ class AlgebraicPointSetSurface:
     """The APSS surface of an oriented cloud: projection and features at any position."""
     def __init__(
         self, points: ArrayN3, normals: ArrayN3, radius: float, *,
-        weight_kernel: Literal["smooth", "constant"] = "smooth",
+        weight_kernel: WeightKernel = "smooth",
     ) -> None: ...
     @property
     def radius(self) -> float: ...
@@ -140,7 +144,7 @@ def apss_smooth_point_set(
     *,
     iterations: int = 1,
     update_normals: bool = False,
-    weight_kernel: Literal["smooth", "constant"] = "smooth",
+    weight_kernel: WeightKernel = "smooth",
     threads: Optional[int] = None,
     progress: Progress = None,
 ) -> Result:

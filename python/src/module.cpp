@@ -11,6 +11,7 @@
 #include "features.h"
 
 #include <CGAL/Algebraic_point_set_surface.h>
+#include <CGAL/Point_set_curvatures/estimators.h>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -138,12 +139,12 @@ Scale read_scale(const py::object& radius, const py::object& neighbors, bool aut
     s.radius = radius.cast<double>();  // checked by the C++ function (positive and finite)
   else if(py::isinstance<py::str>(neighbors))
   {
-    // "auto" (where `automatic`): the tool's ladder of --neighbors auto
+    // "auto" (where `automatic`): the library's ladder, that of the tool's --neighbors auto
     if(!automatic || neighbors.cast<std::string>() != "auto")
       throw py::value_error("neighbors: expected a count" + std::string(automatic ? " or 'auto'" : ""));
     s.by_count = true;
-    s.k = 40;
-    s.automatic_largest = 640;
+    s.k = CGAL::Point_set_curvatures::automatic_scale_ladder::smallest;
+    s.automatic_largest = CGAL::Point_set_curvatures::automatic_scale_ladder::largest;
   }
   else
   {
@@ -782,6 +783,48 @@ private:
 
 } // namespace psc_py
 
+namespace psc_py {
+
+// An estimator's description as a dict: name, function, summary, fields (a tuple of the
+// result's keys it fills), min_neighbors, good_neighbors, paper_variant_good_neighbors,
+// options (dicts: name, values, default, choices).
+py::dict estimator_to_dict(const CGAL::Point_set_curvatures::Estimator_description& e)
+{
+  namespace F = CGAL::Point_set_curvatures::estimate_fields;
+  const std::pair<unsigned, const char*> keys[] = {
+    {F::normal, "normal"}, {F::principal_curvatures, "k_min"}, {F::principal_curvatures, "k_max"},
+    {F::mean_curvature, "mean"}, {F::gaussian_curvature, "gaussian"}, {F::normal_coherence, "normal_coherence"},
+    {F::principal_directions, "min_direction"}, {F::principal_directions, "max_direction"}};
+  py::list fields, options;
+  for(const auto& k : keys)
+    if(e.fields & k.first)
+      fields.append(k.second);
+  for(const CGAL::Point_set_curvatures::Estimator_option& o : e)
+  {
+    py::list choices;
+    for(const char* c : o.choices)
+      choices.append(c);
+    py::dict d;
+    d["name"] = o.name;
+    d["values"] = o.values;
+    d["default"] = o.default_value;
+    d["choices"] = py::tuple(choices);
+    options.append(d);
+  }
+  py::dict d;
+  d["name"] = e.name;
+  d["function"] = std::string("CGAL::") + e.function;
+  d["summary"] = e.summary;
+  d["fields"] = py::tuple(fields);
+  d["min_neighbors"] = e.min_neighbors;
+  d["good_neighbors"] = e.good_neighbors;
+  d["paper_variant_good_neighbors"] = e.paper_variant_good_neighbors;
+  d["options"] = py::tuple(options);
+  return d;
+}
+
+} // namespace psc_py
+
 PYBIND11_MODULE(_core, m)
 {
   using namespace psc_py;
@@ -823,6 +866,30 @@ PYBIND11_MODULE(_core, m)
     .def_readwrite("degree_fitting", &Options::degree_fitting)
     .def_readwrite("degree_monge", &Options::degree_monge)
     .def_readwrite("vcm_offset_radius", &Options::vcm_offset_radius);
+
+  // The library's description of its estimators (estimators.h): the package derives its
+  // method and option lists and the names of the enumerations' values from it.
+  py::list estimators;
+  for(const CGAL::Point_set_curvatures::Estimator_description& e : CGAL::Point_set_curvatures::estimators)
+    estimators.append(estimator_to_dict(e));
+  m.attr("ESTIMATORS") = py::tuple(estimators);
+  {
+    namespace PSC = CGAL::Point_set_curvatures;
+    auto names = [](const auto& array) {
+      py::list l;
+      for(const char* n : array)
+        l.append(n);
+      return py::tuple(l);
+    };
+    py::dict enums;  // option -> the names of its values, indexed by the C++ enumerator's value
+    enums["aso_variant"] = names(PSC::aso_variant_names);
+    enums["weight_kernel"] = names(PSC::weight_kernel_names);
+    enums["sample_weights"] = names(PSC::sample_weights_names);
+    enums["aso_projection"] = names(PSC::aso_projection_names);
+    m.attr("ENUM_NAMES") = enums;
+  }
+  m.attr("AUTOMATIC_NEIGHBORS") = py::make_tuple(CGAL::Point_set_curvatures::automatic_scale_ladder::smallest,
+                                                 CGAL::Point_set_curvatures::automatic_scale_ladder::largest);
 
   // Status names and values, checked against the Python enums at import.
   py::dict status;

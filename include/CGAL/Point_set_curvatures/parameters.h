@@ -102,6 +102,19 @@ automatic_scale(std::size_t largest, const NamedParameters& np = CGAL::parameter
 }
 
 } // namespace parameters
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// The ladder of counts that the command-line tool's default scale (`--neighbors auto`) and
+/// Python's `neighbors="auto"` use: `parameters::neighbor_count(smallest)` with
+/// `parameters::automatic_scale(largest)`, the counts 40, 80, ..., 640 (chosen by measurement:
+/// benchmark/README.md, "Automatic scale").
+namespace automatic_scale_ladder {
+/// The smallest count, that of clean surfaces.
+constexpr std::size_t smallest = 40;
+/// The largest count.
+constexpr std::size_t largest = 640;
+} // namespace automatic_scale_ladder
+
 } // namespace Point_set_curvatures
 
 // ---- Validity and tiles: options of every per-point function ----

@@ -1,0 +1,213 @@
+// Copyright (c) 2026 The Point_set_curvatures authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// What each curvature estimator of the package is, declared once: its name, its function,
+// the fields it fills, its measured neighbour counts and its own options. The command-line
+// tool's method table and help, the Python bindings' method and option lists and enum names,
+// and the tests that check the stubs and the manual's tables all read this declaration.
+
+#ifndef CGAL_POINT_SET_CURVATURES_ESTIMATORS_H
+#define CGAL_POINT_SET_CURVATURES_ESTIMATORS_H
+
+#include <CGAL/Point_set_curvatures/parameters.h>
+
+#include <cstddef>
+#include <iterator>
+#include <string_view>
+
+namespace CGAL {
+namespace Point_set_curvatures {
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// The fields of `CGAL::Curvature_estimate` that an estimator fills (bits of
+/// `Estimator_description::fields`); the others are NaN in its valid estimates.
+namespace estimate_fields {
+/// `normal`
+constexpr unsigned normal = 1u << 0;
+/// `mean_curvature`
+constexpr unsigned mean_curvature = 1u << 1;
+/// `gaussian_curvature`
+constexpr unsigned gaussian_curvature = 1u << 2;
+/// `min_curvature` and `max_curvature`
+constexpr unsigned principal_curvatures = 1u << 3;
+/// `min_direction` and `max_direction`
+constexpr unsigned principal_directions = 1u << 4;
+/// `normal_coherence`
+constexpr unsigned normal_coherence = 1u << 5;
+/// Everything the full tensor gives.
+constexpr unsigned tensor = normal | mean_curvature | gaussian_curvature | principal_curvatures | principal_directions;
+} // namespace estimate_fields
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// The names of the values of an enumeration option, indexed by the enumerator's value (the
+/// Python bindings and the tool accept them in any case).
+struct Option_choices
+{
+  const char* const* names = nullptr;
+  std::size_t size = 0;
+  constexpr const char* const* begin() const { return names; }
+  constexpr const char* const* end() const { return names + size; }
+};
+
+/// `CGAL::Aso_variant`
+inline constexpr const char* aso_variant_names[] = {"paper", "robust"};
+/// `CGAL::Apss_weight_kernel`
+inline constexpr const char* weight_kernel_names[] = {"smooth", "constant", "smooth_cubic", "smooth_quartic"};
+/// `CGAL::Sample_weights`
+inline constexpr const char* sample_weights_names[] = {"uniform", "tangent_voronoi_area"};
+/// `CGAL::Aso_projection`
+inline constexpr const char* aso_projection_names[] = {"corrected_normal", "authors_implementation"};
+
+static_assert(std::size(aso_variant_names) == std::size_t(Aso_variant::ROBUST) + 1, "one name per value");
+static_assert(std::size(weight_kernel_names) == std::size_t(Apss_weight_kernel::SMOOTH_QUARTIC) + 1, "one name per value");
+static_assert(std::size(sample_weights_names) == std::size_t(Sample_weights::TANGENT_VORONOI_AREA) + 1,
+              "one name per value");
+static_assert(std::size(aso_projection_names) == std::size_t(Aso_projection::AUTHORS_IMPLEMENTATION) + 1,
+              "one name per value");
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// An option of an estimator beyond those every estimator takes (`min_neighbors`,
+/// `accept_unnormalized_normals`, `tile`, the scale): a named parameter of
+/// `CGAL::Point_set_curvatures::parameters` (or of CGAL's for the jets), the Python keyword of
+/// the same name.
+struct Estimator_option
+{
+  /// The named parameter, and the Python keyword.
+  const char* name;
+  /// What it takes, in words ("bool", "count", "real in [0, 1]", or the choices' names).
+  const char* values;
+  /// Its default, in words.
+  const char* default_value;
+  /// For an enumeration, the names of its values; empty otherwise.
+  Option_choices choices;
+};
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// One curvature estimator of the package: every `estimate_*_curvatures()` function has one.
+struct Estimator_description
+{
+  /// Its short name: the tool's `--method`, Python's `method`.
+  const char* name;
+  /// Its estimation function, in namespace `CGAL`.
+  const char* function;
+  /// One line on what it is.
+  const char* summary;
+  /// The fields it fills: bits of `estimate_fields`.
+  unsigned fields;
+  /// The default of `parameters::min_neighbors()`: `default_min_neighbors`.
+  std::size_t min_neighbors;
+  /// The count from which its mean error stays within twice its error at 40 neighbours (the
+  /// tool warns below it); for the ASO, that of its default variant.
+  std::size_t good_neighbors;
+  /// `good_neighbors` of `CGAL::Aso_variant::PAPER` (the ASO); `good_neighbors` otherwise.
+  std::size_t paper_variant_good_neighbors;
+  /// Its own options.
+  const Estimator_option* options;
+  std::size_t option_count;
+
+  constexpr const Estimator_option* begin() const { return options; }
+  constexpr const Estimator_option* end() const { return options + option_count; }
+  /// `paper_variant_good_neighbors` for `Aso_variant::PAPER`, else `good_neighbors`.
+  constexpr std::size_t good_neighbors_of(Aso_variant variant) const
+  {
+    return variant == Aso_variant::PAPER ? paper_variant_good_neighbors : good_neighbors;
+  }
+};
+
+namespace internal {
+
+template <std::size_t N>
+constexpr Option_choices choices_of(const char* const (&names)[N])
+{
+  return Option_choices{names, N};
+}
+
+inline constexpr Estimator_option aso_options[] = {
+  {"aso_variant", "paper|robust", "robust", choices_of(aso_variant_names)},
+  {"weight_kernel", "smooth|smooth_cubic|smooth_quartic", "the variant's: smooth_cubic (paper: smooth)",
+   choices_of(weight_kernel_names)},
+  {"sample_weights", "uniform|tangent_voronoi_area, or one weight per point",
+   "the variant's: tangent_voronoi_area (paper: uniform)", choices_of(sample_weights_names)},
+  {"robust_orientation", "bool", "the variant's: true (paper: false)", {}},
+  {"normal_field_blend", "bool", "the variant's: true (paper: false)", {}},
+  {"normal_refinement", "count", "0", {}},
+  {"position_fit_blend", "real in [0, 1]", "0", {}},
+  {"aso_projection", "corrected_normal|authors_implementation", "corrected_normal", choices_of(aso_projection_names)},
+};
+
+inline constexpr Estimator_option apss_options[] = {
+  {"weight_kernel", "smooth|constant|smooth_cubic|smooth_quartic", "smooth", choices_of(weight_kernel_names)},
+  {"sample_weights", "uniform|tangent_voronoi_area, or one weight per point", "uniform",
+   choices_of(sample_weights_names)},
+  {"robust_orientation", "bool", "false", {}},
+};
+
+inline constexpr Estimator_option jet_options[] = {
+  {"degree_fitting", "count", "2", {}},
+  {"degree_monge", "count", "2", {}},
+};
+
+inline constexpr Estimator_option vcm_options[] = {
+  {"vcm_offset_radius", "positive real", "the radius (by count: the median radius)", {}},
+};
+
+template <std::size_t N>
+constexpr Estimator_description described(const char* name, const char* function, const char* summary,
+                                          unsigned fields, std::size_t min_neighbors, std::size_t good_neighbors,
+                                          std::size_t paper_good, const Estimator_option (&options)[N])
+{
+  return Estimator_description{name, function, summary, fields, min_neighbors, good_neighbors, paper_good, options, N};
+}
+
+constexpr Estimator_description described(const char* name, const char* function, const char* summary,
+                                          unsigned fields, std::size_t min_neighbors, std::size_t good_neighbors)
+{
+  return Estimator_description{name, function, summary, fields, min_neighbors, good_neighbors, good_neighbors,
+                               nullptr, 0};
+}
+
+} // namespace internal
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// Every curvature estimator of the package, the ASO first. The neighbour counts are measured
+/// with `paper_experiments --only neighbors` (user manual, "The least neighbour count of a
+/// valid estimate").
+inline constexpr Estimator_description estimators[] = {
+  internal::described("aso", "estimate_aso_curvatures",
+                      "Algebraic Shape Operator (Lejemble et al. 2021): full curvature tensor",
+                      estimate_fields::tensor | estimate_fields::normal_coherence, default_min_neighbors::aso, 12, 20,
+                      internal::aso_options),
+  internal::described("apss", "estimate_apss_curvatures",
+                      "APSS algebraic sphere: corrected normal and mean curvature only",
+                      estimate_fields::normal | estimate_fields::mean_curvature | estimate_fields::normal_coherence,
+                      default_min_neighbors::apss, 20, 20, internal::apss_options),
+  internal::described("barycenter", "estimate_barycenter_curvatures", "baseline: distance to the barycentre",
+                      estimate_fields::mean_curvature, default_min_neighbors::barycenter, 25),
+  internal::described("pca_plane", "estimate_pca_plane_curvatures", "baseline: distance to the PCA plane",
+                      estimate_fields::normal | estimate_fields::mean_curvature, default_min_neighbors::pca_plane, 15),
+  internal::described("pss", "estimate_pss_curvatures", "baseline: point set surface", estimate_fields::tensor,
+                      default_min_neighbors::pss, 20),
+  internal::described("jet", "estimate_jet_curvatures", "baseline: osculating jet", estimate_fields::tensor,
+                      default_min_neighbors::jet, 12, 12, internal::jet_options),
+  internal::described("vcm", "estimate_vcm_curvatures", "baseline: Voronoi covariance measure",
+                      estimate_fields::normal | estimate_fields::principal_curvatures |
+                        estimate_fields::principal_directions,
+                      default_min_neighbors::vcm, 25, 25, internal::vcm_options),
+  internal::described("wavejet", "estimate_wavejet_curvatures", "baseline: wavejet", estimate_fields::tensor,
+                      default_min_neighbors::wavejet, 12),
+};
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// The estimator named `name` in `estimators`, null if there is none.
+constexpr const Estimator_description* find_estimator(std::string_view name)
+{
+  for(const Estimator_description& e : estimators)
+    if(name == e.name)
+      return &e;
+  return nullptr;
+}
+
+} // namespace Point_set_curvatures
+} // namespace CGAL
+
+#endif // CGAL_POINT_SET_CURVATURES_ESTIMATORS_H

@@ -1,0 +1,127 @@
+# Copyright (c) 2026 The Point_set_curvatures authors.
+# SPDX-License-Identifier: LGPL-3.0-or-later
+"""The estimators' description, declared once in C++ (CGAL/Point_set_curvatures/estimators.h):
+the package's method and option lists derive from it; the stubs, the docstrings and the user
+manual's table of neighbour counts restate it and are checked against it here."""
+
+import ast
+import os
+import re
+
+import numpy as np
+import pytest
+
+import point_set_curvatures as psc
+from conftest import fibonacci_sphere
+
+PACKAGE = os.path.dirname(psc.__file__)
+COMMON = {"min_neighbors", "accept_unnormalized_normals", "tile"}
+
+
+def stub():
+    """The parsed stub file of the package: the source's, else the installed one."""
+    for d in (os.path.join(os.path.dirname(__file__), "..", "point_set_curvatures"), PACKAGE):
+        p = os.path.join(d, "__init__.pyi")
+        if os.path.exists(p):
+            with open(p, encoding="utf-8") as f:
+                return ast.parse(f.read())
+    pytest.skip("__init__.pyi not found")
+
+
+def literal_names(node):
+    """The strings of every Literal[...] in an annotation."""
+    return [n.value for n in ast.walk(node) if isinstance(n, ast.Constant) and isinstance(n.value, str)]
+
+
+def stub_alias(tree, name):
+    for n in tree.body:
+        if isinstance(n, ast.Assign) and any(isinstance(t, ast.Name) and t.id == name for t in n.targets):
+            return n.value
+    raise AssertionError(f"no alias {name} in the stub")
+
+
+def test_methods_and_options_are_the_library_description():
+    assert psc.METHODS == ("aso", "apss", "barycenter", "pca_plane", "pss", "jet", "vcm", "wavejet")
+    aso = psc.ESTIMATORS["aso"]
+    assert aso["function"] == "CGAL::estimate_aso_curvatures"
+    assert (aso["min_neighbors"], aso["good_neighbors"], aso["paper_variant_good_neighbors"]) == (12, 12, 20)
+    assert [o["name"] for o in aso["options"]][:2] == ["aso_variant", "weight_kernel"]
+    assert psc.ESTIMATORS["jet"]["options"][0]["default"] == "2"
+    assert psc.ESTIMATORS["apss"]["fields"] == ("normal", "mean", "normal_coherence")
+    assert psc.AUTOMATIC_NEIGHBORS == (40, 640)
+    with pytest.raises(TypeError):
+        psc.ESTIMATORS["new"] = {}  # read-only
+
+
+def test_stubs_restate_the_description():
+    tree = stub()
+    assert literal_names(stub_alias(tree, "Method")) == list(psc.METHODS)
+    enums = psc._core.ENUM_NAMES
+    assert literal_names(stub_alias(tree, "WeightKernel")) == list(enums["weight_kernel"])
+    assert literal_names(stub_alias(tree, "SampleWeights")) == list(enums["sample_weights"])
+    assert literal_names(stub_alias(tree, "AsoVariant")) == list(enums["aso_variant"])
+    assert literal_names(stub_alias(tree, "AsoProjection")) == list(enums["aso_projection"])
+    functions = {n.name: n for n in ast.walk(tree) if isinstance(n, ast.FunctionDef)}
+    keywords = {a.arg for a in functions["estimate_curvatures"].args.kwonlyargs}
+    options = {o["name"] for e in psc.ESTIMATORS.values() for o in e["options"]}
+    assert COMMON | options <= keywords
+    # every weight_kernel takes every kernel (the ASO refuses "constant" at run time)
+    for f in functions.values():
+        for a in f.args.args + f.args.kwonlyargs:
+            if a.arg == "weight_kernel":
+                assert "WeightKernel" in ast.unparse(a.annotation), f.name
+
+
+def test_every_option_is_documented_and_accepted():
+    doc = psc.estimate_curvatures.__doc__
+    points, normals = fibonacci_sphere(400, radius=2.0)
+    samples = {"bool": True, "count": 2, "real in [0, 1]": 0.5, "positive real": 0.5}
+    for name, e in psc.ESTIMATORS.items():
+        for o in e["options"]:
+            assert f"``{o['name']}``" in doc, o["name"]
+            values = o["choices"] or (samples[o["values"]],)
+            for v in values:
+                try:
+                    r = psc.estimate_curvatures(points, normals, method=name, neighbors=30, **{o["name"]: v})
+                except ValueError as error:  # refused by the estimator (the ASO's constant kernel), not by name
+                    assert "option" not in str(error) and (name, v) == ("aso", "constant"), str(error)
+                    continue
+                assert np.count_nonzero(r["status"] == psc.Status.VALID) > 300, (name, o["name"], v)
+        others = set().union(*psc._METHOD_OPTIONS.values()) - {o["name"] for o in e["options"]}
+        for other in sorted(others):
+            with pytest.raises(ValueError, match="does not apply"):
+                psc.estimate_curvatures(points, normals, method=name, neighbors=30, **{other: 1})
+
+
+def test_results_fill_the_declared_fields():
+    points, normals = fibonacci_sphere(1000, radius=2.0)
+    for name, e in psc.ESTIMATORS.items():
+        r = psc.estimate_curvatures(points, normals, method=name, neighbors=30)
+        valid = r["status"] == psc.Status.VALID
+        assert valid.all(), name
+        for key in ("normal", "k_min", "k_max", "mean", "gaussian", "normal_coherence", "min_direction",
+                    "max_direction"):
+            filled = np.isfinite(r[key][valid]).all()
+            empty = np.isnan(r[key][valid]).all()
+            assert (filled, empty) == ((True, False) if key in e["fields"] else (False, True)), (name, key)
+
+
+def test_manual_table_of_neighbour_counts_is_the_description(data_dir):
+    path = os.path.join(data_dir, "..", "doc", "user_manual.md")
+    with open(path, encoding="utf-8") as f:
+        text = f.read()
+    section = text[text.index("{#psc_min_neighbors}"):]
+    rows = {}
+    for line in section.splitlines():
+        cells = [c.strip() for c in line.strip().strip("|").split("|")]
+        if line.startswith("| ") and len(cells) == 7 and re.fullmatch(r"\d+", cells[-1]):
+            rows[cells[0]] = (int(cells[-2]), int(cells[-1]))
+    labels = {"ASO (default variant)": "aso", "APSS, sphere features": "apss", "jets (CGAL)": "jet",
+              "wavejets": "wavejet", "PSS": "pss", "PCA plane": "pca_plane", "barycenter": "barycenter",
+              "VCM (CGAL)": "vcm"}
+    assert set(rows) == set(labels) | {"ASO (paper's variant)"}
+    for label, name in labels.items():
+        e = psc.ESTIMATORS[name]
+        assert rows[label] == (e["min_neighbors"], e["good_neighbors"]), label
+    aso = psc.ESTIMATORS["aso"]
+    assert rows["ASO (paper's variant)"] == (aso["min_neighbors"], aso["paper_variant_good_neighbors"])
