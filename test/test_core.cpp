@@ -1764,6 +1764,64 @@ TEST_CASE("Tiles: bitwise with a far outlier, Halo_too_small below k points, pro
   CHECK(progress.back() == 1.0);
 }
 
+TEST_CASE("Tiles: the halo rule (halo_for_radius, halo_guess_for_count, next_halo) gives the whole run by count", "[aso][tile]")
+{
+  CHECK(PSC::halo_for_radius(0.25) == 0.5);
+  // a unit grid of 60 x 60 points: k points fill a disk of radius sqrt(k / pi)
+  std::vector<Oriented_point> grid;
+  for(int i = 0; i < 60; ++i)
+    for(int j = 0; j < 60; ++j)
+      grid.emplace_back(Point(i, j, 0.01 * std::sin(0.3 * i) * std::cos(0.2 * j)), Vector(0, 0, 1));
+  const CGAL::Bbox_3 box(0, 0, -0.01, 59, 59, 0.01);
+  const double guess = PSC::halo_guess_for_count(box, grid.size(), 40);
+  CHECK(guess == Approx(2 * std::sqrt(59.0 * 59.0 * 40.0 / (M_PI * 3600.0))).epsilon(1e-12));
+  CHECK(guess == Approx(2 * std::sqrt(40.0 / M_PI)).epsilon(0.04));
+  // an area beyond the largest double: computed from the halved extents, finite
+  const double huge = PSC::halo_guess_for_count(CGAL::Bbox_3(-1e300, -1e300, 0, 1e300, 1e300, 0), 10, 40);
+  CHECK(huge == Approx(2 * 2e300 * std::sqrt(40.0 / (M_PI * 10.0))).epsilon(1e-12));
+  CHECK(PSC::next_halo(PSC::Halo_too_small(5, 1), 2) == 5);
+  CHECK(PSC::next_halo(PSC::Halo_too_small(1.5, 1), 2) == 2);
+
+  // a tile started with a quarter of the guess grows by next_halo until exact: the whole run's bits
+  auto run = [](const std::vector<Oriented_point>& pts, const PSC::Tile& t) {
+    return CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
+      pts, PSC::parameters::neighbor_count(40, PSC::parameters::tile(t, maps())));
+  };
+  const auto whole = run(grid, PSC::Tile::whole_space());
+  const CGAL::Bbox_3 core(-HUGE_VAL, -HUGE_VAL, -HUGE_VAL, 20, 20, HUGE_VAL);
+  double halo = guess / 4;
+  int retries = 0;
+  std::vector<Estimate> part;
+  std::vector<std::size_t> origin;
+  std::vector<Oriented_point> range;
+  for(;;)
+  {
+    const PSC::Tile t(core, halo);
+    range = tile_range(grid, t, origin);
+    try
+    {
+      part = run(range, t);
+      break;
+    }
+    catch(const PSC::Halo_too_small& e)
+    {
+      halo = PSC::next_halo(e, 2 * halo);
+      ++retries;
+      REQUIRE(retries < 10);
+    }
+  }
+  CHECK(retries >= 1);
+  std::size_t own = 0, differ = 0;
+  for(std::size_t j = 0; j < range.size(); ++j)
+    if(PSC::Tile(core, halo).owns(range[j].first.x(), range[j].first.y(), range[j].first.z()))
+    {
+      ++own;
+      differ += !same_estimate(part[j], whole[origin[j]]);
+    }
+  CHECK(own == 20 * 20);  // the core is half-open
+  CHECK(differ == 0);
+}
+
 // ---- The automatic scale (named parameter automatic_scale) ----
 
 // A height field z = f(x, y) sampled on a grid of unit spacing, 2 half_side + 1 points a side,

@@ -13,6 +13,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -54,13 +55,14 @@ std::string normal_fit_description(const Options& o)
 
 namespace {
 
-// "pca_plane 10; aso, apss, jet, wavejet 12; ...": each method's default --min-neighbors, by
-// increasing count.
+// The default neighbour count of the quadric normals.
 std::size_t quadric_normal_neighbors()
 {
   return CGAL::Point_set_curvatures::default_normal_neighbors(CGAL::Normal_fit::QUADRIC);
 }
 
+// "pca_plane 10; aso, apss, jet, wavejet 12; ...": each method's default --min-neighbors, by
+// increasing count.
 std::string least_neighbor_counts()
 {
   std::map<std::size_t, std::string> by_count;
@@ -371,9 +373,11 @@ Options parse_command_line(int argc, char** argv)
     else if(name == "--variant")
     {
       const std::string v = take_value();
-      if(v != "robust" && v != "paper")
+      const auto& names = CGAL::Point_set_curvatures::aso_variant_names;
+      const auto found = std::find(std::begin(names), std::end(names), v);
+      if(found == std::end(names))
         throw Error(cat("--variant: unknown variant ", in_quotes(v), " (robust or paper)"));
-      o.scale.variant = v == "paper" ? CGAL::Aso_variant::PAPER : CGAL::Aso_variant::ROBUST;
+      o.scale.variant = CGAL::Aso_variant(found - std::begin(names));
     }
     else if(name == "--orient")
     {

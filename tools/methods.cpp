@@ -9,31 +9,15 @@
 #include <CGAL/Point_set_curvatures/parameters.h>
 #include <CGAL/estimate_apss_curvatures.h>
 #include <CGAL/estimate_aso_curvatures.h>
-// The baseline estimators, when the package has them (same signatures as the ones above).
-#if __has_include(<CGAL/estimate_barycenter_curvatures.h>)
 #include <CGAL/estimate_barycenter_curvatures.h>
-#define PSC_TOOL_HAS_BARYCENTER 1
-#endif
-#if __has_include(<CGAL/estimate_pca_plane_curvatures.h>)
-#include <CGAL/estimate_pca_plane_curvatures.h>
-#define PSC_TOOL_HAS_PCA_PLANE 1
-#endif
-#if __has_include(<CGAL/estimate_pss_curvatures.h>)
-#include <CGAL/estimate_pss_curvatures.h>
-#define PSC_TOOL_HAS_PSS 1
-#endif
-#if __has_include(<CGAL/estimate_jet_curvatures.h>)
 #include <CGAL/estimate_jet_curvatures.h>
-#define PSC_TOOL_HAS_JET 1
-#endif
-#if __has_include(<CGAL/estimate_vcm_curvatures.h>)
+#include <CGAL/estimate_pca_plane_curvatures.h>
+#include <CGAL/estimate_pss_curvatures.h>
 #include <CGAL/estimate_vcm_curvatures.h>
-#define PSC_TOOL_HAS_VCM 1
-#endif
-#if __has_include(<CGAL/estimate_wavejet_curvatures.h>)
 #include <CGAL/estimate_wavejet_curvatures.h>
-#define PSC_TOOL_HAS_WAVEJET 1
-#endif
+
+#include <iterator>
+#include <stdexcept>
 
 namespace psc_tool {
 
@@ -62,29 +46,12 @@ struct Run
   Run_method run;
 };
 
-// The estimators this build of the tool has.
+// Every estimator of the package (CGAL::Point_set_curvatures::estimators), in any order.
 const Run runs[] = {
-  PSC_TOOL_RUN(aso),
-  PSC_TOOL_RUN(apss),
-#ifdef PSC_TOOL_HAS_BARYCENTER
-  PSC_TOOL_RUN(barycenter),
-#endif
-#ifdef PSC_TOOL_HAS_PCA_PLANE
-  PSC_TOOL_RUN(pca_plane),
-#endif
-#ifdef PSC_TOOL_HAS_PSS
-  PSC_TOOL_RUN(pss),
-#endif
-#ifdef PSC_TOOL_HAS_JET
-  PSC_TOOL_RUN(jet),
-#endif
-#ifdef PSC_TOOL_HAS_VCM
-  PSC_TOOL_RUN(vcm),
-#endif
-#ifdef PSC_TOOL_HAS_WAVEJET
-  PSC_TOOL_RUN(wavejet),
-#endif
+  PSC_TOOL_RUN(aso), PSC_TOOL_RUN(apss), PSC_TOOL_RUN(barycenter), PSC_TOOL_RUN(pca_plane),
+  PSC_TOOL_RUN(pss), PSC_TOOL_RUN(jet), PSC_TOOL_RUN(vcm), PSC_TOOL_RUN(wavejet),
 };
+static_assert(std::size(runs) == std::size(PSC::estimators), "one run per described estimator");
 
 } // namespace
 
@@ -96,6 +63,8 @@ const std::vector<Method>& methods()
       for(const Run& r : runs)
         if(std::string(r.name) == e.name)
           t.push_back(Method{e, r.run});
+    if(t.size() != std::size(runs))
+      throw std::logic_error("a run of tools/methods.cpp has no description in estimators.h");
     return t;
   }();
   return table;

@@ -534,7 +534,7 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
   if(scale.by_count)
     tiling.neighbors = scale.reach_neighbors();
   else
-    tiling.halo = 2 * scale.radius;  // the reach of the sample weights' areas
+    tiling.halo = PSC::halo_for_radius(scale.radius);
   tiling.temporary_prefix = temporary_prefix(o.output);
   tiling.phase = [&c](const std::string& name) { return c.progress.phase(name); };
   tiling.interrupted = []() { return interrupted != 0; };

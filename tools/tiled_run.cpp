@@ -252,18 +252,7 @@ double density_halo(const Scanned_input& input, std::size_t k)
 {
   double lo[3], hi[3];
   tile_box(input, lo, hi);
-  double e[3] = {hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]};
-  std::sort(e, e + 3);
-  const double area = std::max(e[1] * e[2], 1e-300);
-  const double per_point = double(k) / (3.14159265358979 * double(std::max<std::uint64_t>(1, input.finite)));
-  const double halo = 2 * std::sqrt(area * per_point);
-  if(std::isfinite(halo))
-    return halo;
-  // extents or their product beyond the largest double: the same from the halved extents
-  // (infinite only if the halo itself is)
-  double h[3] = {hi[0] / 2 - lo[0] / 2, hi[1] / 2 - lo[1] / 2, hi[2] / 2 - lo[2] / 2};
-  std::sort(h, h + 3);
-  return 4 * (std::sqrt(h[1]) * std::sqrt(h[2]) * std::sqrt(per_point));
+  return PSC::halo_guess_for_count(CGAL::Bbox_3(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]), input.finite, k);
 }
 
 Scanned_input read_or_scan(const std::string& path, const Read_options& options, double memory_limit)
@@ -503,7 +492,7 @@ Tiled_report run_tiled(const std::string& path, const Read_options& options, con
         // At least to the nearest point left out, so that the range grows at every retry
         // (a required halo may not change the range: twice the halo when it holds fewer
         // points than a neighbourhood, or a sum of halos rounded down to this one).
-        halo = e.required_halo() > next_distance ? e.required_halo() : next_distance;
+        halo = PSC::next_halo(e, next_distance);
         ++report.halo_growths;
         report.estimate_seconds += seconds_since(estimate_start);
         if(tiling.interrupted && tiling.interrupted())

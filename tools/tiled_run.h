@@ -57,9 +57,9 @@ struct Scanned_input
 // with /usr/bin/time -v, see the README).
 double bytes_per_point(std::size_t attributes);
 
-// The radius holding `k` points on a surface spanning the two largest extents of the box of
-// the 0.1% to 99.9% quantiles of the sample (the box of the tiles), twice that: a first halo
-// for neighbourhoods of `k` nearest.
+// The first halo for neighbourhoods of `k` nearest: the library's guess
+// (PSC::halo_guess_for_count) on the box of the 0.1% to 99.9% quantiles of the sample (the
+// box of the tiles).
 double density_halo(const Scanned_input& input, std::size_t k);
 
 // Reads `path` in chunks; keeps the points as long as their estimated memory stays within

@@ -4,7 +4,7 @@
 
 The functions of the C++ package on numpy arrays: every estimator of curvatures (the
 Algebraic Shape Operator ``"aso"`` by default, ``"apss"`` and the baselines ``"barycenter"``,
-``"pca_plane"``, ``"pss"``, ``"jet"``, ``"wavejet"``, ``"vcm"``), the algebraic sphere
+``"pca_plane"``, ``"pss"``, ``"jet"``, ``"vcm"``, ``"wavejet"``), the algebraic sphere
 features, the projection onto the APSS surface, the bilaplacian flow and the estimation of
 oriented normals.
 
@@ -117,12 +117,21 @@ assert {s.name.lower(): s.value for s in Status} == dict(_core.STATUS_VALUES)
 assert {s.name.lower(): s.value for s in ProjectionStatus} == dict(_core.PROJECTION_STATUS_VALUES)
 
 #: What each estimator of ``estimate_curvatures`` is, from the C++ library's description
-#: (``CGAL::Point_set_curvatures::estimators``): name -> dict with ``function``, ``summary``,
-#: ``fields`` (the result's keys it fills; NaN in the others), ``min_neighbors`` (the default
+#: (``CGAL::Point_set_curvatures::estimators``), read-only: name -> mapping with ``name``,
+#: ``function`` (the C++ function, in namespace CGAL), ``summary``, ``fields`` (the result's
+#: keys it fills with its default options; NaN in the others), ``min_neighbors`` (the default
 #: of the option), ``good_neighbors`` (the count from which its error stays within twice its
-#: error at 40 neighbours) and ``options`` (its own options: dicts with ``name``, ``values``,
-#: ``default`` and, for a choice, ``choices``).
-ESTIMATORS = types.MappingProxyType({e["name"]: e for e in _core.ESTIMATORS})
+#: error at 40 neighbours), ``paper_variant_good_neighbors`` (the same for
+#: ``aso_variant="paper"``) and ``options`` (its own options: mappings with ``name``,
+#: ``values``, ``default`` and, for a choice, ``choices``).
+ESTIMATORS = types.MappingProxyType(
+    {
+        e["name"]: types.MappingProxyType(
+            dict(e, options=tuple(types.MappingProxyType(o) for o in e["options"]))
+        )
+        for e in _core.ESTIMATORS
+    }
+)
 
 #: The estimators of ``estimate_curvatures``.
 METHODS = tuple(ESTIMATORS)
@@ -401,8 +410,9 @@ def estimate_curvatures(
         Positions and consistently oriented normals (need not be unit), any memory layout.
     method : str
         ``"aso"`` (Algebraic Shape Operator, default), ``"apss"`` (normal and mean curvature),
-        ``"barycenter"``, ``"pca_plane"`` (unsigned mean curvature), ``"pss"``, ``"jet"``,
-        ``"wavejet"`` (full tensor), ``"vcm"`` (unsigned principal curvatures); any case.
+        ``"barycenter"``, ``"pca_plane"`` (unsigned mean curvature), ``"pss"``, ``"jet"``
+        (full tensor), ``"vcm"`` (unsigned principal curvatures), ``"wavejet"`` (full tensor);
+        any case. :data:`ESTIMATORS` describes each.
     radius : float
         Neighbourhoods are the points at distance ``< radius`` (about 40 neighbours is a good
         start: 3.5 to 4 times the average spacing). A number (a string is refused); larger
@@ -411,9 +421,9 @@ def estimate_curvatures(
         Instead of a radius: each point's radius reaches its ``neighbors``-th nearest point.
         Give exactly one of ``radius`` and ``neighbors``. Not less than the number of points:
         a :class:`ScaleWarning`, and capped at the number of points. ``"auto"`` (method
-        ``"aso"``): each point's count is chosen among 40, 80, ..., 640 by the noise its fits
-        measure (noisy scans), as the tool's ``--neighbors auto``; the result then has
-        ``mean_error``.
+        ``"aso"``): each point's count is chosen among 40, 80, ..., 640
+        (:data:`AUTOMATIC_NEIGHBORS`) by the noise its fits measure (noisy scans), as the
+        tool's ``--neighbors auto``; the result then has ``mean_error``.
     threads : int or None
         None: all cores; 1: sequential; n: n threads (capped to the cores). Same results
         whatever the value.

@@ -41,7 +41,8 @@ from concurrent.futures import CancelledError
 
 import numpy as np
 
-from . import AUTOMATIC_NEIGHBORS, HaloTooSmall, Status, TileGrid, _int, _method, _real, _weights
+from . import _METHOD_OPTIONS, AUTOMATIC_NEIGHBORS, HaloTooSmall, Status, TileGrid, _core, _int, _method, _real
+from . import _weights
 from . import _whole_cloud_box, _whole_cloud_scale
 from . import estimate_curvatures as _estimate_curvatures
 
@@ -64,32 +65,31 @@ def _check_tile(radius):
     """A tile for checking the arguments on no point: its halo the two radii a tile needs (the
     estimators refuse a smaller one, whatever the points)."""
     real = isinstance(radius, numbers.Real) and not isinstance(radius, (bool, np.bool_))
-    halo = 2.0 * float(radius) if real and 0 < radius < math.inf else 1.0
+    halo = _core.halo_for_radius(float(radius)) if real and 0 < radius < math.inf else 1.0
     return ((0.0,) * 3, (1.0,) * 3, halo)
 
 
 def _next_halo(index, halo, required, lo, hi):
-    """The halo of tile `index` resubmitted after HaloTooSmall (at least twice the last one);
-    RuntimeError if the last one already held the whole cloud (whose finite points span the box
-    [lo, hi]): a larger halo would change nothing."""
+    """The halo of tile `index` resubmitted after HaloTooSmall (the library's next_halo, at
+    least twice the last one); RuntimeError if the last one already held the whole cloud (whose
+    finite points span the box [lo, hi]): a larger halo would change nothing."""
     if halo > float(np.linalg.norm(np.asarray(hi, dtype=float) - np.asarray(lo, dtype=float))):
         raise RuntimeError(f"point_set_curvatures.dask: tile {index} asks for a halo of {required:g} although its "
                            f"halo {halo:g} holds the whole cloud")
-    return max(float(required), 2.0 * halo)
+    return _core.next_halo(halo, float(required), 2.0 * halo)
 
 
 def _first_halo(radius, neighbors, initial_halo, lo, hi, finite_count):
-    """The halo the tiles start with: twice the radius (sample weights reach two radii), the
-    caller's initial_halo, or for neighbourhoods by count a first guess from the density (the
-    radius of `neighbors` points on a surface spanning the two largest extents of the box)."""
+    """The halo the tiles start with (the library's rule, Tile.h): twice the radius (sample
+    weights reach two radii), the caller's initial_halo, or for neighbourhoods by count the
+    library's first guess from the density (halo_guess_for_count)."""
     if radius is not None:
-        return 2.0 * float(radius)
+        return _core.halo_for_radius(float(radius))
     if initial_halo is not None:
         return float(initial_halo)
-    area = max(float(np.prod(np.sort(hi - lo)[1:])), 1e-300)
     if isinstance(neighbors, str):  # "auto": the largest count of the ladder
         neighbors = AUTOMATIC_NEIGHBORS[1]
-    return 2.0 * math.sqrt(area * neighbors / (math.pi * finite_count))
+    return _core.halo_guess_for_count(tuple(map(float, lo)), tuple(map(float, hi)), int(finite_count), int(neighbors))
 
 def estimate_tile(points, normals, core_min, core_max, halo, *, method="aso", radius=None, neighbors=None,
                   threads=1, **options):
@@ -199,7 +199,7 @@ def estimate_curvatures(client, points, normals, *, method="aso", radius=None, n
     if weights is not None:
         # checked here, with the whole cloud's indices (a tile sees only its rows)
         del options["sample_weights"]
-        if method not in ("aso", "apss"):
+        if "sample_weights" not in _METHOD_OPTIONS[method]:
             raise ValueError(f"option 'sample_weights' does not apply to method {method!r}")
         weights = _weights(weights)
         if weights.shape != (n,):

@@ -486,28 +486,31 @@ py::dict estimate_curvatures(const std::string& method, const py::handle& points
 {
   const Scale scale = read_scale(radius, neighbors, method == "aso");
   const Tile_arg t = read_tile(tile);
-  static const char* methods[] = {"aso", "apss", "barycenter", "pca_plane", "pss", "jet", "wavejet", "vcm"};
-  if(std::find(std::begin(methods), std::end(methods), method) == std::end(methods))
+  if(!CGAL::Point_set_curvatures::find_estimator(method))
     throw py::value_error("unknown method '" + method + "'");
   const Cloud cloud = read_cloud(points, normals);
   std::vector<double> given;
   const Options o = options_with_weights(options, weights, cloud.size(), given);
+  // each described estimator's call (python/src/curvatures_*.cpp)
+  std::function<std::vector<Estimate>(bool, const Callback&)> call;
+  if(method == "aso")
+    call = [&](bool parallel, const Callback& cb) { return estimate_aso(cloud, scale, o, t, parallel, cb); };
+  else if(method == "apss")
+    call = [&](bool parallel, const Callback& cb) { return estimate_apss(cloud, scale, o, t, parallel, cb); };
+  else if(method == "barycenter" || method == "pca_plane")
+    call = [&](bool parallel, const Callback& cb) { return estimate_simple(method, cloud, scale, o, t, parallel, cb); };
+  else if(method == "pss" || method == "wavejet")
+    call = [&](bool parallel, const Callback& cb) {
+      return estimate_pss_wavejet(method, cloud, scale, o, t, parallel, cb);
+    };
+  else if(method == "jet")
+    call = [&](bool parallel, const Callback& cb) { return estimate_jet(cloud, scale, o, t, parallel, cb); };
+  else if(method == "vcm")
+    call = [&](bool parallel, const Callback& cb) { return estimate_vcm(cloud, scale, o, t, parallel, cb); };
+  else
+    throw std::logic_error("method '" + method + "' is described (estimators.h) but has no binding");
   std::vector<Estimate> result;
-  run([&](bool parallel, const Callback& cb) {
-        if(method == "aso")
-          result = estimate_aso(cloud, scale, o, t, parallel, cb);
-        else if(method == "apss")
-          result = estimate_apss(cloud, scale, o, t, parallel, cb);
-        else if(method == "barycenter" || method == "pca_plane")
-          result = estimate_simple(method, cloud, scale, o, t, parallel, cb);
-        else if(method == "pss" || method == "wavejet")
-          result = estimate_pss_wavejet(method, cloud, scale, o, t, parallel, cb);
-        else if(method == "jet")
-          result = estimate_jet(cloud, scale, o, t, parallel, cb);
-        else
-          result = estimate_vcm(cloud, scale, o, t, parallel, cb);
-      },
-      progress, threads);
+  run([&](bool parallel, const Callback& cb) { result = call(parallel, cb); }, progress, threads);
   return estimates_to_dict(result, scale.automatic_largest > 0);
 }
 
@@ -813,7 +816,7 @@ py::dict estimator_to_dict(const CGAL::Point_set_curvatures::Estimator_descripti
   }
   py::dict d;
   d["name"] = e.name;
-  d["function"] = std::string("CGAL::") + e.function;
+  d["function"] = e.function;
   d["summary"] = e.summary;
   d["fields"] = py::tuple(fields);
   d["min_neighbors"] = e.min_neighbors;
@@ -901,6 +904,21 @@ PYBIND11_MODULE(_core, m)
     projection_status[py::str(CGAL::to_string(CGAL::Apss_projection_status(s)))] = s;
   m.attr("PROJECTION_STATUS_VALUES") = projection_status;
 
+  // The halo rule of tiles (Tile.h), for the Dask driver.
+  m.def("halo_for_radius", &CGAL::Point_set_curvatures::halo_for_radius, py::arg("radius"));
+  m.def(
+    "halo_guess_for_count",
+    [](const std::array<double, 3>& lo, const std::array<double, 3>& hi, std::size_t n, std::size_t k) {
+      return CGAL::Point_set_curvatures::halo_guess_for_count(CGAL::Bbox_3(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]),
+                                                              n, k);
+    },
+    py::arg("box_min"), py::arg("box_max"), py::arg("points"), py::arg("neighbors"));
+  m.def(
+    "next_halo",
+    [](double halo, double required, double at_least) {
+      return CGAL::Point_set_curvatures::next_halo(CGAL::Point_set_curvatures::Halo_too_small(required, halo), at_least);
+    },
+    py::arg("halo"), py::arg("required"), py::arg("at_least"));
   m.def("estimate_curvatures", &estimate_curvatures, py::arg("method"), py::arg("points"), py::arg("normals"),
         py::arg("radius"), py::arg("neighbors"), py::arg("threads"), py::arg("progress"), py::arg("options"),
         py::arg("tile"), py::arg("weights"));

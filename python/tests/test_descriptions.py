@@ -43,14 +43,18 @@ def stub_alias(tree, name):
 def test_methods_and_options_are_the_library_description():
     assert psc.METHODS == ("aso", "apss", "barycenter", "pca_plane", "pss", "jet", "vcm", "wavejet")
     aso = psc.ESTIMATORS["aso"]
-    assert aso["function"] == "CGAL::estimate_aso_curvatures"
+    assert aso["function"] == "estimate_aso_curvatures"
     assert (aso["min_neighbors"], aso["good_neighbors"], aso["paper_variant_good_neighbors"]) == (12, 12, 20)
     assert [o["name"] for o in aso["options"]][:2] == ["aso_variant", "weight_kernel"]
     assert psc.ESTIMATORS["jet"]["options"][0]["default"] == "2"
     assert psc.ESTIMATORS["apss"]["fields"] == ("normal", "mean", "normal_coherence")
     assert psc.AUTOMATIC_NEIGHBORS == (40, 640)
     with pytest.raises(TypeError):
-        psc.ESTIMATORS["new"] = {}  # read-only
+        psc.ESTIMATORS["new"] = {}  # read-only, all the way down
+    with pytest.raises(TypeError):
+        psc.ESTIMATORS["aso"]["min_neighbors"] = 3
+    with pytest.raises(TypeError):
+        psc.ESTIMATORS["aso"]["options"][0]["default"] = "paper"
 
 
 def test_stubs_restate_the_description():
@@ -72,13 +76,21 @@ def test_stubs_restate_the_description():
                 assert "WeightKernel" in ast.unparse(a.annotation), f.name
 
 
+def method_bullets(doc):
+    """The docstring's option bullets: method name -> its text ("- ``"aso"``: ...")."""
+    bullets = {}
+    for m in re.finditer(r'- ``"(\w+)"``: (.*?)(?=\n\s*- |\n\s*\n)', doc, re.S):
+        bullets[m.group(1)] = m.group(2)
+    return bullets
+
+
 def test_every_option_is_documented_and_accepted():
-    doc = psc.estimate_curvatures.__doc__
+    bullets = method_bullets(psc.estimate_curvatures.__doc__)
     points, normals = fibonacci_sphere(400, radius=2.0)
     samples = {"bool": True, "count": 2, "real in [0, 1]": 0.5, "positive real": 0.5}
     for name, e in psc.ESTIMATORS.items():
         for o in e["options"]:
-            assert f"``{o['name']}``" in doc, o["name"]
+            assert f"``{o['name']}``" in bullets[name], (name, o["name"])
             values = o["choices"] or (samples[o["values"]],)
             for v in values:
                 try:
@@ -106,8 +118,8 @@ def test_results_fill_the_declared_fields():
             assert (filled, empty) == ((True, False) if key in e["fields"] else (False, True)), (name, key)
 
 
-def test_manual_table_of_neighbour_counts_is_the_description(data_dir):
-    path = os.path.join(data_dir, "..", "doc", "user_manual.md")
+def test_manual_table_of_neighbour_counts_is_the_description():
+    path = os.path.join(os.path.dirname(__file__), "..", "..", "doc", "user_manual.md")
     with open(path, encoding="utf-8") as f:
         text = f.read()
     section = text[text.index("{#psc_min_neighbors}"):]

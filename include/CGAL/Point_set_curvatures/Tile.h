@@ -136,6 +136,45 @@ private:
   double m_required;
 };
 
+// ---- The halo a tile needs: the rule that every driver of tiles (the tool's --memory-limit,
+// Dask) follows ----
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// The halo of a tile for neighbourhoods of radius `r`: `2 r`. An estimate reads the points
+/// within `r`, and the default ASO's sample weights (tangent Voronoi areas) of each of them
+/// read their own neighbours within `r`; no retry is ever needed.
+inline double halo_for_radius(double r) { return 2 * r; }
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// A first guess of the halo of a tile for neighbourhoods of `k` points (by count), for `n`
+/// finite points spread over `box`: twice the radius of a disk holding `k` of them when they
+/// cover, evenly, a surface spanning the two largest extents of the box. A guess: where the
+/// density is lower, the estimation throws `Halo_too_small` and the tile is run again with
+/// `next_halo()`. Where the box's area overflows a double, it is computed from the halved
+/// extents (the guess is then infinite only if the halo itself overflows).
+inline double halo_guess_for_count(const Bbox_3& box, std::size_t n, std::size_t k)
+{
+  double e[3] = {box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()};
+  std::sort(e, e + 3);
+  const double area = (std::max)(e[1] * e[2], 1e-300);
+  const double per_point = double(k) / (3.14159265358979 * double((std::max)(std::size_t(1), n)));
+  const double halo = 2 * std::sqrt(area * per_point);
+  if(std::isfinite(halo))
+    return halo;
+  double h[3] = {box.xmax() / 2 - box.xmin() / 2, box.ymax() / 2 - box.ymin() / 2, box.zmax() / 2 - box.zmin() / 2};
+  std::sort(h, h + 3);
+  return 4 * (std::sqrt(h[1]) * std::sqrt(h[2]) * std::sqrt(per_point));
+}
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// The halo to run a tile again with after its estimation threw `e`: `e.required_halo()`, at
+/// least `at_least`, so that the tile's range grows at every retry (the distance to the
+/// nearest point the range left out where the driver knows it, else twice the last halo).
+inline double next_halo(const Halo_too_small& e, double at_least)
+{
+  return e.required_halo() > at_least ? e.required_halo() : at_least;
+}
+
 /// \ingroup PkgPointSetCurvaturesRef
 ///
 /// A partition of space into a grid of tiles covering a cloud's bounding box: every finite

@@ -19,8 +19,10 @@ namespace CGAL {
 namespace Point_set_curvatures {
 
 /// \ingroup PkgPointSetCurvaturesRef
-/// The fields of `CGAL::Curvature_estimate` that an estimator fills (bits of
-/// `Estimator_description::fields`); the others are NaN in its valid estimates.
+/// The fields of `CGAL::Curvature_estimate` that an estimator fills with its default options
+/// (bits of `Estimator_description::fields`); the others are NaN in its valid estimates.
+/// (`normal_coherence` is NaN with the ASO's `Aso_projection::AUTHORS_IMPLEMENTATION`;
+/// `mean_curvature_error` is filled by the automatic scale only.)
 namespace estimate_fields {
 /// `normal`
 constexpr unsigned normal = 1u << 0;
@@ -40,30 +42,47 @@ constexpr unsigned tensor = normal | mean_curvature | gaussian_curvature | princ
 
 /// \ingroup PkgPointSetCurvaturesRef
 /// The names of the values of an enumeration option, indexed by the enumerator's value (the
-/// Python bindings and the tool accept them in any case).
+/// Python bindings accept them in any case, the tool's `--variant` in lower case).
 struct Option_choices
 {
+  /// the names, `names[v]` that of the enumerator of value `v`
   const char* const* names = nullptr;
+  /// their number
   std::size_t size = 0;
+  /// the first name
   constexpr const char* const* begin() const { return names; }
+  /// past the last name
   constexpr const char* const* end() const { return names + size; }
 };
 
-/// `CGAL::Aso_variant`
+/// \ingroup PkgPointSetCurvaturesRef
+/// The names of `CGAL::Aso_variant`'s values, by value.
 inline constexpr const char* aso_variant_names[] = {"paper", "robust"};
-/// `CGAL::Apss_weight_kernel`
+/// \ingroup PkgPointSetCurvaturesRef
+/// The names of `CGAL::Apss_weight_kernel`'s values, by value.
 inline constexpr const char* weight_kernel_names[] = {"smooth", "constant", "smooth_cubic", "smooth_quartic"};
-/// `CGAL::Sample_weights`
+/// \ingroup PkgPointSetCurvaturesRef
+/// The names of `CGAL::Sample_weights`'s values, by value.
 inline constexpr const char* sample_weights_names[] = {"uniform", "tangent_voronoi_area"};
-/// `CGAL::Aso_projection`
+/// \ingroup PkgPointSetCurvaturesRef
+/// The names of `CGAL::Aso_projection`'s values, by value.
 inline constexpr const char* aso_projection_names[] = {"corrected_normal", "authors_implementation"};
 
-static_assert(std::size(aso_variant_names) == std::size_t(Aso_variant::ROBUST) + 1, "one name per value");
-static_assert(std::size(weight_kernel_names) == std::size_t(Apss_weight_kernel::SMOOTH_QUARTIC) + 1, "one name per value");
-static_assert(std::size(sample_weights_names) == std::size_t(Sample_weights::TANGENT_VORONOI_AREA) + 1,
-              "one name per value");
-static_assert(std::size(aso_projection_names) == std::size_t(Aso_projection::AUTHORS_IMPLEMENTATION) + 1,
-              "one name per value");
+// One name per value, each at its enumerator's value.
+static_assert(std::size(aso_variant_names) == 2 && std::string_view(aso_variant_names[int(Aso_variant::PAPER)]) == "paper" &&
+              std::string_view(aso_variant_names[int(Aso_variant::ROBUST)]) == "robust");
+static_assert(std::size(weight_kernel_names) == 4 &&
+              std::string_view(weight_kernel_names[int(Apss_weight_kernel::SMOOTH)]) == "smooth" &&
+              std::string_view(weight_kernel_names[int(Apss_weight_kernel::CONSTANT)]) == "constant" &&
+              std::string_view(weight_kernel_names[int(Apss_weight_kernel::SMOOTH_CUBIC)]) == "smooth_cubic" &&
+              std::string_view(weight_kernel_names[int(Apss_weight_kernel::SMOOTH_QUARTIC)]) == "smooth_quartic");
+static_assert(std::size(sample_weights_names) == 2 &&
+              std::string_view(sample_weights_names[int(Sample_weights::UNIFORM)]) == "uniform" &&
+              std::string_view(sample_weights_names[int(Sample_weights::TANGENT_VORONOI_AREA)]) == "tangent_voronoi_area");
+static_assert(std::size(aso_projection_names) == 2 &&
+              std::string_view(aso_projection_names[int(Aso_projection::CORRECTED_NORMAL)]) == "corrected_normal" &&
+              std::string_view(aso_projection_names[int(Aso_projection::AUTHORS_IMPLEMENTATION)]) ==
+                "authors_implementation");
 
 /// \ingroup PkgPointSetCurvaturesRef
 /// An option of an estimator beyond those every estimator takes (`min_neighbors`,
@@ -92,7 +111,7 @@ struct Estimator_description
   const char* function;
   /// One line on what it is.
   const char* summary;
-  /// The fields it fills: bits of `estimate_fields`.
+  /// The fields it fills with its default options: bits of `estimate_fields`.
   unsigned fields;
   /// The default of `parameters::min_neighbors()`: `default_min_neighbors`.
   std::size_t min_neighbors;
@@ -101,11 +120,14 @@ struct Estimator_description
   std::size_t good_neighbors;
   /// `good_neighbors` of `CGAL::Aso_variant::PAPER` (the ASO); `good_neighbors` otherwise.
   std::size_t paper_variant_good_neighbors;
-  /// Its own options.
+  /// Its own options, `option_count` of them (null if none).
   const Estimator_option* options;
+  /// The number of `options`.
   std::size_t option_count;
 
+  /// The first option.
   constexpr const Estimator_option* begin() const { return options; }
+  /// Past the last option.
   constexpr const Estimator_option* end() const { return options + option_count; }
   /// `paper_variant_good_neighbors` for `Aso_variant::PAPER`, else `good_neighbors`.
   constexpr std::size_t good_neighbors_of(Aso_variant variant) const
