@@ -1541,8 +1541,9 @@ TEST_CASE("Default ASO on the simulated LiDAR scan: below 3.3e-3 and below PSS, 
   {
     if(!uniform[i].is_valid() || uniform[i].max_curvature == uniform_unblended[i].max_curvature)
       continue;
+    // the robust variant's options (its sample weights are those of the neighbours, all 1 here)
     CGAL::Algebraic_shape_operator_fit<Kernel> fit(pts[i].first, r, CGAL::Aso_projection::CORRECTED_NORMAL,
-                                                   CGAL::Apss_weight_kernel::SMOOTH_CUBIC, true, true);
+                                                   PSC::aso_variant_options(CGAL::Aso_variant::ROBUST));
     for(const auto& p : pts)
       fit.add_neighbor(p.first, p.second);
     const auto e = fit.estimate();
@@ -1993,4 +1994,25 @@ TEST_CASE("Every estimator fills the fields its description declares (estimators
   CHECK(PSC::find_estimator("aso")->good_neighbors_of(CGAL::Aso_variant::PAPER) == 20);
   CHECK(PSC::find_estimator("vcm")->good_neighbors_of(CGAL::Aso_variant::PAPER) == 25);
   CHECK(PSC::find_estimator("nonexistent") == nullptr);
+
+  // what each takes: a tile (all but VCM, which refuses one), the automatic scale (the ASO)
+  const PSC::Tile half(CGAL::Bbox_3(-HUGE_VAL, -HUGE_VAL, -HUGE_VAL, 0, HUGE_VAL, HUGE_VAL), HUGE_VAL);
+  const auto tiled = PSC::parameters::tile(half, maps());
+  auto run_tiled = [&](const std::string& name) {
+    if(name == "apss")
+      return CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(pts, r, tiled);
+    for(const auto& n : named)
+      if(name == n.first)
+        return run<CGAL::Parallel_tag>(n.second, pts, r, tiled);
+    return Estimates();
+  };
+  for(const PSC::Estimator_description& d : PSC::estimators)
+  {
+    INFO(d.name);
+    if(d.tiles)
+      CHECK(run_tiled(d.name).size() == pts.size());
+    else
+      CHECK_THROWS_AS(run_tiled(d.name), std::invalid_argument);
+    CHECK(d.automatic_scale == (std::string(d.name) == "aso"));
+  }
 }

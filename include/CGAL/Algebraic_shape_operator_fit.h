@@ -5,6 +5,7 @@
 #define CGAL_ALGEBRAIC_SHAPE_OPERATOR_FIT_H
 
 #include <CGAL/Curvature_estimate.h>
+#include <CGAL/Point_set_curvatures/parameters.h>
 #include <CGAL/Point_set_curvatures/internal/algebraic_shape_operator.h>
 #include <CGAL/Point_set_curvatures/internal/local_frame.h>
 
@@ -38,27 +39,37 @@ public:
 
   /// Starts a fit at `evaluation_point` with the kernel `(1 - d²/radius²)²`, projected on
   /// the tangent plane chosen by `projection` (see `CGAL::Aso_projection`): the paper's
-  /// estimator. `kernel` (`SMOOTH`, `SMOOTH_CUBIC` or `SMOOTH_QUARTIC`) and
-  /// `robust_orientation` (neighbours' normals flipped against their weighted majority,
-  /// `TWO_SHEETS` when they form a second sheet) and `normal_field_blend` (a least-squares fit
-  /// of the normal field blended in where the neighbourhood is one-sided, see
-  /// `CGAL::Point_set_curvatures::parameters::normal_field_blend()`) select the variants of
-  /// `estimate_aso_curvatures()`; sample weights are given per neighbour to `add_neighbor()`.
+  /// estimator, or with another `kernel` (`SMOOTH`, `SMOOTH_CUBIC` or `SMOOTH_QUARTIC`).
   /// \throws std::invalid_argument if `radius` is not positive and finite, the evaluation
   /// point is not finite, or `kernel` is `CONSTANT`.
   Algebraic_shape_operator_fit(const Point_3& evaluation_point, FT radius,
                                Aso_projection projection = Aso_projection::CORRECTED_NORMAL,
-                               Apss_weight_kernel kernel = Apss_weight_kernel::SMOOTH,
-                               bool robust_orientation = false, bool normal_field_blend = false)
+                               Apss_weight_kernel kernel = Apss_weight_kernel::SMOOTH)
+    : Algebraic_shape_operator_fit(evaluation_point, radius, projection,
+                                   Point_set_curvatures::Aso_variant_options{kernel, Sample_weights::UNIFORM, false, false})
+  {}
+
+  /// Starts a fit at `evaluation_point` with the options of a variant of
+  /// `estimate_aso_curvatures()`, for example
+  /// `CGAL::Point_set_curvatures::aso_variant_options(CGAL::Aso_variant::ROBUST)`: its
+  /// `weight_kernel`, its `robust_orientation` (neighbours' normals flipped against their
+  /// weighted majority, `TWO_SHEETS` when they form a second sheet) and its
+  /// `normal_field_blend` (a least-squares fit of the normal field blended in where the
+  /// neighbourhood is one-sided, see
+  /// `CGAL::Point_set_curvatures::parameters::normal_field_blend()`); its `sample_weights` is
+  /// not read (sample weights are given per neighbour to `add_neighbor()`).
+  /// \throws std::invalid_argument as above.
+  Algebraic_shape_operator_fit(const Point_3& evaluation_point, FT radius, Aso_projection projection,
+                               const Point_set_curvatures::Aso_variant_options& options)
     : m_frame(evaluation_point, CGAL::to_double(radius), "Algebraic_shape_operator_fit",
               projection == Aso_projection::CORRECTED_NORMAL)
   {
-    if(kernel == Apss_weight_kernel::CONSTANT)
+    if(options.weight_kernel == Apss_weight_kernel::CONSTANT)
       throw std::invalid_argument("Algebraic_shape_operator_fit: the constant kernel has no derivative");
     m_settings.projection = projection;
-    m_settings.kernel_exponent = Point_set_curvatures::internal::kernel_exponent(kernel);
-    m_settings.orient_neighbors = robust_orientation;
-    m_settings.normal_field_blend = normal_field_blend;
+    m_settings.kernel_exponent = Point_set_curvatures::internal::kernel_exponent(options.weight_kernel);
+    m_settings.orient_neighbors = options.robust_orientation;
+    m_settings.normal_field_blend = options.normal_field_blend;
   }
 
   /// Adds the oriented point `(p, n)` with the quadrature weight `sample_weight` (positive:
@@ -105,10 +116,10 @@ public:
 
   /// Normal, principal curvatures and directions, mean and Gaussian curvature of the
   /// neighbours added so far. Invalid with `TOO_FEW_NEIGHBORS` below `min_neighbors`
-  /// neighbours (by default the measured minimum of `estimate_aso_curvatures()`, 12; never
-  /// below 3), or `DEGENERATE_FIT`.
+  /// neighbours (by default `CGAL::Point_set_curvatures::default_min_neighbors::aso`, the
+  /// measured minimum of `estimate_aso_curvatures()`; never below 3), or `DEGENERATE_FIT`.
   Curvature_estimate<GeomTraits> estimate(
-    std::size_t min_neighbors = Point_set_curvatures::internal::default_min_neighbors::aso) const
+    std::size_t min_neighbors = Point_set_curvatures::default_min_neighbors::aso) const
   {
     if(neighbor_count() < min_neighbors)
       return Point_set_curvatures::internal::to_curvature_estimate<GeomTraits>(

@@ -5,6 +5,7 @@
 #define CGAL_ALGEBRAIC_SPHERE_FIT_H
 
 #include <CGAL/Curvature_estimate.h>
+#include <CGAL/Point_set_curvatures/parameters.h>
 #include <CGAL/Point_set_curvatures/internal/algebraic_sphere.h>
 #include <CGAL/Point_set_curvatures/internal/local_frame.h>
 
@@ -61,10 +62,11 @@ public:
   std::size_t neighbor_count() const { return m_sums.count; }
 
   /// APSS normal and mean curvature; the principal fields are NaN. Invalid with
-  /// `TOO_FEW_NEIGHBORS` below `min_neighbors` neighbours (by default the measured minimum of
-  /// `estimate_apss_curvatures()`, 12; never below 3), or `DEGENERATE_FIT`.
+  /// `TOO_FEW_NEIGHBORS` below `min_neighbors` neighbours (by default
+  /// `CGAL::Point_set_curvatures::default_min_neighbors::apss`, the measured minimum of
+  /// `estimate_apss_curvatures()`; never below 3), or `DEGENERATE_FIT`.
   Curvature_estimate<GeomTraits> estimate(
-    std::size_t min_neighbors = Point_set_curvatures::internal::default_min_neighbors::apss) const
+    std::size_t min_neighbors = Point_set_curvatures::default_min_neighbors::apss) const
   {
     namespace I = Point_set_curvatures::internal;
     if(m_sums.count < min_neighbors)

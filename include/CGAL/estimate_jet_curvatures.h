@@ -154,8 +154,8 @@ Jet_degrees jet_degrees(const NamedParameters& np, const char* function_name)
 ///       estimate; below it the status is `TOO_FEW_NEIGHBORS`. Values below what the fit
 ///       needs (6 with order-2 fitting, 10 with order 3) are raised to it}
 ///     \cgalParamType{`std::size_t`}
-///     \cgalParamDefault{12: the measured minimum of this estimator (user manual,
-///       "Neighbourhoods and scale")}
+///     \cgalParamDefault{`CGAL::Point_set_curvatures::default_min_neighbors::jet`, the measured minimum
+///       of this estimator (user manual, "Neighbourhoods and scale")}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Point_set_curvatures::parameters::accept_unnormalized_normals}
 ///     \cgalParamDescription{by default a normal whose length lies outside `[1e-3, 1e3]` is

@@ -10,7 +10,7 @@
 #define CGAL_ESTIMATE_ORIENTED_NORMALS_H
 
 #include <CGAL/Point_set_curvatures/internal/automatic_scale.h>
-#include <CGAL/Point_set_curvatures/internal/estimate_at_every_point.h>
+#include <CGAL/Point_set_curvatures/internal/evaluate_at_every_point.h>
 #include <CGAL/Point_set_curvatures/internal/pca_plane.h>
 #include <CGAL/Point_set_curvatures/internal/quadric_fit.h>
 #include <CGAL/Point_set_curvatures/parameters.h>
@@ -556,11 +556,9 @@ std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, dou
 /// The fit (`Point_set_curvatures::parameters::normal_fit`) is by default a weighted quadric
 /// (`CGAL::Normal_fit::QUADRIC`, 40 neighbours): its normals are nearly free of the
 /// curvature's bias and vary smoothly from point to point, which the ASO needs since it
-/// differentiates the normal field. Measured on simulated scans (benchmark/README.md, "Scans
-/// without normals"): with the PCA plane of 18 neighbours the default ASO's mean error of `H`
-/// was 25x (terrestrial scan of a torus), 2.5x (airborne scan lines) and 6x (two merged
-/// terrestrial scans) its error with exact normals; with the quadric 1.5x, 1.3x and 1.5x, and
-/// with `position_fit_blend(0.5)` 1.4x, 1.1x and 1.0x. `CGAL::Normal_fit::PLANE` is the
+/// differentiates the normal field: on simulated scans the ASO on quadric normals comes
+/// within 1.5 times its error with exact normals, several times better than on PCA-plane
+/// normals (benchmark/README.md, "Scans without normals"). `CGAL::Normal_fit::PLANE` is the
 /// PCA plane (18 neighbours by default).
 ///
 /// Points whose normal cannot be estimated get a zero normal, which the estimators report as

@@ -102,8 +102,8 @@ struct Pca_plane_estimator : Estimator_base
 ///       estimate; below it the status is `TOO_FEW_NEIGHBORS`. Values below what the fit
 ///       needs (3) are raised to it}
 ///     \cgalParamType{`std::size_t`}
-///     \cgalParamDefault{10: the measured minimum of this estimator (user manual,
-///       "Neighbourhoods and scale")}
+///     \cgalParamDefault{`CGAL::Point_set_curvatures::default_min_neighbors::pca_plane`, the measured minimum
+///       of this estimator (user manual, "Neighbourhoods and scale")}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Point_set_curvatures::parameters::accept_unnormalized_normals}
 ///     \cgalParamDescription{by default a normal whose length lies outside `[1e-3, 1e3]` is

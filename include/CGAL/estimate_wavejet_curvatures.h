@@ -104,8 +104,8 @@ struct Wavejet_estimator : Estimator_base
 ///       estimate; below it the status is `TOO_FEW_NEIGHBORS`. Values below what the fit
 ///       needs (6) are raised to it}
 ///     \cgalParamType{`std::size_t`}
-///     \cgalParamDefault{12: the measured minimum of this estimator (user manual,
-///       "Neighbourhoods and scale")}
+///     \cgalParamDefault{`CGAL::Point_set_curvatures::default_min_neighbors::wavejet`, the measured minimum
+///       of this estimator (user manual, "Neighbourhoods and scale")}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Point_set_curvatures::parameters::accept_unnormalized_normals}
 ///     \cgalParamDescription{by default a normal whose length lies outside `[1e-3, 1e3]` is

@@ -33,7 +33,7 @@
 #define CGAL_POINT_SET_CURVATURES_INTERNAL_VCM_H
 
 #include <CGAL/Curvature_estimate.h>
-#include <CGAL/Point_set_curvatures/internal/estimate_at_every_point.h>
+#include <CGAL/Point_set_curvatures/internal/evaluate_at_every_point.h>
 #include <CGAL/Point_set_curvatures/internal/estimation_driver.h>
 #include <CGAL/Point_set_curvatures/internal/knn_neighborhoods.h>
 #include <CGAL/Point_set_curvatures/internal/local_estimate.h>
