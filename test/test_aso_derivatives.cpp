@@ -157,9 +157,9 @@ TEST_CASE("ASO gradient and Hessian equal finite differences of the APSS field")
                           hess[1][2], hess[2][0], hess[2][1], hess[2][2]};
     const Truth fd = truth_from_implicit(grad, h9);
 
-    CGAL::Algebraic_shape_operator_fit<Kernel> fit(
-      Point(0, 0, 0), r, CGAL::Aso_projection::CORRECTED_NORMAL,
-      CGAL::Point_set_curvatures::Aso_variant_options{c.kernel, CGAL::Sample_weights::UNIFORM, c.v.orient, false});
+    namespace P = CGAL::Point_set_curvatures::parameters;
+    CGAL::Algebraic_shape_operator_fit<Kernel> fit(Point(0, 0, 0), r,
+                                                   P::weight_kernel(c.kernel, P::robust_orientation(c.v.orient)));
     for(const Sample& s : samples)
       fit.add_neighbor(Point(s.p[0], s.p[1], s.p[2]), Vector(s.n[0], s.n[1], s.n[2]), s.a);
     const auto e = fit.estimate();

@@ -1542,8 +1542,7 @@ TEST_CASE("Default ASO on the simulated LiDAR scan: below 3.3e-3 and below PSS, 
     if(!uniform[i].is_valid() || uniform[i].max_curvature == uniform_unblended[i].max_curvature)
       continue;
     // the robust variant's options (its sample weights are those of the neighbours, all 1 here)
-    CGAL::Algebraic_shape_operator_fit<Kernel> fit(pts[i].first, r, CGAL::Aso_projection::CORRECTED_NORMAL,
-                                                   PSC::aso_variant_options(CGAL::Aso_variant::ROBUST));
+    CGAL::Algebraic_shape_operator_fit<Kernel> fit(pts[i].first, r, PSC::parameters::aso_variant(CGAL::Aso_variant::ROBUST));
     for(const auto& p : pts)
       fit.add_neighbor(p.first, p.second);
     const auto e = fit.estimate();
@@ -2006,13 +2005,43 @@ TEST_CASE("Every estimator fills the fields its description declares (estimators
         return run<CGAL::Parallel_tag>(n.second, pts, r, tiled);
     return Estimates();
   };
+  const auto automatic = PSC::parameters::neighbor_count(40, PSC::parameters::automatic_scale(640, maps()));
+  auto run_automatic = [&](const std::string& name) {
+    if(name == "apss")
+      return CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(pts, automatic);
+    for(const auto& n : named)
+      if(name == n.first)
+        return run_without_radius<CGAL::Parallel_tag>(n.second, pts, automatic);
+    return Estimates();
+  };
   for(const PSC::Estimator_description& d : PSC::estimators)
   {
     INFO(d.name);
-    if(d.tiles)
-      CHECK(run_tiled(d.name).size() == pts.size());
+    if(d.supports_tiles)
+    {
+      // the tile's own points (x < 0) as in the whole run, bitwise; the others not computed
+      const Estimates whole = run_named(d.name), part = run_tiled(d.name);
+      REQUIRE(part.size() == pts.size());
+      std::size_t own = 0, differ = 0, others = 0;
+      for(std::size_t i = 0; i < pts.size(); ++i)
+        if(pts[i].first.x() < 0)
+        {
+          ++own;
+          differ += !same_estimate(part[i], whole[i]);
+        }
+        else
+          others += part[i].status == CGAL::Curvature_estimate_status::NOT_COMPUTED;
+      CHECK(own > pts.size() / 3);
+      CHECK(differ == 0);
+      CHECK(others == pts.size() - own);
+    }
     else
       CHECK_THROWS_AS(run_tiled(d.name), std::invalid_argument);
-    CHECK(d.automatic_scale == (std::string(d.name) == "aso"));
+    // the automatic scale: a standard error of the mean curvature where supported, ignored elsewhere
+    std::size_t with_error = 0;
+    for(const auto& e : run_automatic(d.name))
+      with_error += std::isfinite(e.mean_curvature_error);
+    CHECK((with_error > pts.size() / 2) == d.supports_automatic_scale);
+    CHECK((with_error == 0) == !d.supports_automatic_scale);
   }
 }

@@ -1774,13 +1774,14 @@ TEST_CASE("Tiles: the halo rule (halo_for_radius, halo_guess_for_count, next_hal
       grid.emplace_back(Point(i, j, 0.01 * std::sin(0.3 * i) * std::cos(0.2 * j)), Vector(0, 0, 1));
   const CGAL::Bbox_3 box(0, 0, -0.01, 59, 59, 0.01);
   const double guess = PSC::halo_guess_for_count(box, grid.size(), 40);
-  CHECK(guess == Approx(2 * std::sqrt(59.0 * 59.0 * 40.0 / (M_PI * 3600.0))).epsilon(1e-12));
+  CHECK(guess == Approx(2 * std::sqrt(59.0 * 59.0 * 40.0 / (M_PI * 3600.0))).epsilon(1e-14));
   CHECK(guess == Approx(2 * std::sqrt(40.0 / M_PI)).epsilon(0.04));
   // an area beyond the largest double: computed from the halved extents, finite
   const double huge = PSC::halo_guess_for_count(CGAL::Bbox_3(-1e300, -1e300, 0, 1e300, 1e300, 0), 10, 40);
   CHECK(huge == Approx(2 * 2e300 * std::sqrt(40.0 / (M_PI * 10.0))).epsilon(1e-12));
-  CHECK(PSC::next_halo(PSC::Halo_too_small(5, 1), 2) == 5);
-  CHECK(PSC::next_halo(PSC::Halo_too_small(1.5, 1), 2) == 2);
+  CHECK(PSC::next_halo(5, 2) == 5);
+  CHECK(PSC::next_halo(1.5, 2) == 2);
+  CHECK(PSC::next_halo(nan_value, 2) == 2);
 
   // a tile started with a quarter of the guess grows by next_halo until exact: the whole run's bits
   auto run = [](const std::vector<Oriented_point>& pts, const PSC::Tile& t) {
@@ -1805,7 +1806,7 @@ TEST_CASE("Tiles: the halo rule (halo_for_radius, halo_guess_for_count, next_hal
     }
     catch(const PSC::Halo_too_small& e)
     {
-      halo = PSC::next_halo(e, 2 * halo);
+      halo = PSC::next_halo(e.required_halo(), 2 * halo);
       ++retries;
       REQUIRE(retries < 10);
     }
@@ -1820,6 +1821,81 @@ TEST_CASE("Tiles: the halo rule (halo_for_radius, halo_guess_for_count, next_hal
     }
   CHECK(own == 20 * 20);  // the core is half-open
   CHECK(differ == 0);
+}
+
+TEST_CASE("aso_options: a variant's options as one value, overridden by the options given", "[aso][api]")
+{
+  const auto& pts = goursat_10k();
+  const double r = 1.5;
+  namespace P = PSC::parameters;
+  auto run = [&](const auto& np) { return CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, r, np); };
+  auto same = [](const std::vector<Estimate>& a, const std::vector<Estimate>& b) {
+    std::size_t differ = 0;
+    for(std::size_t i = 0; i < a.size(); ++i)
+      differ += !same_estimate(a[i], b[i]);
+    return differ;
+  };
+  const auto robust = run(maps());
+  const auto paper = run(P::aso_variant(CGAL::Aso_variant::PAPER, maps()));
+  REQUIRE(same(robust, paper) > pts.size() / 2);  // the options matter on this cloud
+  // the presets as values: the variants, bitwise, whatever aso_variant says
+  CHECK(same(run(P::aso_options(PSC::aso_variant_options(CGAL::Aso_variant::ROBUST), maps())), robust) == 0);
+  CHECK(same(run(P::aso_options(PSC::aso_variant_options(CGAL::Aso_variant::PAPER), maps())), paper) == 0);
+  CHECK(same(run(P::aso_variant(CGAL::Aso_variant::PAPER,
+                                P::aso_options(PSC::aso_variant_options(CGAL::Aso_variant::ROBUST), maps()))),
+             robust) == 0);
+  // one member changed: as the option given on its own
+  PSC::Aso_variant_options uniform = PSC::aso_variant_options(CGAL::Aso_variant::ROBUST);
+  uniform.sample_weights = CGAL::Sample_weights::UNIFORM;
+  CHECK(same(run(P::aso_options(uniform, maps())), run(P::sample_weights(CGAL::Sample_weights::UNIFORM, maps()))) == 0);
+  // an option given explicitly overrides the value's member
+  CHECK(same(run(P::robust_orientation(true, P::aso_options(PSC::aso_variant_options(CGAL::Aso_variant::PAPER), maps()))),
+             run(P::robust_orientation(true, P::aso_variant(CGAL::Aso_variant::PAPER, maps())))) == 0);
+  PSC::Aso_variant_options constant = uniform;
+  constant.weight_kernel = CGAL::Apss_weight_kernel::CONSTANT;
+  CHECK_THROWS_AS(run(P::aso_options(constant, maps())), std::invalid_argument);
+}
+
+TEST_CASE("Algebraic_shape_operator_fit with named parameters: the cloud function's estimators at one point", "[aso][api][per_query]")
+{
+  const auto& pts = goursat_10k();
+  const double r = 1.5;
+  namespace P = PSC::parameters;
+  const auto cloud_robust = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
+    pts, r, P::sample_weights(CGAL::Sample_weights::UNIFORM, maps()));  // the fit's weights: 1
+  auto at = [&](std::size_t i, auto&& fit) {
+    for(const auto& p : pts)
+      fit.add_neighbor(p.first, p.second);
+    return fit.estimate();
+  };
+  std::size_t compared = 0;
+  for(std::size_t i = 0; i < pts.size(); i += 500)
+  {
+    const Point& x = pts[i].first;
+    typedef CGAL::Algebraic_shape_operator_fit<Kernel> Fit;
+    const Estimate paper = at(i, Fit(x, r));
+    CHECK(same_estimate(paper, at(i, Fit(x, r, P::aso_variant(CGAL::Aso_variant::PAPER)))));
+    CHECK(same_estimate(at(i, Fit(x, r, CGAL::Aso_projection::AUTHORS_IMPLEMENTATION, CGAL::Apss_weight_kernel::SMOOTH_CUBIC)),
+                        at(i, Fit(x, r, P::aso_projection(CGAL::Aso_projection::AUTHORS_IMPLEMENTATION,
+                                                          P::weight_kernel(CGAL::Apss_weight_kernel::SMOOTH_CUBIC))))));
+    const Estimate robust = at(i, Fit(x, r, P::aso_variant(CGAL::Aso_variant::ROBUST)));
+    CHECK(same_estimate(robust, at(i, Fit(x, r, P::aso_options(PSC::aso_variant_options(CGAL::Aso_variant::ROBUST))))));
+    CHECK_FALSE(same_estimate(robust, paper));
+    // the cloud function's estimate at that point, to rounding (its sums run in another order)
+    REQUIRE(robust.is_valid());
+    CHECK(robust.mean_curvature == Approx(cloud_robust[i].mean_curvature).margin(1e-12));
+    CHECK(robust.max_curvature == Approx(cloud_robust[i].max_curvature).margin(1e-12));
+    ++compared;
+  }
+  CHECK(compared == 20);
+  using Catch::Matchers::Contains;
+  CHECK_THAT(invalid_argument_message([&] {
+               CGAL::Algebraic_shape_operator_fit<Kernel> fit(pts[0].first, r, CGAL::Aso_projection::CORRECTED_NORMAL,
+                                                              CGAL::Apss_weight_kernel::CONSTANT);
+             }),
+             Contains("Algebraic_shape_operator_fit") && Contains("weight_kernel"));
+  CHECK_THROWS_AS(CGAL::Algebraic_shape_operator_fit<Kernel>(pts[0].first, r, P::position_fit_blend(2.0)),
+                  std::invalid_argument);
 }
 
 // ---- The automatic scale (named parameter automatic_scale) ----

@@ -463,10 +463,10 @@ Options parse_command_line(int argc, char** argv)
     throw Error("give either --radius or --neighbors, not both");
   // The default scale: automatic for the ASO's robust variant (it keeps 40 neighbours where
   // the fits see no noise and grows where noise dominates, as on most real scans), else 40.
-  if(!o.radius_given && !o.neighbors_given && o.method->automatic_scale &&
+  if(!o.radius_given && !o.neighbors_given && o.method->supports_automatic_scale &&
      o.scale.variant == CGAL::Aso_variant::ROBUST)
     use_automatic_scale(o.scale);
-  if(o.scale.automatic_largest > 0 && !o.method->automatic_scale)
+  if(o.scale.automatic_largest > 0 && !o.method->supports_automatic_scale)
     throw Error(cat("--neighbors auto chooses the scale of --method aso only; give --method ", o.method->name,
                     " a count (--neighbors K)"));
   if(o.scale.automatic_largest == 0 && std::find(o.fields.begin(), o.fields.end(), "mean_error") != o.fields.end())

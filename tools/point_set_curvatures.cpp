@@ -524,7 +524,7 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
   if(!o.scale.by_count && o.scale.spacing_multiple > 0)
     throw Error(cat(too_large, ": --radius ", o.scale.spacing_multiple, "x needs the whole cloud for the average "
                     "spacing; give the radius as a length, or raise --memory-limit"));
-  if(!o.method->tiles)
+  if(!o.method->supports_tiles)
     throw Error(cat(too_large, ": --method vcm needs the whole cloud (its Voronoi cells come from the Delaunay "
                     "triangulation of every point); raise --memory-limit"));
   const Scale scale = estimation_scale(o, !with_normals);

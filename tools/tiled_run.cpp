@@ -492,7 +492,7 @@ Tiled_report run_tiled(const std::string& path, const Read_options& options, con
         // At least to the nearest point left out, so that the range grows at every retry
         // (a required halo may not change the range: twice the halo when it holds fewer
         // points than a neighbourhood, or a sum of halos rounded down to this one).
-        halo = PSC::next_halo(e, next_distance);
+        halo = PSC::next_halo(e.required_halo(), next_distance);
         ++report.halo_growths;
         report.estimate_seconds += seconds_since(estimate_start);
         if(tiling.interrupted && tiling.interrupted())

@@ -9,6 +9,7 @@
 #include "support.h"
 
 namespace psc_paper {
+namespace {  // one translation unit: paper_experiments.cpp
 
 // --- experiment 1 -----------------------------------------------------------------------
 
@@ -100,6 +101,7 @@ void experiment_convergence(Context& ctx)
                    [](const Error_row& r) { return double(r.N); }, true);
 }
 
+} // namespace
 } // namespace psc_paper
 
 #endif

@@ -10,6 +10,7 @@
 #include "support.h"
 
 namespace psc_paper {
+namespace {  // one translation unit: paper_experiments.cpp
 
 // --- experiment 6: the least neighbour count of a valid estimate ---------------------------
 //
@@ -184,6 +185,7 @@ void experiment_neighbors(Context& ctx)
                    "primary error (mean |H - H*|, see text)");
 }
 
+} // namespace
 } // namespace psc_paper
 
 #endif

@@ -10,6 +10,7 @@
 #include "support.h"
 
 namespace psc_paper {
+namespace {  // one translation unit: paper_experiments.cpp
 
 // --- experiments 2 and 3 ------------------------------------------------------------------
 
@@ -174,6 +175,7 @@ void experiment_noise_normals(Context& ctx)
                    false, {tics, "set xrange [-0.5:" + std::to_string(names.size() - 0.5) + "]"});
 }
 
+} // namespace
 } // namespace psc_paper
 
 #endif

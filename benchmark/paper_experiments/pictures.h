@@ -10,6 +10,7 @@
 #include "support.h"
 
 namespace psc_paper {
+namespace {  // one translation unit: paper_experiments.cpp
 
 // --- experiment 5 -----------------------------------------------------------------------
 
@@ -234,6 +235,7 @@ void experiment_pictures(Context& ctx)
   }
 }
 
+} // namespace
 } // namespace psc_paper
 
 #endif

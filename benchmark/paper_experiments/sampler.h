@@ -10,6 +10,7 @@
 #include "support.h"
 
 namespace psc_paper {
+namespace {  // one translation unit: paper_experiments.cpp
 
 // --- sampler report ---------------------------------------------------------------------
 
@@ -135,6 +136,7 @@ void experiment_sampler(Context& ctx)
   gp << "\n";
 }
 
+} // namespace
 } // namespace psc_paper
 
 #endif

@@ -63,6 +63,7 @@
 #include <vector>
 
 namespace psc_paper {
+namespace {  // one translation unit: paper_experiments.cpp
 
 typedef psc_test::Kernel Kernel;
 typedef psc_test::Point Point;
@@ -864,6 +865,7 @@ Test_cloud scored_everywhere(const Cloud& points, bool project)
   }
   return t;
 }
+} // namespace
 } // namespace psc_paper
 
 #endif

@@ -9,6 +9,7 @@
 #include "support.h"
 
 namespace psc_paper {
+namespace {  // one translation unit: paper_experiments.cpp
 
 // --- experiment 4 -----------------------------------------------------------------------
 
@@ -187,6 +188,7 @@ void experiment_timings(Context& ctx)
   gp << "unset multiplot\n";
 }
 
+} // namespace
 } // namespace psc_paper
 
 #endif

@@ -9,6 +9,7 @@
 #include "support.h"
 
 namespace psc_paper {
+namespace {  // one translation unit: paper_experiments.cpp
 
 // --- experiment 7: the ASO beyond the paper ----------------------------------------------
 //
@@ -207,6 +208,7 @@ void experiment_variants(Context& ctx)
   ctx.report.text(skipped_text(ctx, "variants"));
 }
 
+} // namespace
 } // namespace psc_paper
 
 #endif

@@ -11,9 +11,54 @@
 
 #include <CGAL/property_map.h>
 
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace CGAL {
+namespace Point_set_curvatures {
+namespace internal {
+
+// The ASO's settings from the named parameters of estimate_aso_curvatures() and
+// Algebraic_shape_operator_fit: the preset of aso_options, else of aso_variant (default
+// `default_variant`), overridden by weight_kernel, robust_orientation and normal_field_blend;
+// aso_projection and position_fit_blend. `area_weights`, if given, receives whether the
+// sample weights are the tangent Voronoi areas (the preset, overridden by sample_weights).
+// The constant kernel is refused (the ASO differentiates the weights).
+template <class NamedParameters>
+Aso_settings aso_settings_from(const NamedParameters& np, Aso_variant default_variant, const char* function_name,
+                               bool* area_weights = nullptr)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+  const Aso_variant_options preset =
+    choose_parameter(get_parameter(np, internal_np::aso_options),
+                     aso_variant_options(choose_parameter(get_parameter(np, internal_np::aso_variant), default_variant)));
+  const Apss_weight_kernel kernel = is_default_parameter<NamedParameters, internal_np::weight_kernel_t>::value
+                                      ? preset.weight_kernel
+                                      : weight_kernel_parameter(np);
+  if(kernel == Apss_weight_kernel::CONSTANT)
+    throw std::invalid_argument(std::string(function_name) + ": parameter 'weight_kernel': the ASO differentiates "
+                                "the kernel, Apss_weight_kernel::CONSTANT is not supported");
+  Aso_settings settings;
+  settings.projection = choose_parameter(get_parameter(np, internal_np::aso_projection), Aso_projection::CORRECTED_NORMAL);
+  settings.kernel_exponent = kernel_exponent(kernel);
+  settings.orient_neighbors = choose_parameter(get_parameter(np, internal_np::robust_orientation),
+                                               preset.robust_orientation);
+  settings.normal_field_blend = choose_parameter(get_parameter(np, internal_np::normal_field_blend),
+                                                 preset.normal_field_blend);
+  settings.position_fit_blend = choose_parameter(get_parameter(np, internal_np::position_fit_blend), 0.0);
+  if(!(settings.position_fit_blend >= 0 && settings.position_fit_blend <= 1))
+    throw std::invalid_argument(std::string(function_name) + ": parameter 'position_fit_blend' must lie in [0, 1]");
+  if(area_weights)
+    *area_weights = choose_parameter(get_parameter(np, internal_np::sample_weights), preset.sample_weights) ==
+                    Sample_weights::TANGENT_VORONOI_AREA;
+  return settings;
+}
+
+} // namespace internal
+} // namespace Point_set_curvatures
 
 /// \ingroup PkgPointSetCurvaturesRef
 ///
@@ -45,32 +90,24 @@ public:
   Algebraic_shape_operator_fit(const Point_3& evaluation_point, FT radius,
                                Aso_projection projection = Aso_projection::CORRECTED_NORMAL,
                                Apss_weight_kernel kernel = Apss_weight_kernel::SMOOTH)
-    : Algebraic_shape_operator_fit(evaluation_point, radius, projection,
-                                   Point_set_curvatures::Aso_variant_options{kernel, Sample_weights::UNIFORM, false, false})
+    : Algebraic_shape_operator_fit(evaluation_point, radius,
+                                   Point_set_curvatures::parameters::aso_projection(
+                                     projection, Point_set_curvatures::parameters::weight_kernel(kernel)))
   {}
 
-  /// Starts a fit at `evaluation_point` with the options of a variant of
-  /// `estimate_aso_curvatures()`, for example
-  /// `CGAL::Point_set_curvatures::aso_variant_options(CGAL::Aso_variant::ROBUST)`: its
-  /// `weight_kernel`, its `robust_orientation` (neighbours' normals flipped against their
-  /// weighted majority, `TWO_SHEETS` when they form a second sheet) and its
-  /// `normal_field_blend` (a least-squares fit of the normal field blended in where the
-  /// neighbourhood is one-sided, see
-  /// `CGAL::Point_set_curvatures::parameters::normal_field_blend()`); its `sample_weights` is
-  /// not read (sample weights are given per neighbour to `add_neighbor()`).
-  /// \throws std::invalid_argument as above.
-  Algebraic_shape_operator_fit(const Point_3& evaluation_point, FT radius, Aso_projection projection,
-                               const Point_set_curvatures::Aso_variant_options& options)
-    : m_frame(evaluation_point, CGAL::to_double(radius), "Algebraic_shape_operator_fit",
-              projection == Aso_projection::CORRECTED_NORMAL)
-  {
-    if(options.weight_kernel == Apss_weight_kernel::CONSTANT)
-      throw std::invalid_argument("Algebraic_shape_operator_fit: the constant kernel has no derivative");
-    m_settings.projection = projection;
-    m_settings.kernel_exponent = Point_set_curvatures::internal::kernel_exponent(options.weight_kernel);
-    m_settings.orient_neighbors = options.robust_orientation;
-    m_settings.normal_field_blend = options.normal_field_blend;
-  }
+  /// Starts a fit at `evaluation_point` with the estimator that these named parameters of
+  /// `estimate_aso_curvatures()` choose, with the same meanings: `aso_variant` (default
+  /// `Aso_variant::PAPER`, as the constructor above; `Aso_variant::ROBUST` is the cloud
+  /// function's default), `aso_options`, `weight_kernel`, `robust_orientation`,
+  /// `normal_field_blend`, `aso_projection`, `position_fit_blend`. The sample weights are
+  /// given per neighbour to `add_neighbor()`: `sample_weights` is not read.
+  /// \throws std::invalid_argument as above, or if `position_fit_blend` is outside [0, 1].
+  template <class NamedParameters>
+  Algebraic_shape_operator_fit(const Point_3& evaluation_point, FT radius, const NamedParameters& np)
+    : m_settings(Point_set_curvatures::internal::aso_settings_from(np, Aso_variant::PAPER, "Algebraic_shape_operator_fit")),
+      m_frame(evaluation_point, CGAL::to_double(radius), "Algebraic_shape_operator_fit",
+              m_settings.projection == Aso_projection::CORRECTED_NORMAL)
+  {}
 
   /// Adds the oriented point `(p, n)` with the quadrature weight `sample_weight` (positive:
   /// the area it stands for; 1 for the paper's equal weights); returns `true` if it lies at
@@ -137,8 +174,8 @@ public:
 
 private:
   typedef Point_set_curvatures::internal::Local_frame<GeomTraits> Frame;
+  Point_set_curvatures::internal::Aso_settings m_settings;  // (before m_frame, which reads it)
   Frame m_frame;
-  Point_set_curvatures::internal::Aso_settings m_settings;
   std::vector<double> m_columns[6];  // q (scaled centred frame) and n of the neighbours
   std::vector<double> m_weights;     // their sample weights
   bool m_weighted = false;           // some sample weight differs from 1

@@ -56,38 +56,16 @@ struct Aso_estimator : Estimator_base
 // measurement (user manual, "Beyond the paper").
 constexpr Aso_variant default_aso_variant = Aso_variant::ROBUST;
 
-// The ASO from the named parameters: the variant's preset, overridden by the options given
-// explicitly (weight_kernel, sample_weights, robust_orientation, normal_field_blend), the
-// projection and the refinement. The constant kernel is refused (the ASO differentiates the weights).
+// The ASO from the named parameters (aso_settings_from()), its sample weights and its
+// normal refinement.
 template <class NamedParameters>
 Aso_estimator aso_estimator_from(const NamedParameters& np)
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  using CGAL::parameters::is_default_parameter;
-  const Aso_variant_options preset =
-    aso_variant_options(choose_parameter(get_parameter(np, internal_np::aso_variant), default_aso_variant));
-  const Apss_weight_kernel kernel = is_default_parameter<NamedParameters, internal_np::weight_kernel_t>::value
-                                      ? preset.weight_kernel
-                                      : weight_kernel_parameter(np);
-  if(kernel == Apss_weight_kernel::CONSTANT)
-    throw std::invalid_argument("estimate_aso_curvatures: parameter 'weight_kernel': the ASO "
-                                "differentiates the kernel, Apss_weight_kernel::CONSTANT is not "
-                                "supported");
-  Aso_settings settings;
-  settings.projection = choose_parameter(get_parameter(np, internal_np::aso_projection), Aso_projection::CORRECTED_NORMAL);
-  settings.kernel_exponent = kernel_exponent(kernel);
-  settings.orient_neighbors = choose_parameter(get_parameter(np, internal_np::robust_orientation),
-                                               preset.robust_orientation);
-  settings.normal_field_blend = choose_parameter(get_parameter(np, internal_np::normal_field_blend),
-                                                 preset.normal_field_blend);
-  settings.position_fit_blend = choose_parameter(get_parameter(np, internal_np::position_fit_blend), 0.0);
-  if(!(settings.position_fit_blend >= 0 && settings.position_fit_blend <= 1))
-    throw std::invalid_argument("estimate_aso_curvatures: parameter 'position_fit_blend' must lie in [0, 1]");
-  Aso_estimator estimator(settings);
-  estimator.sample_weights = choose_parameter(get_parameter(np, internal_np::sample_weights), preset.sample_weights) ==
-                             Sample_weights::TANGENT_VORONOI_AREA;
-  estimator.refinement = choose_parameter(get_parameter(np, internal_np::normal_refinement), std::size_t(0));
+  bool area_weights = false;
+  Aso_estimator estimator(aso_settings_from(np, default_aso_variant, "estimate_aso_curvatures", &area_weights));
+  estimator.sample_weights = area_weights;
+  estimator.refinement = CGAL::parameters::choose_parameter(
+    CGAL::parameters::get_parameter(np, internal_np::normal_refinement), std::size_t(0));
   return estimator;
 }
 
@@ -188,6 +166,13 @@ Aso_estimator aso_estimator_from(const NamedParameters& np)
 ///       explicitly, override it}
 ///     \cgalParamType{`CGAL::Aso_variant`}
 ///     \cgalParamDefault{`CGAL::Aso_variant::ROBUST`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{Point_set_curvatures::parameters::aso_options}
+///     \cgalParamDescription{the four options below as one value, in place of the variant's
+///       preset (for example a preset with one member changed); the four options, given
+///       explicitly, override it}
+///     \cgalParamType{`CGAL::Point_set_curvatures::Aso_variant_options`}
+///     \cgalParamDefault{`aso_variant_options(variant)`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Point_set_curvatures::parameters::weight_kernel}
 ///     \cgalParamDescription{the kernel `(1 - d²/radius²)^P`: `SMOOTH` (P = 2, the paper's),

@@ -557,7 +557,7 @@ std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, dou
 /// (`CGAL::Normal_fit::QUADRIC`, 40 neighbours): its normals are nearly free of the
 /// curvature's bias and vary smoothly from point to point, which the ASO needs since it
 /// differentiates the normal field: on simulated scans the ASO on quadric normals comes
-/// within 1.5 times its error with exact normals, several times better than on PCA-plane
+/// within 1.5 times its error with exact normals, 2 to 17 times better than on PCA-plane
 /// normals (benchmark/README.md, "Scans without normals"). `CGAL::Normal_fit::PLANE` is the
 /// PCA plane (18 neighbours by default).
 ///

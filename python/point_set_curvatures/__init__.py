@@ -122,8 +122,8 @@ assert {s.name.lower(): s.value for s in ProjectionStatus} == dict(_core.PROJECT
 #: keys it fills with its default options; NaN in the others), ``min_neighbors`` (the default
 #: of the option), ``good_neighbors`` (the count from which its error stays within twice its
 #: error at 40 neighbours), ``paper_variant_good_neighbors`` (the same for
-#: ``aso_variant="paper"``), ``tiles`` (whether it takes ``tile``), ``automatic_scale``
-#: (whether it takes ``neighbors="auto"``) and ``options`` (its own options: mappings with
+#: ``aso_variant="paper"``), ``supports_tiles`` (whether it takes ``tile``),
+#: ``supports_automatic_scale`` (whether it takes ``neighbors="auto"``) and ``options`` (its own options: mappings with
 #: ``name``, ``values``, ``default`` and, for a choice, ``choices``).
 ESTIMATORS = types.MappingProxyType(
     {
@@ -473,10 +473,10 @@ def estimate_curvatures(
     """
     method = _method(method)
     allowed = set(_COMMON_OPTIONS) | set(_METHOD_OPTIONS[method])
-    if not ESTIMATORS[method]["tiles"]:
+    if not ESTIMATORS[method]["supports_tiles"]:
         allowed.discard("tile")
     opts, tile, weights = _options(f"method '{method}'", allowed, options)
-    radius, neighbors = _scale(radius, neighbors, automatic=ESTIMATORS[method]["automatic_scale"])
+    radius, neighbors = _scale(radius, neighbors, automatic=ESTIMATORS[method]["supports_automatic_scale"])
     progress = _progress(progress)
     points = _array(points, "points")
     if tile is None:  # a tile's arrays are a part of the cloud

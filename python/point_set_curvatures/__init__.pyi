@@ -21,7 +21,7 @@ Orientation = Union[str, Tuple[Literal["along", "towards"], Vec3]]
 # the names in lower case; any case is accepted at run time
 METHODS: Tuple[str, ...]
 # name -> name, function, summary, fields, min_neighbors, good_neighbors,
-# paper_variant_good_neighbors, tiles, automatic_scale, options
+# paper_variant_good_neighbors, supports_tiles, supports_automatic_scale, options
 ESTIMATORS: Mapping[str, Dict[str, Any]]
 
 __version__: str

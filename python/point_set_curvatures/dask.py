@@ -76,7 +76,7 @@ def _next_halo(index, halo, required, lo, hi):
     if halo > float(np.linalg.norm(np.asarray(hi, dtype=float) - np.asarray(lo, dtype=float))):
         raise RuntimeError(f"point_set_curvatures.dask: tile {index} asks for a halo of {required:g} although its "
                            f"halo {halo:g} holds the whole cloud")
-    return _core.next_halo(halo, float(required), 2.0 * halo)
+    return _core.next_halo(float(required), 2.0 * halo)
 
 
 def _first_halo(radius, neighbors, initial_halo, lo, hi, finite_count):

@@ -1,12 +1,12 @@
 // Copyright (c) 2026 The Point_set_curvatures authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// Python bindings (issue 13): what the translation units of the module share. Every option
-// of the C++ API is a runtime value here; each estimation function is instantiated once per
-// concurrency tag and per "tile or not", with every named parameter always passed: the
-// defaults the C++ functions would choose are passed explicitly, which gives the same
-// results bit for bit (the parameters are only read through choose_parameter, except
-// weight_kernel for the ASO and vcm_offset_radius, handled below).
+// Python bindings: what the translation units of the module share. Every option of the C++
+// API is a runtime value here; each estimation function is instantiated once per concurrency
+// tag and per "tile or not", with every named parameter always passed: the defaults the C++
+// functions would choose are passed explicitly, which gives the same results bit for bit (the
+// parameters are only read through choose_parameter; the ASO's four variant options go as one
+// aso_options value, and vcm_offset_radius is handled in its own file).
 
 #ifndef PSC_PYTHON_COMMON_H
 #define PSC_PYTHON_COMMON_H

@@ -20,7 +20,7 @@ namespace py = pybind11;
 
 // An estimator's description as a dict: name, function, summary, fields (a tuple of the
 // result's keys it fills), min_neighbors, good_neighbors, paper_variant_good_neighbors,
-// tiles, automatic_scale, options (dicts: name, values, default, choices).
+// supports_tiles, supports_automatic_scale, options (dicts: name, values, default, choices).
 inline py::dict estimator_to_dict(const CGAL::Point_set_curvatures::Estimator_description& e)
 {
   namespace F = CGAL::Point_set_curvatures::estimate_fields;
@@ -52,8 +52,8 @@ inline py::dict estimator_to_dict(const CGAL::Point_set_curvatures::Estimator_de
   d["min_neighbors"] = e.min_neighbors;
   d["good_neighbors"] = e.good_neighbors;
   d["paper_variant_good_neighbors"] = e.paper_variant_good_neighbors;
-  d["tiles"] = e.tiles;
-  d["automatic_scale"] = e.automatic_scale;
+  d["supports_tiles"] = e.supports_tiles;
+  d["supports_automatic_scale"] = e.supports_automatic_scale;
   d["options"] = py::tuple(options);
   return d;
 }

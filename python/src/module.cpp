@@ -73,7 +73,7 @@ py::dict estimate_curvatures(const std::string& method, const py::handle& points
   const CGAL::Point_set_curvatures::Estimator_description* described = CGAL::Point_set_curvatures::find_estimator(method);
   if(!described)
     throw py::value_error("unknown method '" + method + "'");
-  const Scale scale = read_scale(radius, neighbors, described->automatic_scale);
+  const Scale scale = read_scale(radius, neighbors, described->supports_automatic_scale);
   const Tile_arg t = read_tile(tile);
   const Cloud cloud = read_cloud(points, normals);
   std::vector<double> given;
@@ -285,12 +285,7 @@ PYBIND11_MODULE(_core, m)
                                                               n, k);
     },
     py::arg("box_min"), py::arg("box_max"), py::arg("points"), py::arg("neighbors"));
-  m.def(
-    "next_halo",
-    [](double halo, double required, double at_least) {
-      return CGAL::Point_set_curvatures::next_halo(CGAL::Point_set_curvatures::Halo_too_small(required, halo), at_least);
-    },
-    py::arg("halo"), py::arg("required"), py::arg("at_least"));
+  m.def("next_halo", &CGAL::Point_set_curvatures::next_halo, py::arg("required"), py::arg("at_least"));
   m.def("estimate_curvatures", &estimate_curvatures, py::arg("method"), py::arg("points"), py::arg("normals"),
         py::arg("radius"), py::arg("neighbors"), py::arg("threads"), py::arg("progress"), py::arg("options"),
         py::arg("tile"), py::arg("weights"));

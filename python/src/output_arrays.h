@@ -7,10 +7,10 @@
 #define PSC_PYTHON_OUTPUT_ARRAYS_H
 
 #include "common.h"
+#include "features.h"
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
-#include "features.h"
 
 #include <cstdint>
 #include <vector>

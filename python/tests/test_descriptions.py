@@ -49,8 +49,8 @@ def test_methods_and_options_are_the_library_description():
     assert psc.ESTIMATORS["jet"]["options"][0]["default"] == "2"
     assert psc.ESTIMATORS["apss"]["fields"] == ("normal", "mean", "normal_coherence")
     assert psc.AUTOMATIC_NEIGHBORS == (40, 640)
-    assert [m for m in psc.METHODS if not psc.ESTIMATORS[m]["tiles"]] == ["vcm"]
-    assert [m for m in psc.METHODS if psc.ESTIMATORS[m]["automatic_scale"]] == ["aso"]
+    assert [m for m in psc.METHODS if not psc.ESTIMATORS[m]["supports_tiles"]] == ["vcm"]
+    assert [m for m in psc.METHODS if psc.ESTIMATORS[m]["supports_automatic_scale"]] == ["aso"]
     points, normals = fibonacci_sphere(200)
     with pytest.raises(ValueError, match="does not apply"):
         psc.estimate_curvatures(points, normals, method="vcm", neighbors=20, tile=((0, 0, 0), (1, 1, 1), 1.0))

@@ -140,23 +140,31 @@ private:
 // Dask) follows ----
 
 /// \ingroup PkgPointSetCurvaturesRef
-/// The halo of a tile for neighbourhoods of radius `r`: `2 r`. An estimate reads the points
-/// within `r`, and the default ASO's sample weights (tangent Voronoi areas) of each of them
-/// read their own neighbours within `r`; no retry is ever needed.
+/// The halo of a tile for neighbourhoods of radius `r` (in the unit of the coordinates):
+/// `2 r`. An estimate reads the points within `r`, and the default ASO's sample weights
+/// (tangent Voronoi areas) of each of them read their own neighbours within `r`; no retry is
+/// ever needed. An infinite `r` gives an infinite halo (the whole cloud).
+/// \pre `r` is positive (the estimation functions refuse other radii).
 inline double halo_for_radius(double r) { return 2 * r; }
 
 /// \ingroup PkgPointSetCurvaturesRef
-/// A first guess of the halo of a tile for neighbourhoods of `k` points (by count), for `n`
-/// finite points spread over `box`: twice the radius of a disk holding `k` of them when they
-/// cover, evenly, a surface spanning the two largest extents of the box. A guess: where the
-/// density is lower, the estimation throws `Halo_too_small` and the tile is run again with
-/// `next_halo()`. Where the box's area overflows a double, it is computed from the halved
-/// extents (the guess is then infinite only if the halo itself overflows).
+/// A first guess of the halo of a tile for neighbourhoods of `k` points (by count), for
+/// `n` finite points spread over `box` (in the unit of the coordinates): twice the radius of
+/// a disk holding `k` of them when they cover, evenly, a surface spanning the two largest
+/// extents of the box. A guess: where the density is lower, the estimation throws
+/// `Halo_too_small` and the tile is run again with `next_halo()`. `n = 0` counts as 1; a box
+/// flat in two directions (points on a line) gives a tiny halo, grown by the retries. Where
+/// the box's area overflows a double, it is computed from the halved extents (the guess is
+/// then infinite only if the halo itself overflows); an infinite bound gives an infinite
+/// halo (the whole cloud).
+/// \pre `box` is not empty and its bounds are not NaN.
 inline double halo_guess_for_count(const Bbox_3& box, std::size_t n, std::size_t k)
 {
   double e[3] = {box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()};
   std::sort(e, e + 3);
   const double area = (std::max)(e[1] * e[2], 1e-300);
+  // (pi to 15 digits: the tool's guess since its first version; with more digits one tile of a
+  // shipped LAS run would be read once more, and the tool's summary would change)
   const double per_point = double(k) / (3.14159265358979 * double((std::max)(std::size_t(1), n)));
   const double halo = 2 * std::sqrt(area * per_point);
   if(std::isfinite(halo))
@@ -167,12 +175,14 @@ inline double halo_guess_for_count(const Bbox_3& box, std::size_t n, std::size_t
 }
 
 /// \ingroup PkgPointSetCurvaturesRef
-/// The halo to run a tile again with after its estimation threw `e`: `e.required_halo()`, at
-/// least `at_least`, so that the tile's range grows at every retry (the distance to the
-/// nearest point the range left out where the driver knows it, else twice the last halo).
-inline double next_halo(const Halo_too_small& e, double at_least)
+/// The halo to run a tile again with after its estimation threw `Halo_too_small`:
+/// `required_halo` (its `required_halo()`), at least `at_least`, so that the tile's range
+/// grows at every retry when `at_least` exceeds the last halo (the distance to the nearest
+/// point the range left out where the driver knows it, else twice the last halo). A NaN
+/// `required_halo` gives `at_least`.
+inline double next_halo(double required_halo, double at_least)
 {
-  return e.required_halo() > at_least ? e.required_halo() : at_least;
+  return required_halo > at_least ? required_halo : at_least;
 }
 
 /// \ingroup PkgPointSetCurvaturesRef

@@ -120,10 +120,11 @@ struct Estimator_description
   std::size_t good_neighbors;
   /// `good_neighbors` of `CGAL::Aso_variant::PAPER` (the ASO); `good_neighbors` otherwise.
   std::size_t paper_variant_good_neighbors;
-  /// Whether it takes `parameters::tile()` (not VCM, whose Voronoi cells need every point).
-  bool tiles;
-  /// Whether it takes `parameters::automatic_scale()` (the ASO).
-  bool automatic_scale;
+  /// Whether it supports `parameters::tile()` (not VCM, whose Voronoi cells need every
+  /// point: it throws `std::invalid_argument`).
+  bool supports_tiles;
+  /// Whether it supports `parameters::automatic_scale()` (the ASO; the others ignore it).
+  bool supports_automatic_scale;
   /// Its own options, `option_count` of them (null if none).
   const Estimator_option* options;
   /// The number of `options`.
@@ -177,8 +178,8 @@ inline constexpr Estimator_option vcm_options[] = {
   {"vcm_offset_radius", "positive real", "the radius (by count: the median radius)", {}},
 };
 
-// What an estimator takes beyond the common options.
-struct Takes
+// What an estimator supports beyond the common options.
+struct Supports
 {
   bool tiles = true;
   bool automatic_scale = false;
@@ -187,17 +188,23 @@ struct Takes
 template <std::size_t N>
 constexpr Estimator_description described(const char* name, const char* function, const char* summary,
                                           unsigned fields, std::size_t min_neighbors, std::size_t good_neighbors,
-                                          std::size_t paper_good, Takes takes, const Estimator_option (&options)[N])
+                                          std::size_t paper_good, Supports supports,
+                                          const Estimator_option (&options)[N])
 {
-  return Estimator_description{name,           function,    summary,     fields, min_neighbors, good_neighbors,
-                               paper_good,     takes.tiles, takes.automatic_scale, options, N};
+  return Estimator_description{name,       function,       summary,
+                               fields,     min_neighbors,  good_neighbors,
+                               paper_good, supports.tiles, supports.automatic_scale,
+                               options,    N};
 }
 
 constexpr Estimator_description described(const char* name, const char* function, const char* summary,
-                                          unsigned fields, std::size_t min_neighbors, std::size_t good_neighbors)
+                                          unsigned fields, std::size_t min_neighbors, std::size_t good_neighbors,
+                                          Supports supports = {})
 {
-  return Estimator_description{name, function, summary, fields, min_neighbors, good_neighbors, good_neighbors,
-                               true, false, nullptr, 0};
+  return Estimator_description{name,           function,       summary,
+                               fields,         min_neighbors,  good_neighbors,
+                               good_neighbors, supports.tiles, supports.automatic_scale,
+                               nullptr,        0};
 }
 
 } // namespace internal
@@ -210,11 +217,11 @@ inline constexpr Estimator_description estimators[] = {
   internal::described("aso", "estimate_aso_curvatures",
                       "Algebraic Shape Operator (Lejemble et al. 2021): full curvature tensor",
                       estimate_fields::tensor | estimate_fields::normal_coherence, default_min_neighbors::aso, 12, 20,
-                      internal::Takes{true, true}, internal::aso_options),
+                      internal::Supports{true, true}, internal::aso_options),
   internal::described("apss", "estimate_apss_curvatures",
                       "APSS algebraic sphere: corrected normal and mean curvature only",
                       estimate_fields::normal | estimate_fields::mean_curvature | estimate_fields::normal_coherence,
-                      default_min_neighbors::apss, 20, 20, internal::Takes{}, internal::apss_options),
+                      default_min_neighbors::apss, 20, 20, internal::Supports{}, internal::apss_options),
   internal::described("barycenter", "estimate_barycenter_curvatures", "baseline: distance to the barycentre",
                       estimate_fields::mean_curvature, default_min_neighbors::barycenter, 25),
   internal::described("pca_plane", "estimate_pca_plane_curvatures", "baseline: distance to the PCA plane",
@@ -222,11 +229,11 @@ inline constexpr Estimator_description estimators[] = {
   internal::described("pss", "estimate_pss_curvatures", "baseline: point set surface", estimate_fields::tensor,
                       default_min_neighbors::pss, 20),
   internal::described("jet", "estimate_jet_curvatures", "baseline: osculating jet", estimate_fields::tensor,
-                      default_min_neighbors::jet, 12, 12, internal::Takes{}, internal::jet_options),
+                      default_min_neighbors::jet, 12, 12, internal::Supports{}, internal::jet_options),
   internal::described("vcm", "estimate_vcm_curvatures", "baseline: Voronoi covariance measure",
                       estimate_fields::normal | estimate_fields::principal_curvatures |
                         estimate_fields::principal_directions,
-                      default_min_neighbors::vcm, 25, 25, internal::Takes{false, false}, internal::vcm_options),
+                      default_min_neighbors::vcm, 25, 25, internal::Supports{false, false}, internal::vcm_options),
   internal::described("wavejet", "estimate_wavejet_curvatures", "baseline: wavejet", estimate_fields::tensor,
                       default_min_neighbors::wavejet, 12),
 };

@@ -482,6 +482,37 @@ inline Aso_variant_options aso_variant_options(Aso_variant variant)
   return {Apss_weight_kernel::SMOOTH_CUBIC, Sample_weights::TANGENT_VORONOI_AREA, true, true};
 }
 
+namespace internal_np {
+
+enum aso_options_t { aso_options };
+
+} // namespace internal_np
+
+namespace parameters {
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// Named parameter of `estimate_aso_curvatures()`: the four options of
+/// `CGAL::Point_set_curvatures::Aso_variant_options` as one value, in place of the preset of
+/// `aso_variant()` (so the variant no longer matters for them), for example a preset with one
+/// option changed:
+///
+///     namespace PSC = CGAL::Point_set_curvatures;
+///     PSC::Aso_variant_options o = PSC::aso_variant_options(CGAL::Aso_variant::ROBUST);
+///     o.sample_weights = CGAL::Sample_weights::UNIFORM;
+///     CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(points, r, PSC::parameters::aso_options(o));
+///
+/// `weight_kernel()`, `sample_weights()`, `robust_orientation()` and `normal_field_blend()`
+/// given as well override the corresponding member. Default: the preset of the variant.
+template <class NamedParameters = CGAL::parameters::Default_named_parameters>
+CGAL::Named_function_parameters<Aso_variant_options, internal_np::aso_options_t, NamedParameters>
+aso_options(const Aso_variant_options& options, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return CGAL::Named_function_parameters<Aso_variant_options, internal_np::aso_options_t, NamedParameters>(options,
+                                                                                                           np);
+}
+
+} // namespace parameters
+
 namespace internal {
 
 // P of the kernel (1 - d^2/r^2)^P; 0 for the constant kernel.
