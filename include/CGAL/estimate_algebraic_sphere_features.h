@@ -220,7 +220,7 @@ sphere_features_at_every_point(const PointRange& points, bool radius_given, doub
   // Weights given with sample_weight_map replace them.
   std::vector<double> areas = given_sample_weights(points, np, function_name);
   if(has_sample_weight_map<NamedParameters>())
-    options.sample_weights = &areas;
+    options.point_weights = &areas;
   else if(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::sample_weights),
                                              Sample_weights::UNIFORM) == Sample_weights::TANGENT_VORONOI_AREA)
   {
@@ -232,7 +232,7 @@ sphere_features_at_every_point(const PointRange& points, bool radius_given, doub
     areas = tangent_voronoi_areas<ConcurrencyTag>(points, radius_given, radius, k,
                                                   NP_helper::get_const_point_map(points, np),
                                                   NP_helper::get_normal_map(points, np), o);
-    options.sample_weights = &areas;
+    options.point_weights = &areas;
   }
   return evaluate_at_every_point<Algebraic_sphere_features<Geom_traits>, ConcurrencyTag>(
     points, radius_given, radius, np, options, Sphere_features_at_point<Geom_traits>{kernel, min_count});

@@ -26,7 +26,7 @@ struct Apss_estimator : Estimator_base
   {
     check_tangent_spread = false;  // tested by fit_algebraic_sphere
     min_neighbors = default_min_neighbors::apss;
-    reads_sample_weights = true;
+    takes_weight_map = true;
   }
   template <class NamedParameters>
   explicit Apss_estimator(const NamedParameters& np)
@@ -36,8 +36,8 @@ struct Apss_estimator : Estimator_base
     using CGAL::parameters::get_parameter;
     kernel = weight_kernel_parameter(np);
     orient_neighbors = choose_parameter(get_parameter(np, internal_np::robust_orientation), false);
-    sample_weights = choose_parameter(get_parameter(np, internal_np::sample_weights), Sample_weights::UNIFORM) ==
-                     Sample_weights::TANGENT_VORONOI_AREA;
+    area_weights = choose_parameter(get_parameter(np, internal_np::sample_weights), Sample_weights::UNIFORM) ==
+                   Sample_weights::TANGENT_VORONOI_AREA;
   }
 
   template <class Kernel>

@@ -29,7 +29,7 @@ struct Aso_estimator : Estimator_base
   {
     normalize_normals = (s.projection == Aso_projection::CORRECTED_NORMAL);
     check_tangent_spread = false;  // tested on the first pass's moments
-    reads_sample_weights = true;
+    takes_weight_map = true;
     min_neighbors = default_min_neighbors::aso;
   }
 
@@ -63,7 +63,7 @@ Aso_estimator aso_estimator_from(const NamedParameters& np)
 {
   bool area_weights = false;
   Aso_estimator estimator(aso_settings_from(np, default_aso_variant, "estimate_aso_curvatures", &area_weights));
-  estimator.sample_weights = area_weights;
+  estimator.area_weights = area_weights;
   estimator.refinement = CGAL::parameters::choose_parameter(
     CGAL::parameters::get_parameter(np, internal_np::normal_refinement), std::size_t(0));
   return estimator;

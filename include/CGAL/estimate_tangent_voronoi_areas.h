@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // The sample weights of the estimators as a function of their own: the area of every
-// point's tangent Voronoi cell (internal/sample_weights.h), written into a property map that
+// point's tangent Voronoi cell (internal/tangent_voronoi_area.h), written into a property map that
 // estimate_aso_curvatures(), estimate_apss_curvatures() and
 // estimate_algebraic_sphere_features() then read (named parameter sample_weight_map), so that
 // several estimators of one run share one area pass.

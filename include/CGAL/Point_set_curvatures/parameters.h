@@ -409,7 +409,9 @@ vcm_offset_radius(double offset_radius,
 // ---- Algebraic sphere features, projection and flow: weight kernel, normals ----
 /// \ingroup PkgPointSetCurvaturesRef
 /// Weight kernel of the APSS algebraic sphere fit (Equation 5 of Lejemble et al. 2021), for
-/// a neighbour at distance `d` from the evaluation point and a radius `r`.
+/// a neighbour at distance `d` from the evaluation point and a radius `r`; also that of the
+/// ASO, which fits the same sphere (the name is the paper's). `SMOOTH` is the paper's kernel,
+/// the least smooth of the three polynomial ones at `d = r`.
 enum class Apss_weight_kernel
 {
   /// `(1 - d²/r²)²` for `d < r`: the kernel of the paper, differentiable (the Algebraic

@@ -83,7 +83,7 @@ struct Aso_first_order_sums
 // sampling and imperfect normals"), all keeping the derivatives through the kernel exact:
 // - Kernel: Power_kernel<P>, w = (1 - |q|^2)^P (weight_kernel.h); the paper's is P = 2.
 // - Weighted: every neighbour's weight is multiplied by its sample weight a_i
-//   (nb.sample_weight, e.g. the area of its tangent Voronoi cell, sample_weights.h): the
+//   (nb.sample_weight, e.g. the area of its tangent Voronoi cell, tangent_voronoi_area.h): the
 //   sums become a quadrature of the surface integrals with area weights instead of equal
 //   weights. a_i does not depend on the evaluation point, so it multiplies w, grad w and
 //   Hess w alike.

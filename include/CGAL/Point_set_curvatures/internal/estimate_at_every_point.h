@@ -12,7 +12,7 @@
 #include <CGAL/Point_set_curvatures/internal/estimation_driver.h>
 #include <CGAL/Point_set_curvatures/internal/evaluate_at_every_point.h>
 #include <CGAL/Point_set_curvatures/internal/knn_neighborhoods.h>
-#include <CGAL/Point_set_curvatures/internal/sample_weights.h>
+#include <CGAL/Point_set_curvatures/internal/tangent_voronoi_area.h>
 #include <CGAL/Point_set_curvatures/parameters.h>
 #include <CGAL/property_map.h>
 
@@ -53,7 +53,7 @@ struct Area_at_point
   }
 };
 
-// Per input point, the area of its tangent Voronoi cell (sample_weights.h) among its
+// Per input point, the area of its tangent Voronoi cell (tangent_voronoi_area.h) among its
 // neighbours, 0 for unusable points. The neighbourhoods are a quarter of the estimation's
 // (radius r/2, or the k/4 nearest): a cell only depends on the nearest samples, and the
 // square that bounds it (half-side a quarter of the estimation's radius) is reached only
@@ -208,9 +208,9 @@ struct Estimate_at_point
 
 // Per-point curvature estimation, from `estimator` (a copyable, stateless
 // Local_estimate(const Neighborhood&) functor deriving from Estimator_base). With
-// estimator.sample_weights, a first pass computes the tangent Voronoi areas (for an
-// estimator with reads_sample_weights, the weights of the named parameter sample_weight_map,
-// if given, replace them, whatever estimator.sample_weights says); with
+// estimator.area_weights, a first pass computes the tangent Voronoi areas (for an
+// estimator with takes_weight_map, the weights of the named parameter sample_weight_map,
+// if given, replace them, whatever estimator.area_weights says); with
 // estimator.refinement = n, n passes of its normal fit (refinement_estimate()) each replace
 // the input normals by their corrected normals before the estimation. The callback sees the
 // passes as consecutive shares of [0, 1]; cancelled before the estimation pass, every point
@@ -251,12 +251,12 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
   // Weights given (sample_weight_map) replace the area pass of the estimators that use sample
   // weights; they are read here, in range order. With a tile they are taken as the whole
   // cloud's (the halo needs one radius): the caller's responsibility (documented).
-  const bool weights_given = has_sample_weight_map<NamedParameters>() && estimator.reads_sample_weights;
+  const bool weights_given = has_sample_weight_map<NamedParameters>() && estimator.takes_weight_map;
   const std::vector<double> given_weights =
     weights_given ? given_sample_weights(points, np, function_name) : std::vector<double>();
   if(weights_given)
-    options.sample_weights = &given_weights;
-  const bool area_pass = estimator.sample_weights && !weights_given;
+    options.point_weights = &given_weights;
+  const bool area_pass = estimator.area_weights && !weights_given;
   if(!area_pass && estimator.refinement == 0)
     return evaluate_with_maps<Estimate, ConcurrencyTag>(points, radius_given, radius, visit_k, point_map,
                                                         normal_map, options, evaluation(false));
@@ -330,7 +330,7 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
   }
   if(area_pass)
   {
-    options.sample_weights = &areas;
+    options.point_weights = &areas;
     options.reach = radius_given ? 2 : 1;
     if(tile_by_count)
       neighbor_extent = &own_neighbor_extent;

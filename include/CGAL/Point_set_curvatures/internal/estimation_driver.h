@@ -87,11 +87,11 @@ struct Estimator_base
   std::size_t min_neighbors = 12;
   // Whether the driver computes tangent Voronoi areas first and hands them to the estimator
   // (nb.sample_weight), and how many times the estimation reruns on its own normals.
-  bool sample_weights = false;
+  bool area_weights = false;
   std::size_t refinement = 0;
   // Whether the estimator multiplies its weights by nb.sample_weight, so that weights given
   // with the named parameter sample_weight_map are read (and checked) for it.
-  bool reads_sample_weights = false;
+  bool takes_weight_map = false;
 };
 
 template <class ConcurrencyTag>
@@ -187,7 +187,7 @@ struct Neighborhood_options
   Tile tile;
   double reach = 1;
   // Per input point, a weight the visitor receives per neighbour (nb.sample_weight), or null.
-  const std::vector<double>* sample_weights = nullptr;
+  const std::vector<double>* point_weights = nullptr;
   // Per input point, whether it is visited (non-zero), or null for every point: the others
   // (of the tile's own points) stay NOT_COMPUTED but are neighbours as usual.
   const std::vector<char>* visit = nullptr;
@@ -372,12 +372,12 @@ void read_and_sort(const PointRange& points, PointMap point_map, NormalMap norma
   });
 
   // Sample weights in grid order.
-  if(options.sample_weights)
+  if(options.point_weights)
   {
     cloud.sample_weight.resize(n_usable);
     for_index_chunks<ConcurrencyTag>(n_usable, [&](std::size_t first, std::size_t last) {
       for(std::size_t k = first; k < last; ++k)
-        cloud.sample_weight[k] = (*options.sample_weights)[cloud.input_index[k]];
+        cloud.sample_weight[k] = (*options.point_weights)[cloud.input_index[k]];
     });
   }
 

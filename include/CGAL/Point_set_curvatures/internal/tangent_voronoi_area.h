@@ -1,8 +1,9 @@
 // Copyright (c) 2026 The Point_set_curvatures authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// Sample weights: the area each sample stands for, so that the sums of the fits are a
-// quadrature of surface integrals with area weights instead of equal weights.
+// Tangent Voronoi areas as sample weights: the area each sample stands for, so that the sums
+// of the fits are a quadrature of surface integrals with area weights instead of equal
+// weights.
 //
 // The fits' sums (algebraic_sphere.h, algebraic_shape_operator.h) estimate surface integrals
 // of the kernel times polynomials, with the samples as nodes. With equal weights the
@@ -20,8 +21,8 @@
 // the cell's farthest vertex (it cannot cut the cell any more). The disk bounds the weight of
 // isolated samples. Copies of p_j (at distance 0) share its cell.
 
-#ifndef CGAL_POINT_SET_CURVATURES_INTERNAL_SAMPLE_WEIGHTS_H
-#define CGAL_POINT_SET_CURVATURES_INTERNAL_SAMPLE_WEIGHTS_H
+#ifndef CGAL_POINT_SET_CURVATURES_INTERNAL_TANGENT_VORONOI_AREA_H
+#define CGAL_POINT_SET_CURVATURES_INTERNAL_TANGENT_VORONOI_AREA_H
 
 #include <CGAL/Point_set_curvatures/internal/local_estimate.h>
 
