@@ -12,6 +12,7 @@
 
 #include "../tools/progress_line.h"
 
+#include <CGAL/Point_set_curvatures/estimators.h>
 #include <CGAL/Point_set_curvatures/internal/knn_neighborhoods.h>
 #include <CGAL/estimate_apss_curvatures.h>
 #include <CGAL/estimate_aso_curvatures.h>
@@ -28,6 +29,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -39,6 +41,7 @@
 #include <functional>
 #include <limits>
 #include <random>
+#include <set>
 #include <sstream>
 #include <string>
 #include <tuple>
@@ -3311,6 +3314,45 @@ TEST_CASE("tool: without normals, the default pipeline and what the summary says
   CHECK(run_tool(q(file("terrain.xyz")) + " " + q(file("x.csv")) + " --position-blend 1.5").status == 2);
   CHECK(run_tool(q(file("terrain.xyz")) + " " + q(file("x.csv")) + " --normal-fit cubic").status == 2);
   CHECK(run_tool(q(file("terrain.xyz")) + " " + q(file("x.csv")) + " --normal-neighbors 5").status == 2);
+}
+
+// --help is the reference list of the options: the library's methods and their least counts,
+// and the manual's section on the tool names every option it lists, and no other.
+TEST_CASE("tool: --help lists the library's methods, and the manual names exactly the options of --help")
+{
+  const Run help = run_tool("--help");
+  REQUIRE(help.status == 0);
+  std::string methods;
+  for(const CGAL::Point_set_curvatures::Estimator_description& e : CGAL::Point_set_curvatures::estimators)
+    methods += (methods.empty() ? "" : "|") + std::string(e.name);
+  CHECK(help.out.find("--method M         estimator: " + methods + " (default aso)") != std::string::npos);
+  std::set<std::string> in_help, in_manual;
+  std::istringstream lines(help.out);
+  for(std::string line; std::getline(lines, line);)
+    if(line.rfind("  --", 0) == 0)
+      in_help.insert(line.substr(2, line.find(' ', 2) - 2));
+  REQUIRE(in_help.size() >= 20);
+  const std::string manual = read_text(repo_data("../doc/user_manual.md"));
+  const std::size_t from = manual.find("{#psc_tool}"), to = manual.find("\n## ", from);
+  REQUIRE(from != std::string::npos);
+  const std::string section = manual.substr(from, to - from);
+  for(std::size_t at = section.find("`--"); at != std::string::npos; at = section.find("`--", at + 1))
+  {
+    std::size_t end = at + 3;
+    while(end < section.size() && (std::islower(static_cast<unsigned char>(section[end])) || section[end] == '-'))
+      ++end;
+    in_manual.insert(section.substr(at + 1, end - at - 1));
+  }
+  for(const std::string& o : in_help)
+  {
+    INFO(o << " is in --help: is it in the manual's section on the tool?");
+    CHECK(in_manual.count(o) == 1);
+  }
+  for(const std::string& o : in_manual)
+  {
+    INFO(o << " is in the manual's section on the tool: is it in --help?");
+    CHECK(in_help.count(o) == 1);
+  }
 }
 
 // The default scale: automatic for the ASO's robust variant only (with its mean_error
