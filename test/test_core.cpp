@@ -1554,6 +1554,26 @@ std::vector<Oriented_point> tile_range(const std::vector<Oriented_point>& pts, c
   return range;
 }
 
+// Of a tile's estimates `part` on `range` (`origin[j]`: the input index of its j-th point),
+// how many belong to the tile's own points, and how many of those differ from the whole
+// run's `whole` (bitwise).
+struct Own_points
+{
+  std::size_t own = 0, differ = 0;
+};
+Own_points compare_own(const std::vector<Oriented_point>& range, const std::vector<std::size_t>& origin,
+                       const PSC::Tile& t, const std::vector<Estimate>& part, const std::vector<Estimate>& whole)
+{
+  Own_points c;
+  for(std::size_t j = 0; j < range.size(); ++j)
+    if(t.owns(range[j].first.x(), range[j].first.y(), range[j].first.z()))
+    {
+      ++c.own;
+      c.differ += !same_estimate(part[j], whole[origin[j]]);
+    }
+  return c;
+}
+
 } // namespace
 
 TEST_CASE("Tiles: every point estimated once, bitwise as in the whole-cloud run, by radius and by count", "[aso][apss][tile]")
@@ -1723,15 +1743,9 @@ TEST_CASE("Tiles: bitwise with a far outlier, Halo_too_small below k points, pro
   std::vector<std::size_t> origin;
   const auto range = tile_range(pts, t, origin);
   const auto part = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(range, r, PSC::parameters::tile(t, maps()));
-  std::size_t own = 0, differ = 0;
-  for(std::size_t j = 0; j < range.size(); ++j)
-    if(t.owns(range[j].first.x(), range[j].first.y(), range[j].first.z()))
-    {
-      ++own;
-      differ += !same_estimate(part[j], whole[origin[j]]);
-    }
-  CHECK(own > 9000);
-  CHECK(differ == 0);  // 9949 of 9999 differed before the fix
+  const Own_points compared = compare_own(range, origin, t, part, whole);
+  CHECK(compared.own > 9000);
+  CHECK(compared.differ == 0);  // 9949 of 9999 differed before the fix
 
   // five points alone at x = 5 with k = 25: their 25 nearest are not in the range
   std::vector<Oriented_point> few;
@@ -1812,15 +1826,9 @@ TEST_CASE("Tiles: the halo rule (halo_for_radius, halo_guess_for_count, next_hal
     }
   }
   CHECK(retries >= 1);
-  std::size_t own = 0, differ = 0;
-  for(std::size_t j = 0; j < range.size(); ++j)
-    if(PSC::Tile(core, halo).owns(range[j].first.x(), range[j].first.y(), range[j].first.z()))
-    {
-      ++own;
-      differ += !same_estimate(part[j], whole[origin[j]]);
-    }
-  CHECK(own == 20 * 20);  // the core is half-open
-  CHECK(differ == 0);
+  const Own_points compared = compare_own(range, origin, PSC::Tile(core, halo), part, whole);
+  CHECK(compared.own == 20 * 20);  // the core is half-open
+  CHECK(compared.differ == 0);
 }
 
 TEST_CASE("aso_options: a variant's options as one value, overridden by the options given", "[aso][api]")
@@ -2084,12 +2092,9 @@ TEST_CASE("Automatic scale: sequential == parallel, tiles == whole, normals too"
       {
         const auto e = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
           range, PSC::parameters::neighbor_count(40, PSC::parameters::automatic_scale(320, PSC::parameters::tile(tile, maps()))));
-        for(std::size_t j = 0; j < range.size(); ++j)
-          if(tile.owns(range[j].first.x(), range[j].first.y(), range[j].first.z()))
-          {
-            ++owned;
-            differ += !same_estimate(e[j], par[origin[j]]);
-          }
+        const Own_points compared = compare_own(range, origin, tile, e, par);
+        owned += compared.own;
+        differ += compared.differ;
         break;
       }
       catch(const PSC::Halo_too_small&)

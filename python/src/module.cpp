@@ -248,21 +248,7 @@ PYBIND11_MODULE(_core, m)
   for(const CGAL::Point_set_curvatures::Estimator_description& e : CGAL::Point_set_curvatures::estimators)
     estimators.append(estimator_to_dict(e));
   m.attr("ESTIMATORS") = py::tuple(estimators);
-  {
-    namespace PSC = CGAL::Point_set_curvatures;
-    auto names = [](const auto& array) {
-      py::list l;
-      for(const char* n : array)
-        l.append(n);
-      return py::tuple(l);
-    };
-    py::dict enums;  // option -> the names of its values, indexed by the C++ enumerator's value
-    enums["aso_variant"] = names(PSC::aso_variant_names);
-    enums["weight_kernel"] = names(PSC::weight_kernel_names);
-    enums["sample_weights"] = names(PSC::sample_weights_names);
-    enums["aso_projection"] = names(PSC::aso_projection_names);
-    m.attr("ENUM_NAMES") = enums;
-  }
+  m.attr("ENUM_NAMES") = enum_names_to_dict();
   m.attr("AUTOMATIC_NEIGHBORS") = py::make_tuple(CGAL::Point_set_curvatures::automatic_scale_ladder::smallest,
                                                  CGAL::Point_set_curvatures::automatic_scale_ladder::largest);
 
