@@ -1977,6 +1977,29 @@ TEST_CASE("tool: LAS 1.2-1.4 point formats 0-10 with their fields as attributes,
     CHECK(read_text(file("scanner_tiled.ply")) == a);
   }
   {
+    // pulses without a direction (x(t) y(t) z(t) zero: the last 12 bytes of the first 10
+    // records) keep +z, said alike in memory and in tiles (one estimation step for both)
+    std::string las = read_text(file("w4.las"));
+    std::uint32_t first = 0;
+    std::uint16_t length = 0;
+    std::memcpy(&first, &las[96], 4);
+    std::memcpy(&length, &las[105], 2);
+    for(std::size_t i = 0; i < 10; ++i)
+      std::fill_n(las.begin() + first + (i + 1) * length - 12, 12, '\0');
+    write_text(file("undirected.las"), las);
+    const std::string said = "warning: --orient scanner: 10 points have no pulse direction and keep normals "
+                             "oriented to +z";
+    const Run whole = run_tool(q(file("undirected.las")) + " " + q(file("u.ply")) + " --radius 0.5 --orient scanner");
+    const Run tiled = run_tool(q(file("undirected.las")) + " " + q(file("u_tiled.ply")) +
+                               " --radius 0.5 --orient scanner --memory-limit 400K");
+    REQUIRE(whole.status == 0);
+    REQUIRE(tiled.status == 0);
+    CHECK(whole.err.find(said) != std::string::npos);
+    CHECK(tiled.err.find(said) != std::string::npos);
+    CHECK(tiled.out.find("  tiles") != std::string::npos);
+    CHECK(read_text(file("u_tiled.ply")) == read_text(file("u.ply")));
+  }
+  {
     const Run r = run_tool(q(file("f3.las")) + " " + q(file("x.ply")) + " --radius 0.5 --orient scanner");
     CHECK(r.status == 2);
     CHECK(r.err.find("--orient scanner: ") != std::string::npos);

@@ -49,16 +49,20 @@ Orientation_choice choose_orientation(const Options& o, bool las, bool has_pulse
   return c;
 }
 
-std::size_t estimate_normals(Point_set& ps, const Options& o, Orientation_choice& choice, const Progress& progress)
+std::size_t estimate_normals(Point_set& ps, const Options& o, Orientation_choice& choice, const Progress& progress,
+                             const PSC::Tile& tile)
 {
-  ps.add_normal_map();
+  if(!ps.has_normal_map())
+    ps.add_normal_map();
   const std::size_t without = CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
     ps, PSC::parameters::neighbor_count(
           normal_neighbor_count(o),
           PSC::parameters::automatic_scale(
             normal_automatic_largest(o),
-            PSC::parameters::normal_fit(o.normal_fit, PSC::parameters::normal_orientation(
-                                                        choice.orientation, CGAL::parameters::callback(progress))))));
+            PSC::parameters::normal_fit(
+              o.normal_fit, PSC::parameters::normal_orientation(
+                              choice.orientation,
+                              PSC::parameters::tile(tile, CGAL::parameters::callback(progress)))))));
   if(interrupted)
     throw Cancelled();
   if(choice.orientation.kind == CGAL::Normal_orientation::AUTOMATIC)

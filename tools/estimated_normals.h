@@ -13,6 +13,7 @@
 #include "read_point_cloud.h"
 #include "tool_support.h"
 
+#include <CGAL/Point_set_curvatures/Tile.h>
 #include <CGAL/estimate_oriented_normals.h>
 
 #include <array>
@@ -63,10 +64,12 @@ struct Orientation_choice
 Orientation_choice choose_orientation(const Options& o, bool las, bool has_pulses);
 
 // Estimates the normals of the point set as the options say, oriented as `choice` says (its
-// text completed for the automatic orientation). Returns the number of points left without a
-// normal.
-std::size_t estimate_normals(Point_set& ps, const Options& o, Orientation_choice& choice,
-                             const Progress& progress);
+// text completed for the automatic orientation): of every point, or of the tile's own points
+// (the others get a zero normal; the tile needs an orientation along a vector). Returns the
+// number of points left without a normal. Throws Cancelled when interrupted,
+// CGAL::Point_set_curvatures::Halo_too_small when the tile's halo is too small.
+std::size_t estimate_normals(Point_set& ps, const Options& o, Orientation_choice& choice, const Progress& progress,
+                             const CGAL::Point_set_curvatures::Tile& tile);
 
 } // namespace psc_tool
 

@@ -84,6 +84,8 @@ public:
         throw Cancelled();
     }
   }
+  // Bytes consumed since the start of the file.
+  std::uint64_t consumed() const { return m_consumed; }
   // Bytes of the file after the current position (from its size when opened).
   std::uint64_t remaining() const { return m_size > m_consumed ? m_size - m_consumed : 0; }
   bool at_end() { return fill(1) == 0; }

@@ -9,7 +9,8 @@
 // command_line.cpp, the estimators run from methods.cpp, the files are read and written in
 // read_*.cpp and write_point_cloud.cpp (the output file's safety in output_file.cpp), normals
 // are estimated in estimated_normals.cpp, interruption and progress are in interruption.cpp and
-// progress_bar.h, and inputs larger than memory go through tiled_run.cpp.
+// progress_bar.h. Every run estimates through range_estimator.h: an input that fits in memory
+// as one tile covering all of space, a larger one tile by tile (tiled_run.cpp).
 // Run with --help for the options. Exit status: 0 on success, 2 on invalid arguments or
 // unreadable/malformed/unwritable files (one line on stderr, no output file left behind), 3
 // when no point got a valid estimate (the output written, the reason on stderr), 130 when
@@ -28,6 +29,7 @@
 #include "methods.h"
 #include "output_file.h"
 #include "progress_bar.h"
+#include "range_estimator.h"
 #include "read_point_cloud.h"
 #include "run_summary.h"
 #include "tiled_run.h"
@@ -284,6 +286,13 @@ void fill_point_set(Point_set& ps, const std::vector<double>& xyz, const std::ve
   }
 }
 
+// --require-normals on a file without normals: an Error.
+void refuse_without_normals(const Options& o, bool with_normals)
+{
+  if(!with_normals && o.require_normals)
+    throw Error(cat(in_quotes(o.input), " has no normals (nx ny nz) and --require-normals was given"));
+}
+
 // What the writing and the report share between in-memory and tiled runs.
 struct Run_context
 {
@@ -505,21 +514,17 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
   const std::size_t n = std::size_t(input.points);
   const std::string too_large = cat(in_quotes(o.input), " holds ", n, " points, more than fit in the memory limit (",
                                     memory_limit / (1 << 20), " MB, --memory-limit)");
-  // Without normals, each tile estimates those of the points its curvatures need: the points
-  // within the curvature halo H of its core, whose own neighbours lie within H + normal_halo.
+  // Without normals, each tile estimates those of the points its curvatures need
+  // (range_estimator.h).
   const bool with_normals = input.cloud.has_normals();
+  refuse_without_normals(o, with_normals);
   if(!with_normals)
   {
-    if(o.require_normals)
-      throw Error(cat(in_quotes(o.input), " has no normals (nx ny nz) and --require-normals was given"));
     if(orientation.orientation.kind == CGAL::Normal_orientation::MINIMUM_SPANNING_TREE ||
        orientation.orientation.kind == CGAL::Normal_orientation::AUTOMATIC)
       throw Error(cat(too_large, " and has no normals: they are estimated tile by tile, which needs a local "
                       "orientation, --orient +z (airborne scans), another axis, or viewpoint:X,Y,Z (a spanning "
                       "tree, which --orient auto uses here, spans the whole cloud); or raise --memory-limit"));
-    c.warnings.push_back(cat(in_quotes(o.input), " has no normals: estimating them (", normal_fit_description(o),
-                             ", oriented ", orientation.text, "); a wrong orientation flips the sign of the "
-                             "curvatures"));
   }
   if(!o.scale.by_count && o.scale.spacing_multiple > 0)
     throw Error(cat(too_large, ": --radius ", o.scale.spacing_multiple, "x needs the whole cloud for the average "
@@ -553,102 +558,34 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
         c.progress.note(cat(program, ": warning: ", slow_tiling(" makes up to ", tiles, few_grid, few_points),
                             " (Ctrl-C to stop)"));
   };
-  // Without normals, a tile's halo H is shared by two needs: the curvatures of its own points
-  // read the points within the curvature halo h of its core (guessed from the density by
-  // count, then grown to what the estimator asks for), and their normals are those of the
-  // "normal tile" whose core is the core grown by h on every side, whose own points need
-  // their neighbours within the normal halo of that box. The tiles are read with a halo along
-  // each axis (Tiling::box_halo), which holds both when H >= h + normal halo: the normals are
-  // given H - h (the largest the range supports), and when they need more, H grows to h plus
-  // what they need. Sums are rounded up and differences down, so that a halo said to
-  // suffice does.
-  const double inf = std::numeric_limits<double>::infinity();
-  auto normal_share = [inf](double H, double h) { return std::nextafter(H - h, -inf); };
-  auto total_halo = [inf](double h, double normal) { return std::nextafter(h + normal, inf); };
   const double normal_halo_guess = with_normals ? 0.0 : density_halo(input, normal_reach_neighbors(o));
-  const double curvature_halo_guess = scale.by_count ? density_halo(input, scale.reach_neighbors()) : tiling.halo;
   tiling.extra_halo = normal_halo_guess;
-  tiling.box_halo = !with_normals;
-  // the current tile's curvature halo (grown over the retries of a tile)
-  double curvature_halo = curvature_halo_guess;
-  CGAL::Bbox_3 last_core;
-
+  tiling.box_halo = !with_normals;  // (range_estimator.h)
+  Orientation_choice tile_orientation = orientation;
+  Range_estimator estimator(o, scale, tile_orientation, with_normals,
+                            scale.by_count ? density_halo(input, scale.reach_neighbors()) : tiling.halo,
+                            normal_halo_guess);
+  const std::array<int, 3> pulse = pulse_attributes(input.cloud.attributes);
   const Tile_estimator estimate = [&](Tile_points& points, const PSC::Tile& tile,
                                       const Progress& progress) -> Row_source {
     auto ps = std::make_shared<Point_set>();
     fill_point_set(*ps, points.xyz, points.normals);
     std::vector<double>().swap(points.xyz);
     std::vector<double>().swap(points.normals);
+    Pulse_values pulses = {{nullptr, nullptr, nullptr}};
+    if(orientation.scanner)
+      for(int a = 0; a < 3; ++a)
+        pulses[a] = &points.attributes[pulse[a]];
     std::shared_ptr<Estimates> estimates;
-    if(!(tile.core == last_core))
-      curvature_halo = curvature_halo_guess;  // a new tile
-    last_core = tile.core;
-    const double H = tile.halo;  // infinite: the range is the whole cloud
-    if(with_normals || H == inf)
-      curvature_halo = H;
-    for(;;)
+    try
     {
-      if(!with_normals)
-      {
-        // the normals of the points within the curvature halo of the core
-        const double h = curvature_halo, normal_halo = H == inf ? inf : normal_share(H, h);
-        if(!(normal_halo >= 0))
-          throw PSC::Halo_too_small(total_halo(h, normal_halo_guess), H);
-        const CGAL::Bbox_3& b = tile.core;
-        const PSC::Tile normal_tile(CGAL::Bbox_3(b.xmin() - h, b.ymin() - h, b.zmin() - h, b.xmax() + h,
-                                                 b.ymax() + h, b.zmax() + h),
-                                    normal_halo);
-        if(!ps->has_normal_map())
-          ps->add_normal_map();
-        try
-        {
-          CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
-            *ps, PSC::parameters::neighbor_count(
-                   normal_neighbor_count(o),
-                   PSC::parameters::automatic_scale(normal_automatic_largest(o), PSC::parameters::normal_fit(
-                     o.normal_fit, PSC::parameters::normal_orientation(
-                                     orientation.orientation,
-                                     PSC::parameters::tile(normal_tile, CGAL::parameters::callback(progress)))))));
-        }
-        catch(const PSC::Halo_too_small& e)
-        {
-          throw PSC::Halo_too_small(total_halo(h, e.required_halo()), H);
-        }
-        if(interrupted)
-          throw Cancelled();
-        if(orientation.scanner)
-        {
-          const std::array<int, 3> pulse = pulse_attributes(input.cloud.attributes);
-          orient_towards_scanner(
-            ps->size(), [&ps](std::size_t i) -> Vector& { return ps->normal(*(ps->begin() + i)); },
-            [&](std::size_t i) {
-              return std::array<double, 3>{{points.attributes[pulse[0]][i], points.attributes[pulse[1]][i],
-                                            points.attributes[pulse[2]][i]}};
-            });
-        }
-      }
-      try
-      {
-        estimates = std::make_shared<Estimates>(
-          o.method->run(*ps, scale, progress, PSC::Tile(tile.core, curvature_halo)));
-        break;
-      }
-      catch(const PSC::Halo_too_small& e)
-      {
-        if(with_normals)
-          throw;
-        const double normal_halo = normal_share(H, curvature_halo);
-        curvature_halo = e.required_halo();
-        // the range may hold the larger curvature halo and the normals' share: estimate again
-        if(total_halo(curvature_halo, normal_halo_guess) <= H)
-          continue;
-        throw PSC::Halo_too_small(total_halo(curvature_halo, std::max(normal_halo, normal_halo_guess)), H);
-      }
-      catch(const std::invalid_argument& e)
-      {
-        throw Error(cat(e.what(), " (", too_large, ", so it is estimated in tiles: give --radius, or raise "
-                        "--memory-limit)"));
-      }
+      estimates = std::make_shared<Estimates>(
+        estimator.estimate(*ps, tile, pulses, [&progress](const char*) { return progress; }));
+    }
+    catch(const std::invalid_argument& e)
+    {
+      throw Error(cat(e.what(), " (", too_large, ", so it is estimated in tiles: give --radius, or raise "
+                      "--memory-limit)"));
     }
     if(interrupted)
       throw Cancelled();
@@ -660,24 +597,13 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
     o.input, read_options, input, tiling, estimate,
     [&summary](std::size_t i, const Output_row& r) { summary.add(i, r); },
     [&](const Row_source& rows) {
+      add_normal_warnings(c.warnings, o, with_normals, tile_orientation, summary, estimator.undirected());
       const auto write_start = std::chrono::steady_clock::now();
       write_output(c, output, scale,
                    o.drop_attributes && !las ? std::vector<Attribute>() : input.cloud.attributes, n, summary, rows,
                    las);
       write_seconds = seconds_since(write_start);
     });
-  if(!with_normals)
-  {
-    std::size_t without = 0;
-    for(const auto& s : summary.invalid())
-      if(s.first == int(CGAL::Curvature_estimate_status::INVALID_NORMAL) ||
-         s.first == int(CGAL::Curvature_estimate_status::NON_FINITE_POINT))
-        without += s.second;
-    if(without > 0)
-      c.warnings.push_back(cat(without, " points got no normal (coincident neighbours, neighbours along one line "
-                               "such as a single scan line: try a larger --normal-neighbors; non-finite "
-                               "coordinates) and are invalid_normal"));
-  }
   if(report.tiles > many_tiles && !slow_tiling_said)
     c.warnings.push_back(slow_tiling(" makes ", report.tiles, report.few_tiles_grid, report.few_tiles_points));
   print_report(c, scale, n,
@@ -781,45 +707,21 @@ int run(const Options& o)
     read_options.progress = Progress();
     return run_tiled_input(context, output, read_options, input, memory_limit, orientation, las_out);
   }
+  // 2. The whole cloud in memory: the estimation of one tile covering all of space
+  // (range_estimator.h), as each tile of a larger file.
   Point_set ps;
   const std::vector<Attribute> attributes = std::move(input.cloud.attributes);  // written after the estimates
   const std::vector<Attribute> no_attributes;
-  const bool had_normals = input.cloud.has_normals();
+  const bool with_normals = input.cloud.has_normals();
   fill_point_set(ps, input.cloud.xyz, input.cloud.normals);
   input.cloud = Point_cloud();
   reserve_output(o, output, o.drop_attributes && !las_output ? no_attributes : attributes, ps.size(), las_out);
   const double read_seconds = seconds_since(start);
   check_interrupted();
-
-  // 2. Normals, if the file has none.
-  if(!had_normals)
-  {
-    if(o.require_normals)
-      throw Error(cat(in_quotes(o.input), " has no normals (nx ny nz) and --require-normals was given"));
-    const std::size_t without = estimate_normals(ps, o, orientation, progress.phase("normals"));
-    progress.finish();
-    warn(cat(in_quotes(o.input), " has no normals: estimating them (", normal_fit_description(o), ", oriented ",
-             orientation.text, "); a wrong orientation flips the sign of the curvatures"));
-    if(without > 0)
-      warn(cat(without, " points got no normal (coincident neighbours, neighbours along one line such as a single "
-               "scan line: try a larger --normal-neighbors; non-finite coordinates) and are invalid_normal"));
-    if(orientation.scanner)
-    {
-      const std::size_t undirected = orient_towards_scanner(
-        ps.size(), [&ps](std::size_t i) -> Vector& { return ps.normal(*(ps.begin() + i)); },
-        [&](std::size_t i) {
-          return std::array<double, 3>{{attributes[pulse[0]].values[i], attributes[pulse[1]].values[i],
-                                        attributes[pulse[2]].values[i]}};
-        });
-      if(undirected > 0)
-        warn(cat("--orient scanner: ", undirected, " points have no pulse direction and keep normals oriented to +z"));
-    }
-  }
-  const double normals_seconds = seconds_since(start) - read_seconds;
-  check_interrupted();
+  refuse_without_normals(o, with_normals);
 
   // 3. Average spacing, for --radius Nx.
-  Scale scale = estimation_scale(o, !had_normals);
+  Scale scale = estimation_scale(o, !with_normals);
   const auto spacing_start = std::chrono::steady_clock::now();
   if(!scale.by_count && scale.spacing_multiple > 0)
   {
@@ -837,10 +739,15 @@ int run(const Options& o)
   }
   const double spacing_seconds = seconds_since(spacing_start);
 
-  // 4. Curvatures.
+  // 4. Normals if the file has none, then curvatures.
   const auto estimation_start = std::chrono::steady_clock::now();
-  const Estimates estimates = o.method->run(ps, scale, progress.phase("curvatures"), PSC::Tile::whole_space());
-  const double estimation_seconds = seconds_since(estimation_start);
+  Range_estimator estimator(o, scale, orientation, with_normals);
+  Pulse_values pulses = {{nullptr, nullptr, nullptr}};
+  if(orientation.scanner)
+    for(int a = 0; a < 3; ++a)
+      pulses[a] = &attributes[pulse[a]].values;
+  const Estimates estimates = estimator.estimate(ps, PSC::Tile::whole_space(), pulses, [&progress](const char* name) { return progress.phase(name); });
+  const double estimation_seconds = seconds_since(estimation_start) - estimator.normals_seconds();
   check_interrupted();
 
   // 5. Write.
@@ -854,13 +761,14 @@ int run(const Options& o)
       summary.add(i, r);
     }
   }
+  add_normal_warnings(warnings, o, with_normals, orientation, summary, estimator.undirected());
   write_output(context, output, scale, o.drop_attributes && !las_output ? no_attributes : attributes, ps.size(),
                summary, [&](std::size_t i, Output_row& r) { estimate_row(ps, estimates, i, r); }, las_out);
   const double write_seconds = seconds_since(write_start);
   print_report(context, scale, ps.size(),
-               had_normals ? std::string() : cat(normal_fit_description(o), ", oriented ", orientation.text), summary,
-               cat("read ", s3(read_seconds), ", normals ", s3(normals_seconds), ", spacing ", s3(spacing_seconds),
-                   ", curvatures ", s3(estimation_seconds), ", write ", s3(write_seconds)),
+               with_normals ? std::string() : cat(normal_fit_description(o), ", oriented ", orientation.text), summary,
+               cat("read ", s3(read_seconds), ", normals ", s3(estimator.normals_seconds()), ", spacing ",
+                   s3(spacing_seconds), ", curvatures ", s3(estimation_seconds), ", write ", s3(write_seconds)),
                "");
   return 0;
 }

@@ -8,6 +8,11 @@
 
 #include "input_bytes.h"
 
+#include <sys/stat.h>
+
+#include <cerrno>
+#include <cstring>
+
 #include <cmath>
 #include <limits>
 
@@ -501,6 +506,58 @@ Point_cloud read_ply(Byte_source& bytes, const std::string& path, const Read_opt
   return cloud;
 }
 
-
 } // namespace input
+
+Ply_vertex_layout ply_vertex_layout(const std::string& path)
+{
+  using namespace input;
+  struct stat st;
+  if(::stat(path.c_str(), &st) != 0)
+    throw Error(cat("cannot open input ", in_quotes(path), ": ", std::strerror(errno)));
+  if(!S_ISREG(st.st_mode))
+    throw Error(cat("cannot read input ", in_quotes(path), ": not a regular file"));
+  const std::uint64_t size = std::uint64_t(st.st_size);
+  Byte_source bytes(path, size, Progress());
+  Line_source lines(bytes);
+  const Ply_header h = read_ply_header(lines, path);
+  if(h.format == Ply_format::ASCII)
+    throw Error(cat(in_quotes(path), ": an ASCII PLY file cannot be read in place: only binary PLY files are "
+                    "(convert it, for example with the point_set_curvatures tool, or save the points as .npy)"));
+  Ply_vertex_layout layout;
+  layout.big_endian = h.format == Ply_format::BINARY_BIG_ENDIAN;
+  layout.offset = bytes.consumed();
+  const std::uint64_t most = std::numeric_limits<std::uint64_t>::max();
+  for(std::size_t e = 0; e <= h.vertex; ++e)
+  {
+    const Ply_element& element = h.elements[e];
+    if(element.has_lists())
+      throw Error(cat(in_quotes(path), ": the PLY element ", quoted(element.name), " has list properties ",
+                      e == h.vertex ? "" : "before the vertices ",
+                      "(records of varying size cannot be read in place)"));
+    const std::size_t record = element.least_binary_size();
+    if(e == h.vertex)
+      break;
+    if(record > 0 && element.count > (most - layout.offset) / record)
+      throw Error(cat(in_quotes(path), ": truncated (the PLY element ", quoted(element.name), " of ", element.count,
+                      " items is larger than any file)"));
+    layout.offset += element.count * record;
+  }
+  const Ply_element& v = h.elements[h.vertex];
+  layout.count = v.count;
+  for(const Ply_property& p : v.properties)
+  {
+    layout.properties.push_back(Ply_vertex_layout::Property{p.name, p.type, layout.record_size});
+    layout.record_size += type_size(p.type);
+  }
+  for(int a = 0; a < 3; ++a)
+  {
+    layout.xyz[a] = h.role_property[a];
+    layout.normal[a] = h.role_property[3 + a];
+  }
+  if(layout.offset > size || v.count > (size - layout.offset) / layout.record_size)
+    throw Error(cat(in_quotes(path), ": truncated (", size, " bytes, the PLY header announces ", v.count,
+                    " vertices of ", layout.record_size, " bytes from byte ", layout.offset, ")"));
+  return layout;
+}
+
 } // namespace psc_tool

@@ -143,6 +143,32 @@ std::vector<std::string> parse_columns(const std::string& text);
 // Cancelled if the progress callback returned false.
 Point_cloud read_point_cloud(const std::string& path, const Read_options& options);
 
+// Where the vertices of a binary PLY file lie, to read them in place (the Dask driver's
+// workers map blocks of vertices, python/point_set_curvatures/dask.py): one record per vertex.
+struct Ply_vertex_layout
+{
+  bool big_endian = false;
+  std::uint64_t offset = 0;       // of the first vertex, in bytes from the start of the file
+  std::uint64_t count = 0;        // vertices
+  std::size_t record_size = 0;    // bytes of one vertex
+  struct Property
+  {
+    std::string name;
+    Scalar_type type;
+    std::size_t offset;           // in the record
+  };
+  std::vector<Property> properties;  // in record order
+  // the properties of x y z and of the normals (nx ny nz or normal_x normal_y normal_z; -1
+  // without normals), as read_point_cloud() chooses them
+  int xyz[3] = {-1, -1, -1}, normal[3] = {-1, -1, -1};
+};
+
+// The layout of the vertices of the binary PLY file `path`, from its header as
+// read_point_cloud() reads it; the data is not read, but the file must hold every vertex.
+// Throws Error for what read_point_cloud() refuses in the header, an ASCII PLY file, list
+// properties in or before the vertices (records of varying size), or a file too short.
+Ply_vertex_layout ply_vertex_layout(const std::string& path);
+
 } // namespace psc_tool
 
 #endif

@@ -12,7 +12,7 @@
 // files gives the rows in input order to the writer. Neighbourhoods by count start from a
 // halo guessed from the density and grow it when the library says it is too small
 // (Halo_too_small: before estimating, or after it when the sample weights' areas need more),
-// as do the normals estimated per tile (the tool's estimator, point_set_curvatures.cpp).
+// as do the normals estimated per tile (the tool's estimator, range_estimator.h).
 
 #ifndef POINT_SET_CURVATURES_TOOL_TILED_RUN_H
 #define POINT_SET_CURVATURES_TOOL_TILED_RUN_H

@@ -32,6 +32,7 @@ number of points) gives a :class:`ScaleWarning`.
 """
 
 import numbers
+import os
 import types
 import warnings
 from enum import IntEnum
@@ -62,6 +63,7 @@ __all__ = [
     "AlgebraicPointSetSurface",
     "apss_smooth_point_set",
     "estimate_normals",
+    "read_point_cloud",
     "TileGrid",
 ]
 
@@ -764,6 +766,49 @@ def estimate_normals(points, *, neighbors=None, radius=None, orientation="mst", 
         points, radius, neighbors, kind, [float(v) for v in target], fit_code, _threads(threads), progress
     )
     return normals
+
+
+def read_point_cloud(path, *, columns=None, attributes=True, allow_truncated=False):
+    """Reads a point cloud file with the package's readers (those of the command-line tool):
+    ``.xyz``, ``.pwn``, ``.txt``, ``.csv``, ``.asc`` (one point per line, values separated by
+    white space or commas, ``#`` comments), ``.ply`` (ASCII or binary), ``.off`` and ``.las``
+    (LAS 1.0 to 1.4, uncompressed, point formats 0 to 10; coordinates scaled and offset).
+    Every file is read completely and checked: nothing is guessed from a damaged one.
+
+    ``columns``: the names of a text file's values, as the tool's ``--columns``: a string
+    ``"x,y,z,_,nx,ny,nz"`` or a sequence of names (``_`` or any other name skips or keeps a
+    value as an attribute); ``None`` reads a header line of names if the file has one, else 3
+    values (x y z) or 6 (x y z nx ny nz). ``attributes``: keep the values other than the
+    coordinates and normals (PLY properties, named text columns, LAS fields such as
+    ``intensity``, ``classification``, ``gps_time``). ``allow_truncated``: read a LAS file
+    whose last records are missing up to its last complete record, with a warning.
+
+    Returns a dict: ``points``, the (N, 3) float64 coordinates in file order; ``normals``,
+    (N, 3) float64, or ``None`` when the file has none (then see :func:`estimate_normals`);
+    ``attributes``, a dict of name to (N,) array in the file's type; ``warnings``, a list of
+    the file's problems that did not prevent reading it. Raises ``ValueError`` with the
+    reader's message (naming the file, the line or element, and what is wrong) for a
+    malformed, unreadable or unsupported file.
+    """
+    try:
+        path = os.fspath(path)
+    except TypeError:
+        raise ArgumentTypeError(f"path: expected a path, got {_type_hint(path)}") from None
+    if isinstance(path, bytes):
+        path = os.fsdecode(path)
+    if columns is None:
+        columns = ""
+    elif not isinstance(columns, str):
+        try:
+            names = list(columns)
+        except TypeError:
+            raise ArgumentTypeError(f"columns: expected a string or a sequence of names, got {_type_hint(columns)}") from None
+        if not all(isinstance(c, str) for c in names):
+            raise ArgumentTypeError("columns: expected a string or a sequence of names (str)")
+        columns = ",".join(names)
+    r = _core.read_point_cloud(path, columns, _bool("attributes", attributes), _bool("allow_truncated", allow_truncated))
+    return {"points": r["points"], "normals": r["normals"], "attributes": dict(r["attributes"]),
+            "warnings": list(r["warnings"])}
 
 
 class TileGrid:

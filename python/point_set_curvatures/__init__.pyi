@@ -1,4 +1,5 @@
 # Type stubs of point_set_curvatures (Python bindings of Point_set_curvatures).
+import os
 from enum import IntEnum
 from typing import Any, Callable, Dict, Literal, Mapping, Optional, Sequence, Tuple, Union
 
@@ -162,6 +163,15 @@ def estimate_normals(
     progress: Progress = None,
 ) -> np.ndarray:
     """Oriented unit normals (N,3), zero where none can be estimated."""
+
+def read_point_cloud(
+    path: Union[str, "os.PathLike[str]"],
+    *,
+    columns: Union[str, Sequence[str], None] = None,
+    attributes: bool = True,
+    allow_truncated: bool = False,
+) -> Dict[str, Any]:
+    """The file's points (N,3), normals (N,3) or None, attributes and warnings, read by the tool's readers."""
 
 class TileGrid:
     """The library's partition of space into tiles (Tile_grid)."""

@@ -295,63 +295,22 @@ RESULT_DTYPE = np.dtype([
 ])
 
 _XYZN = ("x", "y", "z", "nx", "ny", "nz")
-_PLY_TYPES = {
-    "char": "i1", "int8": "i1", "uchar": "u1", "uint8": "u1",
-    "short": "i2", "int16": "i2", "ushort": "u2", "uint16": "u2",
-    "int": "i4", "int32": "i4", "uint": "u4", "uint32": "u4",
-    "float": "f4", "float32": "f4", "double": "f8", "float64": "f8",
-}
 
 
 def _ply_source(path):
-    """(offset, record dtype, rows) of the vertices of a binary PLY file."""
-    with open(path, "rb") as f:
-        if f.readline().rstrip(b"\r\n") != b"ply":
-            raise ValueError(f"{path}: not a PLY file")
-        order, elements, current = None, [], None
-        while True:
-            raw = f.readline()
-            if not raw:
-                raise ValueError(f"{path}: PLY header without end_header")
-            words = raw.decode("ascii", "replace").split()
-            if not words or words[0] in ("comment", "obj_info"):
-                continue
-            if words[0] == "format":
-                if len(words) < 2 or words[1] not in ("binary_little_endian", "binary_big_endian"):
-                    raise ValueError(f"{path}: only binary PLY files are supported (got format "
-                                     f"{' '.join(words[1:2])}); convert it, e.g. to .npy")
-                order = "<" if words[1] == "binary_little_endian" else ">"
-            elif words[0] == "element" and len(words) == 3:
-                current = [words[1], int(words[2]), []]
-                elements.append(current)
-            elif words[0] == "property" and current is not None:
-                if len(words) >= 2 and words[1] == "list":
-                    current[2].append(None)  # variable size
-                elif len(words) == 3 and words[1] in _PLY_TYPES:
-                    current[2].append((words[2], words[1]))
-                else:
-                    raise ValueError(f"{path}: unsupported PLY property line {raw!r}")
-            elif words[0] == "end_header":
-                break
-            else:
-                raise ValueError(f"{path}: unsupported PLY header line {raw!r}")
-        offset = f.tell()
-    if order is None:
-        raise ValueError(f"{path}: PLY header without format line")
-    for name, count, props in elements:
-        if None in props:
-            raise ValueError(f"{path}: element '{name}' has list properties before or in the "
-                             "vertices (only fixed-size records can be read in place)")
-        dtype = np.dtype([(p, order + _PLY_TYPES[t]) for p, t in props])
-        if name == "vertex":
-            missing = [c for c in _XYZN if c not in dtype.names]
-            bad = [c for c in _XYZN if c in dtype.names and dtype[c].kind != "f"]
-            if missing or bad:
-                raise ValueError(f"{path}: the vertices need float or double properties x y z nx ny nz "
-                                 f"(missing: {missing}, not floating: {bad})")
-            return offset, dtype, count
-        offset += count * dtype.itemsize
-    raise ValueError(f"{path}: no vertex element")
+    """(offset, record dtype, rows) of the vertices of a binary PLY file, as the package's PLY
+    reader (the tool's, ``_core.ply_vertex_layout``) finds them: x y z and the normals (nx ny
+    nz or normal_x normal_y normal_z), of any scalar type."""
+    layout = _core.ply_vertex_layout(path)
+    if layout["normals"] is None:
+        raise ValueError(f"{path}: the PLY vertices have no normals (nx ny nz or normal_x normal_y normal_z); "
+                         "estimate them first, e.g. with point_set_curvatures.estimate_normals")
+    order = ">" if layout["big_endian"] else "<"
+    where = {name: (code, offset) for name, code, offset in layout["properties"]}
+    names = layout["xyz"] + layout["normals"]
+    record = np.dtype({"names": list(_XYZN), "formats": [order + where[n][0] for n in names],
+                       "offsets": [where[n][1] for n in names], "itemsize": layout["record_size"]})
+    return layout["offset"], record, layout["count"]
 
 
 def _npy_source(path):
@@ -584,9 +543,10 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
     ----------
     client : distributed.Client
     input_path : path or list of paths
-        A binary PLY file (little- or big-endian; vertices with float or double properties
-        ``x y z nx ny nz``, other scalar properties ignored, no list property in or before
-        the vertex element), or a ``.npy`` array of shape (N, 6) (float32 or float64, C
+        A binary PLY file (little- or big-endian; vertex properties ``x y z`` and ``nx ny
+        nz`` or ``normal_x normal_y normal_z`` of any scalar type, other scalar properties
+        ignored, no list property in or before the vertex element; its header is read by the
+        package's PLY reader, the tool's), or a ``.npy`` array of shape (N, 6) (float32 or float64, C
         order, columns x y z nx ny nz); a list of such files is one cloud, concatenated in
         order.
     output_path : path

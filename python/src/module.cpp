@@ -6,12 +6,14 @@
 // point_set_curvatures/__init__.py. Arguments are read in input_arrays.h, the C++ functions
 // run in a worker thread with the GIL released and the progress forwarded to Python
 // (run.h), results converted to numpy arrays (output_arrays.h); the classes are in
-// surface.h and tile_grid.h, the estimators' description in descriptions.h, the calls of the
-// estimators in curvatures_*.cpp and features.cpp (one translation unit each).
+// surface.h and tile_grid.h, the estimators' description in descriptions.h, the file readers
+// in file_readers.h, the calls of the estimators in curvatures_*.cpp and features.cpp (one
+// translation unit each).
 
 #include "common.h"
 #include "descriptions.h"
 #include "features.h"
+#include "file_readers.h"
 #include "input_arrays.h"
 #include "output_arrays.h"
 #include "run.h"
@@ -288,6 +290,11 @@ PYBIND11_MODULE(_core, m)
         py::arg("options"));
   m.def("estimate_normals", &normals_py, py::arg("points"), py::arg("radius"), py::arg("neighbors"),
         py::arg("orientation"), py::arg("target"), py::arg("fit"), py::arg("threads"), py::arg("progress"));
+
+  // The package's file readers (the tool's), for read_point_cloud() and the Dask driver.
+  m.def("read_point_cloud", &read_point_cloud_py, py::arg("path"), py::arg("columns"), py::arg("attributes"),
+        py::arg("allow_truncated"));
+  m.def("ply_vertex_layout", &ply_vertex_layout_py, py::arg("path"));
 
   py::class_<Surface>(m, "_Surface")
     .def(py::init<const py::handle&, const py::handle&, double, int>(), py::arg("points"), py::arg("normals"),

@@ -348,16 +348,41 @@ def test_file_float32_ply_and_count(client, tmp_path):
     assert_same(single, read_output(tmp_path / "c.npy"))
 
 
+def test_file_ply_header_read_as_the_tool_reads_it(client, tmp_path):
+    # The workers map the vertices where the package's PLY reader (the tool's) finds them:
+    # big-endian, normals named normal_x normal_y normal_z, integer properties around them.
+    points, normals = fibonacci_sphere(5_000, radius=1.5)
+    fields = [("flags", ">u2"), ("x", ">f8"), ("y", ">f8"), ("z", ">f8"), ("label", ">i4"),
+              ("normal_x", ">f8"), ("normal_y", ">f8"), ("normal_z", ">f8")]
+    rec = np.zeros(len(points), dtype=np.dtype(fields))
+    rec["flags"], rec["label"] = 7, -3
+    for a, c in enumerate("xyz"):
+        rec[c], rec["normal_" + c] = points[:, a], normals[:, a]
+    types = {">u2": "ushort", ">f8": "double", ">i4": "int"}
+    header = ["ply", "format binary_big_endian 1.0", "element camera 2", "property float fx",
+              f"element vertex {len(points)}"] + [f"property {types[t]} {n}" for n, t in fields] + ["end_header"]
+    with open(tmp_path / "be.ply", "wb") as f:
+        f.write(("\n".join(header) + "\n").encode() + bytes(8) + rec.tobytes())
+    read = psc.read_point_cloud(tmp_path / "be.ply")
+    np.testing.assert_array_equal(read["points"], points)
+    np.testing.assert_array_equal(read["normals"], normals)
+    single = psc.estimate_curvatures(points, normals, radius=0.15)
+    psc_dask.estimate_curvatures_file(client, tmp_path / "be.ply", tmp_path / "o.npy", radius=0.15, block_rows=1024)
+    assert_same(single, read_output(tmp_path / "o.npy"))
+
+
 def test_file_bad_input(client, tmp_path):
     p, q = fibonacci_sphere(100)
-    (tmp_path / "ascii.ply").write_text("ply\nformat ascii 1.0\nelement vertex 0\nend_header\n")
+    (tmp_path / "ascii.ply").write_text(
+        "ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\nproperty float z\nend_header\n")
     np.save(tmp_path / "shape.npy", np.zeros((10, 3)))
     np.save(tmp_path / "ints.npy", np.zeros((10, 6), dtype=np.int32))
     (tmp_path / "nonormal.ply").write_bytes(
         b"ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty double x\nproperty double y\n"
         b"property double z\nend_header\n" + bytes(24))
     (tmp_path / "list.ply").write_bytes(
-        b"ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty list uchar int idx\nend_header\n")
+        b"ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty double x\nproperty double y\n"
+        b"property double z\nproperty list uchar int idx\nend_header\n" + bytes(25))
     write_ply(tmp_path / "short.ply", p, q)
     with open(tmp_path / "short.ply", "r+b") as f:
         f.truncate(os.path.getsize(tmp_path / "short.ply") - 50)
