@@ -218,47 +218,36 @@ std::string g3(double x)
 int main(int argc, char** argv)
 {
   Options o;
-  for(int i = 1; i < argc; ++i)
+  psc_bench::Arguments args(argc, argv);
+  for(std::string a; args.next(a);)
   {
-    const std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if(i + 1 >= argc)
-        throw std::invalid_argument(a + " needs a value");
-      return argv[++i];
-    };
     if(a == "--neighbors")
-      o.k = std::stoul(value());
+      o.k = std::stoul(args.value());
     else if(a == "--noise")
-      o.noise = std::stod(value());
+      o.noise = std::stod(args.value());
     else if(a == "--normal-neighbors")
     {
       o.normal_neighbors.clear();
-      std::stringstream s(value());
-      std::string part;
-      while(std::getline(s, part, ','))
+      for(const std::string& part : args.list())
         o.normal_neighbors.push_back(std::stoul(part));
     }
     else if(a == "--auto")
-      automatic_largest = o.automatic = std::stoul(value());
+      automatic_largest = o.automatic = std::stoul(args.value());
     else if(a == "--line-spacing")
-      o.line_spacing = std::stod(value());
+      o.line_spacing = std::stod(args.value());
     else if(a == "--dump")
-      o.dump = value();
+      o.dump = args.value();
     else if(a == "--quantum")
-      o.quantum = std::stod(value());
+      o.quantum = std::stod(args.value());
     else if(a == "--rows")
     {
-      std::stringstream s(value());
-      std::string part;
-      while(std::getline(s, part, ','))
-        o.rows.insert(part);
+      const std::vector<std::string> parts = args.list();
+      o.rows.insert(parts.begin(), parts.end());
     }
     else if(a == "--only")
     {
-      std::stringstream s(value());
-      std::string part;
-      while(std::getline(s, part, ','))
-        o.only.insert(part);
+      const std::vector<std::string> parts = args.list();
+      o.only.insert(parts.begin(), parts.end());
     }
     else
     {

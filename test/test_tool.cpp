@@ -1998,6 +1998,16 @@ TEST_CASE("tool: LAS 1.2-1.4 point formats 0-10 with their fields as attributes,
     CHECK(tiled.err.find(said) != std::string::npos);
     CHECK(tiled.out.find("  tiles") != std::string::npos);
     CHECK(read_text(file("u_tiled.ply")) == read_text(file("u.ply")));
+    // a file with normals and no pulses: --orient scanner has nothing to turn, in memory and
+    // in tiles (it indexed the missing pulse attributes)
+    write_xyz(file("oriented.xyz"), sphere(3000, 1.0));
+    for(const char* limit : {"", " --memory-limit 400K"})
+    {
+      INFO("oriented.xyz --orient scanner" << limit);
+      const Run r = run_tool(q(file("oriented.xyz")) + " " + q(file("o.ply")) + " --radius 0.2 --orient scanner" + limit);
+      CHECK(r.status == 0);
+      CHECK(r.out.find("valid       3000 (100.00 %)") != std::string::npos);
+    }
   }
   {
     const Run r = run_tool(q(file("f3.las")) + " " + q(file("x.ply")) + " --radius 0.5 --orient scanner");

@@ -39,7 +39,7 @@ std::size_t normal_automatic_largest(const Options& o)
   return std::max(o.scale.automatic_largest, normal_neighbor_count(o));
 }
 
-std::size_t normal_reach_neighbors(const Options& o)
+std::size_t normal_largest_count(const Options& o)
 {
   return normal_automatic_largest(o) > 0 ? normal_automatic_largest(o) : normal_neighbor_count(o);
 }

@@ -60,7 +60,7 @@ std::size_t normal_neighbor_count(const Options& o);
 // The largest count of the normals' automatic scale (--neighbors auto with the quadric fit),
 // else 0; and the largest neighbourhood a normal reads.
 std::size_t normal_automatic_largest(const Options& o);
-std::size_t normal_reach_neighbors(const Options& o);
+std::size_t normal_largest_count(const Options& o);
 
 // "quadric fit of the 40 nearest neighbours": how the normals are estimated.
 std::string normal_fit_description(const Options& o);

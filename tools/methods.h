@@ -45,7 +45,7 @@ struct Scale
   // --neighbors auto (aso): the automatic scale's largest count, `neighbors` its smallest; 0: off
   std::size_t automatic_largest = 0;
   // the largest neighbourhood a point's estimate reads, by count
-  std::size_t reach_neighbors() const { return automatic_largest > 0 ? automatic_largest : neighbors; }
+  std::size_t largest_count() const { return automatic_largest > 0 ? automatic_largest : neighbors; }
 };
 
 // Every point is estimated with PSC::Tile::whole_space(), a tile's own points otherwise.

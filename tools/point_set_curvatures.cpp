@@ -9,8 +9,9 @@
 // command_line.cpp, the estimators run from methods.cpp, the files are read and written in
 // read_*.cpp and write_point_cloud.cpp (the output file's safety in output_file.cpp), normals
 // are estimated in estimated_normals.cpp, interruption and progress are in interruption.cpp and
-// progress_bar.h. Every run estimates through range_estimator.h: an input that fits in memory
-// as one tile covering all of space, a larger one tile by tile (tiled_run.cpp).
+// progress_bar.h. Every run estimates through range_estimator.h (an input that fits in memory
+// as one tile covering all of space, a larger one tile by tile: tiled_run.cpp) and reports
+// through run_report.h; this file holds the output's layout and writing, and the two runs.
 // Run with --help for the options. Exit status: 0 on success, 2 on invalid arguments or
 // unreadable/malformed/unwritable files (one line on stderr, no output file left behind), 3
 // when no point got a valid estimate (the output written, the reason on stderr), 130 when
@@ -30,6 +31,7 @@
 #include "output_file.h"
 #include "progress_bar.h"
 #include "range_estimator.h"
+#include "run_report.h"
 #include "read_point_cloud.h"
 #include "run_summary.h"
 #include "tiled_run.h"
@@ -95,162 +97,6 @@ std::array<unsigned char, 3> diverging_color(double v, double range)
   return c;
 }
 
-// ---------------------------------------------------------------------------------------
-// Summary
-
-std::string min_median_max(const Row_summary& s, int q)
-{
-  if(s.count(q) == 0)
-    return s.valid() ? "n/a (not estimated by this method)" : "n/a (no valid estimate)";
-  return cat("min ", s.min(q), "  median ", percentile(s.sample(q), 0.5), "  max ", s.max(q));
-}
-
-// "1.234": seconds in the report
-std::string s3(double seconds)
-{
-  char text[64];
-  std::snprintf(text, sizeof text, "%.3f", seconds);
-  return text;
-}
-
-std::string scale_description(const Scale& s)
-{
-  if(s.by_count && s.automatic_largest > 0)
-    return cat("automatic scale: ", s.neighbors, " to ", s.automatic_largest,
-               " nearest neighbours, the count chosen per point (field neighbors)");
-  if(s.by_count)
-    return cat(s.neighbors, " nearest neighbours per point (itself included)");
-  if(s.spacing_multiple > 0)
-    return cat("radius ", s.radius, " (", s.spacing_multiple, " x average spacing ", s.spacing, ")");
-  return cat("radius ", s.radius);
-}
-
-// The points that can be anyone's neighbour: finite, with a usable normal.
-std::size_t usable_points(const Row_summary& summary)
-{
-  std::size_t n = summary.valid();
-  for(const auto& s : summary.invalid())
-    if(s.first != int(CGAL::Curvature_estimate_status::NON_FINITE_POINT) &&
-       s.first != int(CGAL::Curvature_estimate_status::INVALID_NORMAL))
-      n += s.second;
-  return n;
-}
-
-// "fewer than 12 neighbours": the least count of a valid estimate, when the tool knows it
-// (--min-neighbors below a fit's own least count, 3 or 6 points, is raised to it).
-std::string fewer_than_least(const Method& m, const Scale& scale)
-{
-  const std::size_t least = scale.min_neighbors ? scale.min_neighbors : m.min_neighbors;
-  return least >= 6 ? cat("fewer than ", least, " neighbours") : std::string("too few neighbours for a fit");
-}
-
-// When the input holds fewer usable points than the method's `good_neighbors`, no scale
-// helps: what to say instead of a suggested scale ("" otherwise).
-std::string too_small_input(const Method& m, const Scale& scale, const std::string& input, const Row_summary& summary)
-{
-  const std::size_t usable = usable_points(summary);
-  const std::size_t good = m.good_neighbors_of(scale.variant);
-  if(usable >= good)
-    return "";
-  return cat(in_quotes(input), " is too small for ", m.name, ": it holds ", plural(usable, "usable point"),
-             " (finite, with a normal), fewer than the ", good, " neighbours from which ", m.name,
-             "'s errors stay within twice those at 40 (measured, see the manual), whatever --radius or --neighbors");
-}
-
-// The scale to try for about 40 neighbours, from the median count (counts grow like the
-// radius squared on a surface).
-std::string suggested_scale(const Method& m, const Scale& scale, double median)
-{
-  if(scale.by_count)
-    return cat("--neighbors ", std::max<std::size_t>(40, m.good_neighbors_of(scale.variant)));
-  const double factor = std::sqrt(40.0 / std::max(median, 1.0));
-  return scale.spacing_multiple > 0 ? cat("--radius ", scale.spacing_multiple * factor, "x")
-                                    : cat("--radius ", scale.radius * factor);
-}
-
-// The warning when neighbourhoods are small: empty if the median count of the estimated
-// points reaches the method's measured `good_neighbors`.
-std::string small_neighborhood_warning(const Method& m, const Scale& scale, const Row_summary& summary,
-                                       const std::string& input)
-{
-  if(summary.neighbor_sample().empty())
-    return "";
-  const double median = percentile(summary.neighbor_sample(), 0.5);
-  const std::size_t good = m.good_neighbors_of(scale.variant);
-  if(median >= double(good))
-    return "";
-  const std::string invalid = summary.too_few() == 0 ? std::string()
-                              : cat("; ", plural(summary.too_few(), "point"), summary.too_few() == 1 ? " has " : " have ",
-                                    fewer_than_least(m, scale), " and ", summary.too_few() == 1 ? "is" : "are",
-                                    " invalid (too_few_neighbors)");
-  const std::string too_small = too_small_input(m, scale, input, summary);
-  if(!too_small.empty())
-    return too_small + invalid;
-  return cat("the median neighbourhood holds ", plural(std::size_t(median), "point"), ", fewer than the ", good,
-             " from which ", m.name, "'s errors stay within twice those at 40 neighbours (measured, see the "
-             "manual)", invalid, ". For about 40 neighbours, try ", suggested_scale(m, scale, median));
-}
-
-// Why no point got a valid estimate (exit status 3): the most frequent status, what causes
-// it, and what to try.
-std::string no_valid_estimate_reason(const Method& m, const Scale& scale, const Row_summary& summary,
-                                     const std::string& input, bool normals_estimated)
-{
-  typedef CGAL::Curvature_estimate_status Status;
-  int status = -1;
-  std::size_t count = 0, n = 0;
-  for(const auto& s : summary.invalid())
-  {
-    n += s.second;
-    if(s.second > count)
-    {
-      status = s.first;
-      count = s.second;
-    }
-  }
-  const std::string what = cat(count == n ? (n == 1 ? std::string("the only point is ") : cat("all ", n, " points are "))
-                                          : cat(count, " of the ", n, count == 1 ? " points is " : " points are "),
-                               CGAL::to_string(static_cast<Status>(status)));
-  std::string why;
-  switch(static_cast<Status>(status))
-  {
-    case Status::TOO_FEW_NEIGHBORS:
-    {
-      const std::string too_small = too_small_input(m, scale, input, summary);
-      if(!too_small.empty())
-        why = too_small + " (--min-neighbors lowers the least count of a valid estimate, at a cost in accuracy)";
-      else if(!summary.neighbor_sample().empty())
-      {
-        const double median = percentile(summary.neighbor_sample(), 0.5);
-        why = cat("the median neighbourhood holds ", plural(std::size_t(median), "point"), ": ",
-                  fewer_than_least(m, scale), ", the least count of a valid ", m.name,
-                  " estimate; for about 40 neighbours, try ", suggested_scale(m, scale, median));
-      }
-      break;
-    }
-    case Status::DEGENERATE_FIT:
-      why = "coincident neighbours, neighbours along one line (a single scan line), or a radius far larger than "
-            "the cloud; --radius 3.5x gives about 40 neighbours";
-      break;
-    case Status::NON_FINITE_POINT:
-      why = "NaN or infinite coordinates";
-      break;
-    case Status::INVALID_NORMAL:
-      why = normals_estimated ? "no normal could be estimated (too few points, coincident points, or points along "
-                                "one line: try a larger --normal-neighbors)"
-                              : "the normals are zero, not finite or far from unit length (are the columns right? "
-                                "see --columns)";
-      break;
-    case Status::TWO_SHEETS:
-      why = "two layers with opposite normals in every neighbourhood (a thin plate, or neighbourhoods reaching "
-            "across the object): try a smaller --radius or --neighbors";
-      break;
-    default:
-      break;
-  }
-  return cat("no valid estimate: ", what, why.empty() ? std::string() : ": " + why);
-}
-
 // Row i of the output from the point set and its estimates (without colour).
 void estimate_row(const Point_set& ps, const Estimates& estimates, std::size_t i, Output_row& r)
 {
@@ -291,26 +137,6 @@ void refuse_without_normals(const Options& o, bool with_normals)
 {
   if(!with_normals && o.require_normals)
     throw Error(cat(in_quotes(o.input), " has no normals (nx ny nz) and --require-normals was given"));
-}
-
-// What the writing and the report share between in-memory and tiled runs.
-struct Run_context
-{
-  const Options& o;
-  Progress_bar& progress;
-  std::vector<std::string>& warnings;
-  std::chrono::steady_clock::time_point start;
-};
-
-// "aso (robust variant)": the method and its options, for the summary and the output's header.
-std::string method_label(const Options& o, const Scale& scale)
-{
-  if(std::string(o.method->name) != "aso")
-    return o.method->name;
-  return cat("aso (", scale.variant == CGAL::Aso_variant::PAPER ? "paper's variant" : "robust variant",
-             scale.position_fit_blend > 0 ? cat(", blended with a position fit, weight ", scale.position_fit_blend)
-                                          : std::string(),
-             ")");
 }
 
 // The scale and estimator options of the run: the command line's, with the position fit
@@ -427,53 +253,6 @@ void write_output(const Run_context& c, Temporary_output& output, const Scale& s
   output.commit();
 }
 
-// The warnings and the summary (not with --quiet).
-void print_summary(const Run_context& c, const Scale& scale, std::size_t n, const std::string& estimated_normals,
-                   const Row_summary& summary, const std::string& times, const std::string& tiles)
-{
-  const Options& o = c.o;
-  if(o.quiet)
-    return;
-  for(const std::string& w : c.warnings)
-    std::fprintf(stderr, "%s: warning: %s\n", program, w.c_str());
-  std::string why;
-  for(const auto& s : summary.invalid())
-    why += cat(why.empty() ? "; " : ", ", s.second, " ",
-               CGAL::to_string(static_cast<CGAL::Curvature_estimate_status>(s.first)));
-  const std::size_t valid = summary.valid();
-  std::printf("%s: %s -> %s\n", program, o.input.c_str(), o.output.c_str());
-  std::printf("  method      %s: %s\n", method_label(o, scale).c_str(), o.method->summary);
-  std::printf("  scale       %s\n", scale_description(scale).c_str());
-  std::printf("  points      %zu%s\n", n, estimated_normals.empty() ? "" : " (normals estimated)");
-  if(!estimated_normals.empty())
-    std::printf("  normals     %s\n", estimated_normals.c_str());
-  if(!tiles.empty())
-    std::printf("  tiles       %s\n", tiles.c_str());
-  std::printf("  valid       %zu (%.2f %%)%s\n", valid, 100.0 * double(valid) / double(n), why.c_str());
-  std::printf("  neighbours  %.2f on average (valid estimates)\n",
-              valid ? double(summary.neighbors()) / double(valid) : 0.0);
-  std::printf("  time        %s s: %s\n", s3(seconds_since(c.start)).c_str(), times.c_str());
-  std::printf("  H (mean)    %s\n", min_median_max(summary, 2).c_str());
-  std::printf("  K (Gauss)   %s\n", min_median_max(summary, 3).c_str());
-}
-
-// The report on standard output, and the warnings (after the output is written, so that a
-// failure prints one line only). Throws No_valid_estimate, after them, when no point got a
-// valid estimate (exit status 3).
-void print_report(const Run_context& c, const Scale& scale, std::size_t n, const std::string& estimated_normals,
-                  const Row_summary& summary, const std::string& times, const std::string& tiles)
-{
-  const Options& o = c.o;
-  const bool none_valid = n > 0 && summary.valid() == 0;
-  const std::string small = none_valid ? std::string() : small_neighborhood_warning(*o.method, scale, summary, o.input);
-  if(!small.empty())
-    c.warnings.push_back(small);
-  print_summary(c, scale, n, estimated_normals, summary, times, tiles);
-  if(none_valid)
-    throw No_valid_estimate(cat(no_valid_estimate_reason(*o.method, scale, summary, o.input, !estimated_normals.empty()),
-                                "; ", in_quotes(o.output), " was written, every row invalid"));
-}
-
 // The physical memory of the machine, in bytes (0 if unknown).
 double physical_memory()
 {
@@ -530,14 +309,14 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
     throw Error(cat(too_large, ": --radius ", o.scale.spacing_multiple, "x needs the whole cloud for the average "
                     "spacing; give the radius as a length, or raise --memory-limit"));
   if(!o.method->supports_tiles)
-    throw Error(cat(too_large, ": --method vcm needs the whole cloud (its Voronoi cells come from the Delaunay "
-                    "triangulation of every point); raise --memory-limit"));
+    throw Error(cat(too_large, ": --method ", o.method->name, " needs the whole cloud (",
+                    o.method->whole_cloud_reason, "); raise --memory-limit"));
   const Scale scale = estimation_scale(o, !with_normals);
   reserve_output(o, output, o.drop_attributes && !las ? std::vector<Attribute>() : input.cloud.attributes, n, las);
   Tiling tiling;
   tiling.memory_limit = memory_limit;
   if(scale.by_count)
-    tiling.neighbors = scale.reach_neighbors();
+    tiling.neighbors = scale.largest_count();
   else
     tiling.halo = PSC::halo_for_radius(scale.radius);
   tiling.temporary_prefix = temporary_prefix(o.output);
@@ -558,12 +337,12 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
         c.progress.note(cat(program, ": warning: ", slow_tiling(" makes up to ", tiles, few_grid, few_points),
                             " (Ctrl-C to stop)"));
   };
-  const double normal_halo_guess = with_normals ? 0.0 : density_halo(input, normal_reach_neighbors(o));
+  const double normal_halo_guess = with_normals ? 0.0 : density_halo(input, normal_largest_count(o));
   tiling.extra_halo = normal_halo_guess;
   tiling.box_halo = !with_normals;  // (range_estimator.h)
-  Orientation_choice tile_orientation = orientation;
+  Orientation_choice tile_orientation = orientation;  // (the estimator's, completed when estimated)
   Range_estimator estimator(o, scale, tile_orientation, with_normals,
-                            scale.by_count ? density_halo(input, scale.reach_neighbors()) : tiling.halo,
+                            scale.by_count ? density_halo(input, scale.largest_count()) : tiling.halo,
                             normal_halo_guess);
   const std::array<int, 3> pulse = pulse_attributes(input.cloud.attributes);
   const Tile_estimator estimate = [&](Tile_points& points, const PSC::Tile& tile,
@@ -573,7 +352,7 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
     std::vector<double>().swap(points.xyz);
     std::vector<double>().swap(points.normals);
     Pulse_values pulses = {{nullptr, nullptr, nullptr}};
-    if(orientation.scanner)
+    if(!with_normals && orientation.scanner)  // (a file with normals may have no pulses)
       for(int a = 0; a < 3; ++a)
         pulses[a] = &points.attributes[pulse[a]];
     std::shared_ptr<Estimates> estimates;
@@ -607,7 +386,8 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
   if(report.tiles > many_tiles && !slow_tiling_said)
     c.warnings.push_back(slow_tiling(" makes ", report.tiles, report.few_tiles_grid, report.few_tiles_points));
   print_report(c, scale, n,
-               with_normals ? std::string() : cat(normal_fit_description(o), ", oriented ", orientation.text), summary,
+               with_normals ? std::string() : cat(normal_fit_description(o), ", oriented ", tile_orientation.text),
+               summary,
                cat("count ", s3(count_seconds), ", density ", s3(report.density_seconds), ", tile reads ",
                    s3(report.read_seconds), ", curvatures ", s3(report.estimate_seconds), ", tile rows ",
                    s3(report.rows_seconds),
@@ -743,7 +523,7 @@ int run(const Options& o)
   const auto estimation_start = std::chrono::steady_clock::now();
   Range_estimator estimator(o, scale, orientation, with_normals);
   Pulse_values pulses = {{nullptr, nullptr, nullptr}};
-  if(orientation.scanner)
+  if(!with_normals && orientation.scanner)  // (a file with normals may have no pulses)
     for(int a = 0; a < 3; ++a)
       pulses[a] = &attributes[pulse[a]].values;
   const Estimates estimates = estimator.estimate(ps, PSC::Tile::whole_space(), pulses, [&progress](const char* name) { return progress.phase(name); });

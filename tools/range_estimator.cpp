@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace psc_tool {
 
@@ -67,8 +68,14 @@ Estimates Range_estimator::estimate(Point_set& ps, const PSC::Tile& tile, const 
       {
         throw PSC::Halo_too_small(total_halo(h, e.required_halo()), H);
       }
+      catch(const std::invalid_argument& e)
+      {
+        throw Error(e.what());  // (not the curvatures' refusal: the callers complete those)
+      }
       if(m_orientation.scanner)
       {
+        if(!pulses[0] || !pulses[1] || !pulses[2])
+          throw std::logic_error("Range_estimator: --orient scanner without pulse directions");
         undirected = 0;
         orient_towards_scanner(
           ps.size(), [&ps](std::size_t i) -> Vector& { return ps.normal(*(ps.begin() + i)); },
@@ -77,8 +84,9 @@ Estimates Range_estimator::estimate(Point_set& ps, const PSC::Tile& tile, const 
             const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
             if(!(dd > 0) || !std::isfinite(dd))
             {
+              // an own point (the finite points of the whole cloud) whose normal stays +z
               const Point& p = ps.point(*(ps.begin() + i));
-              undirected += tile.is_whole_space() || tile.owns(p.x(), p.y(), p.z()) ? 1 : 0;
+              undirected += tile.owns(p.x(), p.y(), p.z()) && ps.normal(*(ps.begin() + i)) != CGAL::NULL_VECTOR;
             }
             return d;
           });
@@ -93,7 +101,7 @@ Estimates Range_estimator::estimate(Point_set& ps, const PSC::Tile& tile, const 
     }
     catch(const PSC::Halo_too_small& e)
     {
-      if(m_with_normals)
+      if(m_with_normals || H == inf)
         throw;
       const double normal_halo = normal_share(H, m_curvature_halo);
       m_curvature_halo = e.required_halo();

@@ -38,7 +38,7 @@
 namespace psc_tool {
 
 // The pulse directions x(t) y(t) z(t) of a range's points (--orient scanner), one value per
-// point each; null when the run does not turn normals towards the scanner.
+// point each; null unless the file has no normals and they are turned towards the scanner.
 typedef std::array<const std::vector<double>*, 3> Pulse_values;
 
 class Range_estimator
@@ -53,18 +53,19 @@ public:
   // normals of `ps` are set when estimated). `phase(name)` starts the progress phase of
   // "normals" or "curvatures" and returns its callback. Throws
   // CGAL::Point_set_curvatures::Halo_too_small when the range must be read with a larger
-  // halo (the halo to ask for), Cancelled when interrupted.
+  // halo (the halo to ask for), Cancelled when interrupted, Error when the normals' options
+  // are refused.
   Estimates estimate(Point_set& ps, const CGAL::Point_set_curvatures::Tile& tile, const Pulse_values& pulses,
                      const std::function<Progress(const char*)>& phase);
 
-  // Own points of the ranges estimated so far whose pulse has no direction (they keep the +z
-  // orientation); seconds spent on the normals.
+  // Own points of the ranges estimated so far that got a normal but whose pulse has no
+  // direction (their normal keeps the +z orientation); seconds spent on the normals.
   std::size_t undirected() const { return m_undirected; }
   double normals_seconds() const { return m_normals_seconds; }
 
 private:
   const Options& m_o;
-  const Scale& m_scale;
+  const Scale m_scale;
   Orientation_choice& m_orientation;
   const bool m_with_normals;
   const double m_curvature_halo_guess, m_normal_halo_guess;

@@ -123,30 +123,23 @@ struct Options
 Options parse_options(int argc, char** argv)
 {
   Options o;
-  for(int i = 1; i < argc; ++i)
+  psc_bench::Arguments args(argc, argv);
+  for(std::string a; args.next(a);)
   {
-    const std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if(i + 1 >= argc)
-        throw std::invalid_argument(a + " needs a value");
-      return argv[++i];
-    };
     if(a == "--quick")
       o.quick = true;
     else if(a == "--out")
-      o.out = value();
+      o.out = args.value();
     else if(a == "--data")
-      o.data = value();
+      o.data = args.value();
     else if(a == "--seed")
-      o.seed = std::stoull(value());
+      o.seed = std::stoull(args.value());
     else if(a == "--budget-scale")
-      o.budget_scale = std::stod(value());
+      o.budget_scale = std::stod(args.value());
     else if(a == "--only")
     {
-      std::stringstream s(value());
-      std::string part;
-      while(std::getline(s, part, ','))
-        o.only.insert(part);
+      const std::vector<std::string> parts = args.list();
+      o.only.insert(parts.begin(), parts.end());
     }
     else
       throw std::invalid_argument("unknown option " + a +

@@ -216,8 +216,8 @@ public:
   /// The algebraic sphere features of the fit at any position `x` (not necessarily a point of
   /// the cloud), with all cloud points at distance `< radius`: the same values as
   /// `CGAL::estimate_algebraic_sphere_features()` at a point of the cloud, up to the
-  /// summation order (measured: 1e-15 on the coefficients, 1e-13 relative on
-  /// `geometric_variation`). Allocates a buffer for the neighbourhood at each call.
+  /// rounding of another summation order (bounded in test_sphere_features). Allocates a
+  /// buffer for the neighbourhood at each call.
   Algebraic_sphere_features<GeomTraits> features(const Point_3& x) const
   {
     namespace PSCI = Point_set_curvatures::internal;

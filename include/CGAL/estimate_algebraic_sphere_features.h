@@ -417,11 +417,10 @@ estimate_algebraic_sphere_features(const PointRange& points, PointMap point_map,
 /// (the neighbours are bucketed once by distance between consecutive radii, and the sums of
 /// every radius follow from moments accumulated in that pass, as in GLS, Mellado et al.
 /// 2012). Same named parameters (but `neighbor_count`). The results equal those of the
-/// single-scale function at each radius up to rounding (measured on Goursat 10K: 5e-15 on the
-/// coefficients in units of `r`, 3e-12 relative on `geometric_variation`), a neighbour at
-/// distance exactly a radius aside. Cost: one neighbourhood search at the largest radius and a
-/// few operations per radius (measured with 3 radii: 1.6 times a single-scale run at the
-/// largest radius).
+/// single-scale function at each radius up to rounding (the sums are accumulated in another
+/// order), a neighbour at distance exactly a radius aside. Cost: one neighbourhood search at
+/// the largest radius and a few operations per radius (measured: benchmark/README.md,
+/// section 10).
 ///
 /// \param points input oriented point cloud
 /// \param radii the kernel radii, in the unit of the coordinates: positive, finite, in any

@@ -64,7 +64,7 @@ Aso_estimator aso_estimator_from(const NamedParameters& np)
   bool area_weights = false;
   Aso_estimator estimator(aso_settings_from(np, default_aso_variant, "estimate_aso_curvatures", &area_weights));
   estimator.area_weights = area_weights;
-  estimator.refinement = CGAL::parameters::choose_parameter(
+  estimator.normal_refinements = CGAL::parameters::choose_parameter(
     CGAL::parameters::get_parameter(np, internal_np::normal_refinement), std::size_t(0));
   return estimator;
 }
@@ -289,7 +289,7 @@ estimate_aso_curvatures(const PointRange& points, const NamedParameters& np)
   if(largest == 0)
     return I::estimate_at_every_point<ConcurrencyTag>(points, false, 0.0, np, aso, name);
   // (a refinement pass would read the refined normals of the points its pass visits only)
-  if(aso.refinement > 0)
+  if(aso.normal_refinements > 0)
     throw std::invalid_argument(std::string(name) + ": parameter 'automatic_scale' is not supported with "
                                 "normal_refinement");
   I::Apss_estimator sphere;

@@ -81,11 +81,9 @@ Jet_degrees jet_degrees(const NamedParameters& np, const char* function_name)
 /// normals gives `1/R`). `normal` is the normal of the fitted jet above `x`, oriented like
 /// the input normals.
 ///
-/// Accuracy, measured at about 40 neighbours (test_baselines): a sphere of radius `R` is
-/// biased by about `0.25 (r/R)²` relative; mean error 0.0043 on `k_min`, `k_max` on the
-/// Goursat surface of the paper (10K points, `r = 1.5`, curvatures up to 0.42), 0.014 on an
-/// i.i.d. random sampling of an ellipsoid (curvatures 0.5 to 4). The cost is CGAL's: a PCA,
-/// an SVD of an `n x 6` matrix and a Monge basis change per point.
+/// Accuracy: a sphere of radius `R` is biased by about `0.25 (r/R)²` relative (measured:
+/// benchmark/README.md, section 10). The cost is CGAL's: a PCA, an SVD of an `n x 6` matrix
+/// and a Monge basis change per point.
 ///
 /// Results: one `Curvature_estimate` per element of `points`, in the same order, with the
 /// statuses of `CGAL::estimate_aso_curvatures()`: `NON_FINITE_POINT`, `INVALID_NORMAL`

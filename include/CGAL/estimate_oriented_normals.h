@@ -130,10 +130,9 @@ constexpr double two_and_a_half_d_min_share = 0.6;
 /// \ingroup PkgPointSetCurvaturesRef
 /// True if a cloud whose normals (orientation and length ignored) are `vertical` near-vertical
 /// ones (within 60 degrees of the z axis, `|n_z| >= 0.5 |n|`) out of `count` non-zero ones
-/// looks 2.5-D, as airborne and mobile scans seen from above do: at least 60% of them.
-/// Measured with the quadric normals (benchmark/README.md, "Scans without normals"): three
-/// real airborne tiles 87%, 95% and 98% (the normals of vegetation point anywhere), a
-/// terrestrial scan 42%; a sphere 50%, but a torus lying flat 67%, which is why
+/// looks 2.5-D, as airborne and mobile scans seen from above do: at least 60% of them (the
+/// shares measured on real and simulated clouds: benchmark/README.md, section 10). Closed
+/// shapes can pass the test (a torus lying flat), which is why
 /// `Normal_orientation::automatic()` keeps closed parts outward whatever this says.
 inline bool is_two_and_a_half_d(std::size_t vertical, std::size_t count)
 {
@@ -556,10 +555,10 @@ std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, dou
 /// The fit (`Point_set_curvatures::parameters::normal_fit`) is by default a weighted quadric
 /// (`CGAL::Normal_fit::QUADRIC`, 40 neighbours): its normals are nearly free of the
 /// curvature's bias and vary smoothly from point to point, which the ASO needs since it
-/// differentiates the normal field: on simulated scans the ASO on quadric normals comes
-/// within 1.5 times its error with exact normals, 2 to 17 times better than on PCA-plane
-/// normals (benchmark/README.md, "Scans without normals"). `CGAL::Normal_fit::PLANE` is the
-/// PCA plane (18 neighbours by default).
+/// differentiates the normal field: on simulated scans the ASO on quadric normals comes close
+/// to its error with exact normals, and far below its error on PCA-plane normals (measured:
+/// benchmark/README.md, section 8). `CGAL::Normal_fit::PLANE` is the PCA plane (18
+/// neighbours by default).
 ///
 /// Points whose normal cannot be estimated get a zero normal, which the estimators report as
 /// `INVALID_NORMAL`: non-finite coordinates, too few neighbours (3 for the plane, 6 for the

@@ -46,12 +46,10 @@ struct Pss_estimator : Estimator_base
 /// normals gives `1/R`). `normal` is the unit normal of the fitted surface, oriented like
 /// the input normals.
 ///
-/// Accuracy, measured at about 40 neighbours (test_baselines): on a sphere of radius `R`,
-/// biased by about `0.2 (r/R)²` relative (a quadratic cannot fit a sphere); on the Goursat
-/// surface of the paper (10K points, `r = 1.5`), mean error 0.0027 on `k_min`, `k_max`
-/// (curvatures up to 0.42), against 0.0038 for ASO and 0.0043 for jets; on an i.i.d. random
-/// sampling of an ellipsoid, 0.010 (curvatures 0.5 to 4), against 0.048 for ASO there.
-/// Cost: a few rounds of the plane fit per point (see benchmark/estimator_timings).
+/// Accuracy: on a sphere of radius `R`, biased by about `0.2 (r/R)²` relative (a quadratic
+/// cannot fit a sphere); more accurate than the paper's ASO on irregular (i.i.d. random)
+/// samplings (measured: benchmark/README.md, section 10). Cost: a few rounds of the plane fit
+/// per point (see benchmark/estimator_timings).
 ///
 /// Results: one `Curvature_estimate` per element of `points`, in the same order, with the
 /// statuses of `CGAL::estimate_aso_curvatures()`: `NON_FINITE_POINT`, `INVALID_NORMAL`

@@ -44,14 +44,9 @@ namespace CGAL {
 /// Accuracy: coarse. Each Voronoi cell also spreads tangentially over the sampling spacing
 /// `h`, which adds about `h²/(4R²)` to every `λ_i / λ_n`: the magnitudes are biased
 /// upwards unless `h` is small against `R r |k|`, i.e. unless `R` approaches the local
-/// feature size (CGAL's advice for `offset_radius`). Measured at about 40 neighbours
-/// (test_baselines): with `R = r`, the magnitudes are 2.3 times too large on a sphere (mean
-/// error 0.65 to 0.74 for `|k| = 0.5`), no curvature is resolved on a cylinder (errors 1.3
-/// on `|k| = 0`, 0.8 on `|k| = 1`), but the direction of the larger magnitude is within 3
-/// degrees (mean); `R = 0.5 r` (the paper's setting) is worse (bias times 4); `R` equal to
-/// the sphere's radius brings the error down to 4 to 11%. On the Goursat surface (10K points,
-/// `r = 1.67`), mean error 0.10 (`R = r`) and 0.24 (`R = 0.5 r`) on the magnitudes, against
-/// 0.004 for ASO.
+/// feature size (CGAL's advice for `offset_radius`). The directions are better than the
+/// magnitudes; `R = 0.5 r` (the paper's setting) is worse than `R = r` (measured:
+/// benchmark/README.md, section 10).
 ///
 /// Results: one `Curvature_estimate` per element of `points`, in the same order, with the
 /// statuses of `CGAL::estimate_aso_curvatures()`: `NON_FINITE_POINT`, `INVALID_NORMAL`

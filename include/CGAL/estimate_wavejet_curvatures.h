@@ -45,10 +45,9 @@ struct Wavejet_estimator : Estimator_base
 /// normals gives `1/R`). `normal` is the corrected normal, oriented like the input
 /// normals.
 ///
-/// Accuracy, measured at about 40 neighbours (test_baselines): within 1e-4 of the osculating
-/// jets of degree 2 on the Goursat surface (the same quadratic over nearly the same plane),
-/// mean error 0.0043 on `k_min`, `k_max` there (10K points, `r = 1.5`); a sphere of radius
-/// `R` is biased by about `0.25 (r/R)²` relative.
+/// Accuracy: close to the osculating jets of degree 2 (the same quadratic over nearly the
+/// same plane); a sphere of radius `R` is biased by about `0.25 (r/R)²` relative (measured:
+/// benchmark/README.md, section 10).
 ///
 /// Results: one `Curvature_estimate` per element of `points`, in the same order, with the
 /// statuses of `CGAL::estimate_aso_curvatures()`: `NON_FINITE_POINT`, `INVALID_NORMAL`

@@ -31,6 +31,7 @@ option values are case-insensitive. A scale that makes every neighbourhood the w
 number of points) gives a :class:`ScaleWarning`.
 """
 
+import errno
 import numbers
 import os
 import types
@@ -40,7 +41,7 @@ from enum import IntEnum
 import numpy as np
 
 from . import _core
-from ._core import Cancelled, HaloTooSmall
+from ._core import AsoProjection, AsoVariant, Cancelled, HaloTooSmall, SampleWeights, WeightKernel
 
 #: The version of the package: the CMake project's (compiled into the extension).
 __version__ = _core.__version__
@@ -53,6 +54,10 @@ __all__ = [
     "ProjectionStatus",
     "Cancelled",
     "HaloTooSmall",
+    "AsoVariant",
+    "WeightKernel",
+    "SampleWeights",
+    "AsoProjection",
     "METHODS",
     "ESTIMATORS",
     "AUTOMATIC_NEIGHBORS",
@@ -142,16 +147,28 @@ METHODS = tuple(ESTIMATORS)
 _COMMON_OPTIONS = ("min_neighbors", "accept_unnormalized_normals", "tile")
 _METHOD_OPTIONS = {name: tuple(o["name"] for o in e["options"]) for name, e in ESTIMATORS.items()}
 
-# The names of the C++ enumerations' values: name -> value.
+
+
+class _Choices(dict):
+    """An option's values: lower-case name -> the C++ enumerator's value, from an enumeration
+    of ``_core`` (a ``py::enum_`` named from the library's name tables), whose members are
+    accepted too."""
+
+    def __init__(self, enum):
+        super().__init__((name.lower(), int(value)) for name, value in enum.__members__.items())
+        self.enum = enum
+
+
 _ASO_VARIANTS, _WEIGHT_KERNELS, _SAMPLE_WEIGHTS, _ASO_PROJECTIONS = (
-    {n: v for v, n in enumerate(_core.ENUM_NAMES[option])}
-    for option in ("aso_variant", "weight_kernel", "sample_weights", "aso_projection")
+    _Choices(e) for e in (AsoVariant, WeightKernel, SampleWeights, AsoProjection)
 )
 
 
 def _choice(name, value, table):
     if isinstance(value, str) and value.lower() in table:
         return table[value.lower()]
+    if isinstance(value, table.enum):
+        return int(value)
     raise ValueError(
         f"option '{name}': expected one of {', '.join(repr(k) for k in table)}, got {value!r}"
     )
@@ -320,7 +337,7 @@ def _options(method, allowed, given):
         elif name == "weight_kernel":
             o.weight_kernel = _choice(name, value, _WEIGHT_KERNELS)
         elif name == "sample_weights":
-            if isinstance(value, str):
+            if isinstance(value, (str, SampleWeights)):
                 o.sample_weights = _choice(name, value, _SAMPLE_WEIGHTS)
             else:
                 weights = _weights(value)
@@ -436,7 +453,9 @@ def estimate_curvatures(
         ``False``: ``None``, ``0`` or any other value continues).
     **options
         Every option of the C++ function (ValueError for unknown names and for options the
-        method does not take):
+        method does not take); a quoted value may also be given as the member of its
+        enumeration (:class:`AsoVariant`, :class:`WeightKernel`, :class:`SampleWeights`,
+        :class:`AsoProjection`: ``aso_variant=AsoVariant.PAPER``):
 
         - all methods: ``min_neighbors`` (int; least neighbour count of a valid estimate,
           default the estimator's measured minimum), ``accept_unnormalized_normals`` (bool),
@@ -449,14 +468,17 @@ def estimate_curvatures(
           ``sample_weights`` (``"uniform"``, ``"tangent_voronoi_area"``, or an array of
           shape (N,): one weight per point, finite and non-negative, used instead of
           computing them, for example the areas of :func:`estimate_tangent_voronoi_areas`
-          shared by several runs; with ``tile``, the weights of the whole cloud),
-          ``robust_orientation`` (bool), ``normal_field_blend`` (bool), ``normal_refinement``
-          (int), ``position_fit_blend`` (float in [0, 1], default 0: the weight of a quadric
+          shared by several runs; with ``tile``, the weights of the whole cloud; default per
+          variant), ``robust_orientation`` (bool; default per variant), ``normal_field_blend``
+          (bool; default per variant), ``normal_refinement`` (int, default 0),
+          ``position_fit_blend`` (float in [0, 1], default 0: the weight of a quadric
           fitted to the positions alone in the tensor; 0.5 for normals estimated by
           :func:`estimate_normals`), ``aso_projection`` (``"corrected_normal"`` default,
-          ``"authors_implementation"``);
-        - ``"apss"``: ``weight_kernel`` (also ``"constant"``), ``sample_weights``,
-          ``robust_orientation``;
+          ``"authors_implementation"``); the robust variant's defaults are
+          ``"smooth_cubic"``, ``"tangent_voronoi_area"``, True, True, the paper's
+          ``"smooth"``, ``"uniform"``, False, False;
+        - ``"apss"``: ``weight_kernel`` (also ``"constant"``; default ``"smooth"``),
+          ``sample_weights`` (default ``"uniform"``), ``robust_orientation`` (default False);
         - ``"jet"``: ``degree_fitting`` (default 2), ``degree_monge`` (default 2);
         - ``"vcm"``: ``vcm_offset_radius`` (float; default the radius).
 
@@ -786,16 +808,16 @@ def read_point_cloud(path, *, columns=None, attributes=True, allow_truncated=Fal
     Returns a dict: ``points``, the (N, 3) float64 coordinates in file order; ``normals``,
     (N, 3) float64, or ``None`` when the file has none (then see :func:`estimate_normals`);
     ``attributes``, a dict of name to (N,) array in the file's type; ``warnings``, a list of
-    the file's problems that did not prevent reading it. Raises ``ValueError`` with the
-    reader's message (naming the file, the line or element, and what is wrong) for a
-    malformed, unreadable or unsupported file.
+    the file's problems that did not prevent reading it. Raises ``FileNotFoundError`` for a
+    missing file, ``ValueError`` with the reader's message (naming the file, the line or
+    element, and what is wrong) for a malformed, unreadable or unsupported one.
     """
     try:
         path = os.fspath(path)
     except TypeError:
         raise ArgumentTypeError(f"path: expected a path, got {_type_hint(path)}") from None
-    if isinstance(path, bytes):
-        path = os.fsdecode(path)
+    if not os.path.exists(path):
+        raise FileNotFoundError(errno.ENOENT, os.strerror(errno.ENOENT), path)
     if columns is None:
         columns = ""
     elif not isinstance(columns, str):
@@ -806,7 +828,8 @@ def read_point_cloud(path, *, columns=None, attributes=True, allow_truncated=Fal
         if not all(isinstance(c, str) for c in names):
             raise ArgumentTypeError("columns: expected a string or a sequence of names (str)")
         columns = ",".join(names)
-    r = _core.read_point_cloud(path, columns, _bool("attributes", attributes), _bool("allow_truncated", allow_truncated))
+    r = _core.read_point_cloud(os.fsencode(path), columns, _bool("attributes", attributes),
+                               _bool("allow_truncated", allow_truncated))
     return {"points": r["points"], "normals": r["normals"], "attributes": dict(r["attributes"]),
             "warnings": list(r["warnings"])}
 

@@ -12,10 +12,42 @@ Progress = Optional[Callable[[float], object]]
 Vec3 = Sequence[float]
 Result = Dict[str, np.ndarray]
 Method = Literal["aso", "apss", "barycenter", "pca_plane", "pss", "jet", "vcm", "wavejet"]
-WeightKernel = Literal["smooth", "constant", "smooth_cubic", "smooth_quartic"]
-SampleWeights = Union[Literal["uniform", "tangent_voronoi_area"], npt.ArrayLike]
-AsoVariant = Literal["paper", "robust"]
-AsoProjection = Literal["corrected_normal", "authors_implementation"]
+WeightKernelName = Literal["smooth", "constant", "smooth_cubic", "smooth_quartic"]
+SampleWeightsName = Literal["uniform", "tangent_voronoi_area"]
+AsoVariantName = Literal["paper", "robust"]
+AsoProjectionName = Literal["corrected_normal", "authors_implementation"]
+
+class _Enumeration:
+    """A C++ enumeration (pybind11 enum): its members are accepted where the names are."""
+    @property
+    def name(self) -> str: ...
+    @property
+    def value(self) -> int: ...
+    def __int__(self) -> int: ...
+    def __index__(self) -> int: ...
+
+class WeightKernel(_Enumeration):
+    SMOOTH: "WeightKernel"
+    CONSTANT: "WeightKernel"
+    SMOOTH_CUBIC: "WeightKernel"
+    SMOOTH_QUARTIC: "WeightKernel"
+
+class SampleWeights(_Enumeration):
+    UNIFORM: "SampleWeights"
+    TANGENT_VORONOI_AREA: "SampleWeights"
+
+class AsoVariant(_Enumeration):
+    PAPER: "AsoVariant"
+    ROBUST: "AsoVariant"
+
+class AsoProjection(_Enumeration):
+    CORRECTED_NORMAL: "AsoProjection"
+    AUTHORS_IMPLEMENTATION: "AsoProjection"
+
+WeightKernelOption = Union[WeightKernelName, WeightKernel]
+SampleWeightsOption = Union[SampleWeightsName, SampleWeights, npt.ArrayLike]
+AsoVariantOption = Union[AsoVariantName, AsoVariant]
+AsoProjectionOption = Union[AsoProjectionName, AsoProjection]
 TileSpec = Union["TileGrid.Tile", Tuple[Vec3, Vec3, float]]
 Orientation = Union[str, Tuple[Literal["along", "towards"], Vec3]]
 
@@ -64,14 +96,14 @@ def estimate_curvatures(
     min_neighbors: Optional[int] = None,
     accept_unnormalized_normals: Optional[bool] = None,
     tile: Optional[TileSpec] = None,
-    aso_variant: Optional[AsoVariant] = None,
-    weight_kernel: Optional[WeightKernel] = None,
-    sample_weights: Optional[SampleWeights] = None,
+    aso_variant: Optional[AsoVariantOption] = None,
+    weight_kernel: Optional[WeightKernelOption] = None,
+    sample_weights: Optional[SampleWeightsOption] = None,
     robust_orientation: Optional[bool] = None,
     normal_field_blend: Optional[bool] = None,
     normal_refinement: Optional[int] = None,
     position_fit_blend: Optional[float] = None,
-    aso_projection: Optional[AsoProjection] = None,
+    aso_projection: Optional[AsoProjectionOption] = None,
     degree_fitting: Optional[int] = None,
     degree_monge: Optional[int] = None,
     vcm_offset_radius: Optional[float] = None,
@@ -88,8 +120,8 @@ def estimate_sphere_features(
     neighbors: Optional[int] = None,
     threads: Optional[int] = None,
     progress: Progress = None,
-    weight_kernel: Optional[WeightKernel] = None,
-    sample_weights: Optional[SampleWeights] = None,
+    weight_kernel: Optional[WeightKernelOption] = None,
+    sample_weights: Optional[SampleWeightsOption] = None,
     min_neighbors: Optional[int] = None,
     accept_unnormalized_normals: Optional[bool] = None,
     tile: Optional[TileSpec] = None,
@@ -116,7 +148,7 @@ def estimate_multiscale_sphere_features(
     *,
     threads: Optional[int] = None,
     progress: Progress = None,
-    weight_kernel: Optional[WeightKernel] = None,
+    weight_kernel: Optional[WeightKernelOption] = None,
     min_neighbors: Optional[int] = None,
     accept_unnormalized_normals: Optional[bool] = None,
 ) -> Result:
@@ -126,7 +158,7 @@ class AlgebraicPointSetSurface:
     """The APSS surface of an oriented cloud: projection and features at any position."""
     def __init__(
         self, points: ArrayN3, normals: ArrayN3, radius: float, *,
-        weight_kernel: WeightKernel = "smooth",
+        weight_kernel: WeightKernelOption = "smooth",
     ) -> None: ...
     @property
     def radius(self) -> float: ...
@@ -146,7 +178,7 @@ def apss_smooth_point_set(
     *,
     iterations: int = 1,
     update_normals: bool = False,
-    weight_kernel: WeightKernel = "smooth",
+    weight_kernel: WeightKernelOption = "smooth",
     threads: Optional[int] = None,
     progress: Progress = None,
 ) -> Result:

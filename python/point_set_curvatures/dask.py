@@ -41,7 +41,7 @@ from concurrent.futures import CancelledError
 
 import numpy as np
 
-from . import _METHOD_OPTIONS, AUTOMATIC_NEIGHBORS, HaloTooSmall, Status, TileGrid, _core, _int, _method, _real
+from . import _METHOD_OPTIONS, AUTOMATIC_NEIGHBORS, HaloTooSmall, SampleWeights, Status, TileGrid, _core, _int, _method, _real
 from . import _weights
 from . import _whole_cloud_box, _whole_cloud_scale
 from . import estimate_curvatures as _estimate_curvatures
@@ -58,7 +58,7 @@ _FIELDS1 = ("k_min", "k_max", "mean", "gaussian", "normal_coherence")
 def _weight_array(options):
     """The option sample_weights if it is per-point weights (not None, not a name)."""
     weights = options.get("sample_weights")
-    return None if weights is None or isinstance(weights, str) else weights
+    return None if weights is None or isinstance(weights, (str, SampleWeights)) else weights
 
 
 def _check_tile(radius):
@@ -182,7 +182,7 @@ def estimate_curvatures(client, points, normals, *, method="aso", radius=None, n
     # data travels: the arguments (on no point), then the scale against the whole cloud
     _estimate_curvatures(np.zeros((0, 3)), np.zeros((0, 3)), method=method, radius=radius, neighbors=neighbors,
                          threads=threads, tile=_check_tile(radius),
-                         **{k: v for k, v in options.items() if k != "sample_weights" or isinstance(v, str)})
+                         **{k: v for k, v in options.items() if k != "sample_weights" or _weight_array(options) is None})
     if points.dtype.kind == "f":
         radius, neighbors = _whole_cloud_scale(points, radius, neighbors)
     lo, hi = points[finite].min(axis=0), points[finite].max(axis=0)
@@ -306,10 +306,9 @@ def _ply_source(path):
         raise ValueError(f"{path}: the PLY vertices have no normals (nx ny nz or normal_x normal_y normal_z); "
                          "estimate them first, e.g. with point_set_curvatures.estimate_normals")
     order = ">" if layout["big_endian"] else "<"
-    where = {name: (code, offset) for name, code, offset in layout["properties"]}
-    names = layout["xyz"] + layout["normals"]
-    record = np.dtype({"names": list(_XYZN), "formats": [order + where[n][0] for n in names],
-                       "offsets": [where[n][1] for n in names], "itemsize": layout["record_size"]})
+    roles = layout["xyz"] + layout["normals"]  # (name, numpy type code, offset) each
+    record = np.dtype({"names": list(_XYZN), "formats": [order + code for _, code, _ in roles],
+                       "offsets": [offset for _, _, offset in roles], "itemsize": layout["record_size"]})
     return layout["offset"], record, layout["count"]
 
 

@@ -1,8 +1,8 @@
 // Copyright (c) 2026 The Point_set_curvatures authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// Python bindings: the library's description of its estimators (estimators.h) and the names
-// of its enumerations' values as Python values.
+// Python bindings: the library's description of its estimators (estimators.h) and its
+// enumerations (py::enum_, named from the library's name tables).
 
 #ifndef PSC_PYTHON_DESCRIPTIONS_H
 #define PSC_PYTHON_DESCRIPTIONS_H
@@ -11,6 +11,8 @@
 
 #include <pybind11/pybind11.h>
 
+#include <cctype>
+#include <cstddef>
 #include <string>
 #include <utility>
 
@@ -29,16 +31,36 @@ py::tuple names_tuple(const Range& names)
   return py::tuple(l);
 }
 
-// Option -> the names of its values, indexed by the C++ enumerator's value.
-inline py::dict enum_names_to_dict()
+// The library's enumeration E as a py::enum_ of `m` named `python_name`, its values those of
+// the library's name table `names` (indexed by the enumerator's value) in upper case: the
+// Python options' names and values are these (point_set_curvatures/__init__.py), so that
+// a string and an enumeration value name the same enumerator.
+template <class E, std::size_t N>
+void export_enum(py::module_& m, const char* python_name, const char* const (&names)[N], const char* doc)
+{
+  py::enum_<E> e(m, python_name, doc);
+  for(std::size_t i = 0; i < N; ++i)
+  {
+    std::string upper = names[i];
+    for(char& c : upper)
+      c = char(std::toupper(static_cast<unsigned char>(c)));
+    e.value(upper.c_str(), static_cast<E>(i));
+  }
+}
+
+// The enumerations of the estimators' options: AsoVariant, WeightKernel, SampleWeights,
+// AsoProjection.
+inline void export_enums(py::module_& m)
 {
   namespace PSC = CGAL::Point_set_curvatures;
-  py::dict enums;
-  enums["aso_variant"] = names_tuple(PSC::aso_variant_names);
-  enums["weight_kernel"] = names_tuple(PSC::weight_kernel_names);
-  enums["sample_weights"] = names_tuple(PSC::sample_weights_names);
-  enums["aso_projection"] = names_tuple(PSC::aso_projection_names);
-  return enums;
+  export_enum<CGAL::Aso_variant>(m, "AsoVariant", PSC::aso_variant_names,
+                                 "The ASO's variants (CGAL::Aso_variant): option aso_variant.");
+  export_enum<CGAL::Apss_weight_kernel>(m, "WeightKernel", PSC::weight_kernel_names,
+                                        "The weight kernels (CGAL::Apss_weight_kernel): option weight_kernel.");
+  export_enum<CGAL::Sample_weights>(m, "SampleWeights", PSC::sample_weights_names,
+                                    "The sample weights (CGAL::Sample_weights): option sample_weights.");
+  export_enum<CGAL::Aso_projection>(m, "AsoProjection", PSC::aso_projection_names,
+                                    "The ASO's projections (CGAL::Aso_projection): option aso_projection.");
 }
 
 // An estimator's description as a dict: name, function, summary, fields (a tuple of the

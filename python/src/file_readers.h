@@ -83,8 +83,8 @@ inline py::dict read_point_cloud_py(const std::string& path, const std::string& 
 }
 
 // Where the vertices of a binary PLY file lie: {"big_endian", "offset", "count",
-// "record_size", "properties" [(name, numpy type code, offset)], "xyz" (three names),
-// "normals" (three names, or None)}.
+// "record_size", "properties" [(name, numpy type code, offset)], "xyz" (the three properties
+// of the coordinates), "normals" (those of the normals, or None)}.
 inline py::dict ply_vertex_layout_py(const std::string& path)
 {
   const psc_tool::Ply_vertex_layout layout = reading([&] { return psc_tool::ply_vertex_layout(path); });
@@ -97,14 +97,13 @@ inline py::dict ply_vertex_layout_py(const std::string& path)
   for(const auto& p : layout.properties)
     properties.append(py::make_tuple(p.name, numpy_type_code(p.type), p.offset));
   d["properties"] = properties;
-  auto names = [&layout](const int* role) -> py::object {
+  auto roles = [&properties](const int* role) -> py::object {
     if(role[0] < 0)
       return py::none();
-    return py::make_tuple(layout.properties[role[0]].name, layout.properties[role[1]].name,
-                          layout.properties[role[2]].name);
+    return py::make_tuple(properties[role[0]], properties[role[1]], properties[role[2]]);
   };
-  d["xyz"] = names(layout.xyz);
-  d["normals"] = names(layout.normal);
+  d["xyz"] = roles(layout.xyz);
+  d["normals"] = roles(layout.normal);
   return d;
 }
 

@@ -250,7 +250,7 @@ PYBIND11_MODULE(_core, m)
   for(const CGAL::Point_set_curvatures::Estimator_description& e : CGAL::Point_set_curvatures::estimators)
     estimators.append(estimator_to_dict(e));
   m.attr("ESTIMATORS") = py::tuple(estimators);
-  m.attr("ENUM_NAMES") = enum_names_to_dict();
+  export_enums(m);
   m.attr("AUTOMATIC_NEIGHBORS") = py::make_tuple(CGAL::Point_set_curvatures::automatic_scale_ladder::smallest,
                                                  CGAL::Point_set_curvatures::automatic_scale_ladder::largest);
 

@@ -16,6 +16,9 @@ from conftest import fibonacci_sphere
 
 PACKAGE = os.path.dirname(psc.__file__)
 COMMON = {"min_neighbors", "accept_unnormalized_normals", "tile"}
+# the options whose values are a C++ enumeration (py::enum_ of _core)
+ENUMS = {"weight_kernel": psc.WeightKernel, "sample_weights": psc.SampleWeights, "aso_variant": psc.AsoVariant,
+         "aso_projection": psc.AsoProjection}
 
 
 def stub():
@@ -64,14 +67,40 @@ def test_methods_and_options_are_the_library_description():
         psc.ESTIMATORS["aso"]["options"][0]["default"] = "paper"
 
 
+def test_enumerations_are_the_options_choices():
+    # The py::enum_ of each option: its members are the option's choices in the library's
+    # order, with the C++ enumerators' values, and a member is accepted where its name is.
+    for name, e in psc.ESTIMATORS.items():
+        for o in e["options"]:
+            if o["name"] in ENUMS:
+                members = ENUMS[o["name"]].__members__
+                assert tuple(sorted(o["choices"])) == tuple(sorted(n.lower() for n in members)), o["name"]
+    assert [int(v) for v in psc.AsoVariant.__members__.values()] == [0, 1]
+    assert list(psc.WeightKernel.__members__) == ["SMOOTH", "CONSTANT", "SMOOTH_CUBIC", "SMOOTH_QUARTIC"]
+    points, normals = fibonacci_sphere(300, radius=2.0)
+    by_name = psc.estimate_curvatures(points, normals, neighbors=30, aso_variant="paper", weight_kernel="smooth_quartic",
+                                      sample_weights="tangent_voronoi_area", aso_projection="authors_implementation")
+    by_member = psc.estimate_curvatures(points, normals, neighbors=30, aso_variant=psc.AsoVariant.PAPER,
+                                        weight_kernel=psc.WeightKernel.SMOOTH_QUARTIC,
+                                        sample_weights=psc.SampleWeights.TANGENT_VORONOI_AREA,
+                                        aso_projection=psc.AsoProjection.AUTHORS_IMPLEMENTATION)
+    robust = psc.estimate_curvatures(points, normals, neighbors=30)
+    np.testing.assert_array_equal(by_name["mean"], by_member["mean"])
+    assert not np.array_equal(by_name["mean"], robust["mean"])
+    with pytest.raises(ValueError, match="aso_variant"):
+        psc.estimate_curvatures(points, normals, neighbors=30, aso_variant=psc.WeightKernel.SMOOTH)
+    with pytest.raises(ValueError, match="aso_variant"):
+        psc.estimate_curvatures(points, normals, neighbors=30, aso_variant=1)
+
+
 def test_stubs_restate_the_description():
     tree = stub()
     assert literal_names(stub_alias(tree, "Method")) == list(psc.METHODS)
-    enums = psc._core.ENUM_NAMES
-    assert literal_names(stub_alias(tree, "WeightKernel")) == list(enums["weight_kernel"])
-    assert literal_names(stub_alias(tree, "SampleWeights")) == list(enums["sample_weights"])
-    assert literal_names(stub_alias(tree, "AsoVariant")) == list(enums["aso_variant"])
-    assert literal_names(stub_alias(tree, "AsoProjection")) == list(enums["aso_projection"])
+    classes = {n.name: n for n in tree.body if isinstance(n, ast.ClassDef)}
+    for enum in ENUMS.values():
+        name = enum.__name__
+        assert literal_names(stub_alias(tree, name + "Name")) == [n.lower() for n in enum.__members__], name
+        assert [a.target.id for a in classes[name].body if isinstance(a, ast.AnnAssign)] == list(enum.__members__)
     functions = {n.name: n for n in ast.walk(tree) if isinstance(n, ast.FunctionDef)}
     keywords = {a.arg for a in functions["estimate_curvatures"].args.kwonlyargs}
     options = {o["name"] for e in psc.ESTIMATORS.values() for o in e["options"]}
@@ -112,6 +141,42 @@ def test_every_option_is_documented_and_accepted():
                 psc.estimate_curvatures(points, normals, method=name, neighbors=30, **{other: 1})
 
 
+def test_docstring_states_every_default_of_the_description():
+    # Each option's text in the docstring (up to the next option) gives its default: the
+    # description's value, or for the ASO's variant-dependent ones "default per variant",
+    # whose values are then listed per variant in the description's order.
+    bullets = method_bullets(psc.estimate_curvatures.__doc__)
+    spelled = {"true": "True", "false": "False"}
+    for name, e in psc.ESTIMATORS.items():
+        if not e["options"]:
+            continue
+        text = " ".join(bullets[name].split())
+        names = [o["name"] for o in e["options"]]
+        for k, o in enumerate(e["options"]):
+            start = text.index(f"``{o['name']}``")
+            later = [text.index(f"``{n}``", start) for n in names[k + 1:] if f"``{n}``" in text[start:]]
+            segment = text[start:min(later, default=len(text))]
+            default = o["default"]
+            if default.startswith("the variant's: "):
+                assert "default per variant" in segment, (name, o["name"])
+                expected = re.fullmatch(r"the variant's: (\S+) \(paper: (\S+)\)", default).groups()
+                listed = re.search(r"the robust variant's defaults are (.*?), the paper's (.*?);", text)
+                assert listed, name
+                by_variant = [[v.strip("`\" ") for v in group.split(",")] for group in listed.groups()]
+                index = [p["name"] for p in e["options"] if p["default"].startswith("the variant's")].index(o["name"])
+                for values, value in zip(by_variant, expected):
+                    assert values[index] == spelled.get(value, value), (name, o["name"], values)
+                continue
+            assert "default" in segment, (name, o["name"])
+            if default.startswith("the radius"):
+                assert "default the radius" in segment
+            else:
+                value = spelled.get(default, default)
+                stated = ((f'default ``"{value}"``', f'``"{value}"`` default') if o["choices"] else
+                          (f"default {value}",))
+                assert any(s in segment for s in stated), (name, o["name"], segment)
+
+
 def test_results_fill_the_declared_fields():
     points, normals = fibonacci_sphere(1000, radius=2.0)
     for name, e in psc.ESTIMATORS.items():
@@ -144,3 +209,25 @@ def test_manual_table_of_neighbour_counts_is_the_description():
         assert rows[label] == (e["min_neighbors"], e["good_neighbors"]), label
     aso = psc.ESTIMATORS["aso"]
     assert rows["ASO (paper's variant)"] == (aso["min_neighbors"], aso["paper_variant_good_neighbors"])
+
+
+def test_manual_table_of_quantities_is_the_description():
+    # Section 9's table says what each baseline estimates; the fields it fills are the
+    # description's.
+    path = os.path.join(os.path.dirname(__file__), "..", "..", "doc", "user_manual.md")
+    with open(path, encoding="utf-8") as f:
+        text = f.read()
+    section = text[text.index("{#psc_baselines}"):text.index("{#psc_features}")]
+    tensor = {"normal", "k_min", "k_max", "mean", "gaussian", "min_direction", "max_direction"}
+    words = {r"\f$\vert H \vert\f$": {"mean"}, "normal": {"normal"}, "full tensor": tensor,
+             r"\f$\vert k_{\min} \vert\f$": {"k_min"}, r"\f$\vert k_{\max} \vert\f$": {"k_max"},
+             "directions": {"min_direction", "max_direction"}}
+    by_function = {e["function"]: name for name, e in psc.ESTIMATORS.items()}
+    rows = {}
+    for line in section.splitlines():
+        m = re.match(r"\| `CGAL::(\w+)\(\)` \| (.*?) \|", line)
+        if m:
+            rows[by_function[m.group(1)]] = set().union(*(words[w.strip()] for w in m.group(2).split(", ")))
+    assert set(rows) == set(psc.METHODS) - {"aso", "apss"}
+    for name, fields in rows.items():
+        assert fields == set(psc.ESTIMATORS[name]["fields"]), name

@@ -77,8 +77,11 @@ def test_bad_files_and_arguments(tmp_path):
     (tmp_path / "c.laz").write_bytes(b"LASF")
     with pytest.raises(ValueError, match="laszip"):
         psc.read_point_cloud(tmp_path / "c.laz")
-    with pytest.raises(ValueError, match="no such file|No such file"):
+    with pytest.raises(FileNotFoundError):
         psc.read_point_cloud(tmp_path / "missing.ply")
+    (tmp_path / "dir.ply").mkdir()
+    with pytest.raises(ValueError, match="directory"):
+        psc.read_point_cloud(tmp_path / "dir.ply")
     with pytest.raises(ValueError, match="--columns"):
         psc.read_point_cloud(tmp_path / "short.xyz", columns="x,y")
     with pytest.raises(psc.ArgumentTypeError):

@@ -129,6 +129,8 @@ struct Estimator_description
   const Estimator_option* options;
   /// The number of `options`.
   std::size_t option_count;
+  /// Why it needs the whole cloud when it does not support tiles (for messages), else null.
+  const char* whole_cloud_reason;
 
   /// The first option.
   constexpr const Estimator_option* begin() const { return options; }
@@ -183,6 +185,7 @@ struct Supports
 {
   bool tiles = true;
   bool automatic_scale = false;
+  const char* whole_cloud_reason = nullptr;  // (without tiles)
 };
 
 template <std::size_t N>
@@ -191,20 +194,20 @@ constexpr Estimator_description described(const char* name, const char* function
                                           std::size_t paper_good, Supports supports,
                                           const Estimator_option (&options)[N])
 {
-  return Estimator_description{name,       function,       summary,
-                               fields,     min_neighbors,  good_neighbors,
-                               paper_good, supports.tiles, supports.automatic_scale,
-                               options,    N};
+  return Estimator_description{name,          function,       summary,        fields,
+                               min_neighbors, good_neighbors, paper_good,     supports.tiles,
+                               supports.automatic_scale,      options,        N,
+                               supports.whole_cloud_reason};
 }
 
 constexpr Estimator_description described(const char* name, const char* function, const char* summary,
                                           unsigned fields, std::size_t min_neighbors, std::size_t good_neighbors,
                                           Supports supports = {})
 {
-  return Estimator_description{name,           function,       summary,
-                               fields,         min_neighbors,  good_neighbors,
-                               good_neighbors, supports.tiles, supports.automatic_scale,
-                               nullptr,        0};
+  return Estimator_description{name,          function,       summary,        fields,
+                               min_neighbors, good_neighbors, good_neighbors, supports.tiles,
+                               supports.automatic_scale,      nullptr,        0,
+                               supports.whole_cloud_reason};
 }
 
 } // namespace internal
@@ -233,10 +236,25 @@ inline constexpr Estimator_description estimators[] = {
   internal::described("vcm", "estimate_vcm_curvatures", "baseline: Voronoi covariance measure",
                       estimate_fields::normal | estimate_fields::principal_curvatures |
                         estimate_fields::principal_directions,
-                      default_min_neighbors::vcm, 25, 25, internal::Supports{false, false}, internal::vcm_options),
+                      default_min_neighbors::vcm, 25, 25,
+                      internal::Supports{false, false,
+                                         "its Voronoi cells come from the Delaunay triangulation of every point"},
+                      internal::vcm_options),
   internal::described("wavejet", "estimate_wavejet_curvatures", "baseline: wavejet", estimate_fields::tensor,
                       default_min_neighbors::wavejet, 12),
 };
+
+namespace internal {
+// every estimator without tiles says why (the tool's message for inputs larger than memory)
+constexpr bool whole_cloud_reasons_given()
+{
+  for(const Estimator_description& e : estimators)
+    if(!e.supports_tiles && e.whole_cloud_reason == nullptr)
+      return false;
+  return true;
+}
+static_assert(whole_cloud_reasons_given(), "an estimator without tiles needs its whole_cloud_reason");
+} // namespace internal
 
 /// \ingroup PkgPointSetCurvaturesRef
 /// The estimator named `name` in `estimators`, null if there is none.

@@ -178,7 +178,7 @@ struct Pass_options
 };
 
 // The evaluation of estimate_at_every_point() at one point: TOO_FEW_NEIGHBORS below
-// `min_neighbors`, else the estimator (`refinement`: its normal fit, for a refinement pass),
+// `min_neighbors`, else the estimator (`refining_normals`: its normal fit, for a refinement pass),
 // DEGENERATE_FIT without tangent spread where the estimator asks for that test. With
 // `neighbor_extent` (a tile by count, with sample weights), records how far from the core of
 // `tile` the neighbours lie.
@@ -187,7 +187,7 @@ struct Estimate_at_point
 {
   const Estimator* estimator;
   std::size_t min_neighbors;
-  bool refinement;
+  bool refining_normals;
   Atomic_max* neighbor_extent;
   const Tile* tile;
 
@@ -198,7 +198,7 @@ struct Estimate_at_point
     if(nb.size < min_neighbors)
       return to_curvature_estimate<GeomTraits>(Local_estimate::invalid(Curvature_estimate_status::TOO_FEW_NEIGHBORS),
                                                nb.size);
-    Local_estimate e = refinement ? refinement_estimate(*estimator, nb) : (*estimator)(nb);
+    Local_estimate e = refining_normals ? refinement_estimate(*estimator, nb) : (*estimator)(nb);
     if(e.status == Curvature_estimate_status::VALID && estimator->check_tangent_spread &&
        neighborhood_lacks_tangent_spread(nb))
       e = Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
@@ -206,12 +206,109 @@ struct Estimate_at_point
   }
 };
 
+// Progress over the passes of estimate_at_every_point(), each a share of [0, 1] in
+// proportion to its cost: the area pass (a quarter of the neighbours) costs about half an
+// estimation pass, a refinement pass `refinement_cost` of one (a sphere fit: half; measured
+// with benchmark/aso_speed). Pass p reports in [start[p], start[p] + size[p]].
+struct Pass_shares
+{
+  std::vector<double> start, size;
+};
+
+inline Pass_shares pass_shares(bool area_pass, std::size_t refinements, double refinement_cost)
+{
+  std::vector<double> cost;
+  if(area_pass)
+    cost.push_back(0.5);
+  for(std::size_t r = 0; r < refinements; ++r)
+    cost.push_back(refinement_cost);
+  cost.push_back(1.0);
+  double total = 0;
+  for(double c : cost)
+    total += c;
+  Pass_shares shares;
+  double start = 0;
+  for(double c : cost)
+  {
+    shares.start.push_back(start / total);
+    shares.size.push_back(c / total);
+    start += c;
+  }
+  return shares;
+}
+
+// By count on a tile with sample weights, after the estimation: the own points' neighbours
+// lie within `extent` of the core. A neighbour p_j of an own point x_i (|p_j - x_i| <= r_i)
+// is within r_i minus x_i's depth in the core of the core, hence within `extent` of it; its
+// area is the whole-cloud one if the points it depends on (`area_reach`, per point of the
+// range) are within the halo. Otherwise throws Halo_too_small with the farthest such reach
+// (the reach of an area computed in a truncated range only overestimates the true one).
+template <class PointRange, class PointMap>
+void check_area_halo(const PointRange& points, const PointMap& point_map, const Tile& tile, double extent,
+                     const std::vector<double>& area_reach)
+{
+  double required = 0;
+  std::size_t i = 0;
+  for(auto it = points.begin(); it != points.end(); ++it, ++i)
+  {
+    const auto& p = get(point_map, *it);
+    const double d = tile.distance_to_core(to_double(p.x()), to_double(p.y()), to_double(p.z()));
+    if(d <= extent && area_reach[i] > tile.halo)
+      required = (std::max)(required, area_reach[i]);
+  }
+  if(required > tile.halo)
+    throw Halo_too_small(required, tile.halo);
+}
+
+// The passes after the area pass: `refinements` passes of the normal fit, each pass's
+// corrected normals the next pass's input normals (the input normal where a pass has no
+// estimate), then the estimation. `options_of(r)` gives pass r's options (its share of the
+// progress; its callback sets `cancelled`), `evaluation(refining_normals)` the evaluation at a
+// point. Cancelled before the estimation pass: every point NOT_COMPUTED; during it: the points
+// not reached are NOT_COMPUTED, as in a single pass.
+template <class Estimate, class Geom_traits, class ConcurrencyTag, class PointRange, class PointMap, class NormalMap,
+          class OptionsOf, class Evaluation>
+std::vector<Estimate> estimation_after_refinements(const PointRange& points, bool radius_given, double radius,
+                                                   std::size_t k, const PointMap& point_map,
+                                                   const NormalMap& normal_map, std::size_t refinements,
+                                                   const OptionsOf& options_of, const Evaluation& evaluation,
+                                                   const bool& cancelled)
+{
+  typedef std::pair<typename Geom_traits::Point_3, typename Geom_traits::Vector_3> Oriented;
+  std::vector<Estimate> result;
+  for(std::size_t r = 0; r <= refinements; ++r)
+  {
+    const bool last = r == refinements;
+    const Neighborhood_options o = options_of(r);
+    if(r == 0)
+      result = evaluate_with_maps<Estimate, ConcurrencyTag>(points, radius_given, radius, k, point_map, normal_map, o,
+                                                            evaluation(!last));
+    else
+    {
+      std::vector<Oriented> refined;
+      refined.reserve(result.size());
+      std::size_t i = 0;
+      for(auto it = points.begin(); it != points.end(); ++it, ++i)
+        refined.emplace_back(get(point_map, *it), result[i].is_valid() ? result[i].normal : get(normal_map, *it));
+      const CGAL::First_of_pair_property_map<Oriented> refined_points;
+      const CGAL::Second_of_pair_property_map<Oriented> refined_normals;
+      result = evaluate_with_maps<Estimate, ConcurrencyTag>(refined, radius_given, radius, k, refined_points,
+                                                            refined_normals, o, evaluation(!last));
+    }
+    if(cancelled && !last)
+      return std::vector<Estimate>(result.size());
+    if(cancelled)
+      break;
+  }
+  return result;
+}
+
 // Per-point curvature estimation, from `estimator` (a copyable, stateless
 // Local_estimate(const Neighborhood&) functor deriving from Estimator_base). With
 // estimator.area_weights, a first pass computes the tangent Voronoi areas (for an
 // estimator with takes_weight_map, the weights of the named parameter sample_weight_map,
 // if given, replace them, whatever estimator.area_weights says); with
-// estimator.refinement = n, n passes of its normal fit (refinement_estimate()) each replace
+// estimator.normal_refinements = n, n passes of its normal fit (refinement_estimate()) each replace
 // the input normals by their corrected normals before the estimation. The callback sees the
 // passes as consecutive shares of [0, 1]; cancelled before the estimation pass, every point
 // is NOT_COMPUTED (a refinement pass's values are not the estimator's).
@@ -242,8 +339,8 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
   // With a tile, sample weights and neighbourhoods by count: how far from the core the
   // neighbours of the own points lie (see below).
   Atomic_max* neighbor_extent = nullptr;
-  const auto evaluation = [&](bool refinement) {
-    return Estimate_at_point<Estimator, Geom_traits>{&estimator, min_neighbors, refinement, neighbor_extent,
+  const auto evaluation = [&](bool refining_normals) {
+    return Estimate_at_point<Estimator, Geom_traits>{&estimator, min_neighbors, refining_normals, neighbor_extent,
                                                      &options.tile};
   };
   const auto point_map = NP_helper::get_const_point_map(points, np);
@@ -257,46 +354,27 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
   if(weights_given)
     options.point_weights = &given_weights;
   const bool area_pass = estimator.area_weights && !weights_given;
-  if(!area_pass && estimator.refinement == 0)
+  if(!area_pass && estimator.normal_refinements == 0)
     return evaluate_with_maps<Estimate, ConcurrencyTag>(points, radius_given, radius, visit_k, point_map,
                                                         normal_map, options, evaluation(false));
 
-  if(options.has_tile && estimator.refinement > 0)
+  if(options.has_tile && estimator.normal_refinements > 0)
     throw std::invalid_argument(std::string(function_name) + ": parameter 'tile' is not supported with "
                                 "normal_refinement");
   Area_cache own_areas;
   Area_cache& cache = pass.areas ? *pass.areas : own_areas;
   const bool compute_areas = area_pass && !cache.filled;
-  // Progress over the passes, each a share of [0, 1] in proportion to its cost: the area
-  // pass (a quarter of the neighbours) and a refinement pass (a sphere fit) cost about half
-  // an estimation pass (measured with benchmark/aso_speed).
-  std::vector<double> share_start, share_size;
-  {
-    std::vector<double> cost;
-    if(compute_areas)
-      cost.push_back(0.5);
-    for(std::size_t r = 0; r < estimator.refinement; ++r)
-      cost.push_back(Has_refinement_fit<Estimator>::value ? 0.5 : 1.0);
-    cost.push_back(1.0);
-    double total = 0;
-    for(double c : cost)
-      total += c;
-    double start = 0;
-    for(double c : cost)
-    {
-      share_start.push_back(start / total);
-      share_size.push_back(c / total);
-      start += c;
-    }
-  }
+  const Pass_shares shares =
+    pass_shares(compute_areas, estimator.normal_refinements, Has_refinement_fit<Estimator>::value ? 0.5 : 1.0);
   std::size_t pass_index = 0;
   const std::function<bool(double)> callback = options.callback;
   bool cancelled = false;
+  // the options of pass p: the callback maps its progress into the pass's share
   auto share = [&](std::size_t p) {
     Neighborhood_options o = options;
     if(callback)
-      o.callback = [&callback, &cancelled, &share_start, &share_size, p](double f) {
-        const bool go_on = callback(p + 1 == share_start.size() && f == 1.0 ? 1.0 : share_start[p] + share_size[p] * f);
+      o.callback = [&callback, &cancelled, &shares, p](double f) {
+        const bool go_on = callback(p + 1 == shares.start.size() && f == 1.0 ? 1.0 : shares.start[p] + shares.size[p] * f);
         cancelled = cancelled || !go_on;
         return go_on;
       };
@@ -331,58 +409,15 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
   if(area_pass)
   {
     options.point_weights = &areas;
-    options.reach = radius_given ? 2 : 1;
+    options.halo_radii = radius_given ? 2 : 1;
     if(tile_by_count)
       neighbor_extent = &own_neighbor_extent;
   }
-  // Refinement: each pass's corrected normals are the next pass's input normals (the input
-  // normal where a pass has no estimate); the last pass is the estimation.
-  typedef std::pair<typename Geom_traits::Point_3, typename Geom_traits::Vector_3> Oriented;
-  std::vector<Estimate> result;
-  for(std::size_t r = 0; r <= estimator.refinement; ++r)
-  {
-    const bool last = r == estimator.refinement;
-    Neighborhood_options o = share(pass_index++);
-    if(r == 0)
-      result = evaluate_with_maps<Estimate, ConcurrencyTag>(points, radius_given, radius, visit_k, point_map,
-                                                            normal_map, o, evaluation(!last));
-    else
-    {
-      std::vector<Oriented> refined;
-      refined.reserve(result.size());
-      std::size_t i = 0;
-      for(auto it = points.begin(); it != points.end(); ++it, ++i)
-        refined.emplace_back(get(point_map, *it), result[i].is_valid() ? result[i].normal : get(normal_map, *it));
-      const CGAL::First_of_pair_property_map<Oriented> refined_points;
-      const CGAL::Second_of_pair_property_map<Oriented> refined_normals;
-      result = evaluate_with_maps<Estimate, ConcurrencyTag>(refined, radius_given, radius, visit_k, refined_points,
-                                                            refined_normals, o, evaluation(!last));
-    }
-    if(cancelled && !last)
-      return std::vector<Estimate>(result.size());  // every point NOT_COMPUTED
-    if(cancelled)
-      break;  // (the points not reached are NOT_COMPUTED, as in a single pass)
-  }
+  std::vector<Estimate> result = estimation_after_refinements<Estimate, Geom_traits, ConcurrencyTag>(
+    points, radius_given, radius, visit_k, point_map, normal_map, estimator.normal_refinements,
+    [&](std::size_t r) { return share(pass_index + r); }, evaluation, cancelled);
   if(neighbor_extent && !cancelled)
-  {
-    // A neighbour p_j of an own point x_i (|p_j - x_i| <= r_i) is within r_i minus x_i's depth
-    // in the core of the core, hence within `extent` of it; its area is the whole-cloud one
-    // if the points it depends on are within the halo. Otherwise the halo must grow to the
-    // farthest such reach (the reach of an area computed in a truncated range only
-    // overestimates the true one).
-    const double extent = neighbor_extent->value();
-    double required = 0;
-    std::size_t i = 0;
-    for(auto it = points.begin(); it != points.end(); ++it, ++i)
-    {
-      const auto& p = get(point_map, *it);
-      const double d = options.tile.distance_to_core(to_double(p.x()), to_double(p.y()), to_double(p.z()));
-      if(d <= extent && area_reach[i] > options.tile.halo)
-        required = (std::max)(required, area_reach[i]);
-    }
-    if(required > options.tile.halo)
-      throw Halo_too_small(required, options.tile.halo);
-  }
+    check_area_halo(points, point_map, options.tile, neighbor_extent->value(), area_reach);
   return result;
 }
 

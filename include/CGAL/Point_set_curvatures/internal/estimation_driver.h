@@ -88,7 +88,7 @@ struct Estimator_base
   // Whether the driver computes tangent Voronoi areas first and hands them to the estimator
   // (nb.sample_weight), and how many times the estimation reruns on its own normals.
   bool area_weights = false;
-  std::size_t refinement = 0;
+  std::size_t normal_refinements = 0;
   // Whether the estimator multiplies its weights by nb.sample_weight, so that weights given
   // with the named parameter sample_weight_map are read (and checked) for it.
   bool takes_weight_map = false;
@@ -181,11 +181,11 @@ struct Neighborhood_options
   bool check_normal_length = true;
   std::function<bool(double)> callback;      // progress in [0,1]; false cancels
   const char* function_name = "Point_set_curvatures";  // for error messages
-  // A tile (Tile.h): only its own points are visited; `reach` is how far, in radii, an
+  // A tile (Tile.h): only its own points are visited; `halo_radii` is how far, in radii, an
   // estimate depends on other points (1: its neighbourhood), which the halo must cover.
   bool has_tile = false;
   Tile tile;
-  double reach = 1;
+  double halo_radii = 1;
   // Per input point, a weight the visitor receives per neighbour (nb.sample_weight), or null.
   const std::vector<double>* point_weights = nullptr;
   // Per input point, whether it is visited (non-zero), or null for every point: the others
@@ -515,12 +515,12 @@ void for_each_batch(bool parallel, const Sorted_cloud& cloud, const std::functio
 // Throws unless a tile's halo covers the reach of its estimates with a fixed radius.
 inline void check_tile_halo(const Neighborhood_options& options, double radius)
 {
-  if(options.has_tile && !(options.tile.halo >= options.reach * radius))
+  if(options.has_tile && !(options.tile.halo >= options.halo_radii * radius))
   {
     std::ostringstream msg;
     msg.precision(17);
     msg << options.function_name << ": parameter 'tile': the halo " << options.tile.halo
-        << " must be at least " << options.reach * radius << " (" << options.reach
+        << " must be at least " << options.halo_radii * radius << " (" << options.halo_radii
         << " times the radius) for exact results";
     throw std::invalid_argument(msg.str());
   }

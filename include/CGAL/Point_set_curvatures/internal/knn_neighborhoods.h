@@ -137,7 +137,7 @@ inline void sort_by_input_index(const Sorted_cloud& cloud, std::uint32_t* index,
 }
 
 // With a tile, the largest halo its own points need so far: a point's neighbourhood (radius
-// times `reach`) must lie within the halo around the core.
+// times `halo_radii`) must lie within the halo around the core.
 class Halo_requirement
 {
 public:
@@ -146,7 +146,7 @@ public:
   {
     if(!m_options.has_tile)
       return;
-    const double need = m_options.reach * radius - m_options.tile.distance_inside_core(x[0], x[1], x[2]);
+    const double need = m_options.halo_radii * radius - m_options.tile.distance_inside_core(x[0], x[1], x[2]);
     if(need > m_options.tile.halo)
     {
       std::lock_guard<std::mutex> lock(m_mutex);
