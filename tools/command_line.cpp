@@ -197,7 +197,7 @@ void print_usage(std::ostream& os)
 namespace {
 
 // --neighbors auto: the ladder of counts from automatic_smallest to automatic_largest.
-void use_automatic_scale(Scale& s)
+void use_automatic_scale(Estimation_settings& s)
 {
   s.neighbors = automatic_smallest;
   s.automatic_largest = automatic_largest;
@@ -246,7 +246,7 @@ bool parse_memory_size(const std::string& text, double& bytes)
   return true;
 }
 
-void parse_radius(const std::string& text, Scale& scale)
+void parse_radius(const std::string& text, Estimation_settings& scale)
 {
   const bool multiple = !text.empty() && (text.back() == 'x' || text.back() == 'X');
   double value = 0;

@@ -29,7 +29,7 @@ struct Options
 {
   std::string input, output;
   const Method* method = nullptr;
-  Scale scale;
+  Estimation_settings scale;
   bool radius_given = false, neighbors_given = false;
   int threads = 0;  // 0: every core
   bool quiet = false, ascii = false, require_normals = false, help = false;

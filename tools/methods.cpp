@@ -25,7 +25,7 @@ namespace PSC = CGAL::Point_set_curvatures;
 
 // The run function of an estimator; the Point_set_3's point and normal maps are the defaults.
 #define PSC_TOOL_RUN(NAME)                                                                     \
-  Run{#NAME, [](const Point_set& points, const Scale& scale, const Progress& callback,          \
+  Run{#NAME, [](const Point_set& points, const Estimation_settings& scale, const Progress& callback,          \
                 const PSC::Tile& tile) -> Estimates {                                           \
         const auto np = PSC::parameters::min_neighbors(                                         \
           scale.min_neighbors ? scale.min_neighbors : PSC::default_min_neighbors::NAME,         \

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // The estimators the point_set_curvatures tool can run: one entry per estimate_*_curvatures()
-// function of the package (CGAL::Point_set_curvatures::estimators), with its run function; `Scale`
+// function of the package (CGAL::Point_set_curvatures::estimators), with its run function; `Estimation_settings`
 // carries the neighbourhood size and the options every method reads. The curvature
 // estimators are instantiated in methods.cpp alone: the rest of the tool only sees this table.
 
@@ -32,7 +32,7 @@ typedef CGAL::Curvature_estimate<Kernel> Estimate;
 typedef std::vector<Estimate> Estimates;
 
 // The scale of the neighbourhoods and the options every method reads.
-struct Scale
+struct Estimation_settings
 {
   bool by_count = true;
   std::size_t neighbors = 40;  // by count
@@ -49,7 +49,8 @@ struct Scale
 };
 
 // Every point is estimated with PSC::Tile::whole_space(), a tile's own points otherwise.
-typedef Estimates (*Run_method)(const Point_set&, const Scale&, const Progress&, const CGAL::Point_set_curvatures::Tile&);
+typedef Estimates (*Run_method)(const Point_set&, const Estimation_settings&, const Progress&,
+                                 const CGAL::Point_set_curvatures::Tile&);
 
 // A method: the library's description of its estimator (name, summary, fields, neighbour
 // counts, options) and the function that runs it.

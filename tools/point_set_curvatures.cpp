@@ -108,9 +108,9 @@ void refuse_without_normals(const Options& o, bool with_normals)
 // The scale and estimator options of the run: the command line's, with the position fit
 // blended into the robust ASO by default when the normals are estimated (--position-blend;
 // --variant paper stays the paper's estimator unless asked).
-Scale estimation_scale(const Options& o, bool normals_estimated)
+Estimation_settings estimation_scale(const Options& o, bool normals_estimated)
 {
-  Scale s = o.scale;
+  Estimation_settings s = o.scale;
   const bool robust = s.variant == CGAL::Aso_variant::ROBUST;
   s.position_fit_blend = o.position_blend >= 0 ? o.position_blend : normals_estimated && robust ? 0.5 : 0.0;
   return s;
@@ -174,7 +174,7 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
   if(!o.method->supports_tiles)
     throw Error(cat(too_large, ": --method ", o.method->name, " needs the whole cloud (",
                     o.method->whole_cloud_reason, "); raise --memory-limit"));
-  const Scale scale = estimation_scale(o, !with_normals);
+  const Estimation_settings scale = estimation_scale(o, !with_normals);
   reserve_output(o, output, o.drop_attributes && !las ? std::vector<Attribute>() : input.cloud.attributes, n, las);
   Tiling tiling;
   tiling.memory_limit = memory_limit;
@@ -364,7 +364,7 @@ int run(const Options& o)
   refuse_without_normals(o, with_normals);
 
   // 3. Average spacing, for --radius Nx.
-  Scale scale = estimation_scale(o, !with_normals);
+  Estimation_settings scale = estimation_scale(o, !with_normals);
   const auto spacing_start = std::chrono::steady_clock::now();
   if(!scale.by_count && scale.spacing_multiple > 0)
   {

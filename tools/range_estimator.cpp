@@ -27,7 +27,7 @@ double total_halo(double h, double normal) { return std::nextafter(h + normal, i
 
 } // namespace
 
-Range_estimator::Range_estimator(const Options& o, const Scale& scale, Orientation_choice& orientation,
+Range_estimator::Range_estimator(const Options& o, const Estimation_settings& scale, Orientation_choice& orientation,
                                  bool with_normals, double curvature_halo_guess, double normal_halo_guess)
   : m_o(o), m_scale(scale), m_orientation(orientation), m_with_normals(with_normals),
     m_curvature_halo_guess(curvature_halo_guess), m_normal_halo_guess(with_normals ? 0.0 : normal_halo_guess),

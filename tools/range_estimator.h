@@ -46,8 +46,8 @@ class Range_estimator
 public:
   // `with_normals`: the file has normals (none are estimated). The first halos of a tile:
   // `curvature_halo_guess` for the curvatures, `normal_halo_guess` for the normals.
-  Range_estimator(const Options& o, const Scale& scale, Orientation_choice& orientation, bool with_normals,
-                  double curvature_halo_guess = 0, double normal_halo_guess = 0);
+  Range_estimator(const Options& o, const Estimation_settings& scale, Orientation_choice& orientation,
+                  bool with_normals, double curvature_halo_guess = 0, double normal_halo_guess = 0);
 
   // The estimates of the points of `ps` (all of them, the tile's own points otherwise; the
   // normals of `ps` are set when estimated). `phase(name)` starts the progress phase of
@@ -65,7 +65,7 @@ public:
 
 private:
   const Options& m_o;
-  const Scale m_scale;
+  const Estimation_settings m_scale;
   Orientation_choice& m_orientation;
   const bool m_with_normals;
   const double m_curvature_halo_guess, m_normal_halo_guess;

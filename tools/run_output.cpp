@@ -36,8 +36,8 @@ std::array<unsigned char, 3> diverging_color(double v, double range)
 
 // The output's format, columns and header comments, with colours by `color_quantity` (-1:
 // none) over +-color_range.
-Output_layout output_layout(const Options& o, const Scale& scale, const std::vector<Attribute>& attributes,
-                            int color_quantity, double color_range)
+Output_layout output_layout(const Options& o, const Estimation_settings& scale,
+                            const std::vector<Attribute>& attributes, int color_quantity, double color_range)
 {
   Output_layout layout;
   layout.format = lower_extension(o.output) == ".csv" ? Output_layout::CSV
@@ -100,7 +100,7 @@ void reserve_output(const Options& o, Temporary_output& output, const std::vecto
   output.reserve(output_size_bound(layout, n) + 1024, output_description(layout, n));
 }
 
-void write_output(const Run_context& c, Temporary_output& output, const Scale& scale,
+void write_output(const Run_context& c, Temporary_output& output, const Estimation_settings& scale,
                   const std::vector<Attribute>& attributes, std::size_t n, const Row_summary& summary,
                   const Row_source& rows, const Las_output_options* las)
 {

@@ -35,7 +35,7 @@ void reserve_output(const Options& o, Temporary_output& output, const std::vecto
 
 // Writes the n rows of `rows` (asked for in input order), coloured from the summary; a LAS
 // output when `las` is not null.
-void write_output(const Run_context& c, Temporary_output& output, const Scale& scale,
+void write_output(const Run_context& c, Temporary_output& output, const Estimation_settings& scale,
                   const std::vector<Attribute>& attributes, std::size_t n, const Row_summary& summary,
                   const Row_source& rows, const Las_output_options* las);
 

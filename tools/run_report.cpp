@@ -33,7 +33,7 @@ std::size_t usable_points(const Row_summary& summary)
 
 // "fewer than 12 neighbours": the least count of a valid estimate, when the tool knows it
 // (--min-neighbors below a fit's own least count, 3 or 6 points, is raised to it).
-std::string fewer_than_least(const Method& m, const Scale& scale)
+std::string fewer_than_least(const Method& m, const Estimation_settings& scale)
 {
   const std::size_t least = scale.min_neighbors ? scale.min_neighbors : m.min_neighbors;
   return least >= 6 ? cat("fewer than ", least, " neighbours") : std::string("too few neighbours for a fit");
@@ -41,7 +41,8 @@ std::string fewer_than_least(const Method& m, const Scale& scale)
 
 // When the input holds fewer usable points than the method's `good_neighbors`, no scale
 // helps: what to say instead of a suggested scale ("" otherwise).
-std::string too_small_input(const Method& m, const Scale& scale, const std::string& input, const Row_summary& summary)
+std::string too_small_input(const Method& m, const Estimation_settings& scale, const std::string& input,
+                            const Row_summary& summary)
 {
   const std::size_t usable = usable_points(summary);
   const std::size_t good = m.good_neighbors_of(scale.variant);
@@ -54,7 +55,7 @@ std::string too_small_input(const Method& m, const Scale& scale, const std::stri
 
 // The scale to try for about 40 neighbours, from the median count (counts grow like the
 // radius squared on a surface).
-std::string suggested_scale(const Method& m, const Scale& scale, double median)
+std::string suggested_scale(const Method& m, const Estimation_settings& scale, double median)
 {
   if(scale.by_count)
     return cat("--neighbors ", std::max<std::size_t>(40, m.good_neighbors_of(scale.variant)));
@@ -65,7 +66,7 @@ std::string suggested_scale(const Method& m, const Scale& scale, double median)
 
 // The warning when neighbourhoods are small: empty if the median count of the estimated
 // points reaches the method's measured `good_neighbors`.
-std::string small_neighborhood_warning(const Method& m, const Scale& scale, const Row_summary& summary,
+std::string small_neighborhood_warning(const Method& m, const Estimation_settings& scale, const Row_summary& summary,
                                        const std::string& input)
 {
   if(summary.neighbor_sample().empty())
@@ -88,7 +89,7 @@ std::string small_neighborhood_warning(const Method& m, const Scale& scale, cons
 
 // Why no point got a valid estimate (exit status 3): the most frequent status, what causes
 // it, and what to try.
-std::string no_valid_estimate_reason(const Method& m, const Scale& scale, const Row_summary& summary,
+std::string no_valid_estimate_reason(const Method& m, const Estimation_settings& scale, const Row_summary& summary,
                                      const std::string& input, bool normals_estimated)
 {
   typedef CGAL::Curvature_estimate_status Status;
@@ -147,8 +148,9 @@ std::string no_valid_estimate_reason(const Method& m, const Scale& scale, const 
 }
 
 // The warnings and the summary (not with --quiet).
-void print_summary(const Run_context& c, const Scale& scale, std::size_t n, const std::string& estimated_normals,
-                   const Row_summary& summary, const std::string& times, const std::string& tiles)
+void print_summary(const Run_context& c, const Estimation_settings& scale, std::size_t n,
+                   const std::string& estimated_normals, const Row_summary& summary, const std::string& times,
+                   const std::string& tiles)
 {
   const Options& o = c.o;
   if(o.quiet)
@@ -185,7 +187,7 @@ std::string s3(double seconds)
   return text;
 }
 
-std::string scale_description(const Scale& s)
+std::string scale_description(const Estimation_settings& s)
 {
   if(s.by_count && s.automatic_largest > 0)
     return cat("automatic scale: ", s.neighbors, " to ", s.automatic_largest,
@@ -197,7 +199,7 @@ std::string scale_description(const Scale& s)
   return cat("radius ", s.radius);
 }
 
-std::string method_label(const Options& o, const Scale& scale)
+std::string method_label(const Options& o, const Estimation_settings& scale)
 {
   if(std::string(o.method->name) != "aso")
     return o.method->name;
@@ -207,8 +209,9 @@ std::string method_label(const Options& o, const Scale& scale)
              ")");
 }
 
-void print_report(const Run_context& c, const Scale& scale, std::size_t n, const std::string& estimated_normals,
-                  const Row_summary& summary, const std::string& times, const std::string& tiles)
+void print_report(const Run_context& c, const Estimation_settings& scale, std::size_t n,
+                  const std::string& estimated_normals, const Row_summary& summary, const std::string& times,
+                  const std::string& tiles)
 {
   const Options& o = c.o;
   const bool none_valid = n > 0 && summary.valid() == 0;

@@ -36,18 +36,19 @@ std::string s3(double seconds);
 
 // "automatic scale: 40 to 640 nearest neighbours, ...": the scale, for the summary and the
 // output's header.
-std::string scale_description(const Scale& s);
+std::string scale_description(const Estimation_settings& s);
 
 // "aso (robust variant)": the method and its options, for the summary and the output's header.
-std::string method_label(const Options& o, const Scale& scale);
+std::string method_label(const Options& o, const Estimation_settings& scale);
 
 // The report on standard output, and the warnings (after the output is written, so that a
 // failure prints one line only). Throws No_valid_estimate, after them, when no point got a
 // valid estimate (exit status 3). `estimated_normals`: how the normals were estimated (empty
 // when the file has them); `times`: the phases' seconds; `tiles`: the tiles' line (empty in
 // memory).
-void print_report(const Run_context& c, const Scale& scale, std::size_t n, const std::string& estimated_normals,
-                  const Row_summary& summary, const std::string& times, const std::string& tiles);
+void print_report(const Run_context& c, const Estimation_settings& scale, std::size_t n,
+                  const std::string& estimated_normals, const Row_summary& summary, const std::string& times,
+                  const std::string& tiles);
 
 } // namespace psc_tool
 
