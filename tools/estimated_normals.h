@@ -29,9 +29,10 @@ std::array<int, 3> pulse_attributes(const std::vector<Attribute>& attributes);
 
 // Turns each normal towards the origin of its point's pulse: against the pulse's direction
 // (x(t), y(t), z(t): from the scanner to the point). Points without a direction (zero or not
-// finite) keep the +z orientation; returns their number.
-template <class Normal_of, class Pulse_of>
-std::size_t orient_towards_scanner(std::size_t n, const Normal_of& normal, const Pulse_of& pulse)
+// finite) keep the +z orientation; returns the number of those for which `counted(i)` holds.
+template <class Normal_of, class Pulse_of, class Counted>
+std::size_t orient_towards_scanner(std::size_t n, const Normal_of& normal, const Pulse_of& pulse,
+                                   const Counted& counted)
 {
   std::size_t without = 0;
   for(std::size_t i = 0; i < n; ++i)
@@ -40,7 +41,7 @@ std::size_t orient_towards_scanner(std::size_t n, const Normal_of& normal, const
     const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
     if(!(dd > 0) || !std::isfinite(dd))
     {
-      ++without;
+      without += counted(i) ? 1 : 0;
       continue;
     }
     Vector& v = normal(i);

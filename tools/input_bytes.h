@@ -238,6 +238,10 @@ inline void hand_over(Point_cloud& cloud, const Read_options& options, bool at_e
     a.values.clear();
 }
 
+// The size of `path`, a regular file; throws Error naming what it is otherwise (missing,
+// unreadable, a directory, a pipe or a device).
+std::uint64_t regular_file_size(const std::string& path);
+
 // The PLY reader (read_ply.cpp): the file after its first byte.
 Point_cloud read_ply(Byte_source& bytes, const std::string& path, const Read_options& options);
 

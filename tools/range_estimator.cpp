@@ -76,19 +76,15 @@ Estimates Range_estimator::estimate(Point_set& ps, const PSC::Tile& tile, const 
       {
         if(!pulses[0] || !pulses[1] || !pulses[2])
           throw std::logic_error("Range_estimator: --orient scanner without pulse directions");
-        undirected = 0;
-        orient_towards_scanner(
+        undirected = orient_towards_scanner(
           ps.size(), [&ps](std::size_t i) -> Vector& { return ps.normal(*(ps.begin() + i)); },
-          [&](std::size_t i) {
-            const std::array<double, 3> d = {{(*pulses[0])[i], (*pulses[1])[i], (*pulses[2])[i]}};
-            const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-            if(!(dd > 0) || !std::isfinite(dd))
-            {
-              // an own point (the finite points of the whole cloud) whose normal stays +z
-              const Point& p = ps.point(*(ps.begin() + i));
-              undirected += tile.owns(p.x(), p.y(), p.z()) && ps.normal(*(ps.begin() + i)) != CGAL::NULL_VECTOR;
-            }
-            return d;
+          [&pulses](std::size_t i) {
+            return std::array<double, 3>{{(*pulses[0])[i], (*pulses[1])[i], (*pulses[2])[i]}};
+          },
+          [&ps, &tile](std::size_t i) {
+            // an own point (the finite points of the whole cloud) whose normal stays +z
+            const Point& p = ps.point(*(ps.begin() + i));
+            return tile.owns(p.x(), p.y(), p.z()) && ps.normal(*(ps.begin() + i)) != CGAL::NULL_VECTOR;
           });
       }
       m_normals_seconds += seconds_since(start);

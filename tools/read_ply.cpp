@@ -8,11 +8,6 @@
 
 #include "input_bytes.h"
 
-#include <sys/stat.h>
-
-#include <cerrno>
-#include <cstring>
-
 #include <cmath>
 #include <limits>
 
@@ -511,12 +506,7 @@ Point_cloud read_ply(Byte_source& bytes, const std::string& path, const Read_opt
 Ply_vertex_layout ply_vertex_layout(const std::string& path)
 {
   using namespace input;
-  struct stat st;
-  if(::stat(path.c_str(), &st) != 0)
-    throw Error(cat("cannot open input ", in_quotes(path), ": ", std::strerror(errno)));
-  if(!S_ISREG(st.st_mode))
-    throw Error(cat("cannot read input ", in_quotes(path), ": not a regular file"));
-  const std::uint64_t size = std::uint64_t(st.st_size);
+  const std::uint64_t size = regular_file_size(path);
   Byte_source bytes(path, size, Progress());
   Line_source lines(bytes);
   const Ply_header h = read_ply_header(lines, path);
@@ -528,15 +518,14 @@ Ply_vertex_layout ply_vertex_layout(const std::string& path)
   layout.offset = bytes.consumed();
   const std::uint64_t most = std::numeric_limits<std::uint64_t>::max();
   for(std::size_t e = 0; e <= h.vertex; ++e)
-  {
-    const Ply_element& element = h.elements[e];
-    if(element.has_lists())
-      throw Error(cat(in_quotes(path), ": the PLY element ", quoted(element.name), " has list properties ",
+    if(h.elements[e].has_lists())
+      throw Error(cat(in_quotes(path), ": the PLY element ", quoted(h.elements[e].name), " has list properties ",
                       e == h.vertex ? "" : "before the vertices ",
                       "(records of varying size cannot be read in place)"));
+  for(std::size_t e = 0; e < h.vertex; ++e)
+  {
+    const Ply_element& element = h.elements[e];
     const std::size_t record = element.least_binary_size();
-    if(e == h.vertex)
-      break;
     if(record > 0 && element.count > (most - layout.offset) / record)
       throw Error(cat(in_quotes(path), ": truncated (the PLY element ", quoted(element.name), " of ", element.count,
                       " items is larger than any file)"));

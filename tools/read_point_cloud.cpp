@@ -372,7 +372,9 @@ std::vector<std::string> parse_columns(const std::string& text)
   return names;
 }
 
-Point_cloud read_point_cloud(const std::string& path, const Read_options& options)
+namespace input {
+
+std::uint64_t regular_file_size(const std::string& path)
 {
   struct stat st;
   if(::stat(path.c_str(), &st) != 0)
@@ -381,6 +383,14 @@ Point_cloud read_point_cloud(const std::string& path, const Read_options& option
     throw Error(cat("cannot read input ", in_quotes(path), ": it is a directory"));
   if(!S_ISREG(st.st_mode))
     throw Error(cat("cannot read input ", in_quotes(path), ": not a regular file (a pipe or a device?)"));
+  return std::uint64_t(st.st_size);
+}
+
+} // namespace input
+
+Point_cloud read_point_cloud(const std::string& path, const Read_options& options)
+{
+  const std::uint64_t size = regular_file_size(path);
   const std::string ext = lower_extension(path);
   // .asc: CloudCompare's ASCII export (values separated by spaces or commas, an optional
   // header line such as //X Y Z Nx Ny Nz), read like .txt
@@ -393,7 +403,7 @@ Point_cloud read_point_cloud(const std::string& path, const Read_options& option
                     " (expected ", readable_formats(), ")"));
   if(!options.columns.empty() && !text)
     throw Error(cat("--columns applies to text point files (.xyz, .pwn, .txt, .csv, .asc), not to ", in_quotes(path)));
-  Byte_source bytes(path, std::uint64_t(st.st_size), options.progress);
+  Byte_source bytes(path, size, options.progress);
   Point_cloud cloud = text            ? read_xyz(bytes, path, options)
                       : ext == ".ply" ? read_ply(bytes, path, options)
                       : ext == ".las" ? read_las(bytes, path, options)

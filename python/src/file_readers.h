@@ -8,11 +8,13 @@
 #ifndef POINT_SET_CURVATURES_PYTHON_FILE_READERS_H
 #define POINT_SET_CURVATURES_PYTHON_FILE_READERS_H
 
+#include "output_arrays.h"
 #include "read_point_cloud.h"
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <string>
 #include <utility>
@@ -46,7 +48,7 @@ auto reading(const F& f) -> decltype(f())
 // The (n, 3) float64 array of the values `v` (3 per point).
 inline py::array_t<double> n3_array(const std::vector<double>& v)
 {
-  py::array_t<double> a({py::ssize_t(v.size() / 3), py::ssize_t(3)});
+  py::array_t<double> a = array_n3(v.size() / 3);
   std::copy(v.begin(), v.end(), a.mutable_data());
   return a;
 }
