@@ -1722,6 +1722,110 @@ TEST_CASE("estimate_oriented_normals: closed objects outward, open ones up, auto
                   std::invalid_argument);
 }
 
+namespace {
+
+// The flat arrays of internal::choose_part_sign(): positions, normals, and every index as the part.
+struct Flat_part
+{
+  std::vector<double> xyz, n;
+  std::vector<std::uint32_t> part;
+  void add(const Point& p, const Vector& v)
+  {
+    part.push_back(std::uint32_t(part.size()));
+    for(int a = 0; a < 3; ++a)
+    {
+      xyz.push_back(p[a]);
+      n.push_back(v[a]);
+    }
+  }
+  Vector normal(std::size_t i) const { return Vector(n[3 * i], n[3 * i + 1], n[3 * i + 2]); }
+};
+
+} // namespace
+
+// Issue 44 item 1: a real tile (ground, roofs, walls, no pulses) came out with every ground normal
+// down: the spanning tree had turned the ground against the roofs, which made one part whose
+// normals cancel and whose flux is large (roofs up above, ground down below), so the closed-part
+// rule took it for an object and turned it "outward". On a 2.5-D cloud a part is closed only if
+// it is seen from all sides (a bottom under its top); a torus lying flat still is.
+TEST_CASE("orientation: on a 2.5-D cloud, ground turned against the roofs is not a closed part, a torus lying flat is")
+{
+  // A block of 40 x 40 m: a building of 27 x 27 m and 15 m in its middle (roof up), the ground
+  // around it (down, as the tree left it), a few wall points.
+  Flat_part town;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::size_t ground = 0;
+  for(int i = 0; i < 80; ++i)
+    for(int j = 0; j < 80; ++j)
+    {
+      const double x = i * 0.5 + 0.1 * u(rng), y = j * 0.5 + 0.1 * u(rng);
+      const bool roof = x > 6.5 && x < 33.5 && y > 6.5 && y < 33.5;
+      town.add(Point(x, y, roof ? 15.0 : 0.0), Vector(0, 0, roof ? 1 : -1));
+      ground += roof ? 0 : 1;
+    }
+  for(int h = 1; h < 15; ++h)  // a few wall points, outward
+    for(int k = 0; k < 8; ++k)
+      town.add(Point(6.5, 8 + 3 * k, h), Vector(-1, 0, 0));
+  CHECK_FALSE(PSC::internal::choose_part_sign(town.part, town.xyz, town.n, true));
+  std::size_t up = 0, vertical = 0;
+  for(std::size_t i = 0; i < town.part.size(); ++i)
+  {
+    const Vector v = town.normal(i);
+    if(PSC::is_near_vertical(v.x(), v.y(), v.z()))
+    {
+      ++vertical;
+      up += v.z() > 0 ? 1 : 0;
+    }
+  }
+  CHECK(vertical == 6400);
+  CHECK(up == vertical);
+  CHECK(ground > 3000);
+
+  // A torus lying flat, sampled all round (67% of its normals near-vertical, so 2.5-D), normals
+  // given inward: seen from all sides, so closed, turned outward, bottom down.
+  Flat_part torus;
+  for(const Oriented_point& p : random_torus(20000, 1.0, 0.4, 5))
+    torus.add(p.first, -p.second);
+  CHECK(PSC::internal::choose_part_sign(torus.part, torus.xyz, torus.n, true));
+  std::size_t outward = 0;
+  const std::vector<Oriented_point> truth = random_torus(20000, 1.0, 0.4, 5);
+  for(std::size_t i = 0; i < truth.size(); ++i)
+    outward += torus.normal(i) * truth[i].second > 0 ? 1 : 0;
+  CHECK(outward == truth.size());
+}
+
+// Issue 44 item 2: pieces of a closed part that the tree entered across a thin part or a sharp
+// turn are turned back by the winding number of the rest (internal::repair_closed_part()).
+TEST_CASE("orientation: a piece of a closed part turned inward is turned back, the others are left")
+{
+  const std::vector<Oriented_point> ball = sphere(4000, 1.0);
+  Flat_part flat;
+  std::vector<PSC::internal::Normal_record> records(ball.size());
+  std::vector<std::uint32_t> piece(ball.size(), 0);
+  for(std::size_t i = 0; i < ball.size(); ++i)
+  {
+    const Point& p = ball[i].first;
+    // three pieces: a cap around +x given inward, a cap around -x given outward, the rest
+    piece[i] = p.x() > 0.7 ? 1 : p.x() < -0.7 ? 2 : 0;
+    flat.add(p, piece[i] == 1 ? -ball[i].second : ball[i].second);
+    // the nearest neighbour (for the spacing)
+    double best = HUGE_VAL;
+    for(std::size_t j = 0; j < ball.size(); ++j)
+      if(j != i && CGAL::squared_distance(p, ball[j].first) < best)
+      {
+        best = CGAL::squared_distance(p, ball[j].first);
+        records[i].neighbor[0] = std::uint32_t(j);
+      }
+    records[i].degree = 1;
+  }
+  PSC::internal::repair_closed_part(flat.part, piece, records, flat.xyz, flat.n);
+  std::size_t outward = 0;
+  for(std::size_t i = 0; i < ball.size(); ++i)
+    outward += flat.normal(i) * ball[i].second > 0 ? 1 : 0;
+  CHECK(outward == ball.size());
+}
+
 // Issue 14: Ctrl-C is honoured within a batch (at most 1% of the points, ~0.25 s) even when
 // one grid cell holds every point, and neither one nor two interrupts leave a temporary file.
 TEST_CASE("tool: SIGINT during a long run exits 130, SIGTERM 143, and neither leaves a temporary file, once or twice")
@@ -2803,6 +2907,34 @@ TEST_CASE("tool: real airborne tiles without normals, ground up, vegetation vali
     REQUIRE(r.status == 0);
     CHECK(r.err.find("oriented +z (LAS file, 2.5-D") != std::string::npos);
     const std::string csv = read_text(out);
+    {
+      // The summary's shares are those of the estimated normals; the output holds the ASO's
+      // corrected normals, which turn a few of them (vegetation: measured 0 on sample_c and 57
+      // of 2560 near-vertical ones on warsaw_small).
+      const std::vector<std::string> nx = csv_column(csv, "nx"), ny = csv_column(csv, "ny"),
+                                     nzs = csv_column(csv, "nz");
+      std::size_t usable = 0, vertical = 0, up = 0;
+      for(std::size_t i = 0; i < nx.size(); ++i)
+      {
+        const double v[3] = {std::stod(nx[i]), std::stod(ny[i]), std::stod(nzs[i])};
+        if(!std::isfinite(v[0]) || v[0] * v[0] + v[1] * v[1] + v[2] * v[2] == 0)
+          continue;
+        ++usable;
+        if(PSC::is_near_vertical(v[0], v[1], v[2]))
+        {
+          ++vertical;
+          up += v[2] > 0 ? 1 : 0;
+        }
+      }
+      REQUIRE(usable > 1000);
+      const std::string claim = "% of the estimated normals within 60 degrees of the vertical; 100% of those point up";
+      const std::size_t at = r.err.find(claim);
+      REQUIRE(at != std::string::npos);
+      const std::size_t from = r.err.rfind(' ', at) + 1;
+      const double claimed = std::stod(r.err.substr(from, at - from));
+      CHECK(std::abs(claimed - 100.0 * double(vertical) / double(usable)) < 1.0);
+      CHECK(double(up) >= 0.97 * double(vertical));
+    }
     const std::vector<std::string> cls = csv_column(csv, "classification"), nz = csv_column(csv, "nz"),
                                    valid = csv_column(csv, "valid"), mean = csv_column(csv, "mean"),
                                    coherence = csv_column(csv, "normal_coherence");

@@ -67,19 +67,36 @@ std::size_t estimate_normals(Point_set& ps, const Options& o, Orientation_choice
     throw Cancelled();
   if(choice.orientation.kind == CGAL::Normal_orientation::AUTOMATIC)
   {
-    std::size_t usable = 0, vertical = 0;
+    // what the output holds, not what the rule meant to do
+    std::size_t usable = 0, vertical = 0, vertical_up = 0, up = 0;
     for(Point_set::Index i : ps)
     {
       const Vector& n = ps.normal(i);
-      usable += n == CGAL::NULL_VECTOR ? 0 : 1;
-      vertical += PSC::is_near_vertical(n.x(), n.y(), n.z()) ? 1 : 0;
+      if(n == CGAL::NULL_VECTOR)
+        continue;
+      ++usable;
+      up += n.z() > 0 ? 1 : 0;
+      if(PSC::is_near_vertical(n.x(), n.y(), n.z()))
+      {
+        ++vertical;
+        vertical_up += n.z() > 0 ? 1 : 0;
+      }
     }
-    const double share = usable ? std::round(1000.0 * double(vertical) / double(usable)) / 10 : 0.0;
-    choice.text = PSC::is_two_and_a_half_d(vertical, usable)
-                    ? cat("+z (LAS file, 2.5-D: ", share, "% of the normals within 60 degrees of the vertical; "
-                          "closed parts outward; --orient auto)")
-                    : cat("mst (LAS file, not 2.5-D: ", share, "% of the normals within 60 degrees of the "
-                          "vertical; closed parts outward, open parts up; --orient auto)");
+    auto percent = [](std::size_t part, std::size_t all) {
+      return all ? std::round(1000.0 * double(part) / double(all)) / 10 : 0.0;
+    };
+    const std::string within =
+      cat(percent(vertical, usable), "% of the estimated normals within 60 degrees of the vertical");
+    if(usable == 0)
+      choice.text = "none: no normal could be estimated (--orient auto)";
+    else if(PSC::is_two_and_a_half_d(vertical, usable))
+      choice.text = cat("+z (LAS file, 2.5-D: ", within, "; ", percent(vertical_up, vertical), "% of those point up",
+                        vertical_up < vertical ? ", the others are the undersides of closed objects, turned outward"
+                                               : "",
+                        "; the steeper ones along a minimum spanning tree; --orient auto)");
+    else
+      choice.text = cat("mst (LAS file, not 2.5-D: ", within, "): along a minimum spanning tree, closed parts "
+                        "outward, open parts up; ", percent(up, usable), "% of them point up; --orient auto)");
   }
   return without;
 }
