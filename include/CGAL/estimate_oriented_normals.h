@@ -139,7 +139,8 @@ constexpr double two_and_a_half_d_min_share = 0.6;
 /// looks 2.5-D, as airborne and mobile scans seen from above do: at least 60% of them (the
 /// shares measured on real and simulated clouds: benchmark/README.md, section 10). Closed
 /// shapes can pass the test (a torus lying flat), which is why
-/// `Normal_orientation::automatic()` keeps closed parts outward whatever this says.
+/// `Normal_orientation::automatic()` keeps a closed part outward when it is seen from all
+/// sides (a bottom under its top), whatever this says.
 inline bool is_two_and_a_half_d(std::size_t vertical, std::size_t count)
 {
   return count > 0 && double(vertical) >= two_and_a_half_d_min_share * double(count);
