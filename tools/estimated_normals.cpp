@@ -67,7 +67,8 @@ std::size_t estimate_normals(Point_set& ps, const Options& o, Orientation_choice
     throw Cancelled();
   if(choice.orientation.kind == CGAL::Normal_orientation::AUTOMATIC)
   {
-    // what the output holds, not what the rule meant to do
+    // what the estimated normals hold (measured, not what the rule meant to do; the output holds
+    // the estimators' corrected normals, which may turn a few)
     std::size_t usable = 0, vertical = 0, vertical_up = 0, up = 0;
     for(Point_set::Index i : ps)
     {
