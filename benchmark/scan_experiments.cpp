@@ -3,11 +3,14 @@
 //
 // Curvatures of scanned clouds without normals, against analytic truth (test/scan_simulator.h):
 // a terrestrial scan of a torus, airborne scan lines over a wavy terrain, two terrestrial scans
-// of that terrain merged; clean, with range noise, with quantised coordinates. For each cloud,
+// of that terrain merged, and more patterns over that terrain (airborne lines of other ratios,
+// oblique and zigzag sweeps, lines that are not straight, a mobile profiler, one terrestrial
+// station); clean, with range noise, with quantised coordinates. For each cloud,
 // the normals a user can get (exact, the package's estimates of each fit order, CGAL's jets)
 // and the curvature estimators on them, by count.
 //
-//   scan_experiments [--neighbors K] [--normal-neighbors K1,K2...] [--only torus,airborne,merged]
+//   scan_experiments [--neighbors K] [--normal-neighbors K1,K2...] [--only torus,airborne,merged,
+//                    airborne2,airborne10,polygon5,zigzag5,zigzag3,wobbly5,wobbly8,mobile,terrestrial]
 //                    [--noise SIGMA_IN_SPACINGS] [--quantum Q] [--line-spacing S] [--dump PREFIX]
 //                    [--auto LARGEST]  (the automatic scale: normals and ASO, ladder 40 .. LARGEST)
 //                    [--rows exact,default,auto640,...]  (the normal sources to run)
@@ -80,6 +83,19 @@ std::vector<Named_cloud> clouds(const Options& o)
   make("torus", [](const scan::Noise& n) { return scan::terrestrial_torus(n); });
   make("airborne", [&](const scan::Noise& n) { return scan::airborne_lines(terrain, 12, 0.1, o.line_spacing, n); });
   make("merged", [&](const scan::Noise& n) { return scan::merged_terrestrial(terrain, 12, 0.009, 12, n); });
+  // more patterns, measured on no tuning (issue 44): airborne lines of other along/across
+  // ratios and sweeps, a mobile profiler, one terrestrial station
+  using scan::Sweep;
+  make("airborne2", [&](const scan::Noise& n) { return scan::airborne_lines(terrain, 12, 0.1, 0.2, n); });
+  make("airborne10", [&](const scan::Noise& n) { return scan::airborne_lines(terrain, 12, 0.1, 1.0, n); });
+  make("polygon5", [&](const scan::Noise& n) { return scan::airborne_sweeps(terrain, 12, 0.1, 0.5, Sweep::POLYGON, n); });
+  make("zigzag5", [&](const scan::Noise& n) { return scan::airborne_sweeps(terrain, 12, 0.1, 0.5, Sweep::ZIGZAG, n); });
+  make("zigzag3", [&](const scan::Noise& n) { return scan::airborne_sweeps(terrain, 12, 0.15, 0.45, Sweep::ZIGZAG, n); });
+  // lines that are not straight (3 cm of attitude wobble) and whose points do not align
+  make("wobbly5", [&](const scan::Noise& n) { return scan::airborne_sweeps(terrain, 12, 0.1, 0.5, Sweep::PARALLEL, n, 0.03); });
+  make("wobbly8", [&](const scan::Noise& n) { return scan::airborne_sweeps(terrain, 12, 0.1, 0.8, Sweep::PARALLEL, n, 0.03); });
+  make("mobile", [&](const scan::Noise& n) { return scan::mobile_profiles(terrain, 8, 0.1, 0.0035, n); });
+  make("terrestrial", [&](const scan::Noise& n) { return scan::merged_terrestrial(terrain, 10, 0.006, 10, n, 1.8, 1); });
   return list;
 }
 
@@ -251,7 +267,7 @@ int main(int argc, char** argv)
     }
     else
     {
-      std::cerr << "usage: scan_experiments [--neighbors K] [--noise SIGMA] [--quantum Q] [--only torus,airborne,merged]\n";
+      std::cerr << "usage: scan_experiments [--neighbors K] [--noise SIGMA] [--quantum Q] [--only PATTERN,...]\n";
       return 2;
     }
   }

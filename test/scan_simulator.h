@@ -315,15 +315,33 @@ inline std::vector<Sample> terrestrial_torus(const Noise& noise = Noise(), doubl
   return out;
 }
 
-// Airborne scan lines over a height field: an aircraft at `altitude` above z = 0 flying along
-// +y, one line across the track (along x) every `line_spacing`, the mirror sweeping the scan
-// angle over [-max_angle, max_angle] so that points on a line are `point_spacing` apart at
-// nadir. Points with x, y inside [-half_width, half_width] are kept.
-inline std::vector<Sample> airborne_lines(const Surface& s, double half_width, double point_spacing,
-                                          double line_spacing, const Noise& noise = Noise(),
-                                          double altitude = 300, double max_angle = 0.35)
+// How the mirror of an airborne scanner sweeps while the aircraft flies on (along +y).
+enum class Sweep
+{
+  PARALLEL,  // idealised: every line straight across the track, points aligned from line to line
+  POLYGON,   // rotating polygon: every sweep in the same direction, so lines oblique and parallel
+  ZIGZAG     // oscillating mirror: sweeps alternate, lines zigzag (0 and 2 line spacings apart
+             // at the swath's edges, one at nadir)
+};
+
+// Airborne sweeps over a surface, from an aircraft at `altitude` above z = 0 flying along +y,
+// the mirror sweeping the scan angle over [-max_angle, max_angle] so that points on a line are
+// `point_spacing` apart at nadir, one line every `line_spacing`; points with x, y inside
+// [-half_width, half_width] are kept. Except PARALLEL, the aircraft moves on during each
+// sweep: the sweep starting at y0 ends at y0 + line_spacing. `offset` shifts the aircraft's track along x (in
+// point spacings). With `wobble` > 0, each line starts at a random phase along x (the points
+// of neighbouring lines no longer aligned) and each pulse leaves from a y moved by a normal
+// deviate of standard deviation `wobble` (the aircraft's attitude): lines that are not
+// straight.
+inline std::vector<Sample> airborne_sweeps(const Surface& s, double half_width, double point_spacing,
+                                           double line_spacing, Sweep sweep, const Noise& noise = Noise(),
+                                           double wobble = 0, double altitude = 300, double max_angle = 0.35,
+                                           double offset = 0.37)
 {
   std::mt19937_64 rng(noise.seed);
+  std::mt19937_64 attitude(noise.seed + 1);  // apart, so that the range noise is the same draw
+  std::uniform_real_distribution<double> phase(0, 1);
+  std::normal_distribution<double> deviate(0, 1);
   std::vector<Sample> out;
   const double angle_step = point_spacing / altitude;
   const int n_angles = int(std::floor(max_angle / angle_step));
@@ -331,16 +349,61 @@ inline std::vector<Sample> airborne_lines(const Surface& s, double half_width, d
     return std::abs(x[0]) <= half_width && std::abs(x[1]) <= half_width;
   };
   bool forward = true;
-  for(double y = -half_width - line_spacing; y <= half_width + line_spacing; y += line_spacing)
+  // (moving sweeps start a line earlier: they end one line spacing farther on)
+  const double first = -half_width - (sweep == Sweep::PARALLEL ? 1 : 2) * line_spacing;
+  for(double y = first; y <= half_width + line_spacing; y += line_spacing)
   {
-    const double o[3] = {0.37 * point_spacing, y, altitude};
+    const double start = wobble > 0 ? phase(attitude) : 0.0;
     for(int i = -n_angles; i <= n_angles; ++i)
     {
-      const double a = (forward ? i : -i) * angle_step;
+      const double f = sweep == Sweep::PARALLEL ? 0.0 : double(i + n_angles) / double(2 * n_angles);
+      const double o[3] = {offset * point_spacing, y + f * line_spacing + (wobble > 0 ? wobble * deviate(attitude) : 0.0),
+                           altitude};
+      const double a = ((forward ? i : -i) + start) * angle_step;
       const double d[3] = {std::sin(a), 0, -std::cos(a)};
       cast(s, o, d, noise, rng, keep, out);
     }
-    forward = !forward;
+    if(sweep != Sweep::POLYGON)  // (a parallel scan's rays alternate their order too)
+      forward = !forward;
+  }
+  return out;
+}
+
+// Airborne scan lines over a surface: PARALLEL sweeps, every line straight across the track
+// (along x), points aligned from line to line.
+inline std::vector<Sample> airborne_lines(const Surface& s, double half_width, double point_spacing,
+                                          double line_spacing, const Noise& noise = Noise(),
+                                          double altitude = 300, double max_angle = 0.35)
+{
+  return airborne_sweeps(s, half_width, point_spacing, line_spacing, Sweep::PARALLEL, noise, 0, altitude, max_angle);
+}
+
+// A mobile mapping system: a vehicle driving along +y on the height field, its profiler
+// `height` above the ground at x = 0 turning in the plane across the road (the x-z plane),
+// one profile every `profile_spacing` along y and one ray every `angle_step` radians in it:
+// points dense along a profile near the vehicle and sparser away from it, profiles far apart
+// (at 5 m from the track, 0.1 m between profiles and 0.0175 m along one at the default step).
+// Points with |x| <= half_width, |y| <= half_width are kept.
+inline std::vector<Sample> mobile_profiles(const Height_field& s, double half_width = 8,
+                                           double profile_spacing = 0.1, double angle_step = 0.0035,
+                                           const Noise& noise = Noise(), double height = 2.0)
+{
+  std::mt19937_64 rng(noise.seed);
+  std::vector<Sample> out;
+  auto keep = [half_width](const double* x) {
+    return std::abs(x[0]) <= half_width && std::abs(x[1]) <= half_width;
+  };
+  const int n = int(std::floor(2 * M_PI / angle_step));
+  for(double y = -half_width - profile_spacing; y <= half_width + profile_spacing; y += profile_spacing)
+  {
+    const double o[3] = {0, y, s.f(0, y) + height};
+    for(int i = 0; i < n; ++i)
+    {
+      const double a = i * angle_step;
+      const double d[3] = {std::cos(a), 0, std::sin(a)};
+      if(d[2] < -0.05)  // the rays that reach the ground not far from the vehicle
+        cast(s, o, d, noise, rng, keep, out);
+    }
   }
   return out;
 }
@@ -348,15 +411,17 @@ inline std::vector<Sample> airborne_lines(const Surface& s, double half_width, d
 // Two terrestrial scans of a height field from tripods `height` above the ground at
 // (-6, -2) and (5, 4), merged: each keeps the points between 2 and `reach` (horizontally)
 // from it inside the square [-half_width, half_width]^2. Grazing rays: the spacing along a
-// scanner's radial direction grows like the distance squared.
+// scanner's radial direction grows like the distance squared. `station_count` 1 keeps the first scan only.
 inline std::vector<Sample> merged_terrestrial(const Height_field& s, double half_width = 12, double step = 0.006,
-                                              double reach = 12, const Noise& noise = Noise(), double height = 1.8)
+                                              double reach = 12, const Noise& noise = Noise(), double height = 1.8,
+                                              int station_count = 2)
 {
   std::mt19937_64 rng(noise.seed);
   std::vector<Sample> out;
   const double stations[2][2] = {{-6, -2}, {5, 4}};
-  for(const auto& st : stations)
+  for(int k = 0; k < station_count && k < 2; ++k)
   {
+    const auto& st = stations[k];
     const double o[3] = {st[0], st[1], s.f(st[0], st[1]) + height};
     auto keep = [&](const double* x) {
       const double h = std::hypot(x[0] - st[0], x[1] - st[1]);

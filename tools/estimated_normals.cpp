@@ -68,7 +68,7 @@ std::size_t estimate_normals(Point_set& ps, const Options& o, Orientation_choice
   if(choice.orientation.kind == CGAL::Normal_orientation::AUTOMATIC)
   {
     // what the estimated normals hold (measured, not what the rule meant to do; the output holds
-    // the estimators' corrected normals, which may turn a few)
+    // the estimators' corrected normals, which may turn a few: the report states those apart)
     std::size_t usable = 0, vertical = 0, vertical_up = 0, up = 0;
     for(Point_set::Index i : ps)
     {
@@ -83,21 +83,18 @@ std::size_t estimate_normals(Point_set& ps, const Options& o, Orientation_choice
         vertical_up += n.z() > 0 ? 1 : 0;
       }
     }
-    auto percent = [](std::size_t part, std::size_t all) {
-      return all ? std::round(1000.0 * double(part) / double(all)) / 10 : 0.0;
-    };
     const std::string within =
-      cat(percent(vertical, usable), "% of the estimated normals within 60 degrees of the vertical");
+      cat(percent_text(vertical, usable), "% of the estimated normals within 60 degrees of the vertical");
     if(usable == 0)
       choice.text = "none: no normal could be estimated (--orient auto)";
     else if(PSC::is_two_and_a_half_d(vertical, usable))
-      choice.text = cat("+z (LAS file, 2.5-D: ", within, "; ", percent(vertical_up, vertical), "% of those point up",
+      choice.text = cat("+z (LAS file, 2.5-D: ", within, "; ", percent_text(vertical_up, vertical), "% of those point up",
                         vertical_up < vertical ? ", the others are the undersides of closed objects, turned outward"
                                                : "",
                         "; the steeper ones along a minimum spanning tree; --orient auto)");
     else
       choice.text = cat("mst (LAS file, not 2.5-D: ", within, "): along a minimum spanning tree, closed parts "
-                        "outward, open parts up; ", percent(up, usable), "% of them point up; --orient auto)");
+                        "outward, open parts up; ", percent_text(up, usable), "% of them point up; --orient auto)");
   }
   return without;
 }

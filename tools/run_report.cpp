@@ -167,7 +167,16 @@ void print_summary(const Run_context& c, const Estimation_settings& scale, std::
   std::printf("  scale       %s\n", scale_description(scale).c_str());
   std::printf("  points      %zu%s\n", n, estimated_normals.empty() ? "" : " (normals estimated)");
   if(!estimated_normals.empty())
+  {
     std::printf("  normals     %s\n", estimated_normals.c_str());
+    // what the output holds: the estimators' corrected normals, which can differ in side from
+    // the estimated ones (the ASO's takes the side of the neighbours' majority)
+    const std::size_t vertical = summary.near_vertical(), up = summary.near_vertical_up();
+    if(valid > 0)
+      std::printf("  output      %s%% of the valid rows' normals within 60 degrees of the vertical, %s%% of those "
+                  "point up (%zu down)\n",
+                  percent_text(vertical, valid).c_str(), percent_text(up, vertical).c_str(), vertical - up);
+  }
   if(!tiles.empty())
     std::printf("  tiles       %s\n", tiles.c_str());
   std::printf("  valid       %zu (%.2f %%)%s\n", valid, 100.0 * double(valid) / double(n), why.c_str());

@@ -55,6 +55,12 @@ public:
     if(r.valid)
     {
       ++m_valid;
+      const double nx = r.value[3], ny = r.value[4], nz = r.value[5], l2 = nx * nx + ny * ny + nz * nz;
+      if(l2 > 0 && std::isfinite(l2) && nz * nz >= 0.25 * l2)  // within 60 degrees of the vertical
+      {
+        ++m_near_vertical;
+        m_near_vertical_up += nz > 0 ? 1 : 0;
+      }
       m_neighbors += std::uint64_t(std::max(0, r.neighbors));
       for(int q = 0; q < quantities; ++q)
       {
@@ -79,6 +85,10 @@ public:
   }
 
   std::size_t valid() const { return m_valid; }
+  // valid rows whose output normal lies within 60 degrees of the vertical, and those of them
+  // that point up (what the output holds, which the report states)
+  std::size_t near_vertical() const { return m_near_vertical; }
+  std::size_t near_vertical_up() const { return m_near_vertical_up; }
   std::uint64_t neighbors() const { return m_neighbors; }
   // invalid rows per status
   const std::map<int, std::size_t>& invalid() const { return m_invalid; }
@@ -105,7 +115,7 @@ public:
 private:
   std::size_t m_step;
   int m_too_few_status;
-  std::size_t m_valid = 0, m_too_few = 0;
+  std::size_t m_valid = 0, m_too_few = 0, m_near_vertical = 0, m_near_vertical_up = 0;
   std::uint64_t m_neighbors = 0;
   std::map<int, std::size_t> m_invalid;
   std::size_t m_count[quantities];

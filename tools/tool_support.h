@@ -9,8 +9,10 @@
 #ifndef POINT_SET_CURVATURES_TOOL_SUPPORT_H
 #define POINT_SET_CURVATURES_TOOL_SUPPORT_H
 
+#include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cmath>
 #include <cstddef>
 #include <cstdio>
 #include <cstdlib>
@@ -56,6 +58,16 @@ std::string cat(const T&... t)
 inline std::string plural(std::size_t n, const std::string& noun)
 {
   return cat(n, " ", noun, n == 1 ? "" : "s");
+}
+
+// part / all in percent to one decimal ("98.7"), never "100" unless part == all and never "0"
+// unless part == 0; "0" when all is 0.
+inline std::string percent_text(std::size_t part, std::size_t all)
+{
+  if(all == 0)
+    return "0";
+  const double p = std::round(1000.0 * double(part) / double(all)) / 10;
+  return cat(part == all ? 100.0 : part == 0 ? 0.0 : std::max(0.1, std::min(p, 99.9)));
 }
 
 // The shortest decimal text that reads back as `v` exactly: "1000004.9995" where the stream's

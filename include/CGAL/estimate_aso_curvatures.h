@@ -208,7 +208,10 @@ Aso_estimator aso_estimator_from(const NamedParameters& np)
 ///     \cgalParamDescription{where the tangential offset of the neighbourhood's weighted
 ///       centroid exceeds 0.02 `radius` (one-sided neighbourhoods: borders, silhouettes), the
 ///       shape operator is blended with a least-squares fit of the normal field, fully from
-///       0.06 `radius` on (ignored with `Aso_projection::AUTHORS_IMPLEMENTATION`)}
+///       0.06 `radius` on; likewise where the neighbourhood spreads much farther one way than
+///       the other (scan lines far apart, mobile profiles: the ratio of the axes of its
+///       tangential moments from 0.85 down to 0.7), where the ASO's derivatives follow the
+///       weights moving between lines (ignored with `Aso_projection::AUTHORS_IMPLEMENTATION`)}
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true` (`false` with `Aso_variant::PAPER`)}
 ///   \cgalParamNEnd

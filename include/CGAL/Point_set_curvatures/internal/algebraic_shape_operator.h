@@ -60,6 +60,7 @@
 #include <CGAL/Point_set_curvatures/internal/second_order_jet.h>
 #include <CGAL/Point_set_curvatures/internal/weight_kernel.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 
@@ -378,15 +379,27 @@ inline Local_estimate aso_from_first_pass(const Neighborhood& nb, const Aso_firs
   if(corrected_normal && gradient_norm == 0)
     return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
 
-  // How one-sided the neighbourhood is: the tangential offset of the weighted centroid B / A
-  // (units of r), hence the weight of the normal-field fit.
+  // How one-sided the neighbourhood is (the tangential offset of the weighted centroid B / A,
+  // units of r) and how much wider it spreads one way than the other (the axes of the
+  // tangential moments sum t^(P-1) q q^T), hence the weight of the normal-field fit
+  // (normal_field_fit.h).
   double blend = 0;
   if(corrected_normal && settings.normal_field_blend)
   {
     const double c[3] = {m.B[0] / m.A, m.B[1] / m.A, m.B[2] / m.A};
     const double cu = c[0] * t1[0] + c[1] * t1[1] + c[2] * t1[2];
     const double cv = c[0] * t2[0] + c[1] * t2[1] + c[2] * t2[2];
-    blend = normal_field_blend_weight(std::sqrt(cu * cu + cv * cv));
+    double m11 = 0, m12 = 0, m22 = 0;
+    for(int i = 0; i < 3; ++i)
+      for(int j = 0; j < 3; ++j)
+      {
+        const double mij = m.tqq[sym_index(i, j)];
+        m11 += t1[i] * mij * t1[j];
+        m12 += t1[i] * mij * t2[j];
+        m22 += t2[i] * mij * t2[j];
+      }
+    blend = std::max(normal_field_blend_weight(std::sqrt(cu * cu + cv * cv)),
+                     normal_field_anisotropy_weight(axis_ratio(m11, m12, m22)));
   }
 
   // Pass 2: the part of Hess u_c linear in the sums' Hessians (and the normal-field fit).
