@@ -1875,14 +1875,16 @@ TEST_CASE("tool: SIGINT during a long run exits 130, SIGTERM 143, and neither le
                                file("slow.ply") + "' --radius 3 --quiet 2> '" + file("slow.err") +
                                "' & pid=\\$!; sleep 1; " + kills + "; wait \\$pid; echo \\$? > '" +
                                file("slow.status") + "'";
-    const auto start = std::chrono::steady_clock::now();
     REQUIRE(std::system(("bash -c \"" + script + "\"").c_str()) == 0);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     CHECK(std::atoi(read_text(file("slow.status")).c_str()) == c.status);
     CHECK(!fs::exists(file("slow.ply")));
+    // the temporary output exists from before the estimation: the signal's default action
+    // (status 128 + signal too) would leave it
     CHECK(files_starting_with(".slow.ply.tmp") == 0);
-    // not a timing assertion: a run that ignored the signal would take tens of seconds
-    CHECK(seconds < 15);
+    // one signal: handled, the run stops at its next check and says so (the default action
+    // would say nothing); a run that ignored it would end with status 0 after tens of seconds
+    if(c.signals == 1)
+      CHECK(read_text(file("slow.err")).find("interrupted (") != std::string::npos);
   }
 }
 
