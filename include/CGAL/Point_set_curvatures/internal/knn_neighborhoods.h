@@ -26,17 +26,17 @@
 // by a cost model (knn_grid_side). The other points (sparser regions, isolated points, more
 // copies than k, k at least the number of points) take their neighbourhood from that tree:
 // the k+1 nearest tell whether points are tied with the k-th, and a ball query then gathers
-// them all. A grid neighbourhood lists its points in grid order, a tree neighbourhood by
-// increasing (distance, grid rank): either way the result depends on the input only, never
-// on the concurrency tag.
+// them all. Either way the neighbourhood is then listed by input position
+// (sort_by_input_index), so that the result depends on the input only, never on the
+// concurrency tag, the path or the tile.
 //
 // Cost, ASO on 1M ellipsoid points with k = 42 (benchmark/aso_speed, one run): 1.66 times
 // the same run by radius sequentially, 1.64 times in parallel. The previous version, CGAL's
 // Kd_tree with Orthogonal_k_neighbor_search for every point, took 3.1 times (a scratch
 // program, ASO sequential: 7.3 s against 3.1 s now). With a density varying 1:10 and 1:100
 // over the cloud, where more points go to the tree, the gain is 1.4 and 1.5 times. Per
-// query, the tree costs several times the grid: it sorts its candidates, the grid scans
-// contiguous memory.
+// query, the tree costs several times the grid: it walks nodes and selects among its
+// candidates, the grid scans contiguous memory.
 
 #ifndef CGAL_POINT_SET_CURVATURES_INTERNAL_KNN_NEIGHBORHOODS_H
 #define CGAL_POINT_SET_CURVATURES_INTERNAL_KNN_NEIGHBORHOODS_H
@@ -67,35 +67,40 @@ namespace internal {
 constexpr double knn_radius_factor = 1.0 + 1.0 / 1048576.0;
 
 // The radius of the tree's point at position x and its neighbourhood (points at distance
-// < radius, by increasing (d2, id)) in `neighbors`, following the semantics of the header
+// < radius, in no particular order) in `neighbors`, following the semantics of the header
 // comment.
 inline double knn_neighborhood(const Point_kd_tree& tree, const double* x, std::size_t k,
                                std::vector<Point_kd_tree::Candidate>& neighbors)
 {
+  typedef Point_kd_tree::Candidate Candidate;
   const std::size_t n = tree.size();
   std::size_t count = k < n ? k + 1 : n;
-  tree.nearest(x, count, neighbors);
+  tree.nearest_unordered(x, count, neighbors);
+  const auto farthest = [&neighbors] { return std::max_element(neighbors.begin(), neighbors.end())->first; };
   if(n <= k)
   {
     // every point: the radius reaches just beyond the farthest one
-    const double d2_max = neighbors.back().first;
+    const double d2_max = farthest();
     return d2_max > 0 ? knn_radius_factor * std::sqrt(d2_max) : 1.0;
   }
+  // the k nearest first, then the k+1-th (the only one left): the order of (d2, id)
+  std::nth_element(neighbors.begin(), neighbors.begin() + (k - 1), neighbors.end());
   double d2_k = neighbors[k - 1].first;
   bool ties_beyond = false;
   if(d2_k == 0)
   {
     // k copies of x: the nearest point elsewhere sets the scale
-    while(neighbors.back().first == 0 && count < n)
+    while(farthest() == 0 && count < n)
     {
       count = std::min(2 * count, n);
-      tree.nearest(x, count, neighbors);
+      tree.nearest_unordered(x, count, neighbors);
     }
-    const auto elsewhere = std::find_if(neighbors.begin(), neighbors.end(),
-                                        [](const Point_kd_tree::Candidate& c) { return c.first > 0; });
-    if(elsewhere == neighbors.end())
+    d2_k = std::numeric_limits<double>::infinity();
+    for(const Candidate& c : neighbors)
+      if(c.first > 0)
+        d2_k = std::min(d2_k, c.first);
+    if(d2_k == std::numeric_limits<double>::infinity())
       return 1.0;  // every usable point is at x
-    d2_k = elsewhere->first;
     ties_beyond = true;  // the ball may hold more copies than were listed
   }
   const double radius = knn_radius_factor * std::sqrt(d2_k);

@@ -45,6 +45,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <vector>
 
 namespace CGAL {
 namespace Point_set_curvatures {
@@ -85,6 +86,11 @@ struct Quadric_fit
   // The penalty's weight (see the header comment); 0: the plain least-squares quadric.
   double anisotropy_penalty = 5e-4;
 
+  // If set, compute() keeps each neighbour's weight, tangent coordinates and height there
+  // (in_frame(), four values a neighbour) and variance_factors() on the same neighbourhood
+  // reads them instead of computing them again.
+  std::vector<double>* frame_cache = nullptr;
+
   // Fits the neighbourhood; false if its neighbours do not spread in two directions or the
   // fit has no solution.
   bool compute(const Neighborhood& nb)
@@ -123,10 +129,24 @@ struct Quadric_fit
     Quadratic_height_fit& fit = equations;
     fit = Quadratic_height_fit();
     double fourth = 0;
+    double* cache = nullptr;
+    if(frame_cache)
+    {
+      frame_cache->resize(4 * nb.size);
+      cache = frame_cache->data();
+    }
     for(std::size_t i = 0; i < nb.size; ++i)
     {
       double w, u, v, h;
-      if(!in_frame(nb, i, w, u, v, h))
+      const bool inside = in_frame(nb, i, w, u, v, h);
+      if(cache)
+      {
+        cache[4 * i] = inside ? w : 0.0;
+        cache[4 * i + 1] = u;
+        cache[4 * i + 2] = v;
+        cache[4 * i + 3] = h;
+      }
+      if(!inside)
         continue;
       fit.add(u, v, h, w);
       fourth += w * (u * u + v * v) * (u * u + v * v);
@@ -140,7 +160,7 @@ struct Quadric_fit
     return fit.solve(a);
   }
 
-  // After compute(): what the variances of linear combinations g[i] . a of the coefficients
+  // After compute() on the same neighbourhood: what the variances of linear combinations g[i] . a of the coefficients
   // are made of under independent position noise of variance sigma²: the sandwich covariance
   // of weighted least squares gives sigma² times factor[i] = g[i]ᵀ M⁻¹ (sum w² m mᵀ) M⁻¹ g[i],
   // M the normal equations; `sigma2` is the weighted mean squared residual with n_eff /
@@ -149,10 +169,20 @@ struct Quadric_fit
   bool variance_factors(const Neighborhood& nb, const double (*g)[6], int count, double* factor, double& sigma2) const
   {
     double b[6][6] = {}, sw = 0, sw2 = 0, ssr = 0;
+    const double* cache = frame_cache && frame_cache->size() == 4 * nb.size ? frame_cache->data() : nullptr;
     for(std::size_t i = 0; i < nb.size; ++i)
     {
       double w, u, v, e;
-      if(!in_frame(nb, i, w, u, v, e))
+      if(cache)
+      {
+        w = cache[4 * i];
+        u = cache[4 * i + 1];
+        v = cache[4 * i + 2];
+        e = cache[4 * i + 3];
+        if(!(w > 0))
+          continue;
+      }
+      else if(!in_frame(nb, i, w, u, v, e))
         continue;
       const double m[6] = {1.0, u, v, u * u, u * v, v * v};
       for(int j = 0; j < 6; ++j)
