@@ -102,9 +102,9 @@ struct Sub_neighborhood
 {
   std::vector<double> qx, qy, qz, nx, ny, nz, weight;
   std::vector<std::uint32_t> index;
+  std::vector<std::uint32_t> taken;  // the positions in `whole` of the points of take()
   std::vector<double> frame;  // the fit's frame cache (Quadric_fit::frame_cache)
   Neighborhood nb;
-  double scaled_radius = 1;  // the radius of take(), in whole's scaled units
 
   // The positions of the points of `whole` closer than `radius` (in whole's scaled units), in
   // whole's order, scaled by `radius`; nb's other per-point fields are null until
@@ -114,6 +114,7 @@ struct Sub_neighborhood
     const double r2 = radius * radius, inverse = 1.0 / radius;
     for(auto* v : {&qx, &qy, &qz})
       v->resize(whole.size);
+    taken.resize(whole.size);
     std::size_t n = 0;
     for(std::size_t i = 0; i < whole.size; ++i)
     {
@@ -123,9 +124,10 @@ struct Sub_neighborhood
       qx[n] = whole.qx[i] * inverse;
       qy[n] = whole.qy[i] * inverse;
       qz[n] = whole.qz[i] * inverse;
+      taken[n] = static_cast<std::uint32_t>(i);
       ++n;
     }
-    scaled_radius = radius;
+    taken.resize(n);
     nb = whole;
     nb.size = n;
     nb.qx = qx.data();
@@ -140,25 +142,23 @@ struct Sub_neighborhood
   // After take(whole, radius): the normals, sample weights and indices of the same points.
   void take_attributes(const Neighborhood& whole)
   {
-    const double r2 = scaled_radius * scaled_radius;
-    for(auto* v : {&nx, &ny, &nz, &weight})
-      v->resize(whole.size);
-    index.resize(whole.size);
-    std::size_t n = 0;
-    for(std::size_t i = 0; i < whole.size; ++i)
+    const std::size_t n = taken.size();
+    for(auto* v : {&nx, &ny, &nz})
+      v->resize(n);
+    for(std::size_t j = 0; j < n; ++j)
     {
-      const double d2 = whole.qx[i] * whole.qx[i] + whole.qy[i] * whole.qy[i] + whole.qz[i] * whole.qz[i];
-      if(!(d2 < r2))
-        continue;
-      nx[n] = whole.nx[i];
-      ny[n] = whole.ny[i];
-      nz[n] = whole.nz[i];
-      if(whole.sample_weight)
-        weight[n] = whole.sample_weight[i];
-      if(whole.index)
-        index[n] = whole.index[i];
-      ++n;
+      nx[j] = whole.nx[taken[j]];
+      ny[j] = whole.ny[taken[j]];
+      nz[j] = whole.nz[taken[j]];
     }
+    weight.clear();
+    if(whole.sample_weight)
+      for(std::uint32_t i : taken)
+        weight.push_back(whole.sample_weight[i]);
+    index.clear();
+    if(whole.index)
+      for(std::uint32_t i : taken)
+        index.push_back(whole.index[i]);
     nb.nx = nx.data();
     nb.ny = ny.data();
     nb.nz = nz.data();
