@@ -13,6 +13,8 @@
 
 #include "write_point_cloud.h"
 
+#include <CGAL/Point_set_curvatures/vertical_normals.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -55,8 +57,8 @@ public:
     if(r.valid)
     {
       ++m_valid;
-      const double nx = r.value[3], ny = r.value[4], nz = r.value[5], l2 = nx * nx + ny * ny + nz * nz;
-      if(l2 > 0 && std::isfinite(l2) && nz * nz >= 0.25 * l2)  // within 60 degrees of the vertical
+      const double nz = r.value[5];
+      if(CGAL::Point_set_curvatures::is_near_vertical(r.value[3], r.value[4], nz))
       {
         ++m_near_vertical;
         m_near_vertical_up += nz > 0 ? 1 : 0;

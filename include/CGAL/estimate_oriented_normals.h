@@ -14,6 +14,7 @@
 #include <CGAL/Point_set_curvatures/internal/pca_plane.h>
 #include <CGAL/Point_set_curvatures/internal/quadric_fit.h>
 #include <CGAL/Point_set_curvatures/parameters.h>
+#include <CGAL/Point_set_curvatures/vertical_normals.h>
 
 #include <CGAL/property_map.h>
 
@@ -128,32 +129,6 @@ normal_fit(Normal_fit fit, const NamedParameters& np = CGAL::parameters::default
   return CGAL::Named_function_parameters<Normal_fit, internal_np::normal_fit_t, NamedParameters>(fit, np);
 }
 } // namespace parameters
-
-/// \ingroup PkgPointSetCurvaturesRef
-/// The least share of near-vertical normals of a 2.5-D cloud (see `is_two_and_a_half_d()`).
-constexpr double two_and_a_half_d_min_share = 0.6;
-
-/// \ingroup PkgPointSetCurvaturesRef
-/// True if a cloud whose normals (orientation and length ignored) are `vertical` near-vertical
-/// ones (within 60 degrees of the z axis, `|n_z| >= 0.5 |n|`) out of `count` non-zero ones
-/// looks 2.5-D, as airborne and mobile scans seen from above do: at least 60% of them (the
-/// shares measured on real and simulated clouds: benchmark/README.md, section 10). Closed
-/// shapes can pass the test (a torus lying flat), which is why
-/// `Normal_orientation::automatic()` keeps a closed part outward when it is seen from all
-/// sides (a bottom under its top), whatever this says.
-inline bool is_two_and_a_half_d(std::size_t vertical, std::size_t count)
-{
-  return count > 0 && double(vertical) >= two_and_a_half_d_min_share * double(count);
-}
-
-/// \ingroup PkgPointSetCurvaturesRef
-/// True if `n` lies within 60 degrees of the z axis, either way (`|n_z| >= 0.5 |n|`), for
-/// `is_two_and_a_half_d()`; false for a zero vector.
-inline bool is_near_vertical(double nx, double ny, double nz)
-{
-  const double l2 = nx * nx + ny * ny + nz * nz;
-  return l2 > 0 && nz * nz >= 0.25 * l2;
-}
 
 /// \ingroup PkgPointSetCurvaturesRef
 /// The default neighbour count of `CGAL::estimate_oriented_normals()` for a fit: 40 for the
