@@ -389,15 +389,8 @@ inline Local_estimate aso_from_first_pass(const Neighborhood& nb, const Aso_firs
     const double c[3] = {m.B[0] / m.A, m.B[1] / m.A, m.B[2] / m.A};
     const double cu = c[0] * t1[0] + c[1] * t1[1] + c[2] * t1[2];
     const double cv = c[0] * t2[0] + c[1] * t2[1] + c[2] * t2[2];
-    double m11 = 0, m12 = 0, m22 = 0;
-    for(int i = 0; i < 3; ++i)
-      for(int j = 0; j < 3; ++j)
-      {
-        const double mij = m.tqq[sym_index(i, j)];
-        m11 += t1[i] * mij * t1[j];
-        m12 += t1[i] * mij * t2[j];
-        m22 += t2[i] * mij * t2[j];
-      }
+    const double m11 = symmetric_form(m.tqq, t1, t1), m12 = symmetric_form(m.tqq, t1, t2),
+                 m22 = symmetric_form(m.tqq, t2, t2);
     blend = std::max(normal_field_blend_weight(std::sqrt(cu * cu + cv * cv)),
                      normal_field_anisotropy_weight(axis_ratio(m11, m12, m22)));
   }

@@ -202,6 +202,14 @@ inline void tangent_basis(const double n[3], double t1[3], double t2[3])
   t2[0] = b;                            t2[1] = sign + n[1] * n[1] * a; t2[2] = -n[1];
 }
 
+// u^T M v for a symmetric 3x3 matrix M packed xx xy xz yy yz zz (second moments, Hessians).
+inline double symmetric_form(const double M[6], const double u[3], const double v[3])
+{
+  return u[0] * (M[0] * v[0] + M[1] * v[1] + M[2] * v[2]) +
+         u[1] * (M[1] * v[0] + M[3] * v[1] + M[4] * v[2]) +
+         u[2] * (M[2] * v[0] + M[4] * v[1] + M[5] * v[2]);
+}
+
 // True if the neighbours do not spread in two tangent directions: a second moment M of
 // their positions (sum weight q q^T, packed xx xy xz yy yz zz) restricted to the plane orthogonal to `normal` has rank at most
 // 1 up to rounding (determinant negligible against trace^2). This is the case of points on
@@ -216,12 +224,7 @@ inline bool lacks_tangent_spread(const double M[6], const double normal[3])
   const double n[3] = {normal[0] / l, normal[1] / l, normal[2] / l};
   double t1[3], t2[3];
   tangent_basis(n, t1, t2);
-  auto form = [&](const double u[3], const double v[3]) {
-    return u[0] * (M[0] * v[0] + M[1] * v[1] + M[2] * v[2]) +
-           u[1] * (M[1] * v[0] + M[3] * v[1] + M[4] * v[2]) +
-           u[2] * (M[2] * v[0] + M[4] * v[1] + M[5] * v[2]);
-  };
-  const double a = form(t1, t1), b = form(t1, t2), c = form(t2, t2);
+  const double a = symmetric_form(M, t1, t1), b = symmetric_form(M, t1, t2), c = symmetric_form(M, t2, t2);
   return !(a * c - b * b > 1e-12 * (a + c) * (a + c));
 }
 
@@ -286,16 +289,10 @@ inline void shape_operator_in_basis(double gradient_norm, const double hessian[6
                                     double inverse_length_unit, const double t1[3],
                                     const double t2[3], double W[3])
 {
-  auto quadratic_form = [&](const double u[3], const double v[3]) {
-    const double* h = hessian;
-    return u[0] * (h[0] * v[0] + h[1] * v[1] + h[2] * v[2]) +
-           u[1] * (h[1] * v[0] + h[3] * v[1] + h[4] * v[2]) +
-           u[2] * (h[2] * v[0] + h[4] * v[1] + h[5] * v[2]);
-  };
   const double s = inverse_length_unit / gradient_norm;
-  W[0] = s * quadratic_form(t1, t1);
-  W[1] = s * quadratic_form(t1, t2);
-  W[2] = s * quadratic_form(t2, t2);
+  W[0] = s * symmetric_form(hessian, t1, t1);
+  W[1] = s * symmetric_form(hessian, t1, t2);
+  W[2] = s * symmetric_form(hessian, t2, t2);
 }
 
 // Shape operator of a scalar field from its gradient and Hessian (Equation 27 of
