@@ -21,7 +21,7 @@ namespace psc_tool {
 std::string size_text(double bytes);
 
 // The temporary files of OUTPUT are named ".NAME.tmp-PID-" and six characters of mkstemp
-// (the output while it is written) or "tileN-" and six (the rows of a tiled run's tiles,
+// (the output while it is written) or "tiles-" and six (the rows of a tiled run's tiles,
 // unlinked at once): the PID tells the files of a killed run (its process is gone) from
 // those of a run still going.
 std::string temporary_prefix(const std::string& output);

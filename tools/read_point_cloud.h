@@ -33,6 +33,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -57,6 +58,9 @@ struct Attribute
   // an extra-bytes field: its 192-byte descriptor as read (LAS 1.4 R15), else empty.
   int las_field = -1;
   std::string las_descriptor;
+  // The largest value over every point of the file (set by the tool's first read,
+  // read_or_scan(), in memory and in tiles alike; -inf without points, NaN until then).
+  double largest = std::numeric_limits<double>::quiet_NaN();
 };
 
 // The standard fields of LAS point records, as read_las.cpp names them (the attributes'

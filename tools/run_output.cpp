@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace psc_tool {
 
@@ -50,6 +51,27 @@ Output_layout output_layout(const Options& o, const Estimation_settings& scale,
       cat("colors: ", o.color, ", blue -", color_range, " white 0 red +", color_range, ", grey invalid"));
   layout.fields = output_fields(o.fields, o.float32, color_quantity >= 0, attributes, scale.automatic_largest > 0);
   layout.attributes = &attributes;
+  if(layout.format != Output_layout::CSV)
+  {
+    // The input's 16-bit colours (LAS) as PLY viewers read colours, 8 bits: CloudCompare 2.11
+    // shows ushort red green blue as black. The high byte, or the value itself where no value
+    // exceeds 255 (8-bit colours stored in 16-bit fields, as some LAS writers do). CSV and LAS
+    // output keep the 16 bits.
+    double largest = -HUGE_VAL;
+    std::vector<Output_field*> colours;
+    for(Output_field& f : layout.fields)
+      if(f.source >= Output_field::ATTRIBUTE && f.type == Scalar_type::UINT16 &&
+         (f.name == "red" || f.name == "green" || f.name == "blue"))
+      {
+        colours.push_back(&f);
+        largest = std::max(largest, attributes[f.source - Output_field::ATTRIBUTE].largest);
+      }
+    for(Output_field* f : colours)
+    {
+      f->type = Scalar_type::UINT8;
+      f->shift = largest <= 255 ? 0 : 8;  // (NaN, unknown: taken as 16 bits)
+    }
+  }
   layout.scalar_prefix = o.ply_scalar_names;
   if(!attributes.empty())
   {

@@ -157,12 +157,17 @@ std::uint64_t largest_tile(const PSC::Tile_grid& grid, const Density_grid& densi
   return most;
 }
 
-// A temporary file of records (input index, row, attribute values), unlinked as soon as it
-// is created: it disappears with the process, however the process ends.
-class Row_file
+// The tiles' rows in one temporary file, unlinked as soon as it is created (it disappears
+// with the process, however the process ends): records (input index, row, attribute values),
+// a segment per tile, each sorted by input index. One file and one write buffer whatever the
+// number of tiles (a file per tile kept a 1 MB buffer each: 1500 points in 356 tiles took
+// 373 MB, and thousands of tiles would exceed the open files allowed); the merge reads each
+// segment through a buffer sized so that all of them fit in the memory limit.
+class Row_store
 {
 public:
-  Row_file(const std::string& prefix, std::size_t attributes) : m_attributes(attributes)
+  Row_store(const std::string& prefix, std::size_t attributes)
+    : m_attributes(attributes), m_record(sizeof(std::uint64_t) + sizeof(Output_row) + sizeof(double) * attributes)
   {
     std::string pattern = prefix + "XXXXXX";
     std::vector<char> name(pattern.begin(), pattern.end());
@@ -181,13 +186,16 @@ public:
     m_buffer.reset(new char[1 << 20]);
     std::setvbuf(m_file, m_buffer.get(), _IOFBF, 1 << 20);
   }
-  ~Row_file()
+  ~Row_store()
   {
     if(m_file)
       std::fclose(m_file);
   }
-  Row_file(const Row_file&) = delete;
-  Row_file& operator=(const Row_file&) = delete;
+  Row_store(const Row_store&) = delete;
+  Row_store& operator=(const Row_store&) = delete;
+
+  // A new segment: the rows put from now on
+  void begin_segment() { m_segments.push_back(Segment{m_records, m_records}); }
 
   void put(std::uint64_t index, const Output_row& row, const double* attributes)
   {
@@ -197,34 +205,86 @@ public:
     std::fwrite(&r, sizeof r, 1, m_file);
     if(m_attributes)
       std::fwrite(attributes, sizeof(double), m_attributes, m_file);
+    ++m_records;
+    m_segments.back().end = m_records;
   }
 
-  // after the last put(): reading from the first record
-  void rewind()
+  // after the last put()
+  void finish()
   {
     if(std::fflush(m_file) != 0 || std::ferror(m_file))
       throw Error(cat("cannot write the temporary file ", in_quotes(m_name), ": ", std::strerror(errno)));
-    std::rewind(m_file);
   }
 
-  // false at the end
-  bool get(std::uint64_t& index, Output_row& row, std::vector<double>& attributes)
+  std::size_t segments() const { return m_segments.size(); }
+  std::size_t record_bytes() const { return m_record; }
+
+  // The records of one segment in order, read `buffered` at a time.
+  class Cursor
   {
-    attributes.resize(m_attributes);
-    if(std::fread(&index, sizeof index, 1, m_file) != 1)
-      return false;
-    if(std::fread(&row, sizeof row, 1, m_file) != 1 ||
-       (m_attributes && std::fread(attributes.data(), sizeof(double), m_attributes, m_file) != m_attributes))
-      throw Error(cat("cannot read the temporary file ", in_quotes(m_name)));
-    row.attributes = nullptr;
-    return true;
-  }
+  public:
+    Cursor(const Row_store& store, std::size_t segment, std::size_t buffered)
+      : m_store(&store), m_next(store.m_segments[segment].begin), m_end(store.m_segments[segment].end),
+        m_buffered(std::max<std::size_t>(1, buffered))
+    {
+    }
+
+    // false at the end
+    bool get(std::uint64_t& index, Output_row& row, std::vector<double>& attributes)
+    {
+      if(m_at == m_bytes.size())
+      {
+        if(m_next == m_end)
+          return false;
+        const std::size_t records = std::min<std::size_t>(m_buffered, m_end - m_next);
+        m_bytes.resize(records * m_store->m_record);
+        m_at = 0;
+        std::size_t done = 0;
+        while(done < m_bytes.size())
+        {
+          const ::ssize_t n = ::pread(::fileno(m_store->m_file), m_bytes.data() + done, m_bytes.size() - done,
+                                      ::off_t(m_next * m_store->m_record + done));
+          if(n <= 0)
+          {
+            if(n < 0 && errno == EINTR)
+              continue;
+            throw Error(cat("cannot read the temporary file ", in_quotes(m_store->m_name),
+                            n < 0 ? cat(": ", std::strerror(errno)) : std::string()));
+          }
+          done += std::size_t(n);
+        }
+        m_next += records;
+      }
+      const char* at = m_bytes.data() + m_at;
+      std::memcpy(&index, at, sizeof index);
+      std::memcpy(&row, at + sizeof index, sizeof row);
+      row.attributes = nullptr;
+      attributes.resize(m_store->m_attributes);
+      if(m_store->m_attributes)
+        std::memcpy(attributes.data(), at + sizeof index + sizeof row, sizeof(double) * m_store->m_attributes);
+      m_at += m_store->m_record;
+      return true;
+    }
+
+  private:
+    const Row_store* m_store;
+    std::uint64_t m_next, m_end;  // records
+    std::size_t m_buffered;
+    std::vector<char> m_bytes;
+    std::size_t m_at = 0;
+  };
 
 private:
-  std::size_t m_attributes;
+  struct Segment
+  {
+    std::uint64_t begin, end;  // records
+  };
+  std::size_t m_attributes, m_record;
   std::string m_name;
   std::FILE* m_file = nullptr;
   std::unique_ptr<char[]> m_buffer;
+  std::vector<Segment> m_segments;
+  std::uint64_t m_records = 0;
 };
 
 // The box of the tiles: the 0.1% and 99.9% quantiles of the sample on each axis, so that a
@@ -267,9 +327,14 @@ Scanned_input read_or_scan(const std::string& path, const Read_options& options,
   std::size_t stride = 1, seen = 0;  // every stride-th finite point is sampled
   std::vector<double> xyz, normals;
   std::vector<std::vector<double>> attributes;
+  std::vector<double> largest;  // per attribute, over every point
   Read_options o = options;
   o.chunk_points = 1 << 16;
   o.chunk = [&](const Point_cloud& c) {
+    largest.resize(c.attributes.size(), -HUGE_VAL);
+    for(std::size_t a = 0; a < c.attributes.size(); ++a)
+      for(const double v : c.attributes[a].values)
+        largest[a] = v > largest[a] ? v : largest[a];
     for(std::size_t k = 0; k < c.size(); ++k)
     {
       const double* p = &c.xyz[3 * k];
@@ -313,6 +378,8 @@ Scanned_input read_or_scan(const std::string& path, const Read_options& options,
   };
   s.cloud = read_point_cloud(path, o);
   s.fits = keeping;
+  for(std::size_t a = 0; a < s.cloud.attributes.size(); ++a)
+    s.cloud.attributes[a].largest = a < largest.size() ? largest[a] : -HUGE_VAL;
   if(keeping)
   {
     s.cloud.first = 0;
@@ -366,11 +433,14 @@ Tiled_report run_tiled(const std::string& path, const Read_options& options, con
     longest = std::max(longest, half[a]);
   }
   PSC::Tile_grid grid(box, std::array<std::size_t, 3>{{1, 1, 1}});
+  // The grids tried, coarsest first, with the most points a tile of each reads.
+  std::vector<std::pair<PSC::Tile_grid, double>> tried;
   // (the tiles shrink by 0.8 a step: past 4096 tiles within 38 steps)
   for(double side = longest; side > 0;)
   {
     side *= 0.8;
     const double largest = largest_tile(grid, density, lo, hi, halo);
+    tried.emplace_back(grid, largest);
     if(grid.size() <= Tiled_report::few_tiles)
     {
       // the finest grid of few tiles, for a --memory-limit to suggest when the limit makes many
@@ -388,6 +458,22 @@ Tiled_report run_tiled(const std::string& path, const Read_options& options, con
                                                          std::size_t(counts[2])}});
     if(tiling.interrupted && tiling.interrupted())
       throw Cancelled();
+  }
+  if(!tried.empty() && tried.back().second > budget)
+  {
+    // No grid meets the limit: the halos hold more points than it allows. Smaller tiles then
+    // barely lower the peak (not at all when a halo spans the whole cloud: 3000 points with
+    // neighbourhoods of 640 made 641 tiles, each the whole cloud, 200 times as long as one)
+    // while every tile reads the input again: the coarsest grid within 10% of the lowest peak.
+    double least = HUGE_VAL;
+    for(const auto& g : tried)
+      least = std::min(least, g.second);
+    for(const auto& g : tried)
+      if(g.second <= 1.1 * least)
+      {
+        grid = g.first;
+        break;
+      }
   }
 
   // false for a tile whose core holds no point by the density (the first tile also writes
@@ -408,7 +494,7 @@ Tiled_report run_tiled(const std::string& path, const Read_options& options, con
 
   // 2. The tiles, each read from the file with its halo, estimated, and its own rows written
   // to a temporary file. Non-finite points are nobody's own: the first tile writes their rows.
-  std::vector<std::unique_ptr<Row_file>> files;
+  Row_store store(tiling.temporary_prefix + "tiles-", attribute_count);
   for(std::size_t t = 0; t < grid.size(); ++t)
   {
     if(!may_own_points(t))
@@ -504,7 +590,7 @@ Tiled_report run_tiled(const std::string& path, const Read_options& options, con
       report.halo = std::max(report.halo, halo);
       ++report.tiles;
       const auto rows_start = std::chrono::steady_clock::now();
-      files.emplace_back(new Row_file(tiling.temporary_prefix + cat("tile", t + 1, "-"), attribute_count));
+      store.begin_segment();
       Output_row r;
       std::vector<double> values(attribute_count);
       for(std::size_t k = 0; k < points.size(); ++k)
@@ -516,10 +602,9 @@ Tiled_report run_tiled(const std::string& path, const Read_options& options, con
         rows(k, r);
         for(std::size_t a = 0; a < attribute_count; ++a)
           values[a] = points.attributes[a][k];
-        files.back()->put(points.index[k], r, values.data());
+        store.put(points.index[k], r, values.data());
         own_row(points.index[k], r);
       }
-      files.back()->rewind();
       report.rows_seconds += seconds_since(rows_start);
       break;
     }
@@ -527,33 +612,42 @@ Tiled_report run_tiled(const std::string& path, const Read_options& options, con
       throw Cancelled();
   }
 
-  // 3. The rows in input order: a merge of the tiles' files, each sorted by input index.
+  // 3. The rows in input order: a merge of the tiles' segments, each sorted by input index,
+  // read through buffers that share half the memory limit (1 MB each at most, 16 rows at least).
+  store.finish();
+  const std::size_t segments = store.segments();
+  const double share = tiling.memory_limit / 2 / double(std::max<std::size_t>(1, segments));
+  const std::size_t buffered = std::size_t(
+    std::max(16.0, std::min(share, double(1 << 20)) / double(store.record_bytes())));
   struct Head
   {
     std::uint64_t index;
-    std::size_t file;
+    std::size_t segment;
     bool operator<(const Head& h) const { return index > h.index; }  // smallest on top
   };
   std::priority_queue<Head> heads;
-  std::vector<Output_row> head_row(files.size());
-  std::vector<std::vector<double>> head_values(files.size());
-  for(std::size_t f = 0; f < files.size(); ++f)
+  std::vector<Row_store::Cursor> cursors;
+  cursors.reserve(segments);
+  std::vector<Output_row> head_row(segments);
+  std::vector<std::vector<double>> head_values(segments);
+  for(std::size_t f = 0; f < segments; ++f)
   {
+    cursors.emplace_back(store, f, buffered);
     std::uint64_t index;
-    if(files[f]->get(index, head_row[f], head_values[f]))
+    if(cursors[f].get(index, head_row[f], head_values[f]))
       heads.push(Head{index, f});
   }
   std::vector<double> current_values(attribute_count);
   write([&](std::size_t i, Output_row& r) {
     if(heads.empty() || heads.top().index != i)
       throw Error(cat("internal error: row ", i, " is missing from the tiles"));
-    const std::size_t f = heads.top().file;
+    const std::size_t f = heads.top().segment;
     heads.pop();
     r = head_row[f];
     current_values.swap(head_values[f]);
     r.attributes = current_values.data();
     std::uint64_t index;
-    if(files[f]->get(index, head_row[f], head_values[f]))
+    if(cursors[f].get(index, head_row[f], head_values[f]))
       heads.push(Head{index, f});
   });
   return report;

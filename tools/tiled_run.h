@@ -82,7 +82,7 @@ struct Tiling
   bool box_halo = false;
   // A tile's halo grows when the estimator throws Halo_too_small (by count, or an estimator
   // with needs of its own such as normals).
-  std::string temporary_prefix;  // the temporary files are named prefix + "tileN-XXXXXX"
+  std::string temporary_prefix;  // the rows' temporary file is named prefix + "tiles-XXXXXX"
   // starts a progress phase (the reads, the estimations) and returns its callback
   std::function<Progress(const std::string&)> phase;
   // called after every tile; true to cancel (Cancelled is thrown)

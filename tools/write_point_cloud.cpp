@@ -269,12 +269,14 @@ void write_point_cloud(std::FILE* f, const Output_layout& layout, std::size_t n,
     {
       const Output_field& field = layout.fields[c];
       const int s = field.source;
-      const double v = s < output_value_count               ? r.value[s]
-                       : s == Output_field::NEIGHBORS       ? double(r.neighbors)
-                       : s == Output_field::VALID           ? double(r.valid)
-                       : s < Output_field::ATTRIBUTE        ? double(r.color[s - Output_field::COLOR])
-                       : r.attributes                       ? r.attributes[s - Output_field::ATTRIBUTE]
-                                                            : (*layout.attributes)[s - Output_field::ATTRIBUTE].values[i];
+      double v = s < output_value_count               ? r.value[s]
+                 : s == Output_field::NEIGHBORS       ? double(r.neighbors)
+                 : s == Output_field::VALID           ? double(r.valid)
+                 : s < Output_field::ATTRIBUTE        ? double(r.color[s - Output_field::COLOR])
+                 : r.attributes                       ? r.attributes[s - Output_field::ATTRIBUTE]
+                                                      : (*layout.attributes)[s - Output_field::ATTRIBUTE].values[i];
+      if(field.shift)
+        v = std::floor(v / double(1 << field.shift));
       if(layout.format == Output_layout::BINARY_PLY)
         put_binary_value(chunk, field.type, v, swap);
       else

@@ -62,6 +62,8 @@ struct Output_field
   std::string name;
   Scalar_type type = Scalar_type::FLOAT64;
   int source = 0;  // VALUE + i: Output_row::value[i]; COLOR + c; ATTRIBUTE + j: attribute j
+  // an attribute written as its value divided by 2^shift, rounded down (16-bit colours as 8)
+  int shift = 0;
 };
 
 struct Output_layout

@@ -70,12 +70,12 @@ def test_dask_automatic_scale(client, cloud, tmp_path):
     # neighbors="auto" in tiles: bitwise the single-process run (a noisy part of the sphere,
     # where the counts climb the ladder: the tiles ask for larger halos)
     points, normals = cloud
-    points, normals = points[:60_000].copy(), normals[:60_000]
-    spacing = np.sqrt(4 * np.pi / 200_000)
+    points, normals = points[:20_000].copy(), normals[:20_000]  # (in random order: the whole sphere)
+    spacing = np.sqrt(4 * np.pi / 20_000)
     points += normals * (0.3 * spacing * np.random.default_rng(3).standard_normal(len(points)))[:, None]
     single = psc.estimate_curvatures(points, normals, neighbors="auto")
     assert "mean_error" in single and np.median(single["neighbors"]) > 80
-    assert_same(single, psc_dask.estimate_curvatures(client, points, normals, neighbors="auto", tile_size=0.5,
+    assert_same(single, psc_dask.estimate_curvatures(client, points, normals, neighbors="auto", tile_size=1.0,
                                                      initial_halo=1e-3))
     with pytest.raises(ValueError, match="not available for files"):
         psc_dask.estimate_curvatures_file(client, tmp_path / "c.npy", tmp_path / "o.npy", neighbors="auto")
