@@ -53,23 +53,25 @@ Output_layout output_layout(const Options& o, const Estimation_settings& scale,
   layout.attributes = &attributes;
   if(layout.format != Output_layout::CSV)
   {
-    // The input's 16-bit colours (LAS) as PLY viewers read colours, 8 bits: CloudCompare 2.11
-    // shows ushort red green blue as black. The high byte, or the value itself where no value
-    // exceeds 255 (8-bit colours stored in 16-bit fields, as some LAS writers do). CSV and LAS
-    // output keep the 16 bits.
-    double largest = -HUGE_VAL;
+    // The input's 16-bit colours (LAS, or a PLY's ushort red green blue) as PLY viewers read
+    // colours, 8 bits: CloudCompare 2.11 shows ushort red green blue as black. The high byte, or
+    // the value itself where no value of the file exceeds 255 (8-bit colours stored in 16-bit
+    // fields, as some LAS writers do). CSV and LAS output keep the 16 bits, and so do the
+    // input's colours renamed input_red ... when --color writes the estimates' colours.
+    bool wide = false;
     std::vector<Output_field*> colours;
     for(Output_field& f : layout.fields)
       if(f.source >= Output_field::ATTRIBUTE && f.type == Scalar_type::UINT16 &&
          (f.name == "red" || f.name == "green" || f.name == "blue"))
       {
         colours.push_back(&f);
-        largest = std::max(largest, attributes[f.source - Output_field::ATTRIBUTE].largest);
+        // (a NaN largest, unknown, is taken as 16 bits)
+        wide = wide || !(attributes[f.source - Output_field::ATTRIBUTE].largest <= 255);
       }
     for(Output_field* f : colours)
     {
       f->type = Scalar_type::UINT8;
-      f->shift = largest <= 255 ? 0 : 8;  // (NaN, unknown: taken as 16 bits)
+      f->shift = wide ? 8 : 0;
     }
   }
   layout.scalar_prefix = o.ply_scalar_names;

@@ -162,7 +162,9 @@ std::uint64_t largest_tile(const PSC::Tile_grid& grid, const Density_grid& densi
 // a segment per tile, each sorted by input index. One file and one write buffer whatever the
 // number of tiles (a file per tile kept a 1 MB buffer each: 1500 points in 356 tiles took
 // 373 MB, and thousands of tiles would exceed the open files allowed); the merge reads each
-// segment through a buffer sized so that all of them fit in the memory limit.
+// segment through a buffer of its own (run_tiled() sizes them: half the limit shared, 16
+// records each at least).
+static_assert(sizeof(::off_t) >= 8, "temporary files beyond 2 GB need a 64-bit off_t");
 class Row_store
 {
 public:
@@ -201,10 +203,10 @@ public:
   {
     Output_row r = row;
     r.attributes = nullptr;
-    std::fwrite(&index, sizeof index, 1, m_file);
-    std::fwrite(&r, sizeof r, 1, m_file);
-    if(m_attributes)
-      std::fwrite(attributes, sizeof(double), m_attributes, m_file);
+    // (a full disk stops the run at the row that does not fit, not after the last tile)
+    if(std::fwrite(&index, sizeof index, 1, m_file) != 1 || std::fwrite(&r, sizeof r, 1, m_file) != 1 ||
+       (m_attributes && std::fwrite(attributes, sizeof(double), m_attributes, m_file) != m_attributes))
+      throw Error(cat("cannot write the temporary file ", in_quotes(m_name), ": ", std::strerror(errno)));
     ++m_records;
     m_segments.back().end = m_records;
   }
