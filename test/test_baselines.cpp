@@ -198,6 +198,9 @@ struct Errors
   Stat k_min, k_max;  // signed, or magnitudes sorted for VCM
   Stat normal;     // degrees
   Stat direction;  // degrees, direction of the larger (|)k(|), away from umbilics
+  // the errors of a constant zero at the same points: an error bound at or above them would
+  // pass an estimator that returns 0 everywhere (issue 45)
+  Stat H_of_zero, k_min_of_zero, k_max_of_zero;
 };
 
 double angle_degrees(const Vector& a, const Vector& b)
@@ -224,6 +227,7 @@ Errors errors(Kind k, const Estimates& est, const std::vector<Oriented_point>& p
     const double spread = std::max(std::abs(t.k_min), std::abs(t.k_max));
     if(std::isfinite(x.normal.x()))
       e.normal.add(angle_degrees(x.normal, t.normal));
+    e.H_of_zero.add(t.mean);
     if(k == Kind::UNSIGNED_MEAN)
       e.H.add(x.mean_curvature - std::abs(t.mean));
     else if(k == Kind::SIGNED_TENSOR)
@@ -231,6 +235,8 @@ Errors errors(Kind k, const Estimates& est, const std::vector<Oriented_point>& p
       e.H.add(x.mean_curvature - t.mean);
       e.k_min.add(x.min_curvature - t.k_min);
       e.k_max.add(x.max_curvature - t.k_max);
+      e.k_min_of_zero.add(t.k_min);
+      e.k_max_of_zero.add(t.k_max);
       if(t.k_max - t.k_min > 0.2 * spread)
         e.direction.add(line_angle_degrees(x.max_direction, t.d_max));
     }
@@ -242,6 +248,8 @@ Errors errors(Kind k, const Estimates& est, const std::vector<Oriented_point>& p
         std::swap(a, b);
       e.k_min.add(x.min_curvature - a);
       e.k_max.add(x.max_curvature - b);
+      e.k_min_of_zero.add(a);
+      e.k_max_of_zero.add(b);
       if(b - a > 0.2 * spread)
         e.direction.add(line_angle_degrees(x.max_direction, larger));
     }
@@ -274,6 +282,38 @@ void print_row(const std::string& label, const Errors& e)
   std::cout << "| " << label << " | " << e.valid << "/" << e.considered << " | " << pair(e.H)
             << " | " << pair(e.k_min) << " | " << pair(e.k_max) << " | " << pair(e.normal)
             << " | " << mean_direction.str() << " |" << std::endl;
+}
+
+// An error bound of the tables below, for an error measured as `error` where a constant zero
+// would err by `of_zero`: the bound must be below `of_zero` (else it proves nothing: issue 45),
+// and the error below the bound. `no_bound` where an estimator's error exceeds the quantity
+// itself (said at each table), so that nothing is asserted for it.
+constexpr double no_bound = std::numeric_limits<double>::infinity();
+void check_bound(const char* what, double error, double bound, double of_zero)
+{
+  if(bound == no_bound)
+    return;
+  INFO(what << ": error " << error << ", bound " << bound << ", a constant zero's error " << of_zero);
+  CHECK(bound < of_zero);
+  CHECK(error < bound);
+}
+
+// The curvature bounds of a row: mean and largest error of H, then of k_min and k_max (the
+// worse of the two against the worse of a constant zero's).
+void check_bounds(Kind kind, const Errors& e, double mean_H, double max_H, double mean_k, double max_k)
+{
+  if(kind != Kind::MAGNITUDES)
+  {
+    check_bound("mean H error", e.H.mean(), mean_H, e.H_of_zero.mean());
+    check_bound("largest H error", e.H.max, max_H, e.H_of_zero.max);
+  }
+  if(kind != Kind::UNSIGNED_MEAN)
+  {
+    check_bound("mean k error", std::max(e.k_min.mean(), e.k_max.mean()), mean_k,
+                std::max(e.k_min_of_zero.mean(), e.k_max_of_zero.mean()));
+    check_bound("largest k error", std::max(e.k_min.max, e.k_max.max), max_k,
+                std::max(e.k_min_of_zero.max, e.k_max_of_zero.max));
+  }
 }
 
 // ---------------------------------------------------------------------------------------
@@ -446,7 +486,7 @@ TEST_CASE("Jacobi eigen-decomposition of symmetric 3x3 matrices", "[baselines][e
 }
 
 // ---------------------------------------------------------------------------------------
-// Analytic surfaces: every estimator within its measured tolerance
+// Analytic surfaces: each estimator within its measured bounds
 // ---------------------------------------------------------------------------------------
 
 // Sphere of radius 2 centred away from the origin, Fibonacci sampling, r = 0.25 (about 39
@@ -462,22 +502,25 @@ TEST_CASE("Jacobi eigen-decomposition of symmetric 3x3 matrices", "[baselines][e
 //     0.02 to λ_i/λ_n against r²k²/4 = 0.004, so the magnitudes come out 2.3 times too large;
 //     with R = 2 (the feature size, as CGAL recommends) 0.020 to 0.056 / 0.082.
 // Normals (max, degrees): fits 0.0018 (jets), PCA plane 0.50, VCM 1.1.
-TEST_CASE("Sphere: every estimator within its measured tolerance", "[baselines][sphere]")
+TEST_CASE("Sphere: each estimator within its measured bounds, every bound below a constant zero's error", "[baselines][sphere]")
 {
   const Point c(1, -2, 3);
   const double R = 2, r = 0.25;
   const auto pts = sphere(10000, R, c);
   auto truth = [&](const Point& p) { return sphere_truth(p, c, R); };
   print_header("Sphere R = 2, 10000 points, r = 0.25");
+  // H = k = 0.5. No bound where an error exceeds that: the barycenter's largest (0.72) and VCM
+  // at its default offset radius r (0.65-0.74 mean: the cells' spread over r, a bias that
+  // shrinks as 1/R^2 with the offset radius R, checked at R = 2 below). Others: measured x1.5.
   struct Tolerance { Method m; double mean_H, max_H, mean_k, max_k; };
   const Tolerance tolerances[] = {
     {Method::ASO, 1e-12, 1e-11, 1e-12, 1e-11},
-    {Method::BARYCENTER, 0.2, 1.1, 0, 0},
+    {Method::BARYCENTER, 0.2, no_bound, 0, 0},
     {Method::PCA_PLANE, 0.021, 0.053, 0, 0},
     {Method::PSS, 0.002, 0.0021, 0.002, 0.0021},
     {Method::JET, 0.003, 0.0032, 0.003, 0.0032},
     {Method::WAVEJET, 0.003, 0.0032, 0.003, 0.0032},
-    {Method::VCM, 0, 0, 1.1, 1.26}};
+    {Method::VCM, 0, 0, no_bound, no_bound}};
   for(const Tolerance& t : tolerances)
   {
     const Estimates est = run(t.m, pts, r);
@@ -486,18 +529,7 @@ TEST_CASE("Sphere: every estimator within its measured tolerance", "[baselines][
     INFO(name(t.m));
     CHECK(e.valid == pts.size());
     check_fields(t.m, est[123]);
-    if(kind(t.m) != Kind::MAGNITUDES)
-    {
-      CHECK(e.H.mean() < t.mean_H);
-      CHECK(e.H.max < t.max_H);
-    }
-    if(kind(t.m) != Kind::UNSIGNED_MEAN)
-    {
-      CHECK(e.k_min.mean() < t.mean_k);
-      CHECK(e.k_max.mean() < t.mean_k);
-      CHECK(e.k_min.max < t.max_k);
-      CHECK(e.k_max.max < t.max_k);
-    }
+    check_bounds(kind(t.m), e, t.mean_H, t.max_H, t.mean_k, t.max_k);
     // normals: exact for ASO (acos resolves 1e-6 degree); the others x1.5
     if(t.m == Method::ASO)
       CHECK(e.normal.max < 1e-5);
@@ -514,8 +546,7 @@ TEST_CASE("Sphere: every estimator within its measured tolerance", "[baselines][
   const Errors e = errors(Kind::MAGNITUDES, vcm, pts, truth);
   print_row("VCM (CGAL), R = 2 (feature size)", e);
   CHECK(e.k_min.mean() < 0.03);
-  CHECK(e.k_max.mean() < 0.084);
-  CHECK(std::max(e.k_min.max, e.k_max.max) < 0.123);
+  check_bounds(Kind::MAGNITUDES, e, 0, 0, 0.084, 0.123);
 }
 
 TEST_CASE("Inward normals flip the signed curvatures and the normals, not the magnitudes", "[baselines][sphere]")
@@ -569,22 +600,24 @@ TEST_CASE("Inward normals flip the signed curvatures and the normals, not the ma
 //   VCM: at R = r no curvature is resolved (magnitude errors 1.28 in mean, 3.5 at most: the
 //      cell spread adds (2/r) sqrt(0.019) = 1.4 to the magnitudes), but its direction of the
 //      larger magnitude is the circumference within 2.7 degrees (mean).
-TEST_CASE("Cylinder: every estimator within its measured tolerance", "[baselines][cylinder]")
+TEST_CASE("Cylinder: each estimator within its measured bounds, every bound below a constant zero's error", "[baselines][cylinder]")
 {
   const double R = 1, height = 3, r = 0.2;
   const auto pts = cylinder(100, 60, R, height);
   auto truth = [&](const Point& p) { return cylinder_truth(p, R); };
   auto interior = [&](const Point& p) { return std::abs(p.z()) < 0.5 * height - r; };
   print_header("Cylinder R = 1, 6000 points, r = 0.2, points farther than r from the rims");
+  // H = 0.5, k = 0 and 1. No curvature bound for the barycenter (mean H error 0.52) and VCM
+  // (1.28 on k_min): their errors exceed the curvatures; VCM's direction is still bounded.
   struct Tolerance { Method m; double mean_H, max_H, mean_k, max_k, direction; };
   const Tolerance tolerances[] = {
     {Method::ASO, 0.003, 0.026, 0.0043, 0.034, 0.11},
-    {Method::BARYCENTER, 0.78, 3.0, 0, 0, 0},
+    {Method::BARYCENTER, no_bound, no_bound, 0, 0, 0},
     {Method::PCA_PLANE, 0.05, 0.21, 0, 0, 0},
     {Method::PSS, 0.0036, 0.0043, 0.0073, 0.0084, 0.006},
     {Method::JET, 0.0058, 0.0073, 0.012, 0.014, 0.012},
     {Method::WAVEJET, 0.0058, 0.0073, 0.012, 0.014, 0.011},
-    {Method::VCM, 0, 0, 1.9, 5.2, 4.0}};
+    {Method::VCM, 0, 0, no_bound, no_bound, 4.0}};
   for(const Tolerance& t : tolerances)
   {
     const Estimates est = run(t.m, pts, r);
@@ -593,17 +626,9 @@ TEST_CASE("Cylinder: every estimator within its measured tolerance", "[baselines
     INFO(name(t.m));
     CHECK(e.valid == e.considered);
     check_fields(t.m, est[2000]);
-    if(kind(t.m) != Kind::MAGNITUDES)
-    {
-      CHECK(e.H.mean() < t.mean_H);
-      CHECK(e.H.max < t.max_H);
-    }
+    check_bounds(kind(t.m), e, t.mean_H, t.max_H, t.mean_k, t.max_k);
     if(kind(t.m) != Kind::UNSIGNED_MEAN)
-    {
-      CHECK(std::max(e.k_min.mean(), e.k_max.mean()) < t.mean_k);
-      CHECK(std::max(e.k_min.max, e.k_max.max) < t.max_k);
       CHECK(e.direction.mean() < t.direction);
-    }
   }
 }
 
@@ -614,10 +639,10 @@ TEST_CASE("Cylinder: every estimator within its measured tolerance", "[baselines
 // errors (tolerances x1.5), ASO the default variant (the paper's: H 0.038 / 0.73, k 0.049 /
 // 0.93; the default's sample weights and kernel cut them 2.7 times, PSS stays ahead here):
 //   H: ASO 0.0141 / 0.258, PSS 0.0093 / 0.066, jets 0.013 / 0.10, wavejets 0.014 / 0.11,
-//      PCA plane 0.14 / 0.92, barycenter 3.3 / 17.5 (useless here);
+//      PCA plane 0.14 / 0.92, barycenter 3.3 / 17.5 (useless here: above H itself, no bound);
 //   k_min, k_max (worse of the two): ASO 0.0194 / 0.579, PSS 0.015 / 0.11, jets 0.021 / 0.17,
-//      wavejets 0.021 / 0.18; VCM magnitudes 3.3 / 5.6.
-TEST_CASE("Ellipsoid (random sampling): every estimator within its measured tolerance", "[baselines][ellipsoid]")
+//      wavejets 0.021 / 0.18; VCM magnitudes 3.3 / 5.6 (above the curvatures, no bound).
+TEST_CASE("Ellipsoid (random sampling): each estimator within its measured bounds, every bound below a constant zero's error", "[baselines][ellipsoid]")
 {
   const double a = 1, b = 0.7, c = 0.5, r = 0.09;
   const auto pts = ellipsoid(10000, a, b, c);
@@ -626,12 +651,12 @@ TEST_CASE("Ellipsoid (random sampling): every estimator within its measured tole
   struct Tolerance { Method m; double mean_H, max_H, mean_k, max_k; };
   const Tolerance tolerances[] = {
     {Method::ASO, 0.021, 0.39, 0.029, 0.87},
-    {Method::BARYCENTER, 5.0, 26, 0, 0},
+    {Method::BARYCENTER, no_bound, no_bound, 0, 0},
     {Method::PCA_PLANE, 0.22, 1.4, 0, 0},
     {Method::PSS, 0.014, 0.099, 0.023, 0.165},
     {Method::JET, 0.02, 0.153, 0.032, 0.25},
     {Method::WAVEJET, 0.02, 0.168, 0.032, 0.276},
-    {Method::VCM, 0, 0, 4.9, 8.3}};
+    {Method::VCM, 0, 0, no_bound, no_bound}};
   for(const Tolerance& t : tolerances)
   {
     const Estimates est = run(t.m, pts, r);
@@ -645,16 +670,7 @@ TEST_CASE("Ellipsoid (random sampling): every estimator within its measured tole
       too_few += x.status == CGAL::Curvature_estimate_status::TOO_FEW_NEIGHBORS && x.neighbor_count < 20;
     CHECK(e.valid + too_few == pts.size());
     CHECK(too_few <= 30);
-    if(kind(t.m) != Kind::MAGNITUDES)
-    {
-      CHECK(e.H.mean() < t.mean_H);
-      CHECK(e.H.max < t.max_H);
-    }
-    if(kind(t.m) != Kind::UNSIGNED_MEAN)
-    {
-      CHECK(std::max(e.k_min.mean(), e.k_max.mean()) < t.mean_k);
-      CHECK(std::max(e.k_min.max, e.k_max.max) < t.max_k);
-    }
+    check_bounds(kind(t.m), e, t.mean_H, t.max_H, t.mean_k, t.max_k);
   }
 }
 
@@ -1314,14 +1330,15 @@ Three_errors default_paper_pss(const std::vector<Oriented_point>& pts, double r,
 
 // The targets of the issue "an ASO that stays accurate on real sampling and imperfect
 // normals", measured on the same clouds as benchmark/paper_experiments (experiment 7).
-TEST_CASE("Default ASO: 4.7x the paper's accuracy on Goursat 50K, unaffected by 30% flipped normals, noisy normals refined", "[aso][robust]")
+TEST_CASE("Default ASO: at least 4.6x the paper's accuracy on Goursat 50K, within 2% of it with 30% flipped normals, noisy normals refined", "[aso][robust]")
 {
   const auto pts = read_xyz(repo_data("goursat_050000.xyz"));
   const double r = 1.5;
   const Three_errors e = default_paper_pss(pts, r, "Goursat 50K r=1.5");
-  // Measured 0.255e-3, 1.20e-3, 2.40e-3. The issue's target for the default: 0.30e-3.
+  // Measured 0.255e-3, 1.20e-3, 2.40e-3 (the README's "4.7 times"). The issue's target for the
+  // default: 0.30e-3. (Deterministic: the same bytes in every run.)
   CHECK(e.robust < 0.30e-3);
-  CHECK(e.paper > 1.1e-3);
+  CHECK(e.paper > 4.6 * e.robust);
   CHECK(e.robust < e.pss);
 
   // 30% of the normals flipped: the robust orientation uses them flipped back.
@@ -1335,8 +1352,8 @@ TEST_CASE("Default ASO: 4.7x the paper's accuracy on Goursat 50K, unaffected by 
   const double paper_flipped = mean_H_error(CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(flipped, r, paper_maps()), pts);
   measured("Goursat 50K, 30% flipped: default ASO", robust_flipped);
   measured("Goursat 50K, 30% flipped: paper's ASO", paper_flipped);
-  // Measured 0.257e-3 (the clean value: every flip is undone) and 21.0e-3. Target 5e-3.
-  CHECK(robust_flipped < 5e-3);
+  // Measured 0.257e-3 (0.8% above the clean value: nearly every flip is undone) and 21.0e-3.
+  CHECK(robust_flipped < 1.02 * e.robust);
   CHECK(paper_flipped > 15e-3);
 
   // Every normal tilted by 30 degrees in a random tangent direction: two refinements.
@@ -1702,12 +1719,23 @@ TEST_CASE("Foliage is estimated with a low normal_coherence, not TWO_SHEETS, and
   std::vector<Oriented_point> flat;
   for(int i = 0; i < 2000; ++i)
     flat.emplace_back(Point(u(rng), u(rng), 0), Vector(0, 0, 1));
+  std::size_t flat_valid = 0;
   for(const auto& e : CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(flat, k40))
     if(e.is_valid())
+    {
+      ++flat_valid;
       CHECK(e.normal_coherence == Approx(1.0).epsilon(1e-12));
+    }
+  CHECK(flat_valid == flat.size());
   double least = 1;
+  std::size_t sphere_valid = 0;
   for(const auto& e : CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(sphere(20000, 1.0), 0.2, maps()))
-    least = std::min(least, double(e.normal_coherence));
+    if(e.is_valid())
+    {
+      ++sphere_valid;
+      least = std::min(least, double(e.normal_coherence));
+    }
+  CHECK(sphere_valid == 20000);
   measured("sphere R = 1, r = 0.2: least normal_coherence", least);
   CHECK(least > 0.99);
   CHECK(least < 1.0);

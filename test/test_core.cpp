@@ -22,6 +22,14 @@
 
 #include <catch2/catch.hpp>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+#endif
+
+#include <atomic>
+#include <thread>
+
 #include <functional>
 #include <limits>
 #include <sstream>
@@ -635,6 +643,48 @@ TEST_CASE("Sequential and Parallel runs give bitwise identical results", "[aso][
   CHECK(count_invalid(s) == 7);
   CHECK(count_invalid(pa) == 7);
 }
+
+#ifdef CGAL_LINKED_WITH_TBB
+// The README's claims for Parallel_tag: the callback is called from the calling thread only,
+// and the result does not depend on the number of threads, here 8 in a task arena (more than
+// the cores of CI's machines; global_control lets TBB start that many workers anywhere).
+// The default ASO (three passes: sample weights, fit, estimation) by count and APSS by radius.
+TEST_CASE("Parallel_tag: the callback comes from the calling thread only, and 8 threads give the sequential bytes", "[aso][apss][parallel][callback]")
+{
+  const auto pts = sphere(20000, 1);
+  const double r = 0.08;  // about 32 neighbours
+  const auto by_count = PSC::parameters::neighbor_count(30, maps());
+  const auto aso_sequential = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, by_count);
+  const auto apss_sequential = apss<CGAL::Sequential_tag>(pts, r);
+  REQUIRE(count_invalid(aso_sequential) == 0);
+  REQUIRE(count_invalid(apss_sequential) == 0);
+
+  const std::thread::id caller = std::this_thread::get_id();
+  std::atomic<std::size_t> calls(0), elsewhere(0);
+  const std::function<bool(double)> cb = [&](double) {
+    ++calls;
+    elsewhere += std::this_thread::get_id() != caller ? 1 : 0;
+    return true;
+  };
+  tbb::global_control threads(tbb::global_control::max_allowed_parallelism, 8);
+  tbb::task_arena arena(8);
+  std::vector<Estimate> aso_parallel, apss_parallel;
+  int concurrency = 0;
+  arena.execute([&] {
+    concurrency = tbb::this_task_arena::max_concurrency();
+    aso_parallel = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, by_count.callback(cb));
+    apss_parallel = CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(pts, r, maps().callback(cb));
+  });
+  CHECK(concurrency == 8);
+  CHECK(calls > 10);
+  CHECK(elsewhere == 0);
+  std::size_t differ = 0;
+  for(std::size_t i = 0; i < pts.size(); ++i)
+    differ += (same_estimate(aso_parallel[i], aso_sequential[i]) ? 0 : 1) +
+              (same_estimate(apss_parallel[i], apss_sequential[i]) ? 0 : 1);
+  CHECK(differ == 0);
+}
+#endif
 
 // Coordinates are centred at the query point before anything is summed, so a translation
 // far from the origin costs only the rounding of the translated input itself.

@@ -463,10 +463,10 @@ Options parse_command_line(int argc, char** argv)
                     " INPUT OUTPUT [options])"));
   if(o.radius_given && o.neighbors_given)
     throw Error("give either --radius or --neighbors, not both");
-  // The default scale: automatic for the ASO's robust variant (it keeps 40 neighbours where
-  // the fits see no noise and grows where noise dominates, as on most real scans), else 40.
-  if(!o.radius_given && !o.neighbors_given && o.method->supports_automatic_scale &&
-     o.scale.variant == CGAL::Aso_variant::ROBUST)
+  // The default scale (the library's front_end_defaults): automatic for the ASO's robust
+  // variant, else 40 (Estimation_settings::neighbors).
+  if(!o.radius_given && !o.neighbors_given &&
+     CGAL::Point_set_curvatures::front_end_defaults::automatic_scale(*o.method, o.scale.variant))
     use_automatic_scale(o.scale);
   if(o.scale.automatic_largest > 0 && !o.method->supports_automatic_scale)
     throw Error(cat("--neighbors auto chooses the scale of --method aso only; give --method ", o.method->name,

@@ -35,7 +35,7 @@ typedef std::vector<Estimate> Estimates;
 struct Estimation_settings
 {
   bool by_count = true;
-  std::size_t neighbors = 40;  // by count
+  std::size_t neighbors = CGAL::Point_set_curvatures::front_end_defaults::neighbor_count;  // by count
   double radius = 0;           // by radius, in the unit of the coordinates
   double spacing_multiple = 0; // > 0 for "--radius Nx"
   double spacing = 0;          // CGAL::compute_average_spacing, for "--radius Nx"

@@ -111,8 +111,8 @@ void refuse_without_normals(const Options& o, bool with_normals)
 Estimation_settings estimation_scale(const Options& o, bool normals_estimated)
 {
   Estimation_settings s = o.scale;
-  const bool robust = s.variant == CGAL::Aso_variant::ROBUST;
-  s.position_fit_blend = o.position_blend >= 0 ? o.position_blend : normals_estimated && robust ? 0.5 : 0.0;
+  s.position_fit_blend = o.position_blend >= 0 ? o.position_blend
+                         : CGAL::Point_set_curvatures::front_end_defaults::position_fit_blend(s.variant, normals_estimated);
   return s;
 }
 

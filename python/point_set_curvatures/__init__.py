@@ -61,6 +61,7 @@ __all__ = [
     "METHODS",
     "ESTIMATORS",
     "AUTOMATIC_NEIGHBORS",
+    "DEFAULT_NEIGHBORS",
     "estimate_curvatures",
     "estimate_sphere_features",
     "estimate_multiscale_sphere_features",
@@ -107,6 +108,24 @@ class Status(IntEnum):
     INVALID_NORMAL = 4  #: zero, non-finite or implausible input normal
     NOT_COMPUTED = 5  #: not reached (cancelled), or not an own point of the tile
     TWO_SHEETS = 6  #: robust_orientation: the neighbours lie on two sheets
+
+    @classmethod
+    def names(cls, statuses):
+        """The names of the values of a ``status`` array, as the tool prints them
+        (``"valid"``, ``"too_few_neighbors"``, ...): an array of str of the same shape."""
+        table = np.array([s.name.lower() for s in sorted(cls)])
+        statuses = np.asarray(statuses)
+        if statuses.size and not ((statuses >= 0) & (statuses < len(table))).all():
+            raise ValueError(f"a status value outside 0..{len(table) - 1}")
+        return table[statuses.astype(np.intp)]
+
+    @classmethod
+    def counts(cls, statuses):
+        """``{name: count}`` of the values of a ``status`` array, the most frequent first (as
+        the tool's summary: ``{"valid": 22829, "two_sheets": 86}``)."""
+        values, counts = np.unique(np.asarray(statuses), return_counts=True)
+        order = sorted(zip(values, counts), key=lambda vc: (-vc[1], vc[0]))
+        return {cls(int(v)).name.lower(): int(c) for v, c in order}
 
 
 class ProjectionStatus(IntEnum):
@@ -384,6 +403,9 @@ def _weights(value):
 #: ``neighbors="auto"``: each point's count chosen among the smallest, twice it, ... up to the
 #: largest (the library's ladder, that of the tool's --neighbors auto).
 AUTOMATIC_NEIGHBORS = tuple(_core.AUTOMATIC_NEIGHBORS)
+#: The count of a run given neither ``radius`` nor ``neighbors`` where the automatic scale is
+#: not the default (every method but the robust ASO): the library's, as the tool's.
+DEFAULT_NEIGHBORS = int(_core.DEFAULT_NEIGHBORS)
 
 
 def _scale(radius, neighbors, automatic=False):
@@ -412,7 +434,7 @@ def _method(method):
 
 def estimate_curvatures(
     points,
-    normals,
+    normals=None,
     *,
     method="aso",
     radius=None,
@@ -428,6 +450,12 @@ def estimate_curvatures(
     ----------
     points, normals : array_like, shape (N, 3), float64 or float32
         Positions and consistently oriented normals (need not be unit), any memory layout.
+        Without normals (``None``, the default) they are estimated as the tool estimates
+        those of a file without them, with a warning: :func:`estimate_normals` with a quadric
+        fit (``neighbors="auto"`` with the automatic scale, else its default 40), oriented
+        along a minimum spanning tree (``"mst"``), and ``position_fit_blend=0.5`` for the robust
+        ASO unless given; call :func:`estimate_normals` yourself to choose (for example
+        ``orientation="auto"`` on airborne scans, ``("towards", scanner)`` on a terrestrial one).
     method : str
         ``"aso"`` (Algebraic Shape Operator, default), ``"apss"`` (normal and mean curvature),
         ``"barycenter"``, ``"pca_plane"`` (unsigned mean curvature), ``"pss"``, ``"jet"``
@@ -439,7 +467,9 @@ def estimate_curvatures(
         than the cloud's bounding-box diagonal, a :class:`ScaleWarning`.
     neighbors : int or "auto"
         Instead of a radius: each point's radius reaches its ``neighbors``-th nearest point.
-        Give exactly one of ``radius`` and ``neighbors``. Not less than the number of points:
+        Give at most one of ``radius`` and ``neighbors``; with neither, the tool's default:
+        ``"auto"`` for the robust ASO (the default method and variant), else
+        :data:`DEFAULT_NEIGHBORS` (40). Not less than the number of points:
         a :class:`ScaleWarning`, and capped at the number of points. ``"auto"`` (method
         ``"aso"``): each point's count is chosen among 40, 80, ..., 640
         (:data:`AUTOMATIC_NEIGHBORS`) by the noise its fits measure (noisy scans), as the
@@ -500,11 +530,17 @@ def estimate_curvatures(
     if not ESTIMATORS[method]["supports_tiles"]:
         allowed.discard("tile")
     opts, tile, weights = _options(f"method '{method}'", allowed, options)
+    if radius is None and neighbors is None:
+        neighbors = "auto" if _core.automatic_scale_by_default(method, opts.aso_variant) else DEFAULT_NEIGHBORS
     radius, neighbors = _scale(radius, neighbors, automatic=ESTIMATORS[method]["supports_automatic_scale"])
     progress = _progress(progress)
     points = _array(points, "points")
     if tile is None:  # a tile's arrays are a part of the cloud
         radius, neighbors = _whole_cloud_scale(points, radius, neighbors)
+    if normals is None:
+        normals, progress = _estimated_normals(points, neighbors == "auto", threads, progress, tile)
+        if options.get("position_fit_blend") is None:
+            opts.position_fit_blend = _core.default_position_fit_blend(opts.aso_variant, True)
     return _core.estimate_curvatures(
         method,
         points,
@@ -517,6 +553,30 @@ def estimate_curvatures(
         tile,
         weights,
     )
+
+
+def _estimated_normals(points, automatic, threads, progress, tile):
+    """(normals, progress of the estimation that follows) for estimate_curvatures without
+    normals: as the tool's for a file without them, with its warning; the progress callable
+    sees [0, 0.5] for the normals and [0.5, 1] for the curvatures."""
+    if tile is not None:
+        raise ValueError(
+            "normals: required with tile (normals estimated on a tile would not be the whole "
+            "cloud's): estimate them once with estimate_normals() and give them to each tile")
+    count = f"their count chosen per point from {AUTOMATIC_NEIGHBORS[0]} to {AUTOMATIC_NEIGHBORS[1]}" if automatic \
+        else f"the {DEFAULT_NEIGHBORS} nearest"
+    warnings.warn(
+        f"no normals given: estimating them (a quadric fitted to the nearest neighbours, {count}, "
+        "oriented along a minimum spanning tree, closed parts outward, open parts up); a wrong "
+        "orientation flips the sign of the curvatures: call estimate_normals() to choose "
+        "(orientation='auto' for airborne scans, ('towards', scanner) for a terrestrial one)",
+        UserWarning, stacklevel=3)
+    first = second = progress
+    if progress is not None:
+        first = lambda f: progress(0.5 * f)  # noqa: E731
+        second = lambda f: progress(0.5 + 0.5 * f)  # noqa: E731
+    normals = estimate_normals(points, neighbors="auto" if automatic else None, threads=threads, progress=first)
+    return normals, second
 
 
 def estimate_sphere_features(

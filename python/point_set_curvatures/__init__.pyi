@@ -74,6 +74,10 @@ class Status(IntEnum):
     INVALID_NORMAL = 4
     NOT_COMPUTED = 5
     TWO_SHEETS = 6
+    @classmethod
+    def names(cls, statuses: npt.ArrayLike) -> npt.NDArray[np.str_]: ...
+    @classmethod
+    def counts(cls, statuses: npt.ArrayLike) -> Dict[str, int]: ...
 
 class ProjectionStatus(IntEnum):
     CONVERGED = 0
@@ -83,10 +87,11 @@ class ProjectionStatus(IntEnum):
     NON_FINITE_POINT = 4
 
 AUTOMATIC_NEIGHBORS: Tuple[int, int]
+DEFAULT_NEIGHBORS: int
 
 def estimate_curvatures(
     points: ArrayN3,
-    normals: ArrayN3,
+    normals: Optional[ArrayN3] = None,
     *,
     method: Method = "aso",
     radius: Optional[float] = None,

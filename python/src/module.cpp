@@ -253,6 +253,21 @@ PYBIND11_MODULE(_core, m)
   export_enums(m);
   m.attr("AUTOMATIC_NEIGHBORS") = py::make_tuple(CGAL::Point_set_curvatures::automatic_scale_ladder::smallest,
                                                  CGAL::Point_set_curvatures::automatic_scale_ladder::largest);
+  // The front ends' defaults (estimators.h), which the tool uses too: the scale of a run given
+  // none, the position blend of a run on estimated normals.
+  namespace defaults = CGAL::Point_set_curvatures::front_end_defaults;
+  m.attr("DEFAULT_NEIGHBORS") = defaults::neighbor_count;
+  m.def(
+    "automatic_scale_by_default",
+    [](const std::string& method, int variant) {
+      const auto* e = CGAL::Point_set_curvatures::find_estimator(method);
+      return e != nullptr && defaults::automatic_scale(*e, CGAL::Aso_variant(variant));
+    },
+    py::arg("method"), py::arg("aso_variant"));
+  m.def(
+    "default_position_fit_blend",
+    [](int variant, bool normals_estimated) { return defaults::position_fit_blend(CGAL::Aso_variant(variant), normals_estimated); },
+    py::arg("aso_variant"), py::arg("normals_estimated"));
 
   // Status names and values, checked against the Python enums at import.
   py::dict status;

@@ -110,3 +110,33 @@ def test_python_steps_give_the_tools_default_run(tmp_path):
         np.testing.assert_array_equal(tool["n" + c], r["normal"][:, a])
     np.testing.assert_array_equal(tool["mean"], r["mean"])
     np.testing.assert_array_equal(tool["k_min"], r["k_min"])
+
+
+@pytest.mark.skipif(not os.environ.get("PSC_TOOL_EXE"), reason="the tool's path (PSC_TOOL_EXE) is not given")
+def test_python_defaults_are_the_tools(tmp_path):
+    # Positions only, no option on either side: estimate_curvatures(points) is the tool's
+    # default run on a .xyz file, value for value (normals estimated with the automatic scale,
+    # oriented "mst"; the robust ASO by the automatic scale with the position blend); and a
+    # method without the automatic scale takes 40 neighbours in both.
+    points = np.loadtxt(os.path.join(DATA, "goursat_010000.xyz"))[:, :3]
+    path = tmp_path / "positions.xyz"
+    np.savetxt(path, points, fmt="%.17g")
+    for method, options in (("aso", []), ("pss", ["--method", "pss"])):
+        out = tmp_path / f"{method}.csv"
+        subprocess.run([os.environ["PSC_TOOL_EXE"], str(path), str(out), "--quiet", "--fields",
+                        "normal,mean,k_min,neighbors,valid"] + options, check=True)
+        tool = np.genfromtxt(out, delimiter=",", names=True)
+        with pytest.warns(UserWarning, match="no normals given: estimating them"):
+            r = psc.estimate_curvatures(points, method=method)
+        valid = r["status"] == psc.Status.VALID
+        assert valid.sum() > 0.99 * len(valid), method
+        np.testing.assert_array_equal(tool["valid"], valid)
+        np.testing.assert_array_equal(tool["neighbors"], r["neighbors"])
+        for a, c in enumerate("xyz"):
+            np.testing.assert_array_equal(tool["n" + c], r["normal"][:, a])
+        np.testing.assert_array_equal(tool["mean"], r["mean"])
+        np.testing.assert_array_equal(tool["k_min"], r["k_min"])
+        if method == "aso":
+            assert len(np.unique(r["neighbors"][valid])) > 1  # the automatic scale: counts vary
+        else:
+            assert (r["neighbors"][valid] == psc.DEFAULT_NEIGHBORS).all()
