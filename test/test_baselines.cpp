@@ -286,21 +286,34 @@ void print_row(const std::string& label, const Errors& e)
 
 // An error bound of the tables below, for an error measured as `error` where a constant zero
 // would err by `of_zero`: the bound must be below `of_zero` (else it proves nothing: issue 45),
-// and the error below the bound. `no_bound` where an estimator's error exceeds the quantity
-// itself (said at each table), so that nothing is asserted for it.
-constexpr double no_bound = std::numeric_limits<double>::infinity();
-void check_bound(const char* what, double error, double bound, double of_zero)
+// and the error below the bound. Where an estimator's error exceeds the quantity itself (said
+// at each table) no bound can prove accuracy: `regression_only(b)` then only keeps its error
+// below its measured value b (x1.5), which a constant zero would also meet, to catch garbage.
+struct Bound
 {
-  if(bound == no_bound)
-    return;
-  INFO(what << ": error " << error << ", bound " << bound << ", a constant zero's error " << of_zero);
-  CHECK(bound < of_zero);
-  CHECK(error < bound);
+  double value;
+  bool accuracy = true;  // false: regression_only
+  Bound(double v) : value(v) {}
+};
+Bound regression_only(double b)
+{
+  Bound r(b);
+  r.accuracy = false;
+  return r;
+}
+void check_bound(const char* what, double error, const Bound& bound, double of_zero)
+{
+  INFO(what << ": error " << error << ", bound " << bound.value << (bound.accuracy ? "" : " (regression only)")
+            << ", a constant zero's error " << of_zero);
+  if(bound.accuracy)
+    CHECK(bound.value < of_zero);
+  CHECK(error < bound.value);
 }
 
 // The curvature bounds of a row: mean and largest error of H, then of k_min and k_max (the
 // worse of the two against the worse of a constant zero's).
-void check_bounds(Kind kind, const Errors& e, double mean_H, double max_H, double mean_k, double max_k)
+void check_bounds(Kind kind, const Errors& e, const Bound& mean_H, const Bound& max_H, const Bound& mean_k,
+                  const Bound& max_k)
 {
   if(kind != Kind::MAGNITUDES)
   {
@@ -509,18 +522,18 @@ TEST_CASE("Sphere: each estimator within its measured bounds, every bound below 
   const auto pts = sphere(10000, R, c);
   auto truth = [&](const Point& p) { return sphere_truth(p, c, R); };
   print_header("Sphere R = 2, 10000 points, r = 0.25");
-  // H = k = 0.5. No bound where an error exceeds that: the barycenter's largest (0.72) and VCM
-  // at its default offset radius r (0.65-0.74 mean: the cells' spread over r, a bias that
-  // shrinks as 1/R^2 with the offset radius R, checked at R = 2 below). Others: measured x1.5.
-  struct Tolerance { Method m; double mean_H, max_H, mean_k, max_k; };
+  // H = k = 0.5. Regression bounds only where an error exceeds that: the barycenter's largest
+  // (0.72) and VCM at its default offset radius r (0.65-0.74 mean: the cells' spread over r, a
+  // bias that shrinks as 1/R^2 with the offset radius R, checked at R = 2 below). Measured x1.5.
+  struct Tolerance { Method m; Bound mean_H, max_H, mean_k, max_k; };
   const Tolerance tolerances[] = {
     {Method::ASO, 1e-12, 1e-11, 1e-12, 1e-11},
-    {Method::BARYCENTER, 0.2, no_bound, 0, 0},
+    {Method::BARYCENTER, 0.2, regression_only(1.1), 0, 0},
     {Method::PCA_PLANE, 0.021, 0.053, 0, 0},
     {Method::PSS, 0.002, 0.0021, 0.002, 0.0021},
     {Method::JET, 0.003, 0.0032, 0.003, 0.0032},
     {Method::WAVEJET, 0.003, 0.0032, 0.003, 0.0032},
-    {Method::VCM, 0, 0, no_bound, no_bound}};
+    {Method::VCM, 0, 0, regression_only(1.1), regression_only(1.26)}};
   for(const Tolerance& t : tolerances)
   {
     const Estimates est = run(t.m, pts, r);
@@ -607,17 +620,17 @@ TEST_CASE("Cylinder: each estimator within its measured bounds, every bound belo
   auto truth = [&](const Point& p) { return cylinder_truth(p, R); };
   auto interior = [&](const Point& p) { return std::abs(p.z()) < 0.5 * height - r; };
   print_header("Cylinder R = 1, 6000 points, r = 0.2, points farther than r from the rims");
-  // H = 0.5, k = 0 and 1. No curvature bound for the barycenter (mean H error 0.52) and VCM
-  // (1.28 on k_min): their errors exceed the curvatures; VCM's direction is still bounded.
-  struct Tolerance { Method m; double mean_H, max_H, mean_k, max_k, direction; };
+  // H = 0.5, k = 0 and 1. Regression bounds only for the barycenter (mean H error 0.52) and
+  // VCM (1.28 on k_min): their errors exceed the curvatures; VCM's direction is bounded.
+  struct Tolerance { Method m; Bound mean_H, max_H, mean_k, max_k; double direction; };
   const Tolerance tolerances[] = {
     {Method::ASO, 0.003, 0.026, 0.0043, 0.034, 0.11},
-    {Method::BARYCENTER, no_bound, no_bound, 0, 0, 0},
+    {Method::BARYCENTER, regression_only(0.78), regression_only(3.0), 0, 0, 0},
     {Method::PCA_PLANE, 0.05, 0.21, 0, 0, 0},
     {Method::PSS, 0.0036, 0.0043, 0.0073, 0.0084, 0.006},
     {Method::JET, 0.0058, 0.0073, 0.012, 0.014, 0.012},
     {Method::WAVEJET, 0.0058, 0.0073, 0.012, 0.014, 0.011},
-    {Method::VCM, 0, 0, no_bound, no_bound, 4.0}};
+    {Method::VCM, 0, 0, regression_only(1.9), regression_only(5.2), 4.0}};
   for(const Tolerance& t : tolerances)
   {
     const Estimates est = run(t.m, pts, r);
@@ -639,24 +652,25 @@ TEST_CASE("Cylinder: each estimator within its measured bounds, every bound belo
 // errors (tolerances x1.5), ASO the default variant (the paper's: H 0.038 / 0.73, k 0.049 /
 // 0.93; the default's sample weights and kernel cut them 2.7 times, PSS stays ahead here):
 //   H: ASO 0.0141 / 0.258, PSS 0.0093 / 0.066, jets 0.013 / 0.10, wavejets 0.014 / 0.11,
-//      PCA plane 0.14 / 0.92, barycenter 3.3 / 17.5 (useless here: above H itself, no bound);
+//      PCA plane 0.14 / 0.92, barycenter 3.3 / 17.5 (useless here: above H itself, a
+//      regression bound only);
 //   k_min, k_max (worse of the two): ASO 0.0194 / 0.579, PSS 0.015 / 0.11, jets 0.021 / 0.17,
-//      wavejets 0.021 / 0.18; VCM magnitudes 3.3 / 5.6 (above the curvatures, no bound).
+//      wavejets 0.021 / 0.18; VCM magnitudes 3.3 / 5.6 (above the curvatures, regression only).
 TEST_CASE("Ellipsoid (random sampling): each estimator within its measured bounds, every bound below a constant zero's error", "[baselines][ellipsoid]")
 {
   const double a = 1, b = 0.7, c = 0.5, r = 0.09;
   const auto pts = ellipsoid(10000, a, b, c);
   auto truth = [&](const Point& p) { return ellipsoid_truth(p, a, b, c); };
   print_header("Ellipsoid 1 x 0.7 x 0.5, 10000 random points, r = 0.09");
-  struct Tolerance { Method m; double mean_H, max_H, mean_k, max_k; };
+  struct Tolerance { Method m; Bound mean_H, max_H, mean_k, max_k; };
   const Tolerance tolerances[] = {
     {Method::ASO, 0.021, 0.39, 0.029, 0.87},
-    {Method::BARYCENTER, no_bound, no_bound, 0, 0},
+    {Method::BARYCENTER, regression_only(5.0), regression_only(26), 0, 0},
     {Method::PCA_PLANE, 0.22, 1.4, 0, 0},
     {Method::PSS, 0.014, 0.099, 0.023, 0.165},
     {Method::JET, 0.02, 0.153, 0.032, 0.25},
     {Method::WAVEJET, 0.02, 0.168, 0.032, 0.276},
-    {Method::VCM, 0, 0, no_bound, no_bound}};
+    {Method::VCM, 0, 0, regression_only(4.9), regression_only(8.3)}};
   for(const Tolerance& t : tolerances)
   {
     const Estimates est = run(t.m, pts, r);

@@ -27,9 +27,8 @@
 #include <tbb/task_arena.h>
 #endif
 
-#include <atomic>
-#include <thread>
 
+#include <atomic>
 #include <functional>
 #include <limits>
 #include <sstream>
@@ -37,6 +36,7 @@
 #include <tuple>
 #include <list>
 #include <random>
+#include <thread>
 #include <vector>
 
 using namespace psc_test;

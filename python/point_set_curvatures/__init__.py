@@ -20,8 +20,7 @@ C++ code runs; ``progress(fraction)`` is called on the calling thread and cancel
 ``False``): any other value (``True``, ``None``, ``0``, ...) continues. ``threads=None``
 uses every core (``CGAL::Parallel_tag``), ``threads=1`` runs sequentially
 (``CGAL::Sequential_tag``), ``threads=n`` runs on a TBB arena of ``n`` threads, capped to the
-cores TBB may use; results do not depend on it (except ``"vcm"``, reproducible only up to
-rounding). Ctrl-C cancels a run too (KeyboardInterrupt).
+cores TBB may use; results do not depend on it (bit for bit, every method). Ctrl-C cancels a run too (KeyboardInterrupt).
 
 Invalid arguments raise ``ValueError`` (with the C++ message when the C++ code detects
 them); arguments of a wrong type (a string for a number, a float for a count) raise
@@ -411,8 +410,10 @@ DEFAULT_NEIGHBORS = int(_core.DEFAULT_NEIGHBORS)
 def _scale(radius, neighbors, automatic=False):
     """(radius, neighbors); ``neighbors="auto"`` (any case) only where ``automatic``, else a
     ValueError."""
-    if (radius is None) == (neighbors is None):
-        raise ValueError("give exactly one of radius and neighbors")
+    if radius is not None and neighbors is not None:
+        raise ValueError("give either radius or neighbors, not both")
+    if radius is None and neighbors is None:
+        raise ValueError("give radius or neighbors")
     if radius is not None:
         return _real("radius", radius), None  # positive and finite: checked by the C++ function
     if isinstance(neighbors, str) and neighbors.lower() == "auto":
@@ -539,7 +540,7 @@ def estimate_curvatures(
         radius, neighbors = _whole_cloud_scale(points, radius, neighbors)
     if normals is None:
         normals, progress = _estimated_normals(points, neighbors == "auto", threads, progress, tile)
-        if options.get("position_fit_blend") is None:
+        if method == "aso" and options.get("position_fit_blend") is None:  # (only the ASO reads it)
             opts.position_fit_blend = _core.default_position_fit_blend(opts.aso_variant, True)
     return _core.estimate_curvatures(
         method,
@@ -564,7 +565,7 @@ def _estimated_normals(points, automatic, threads, progress, tile):
             "normals: required with tile (normals estimated on a tile would not be the whole "
             "cloud's): estimate them once with estimate_normals() and give them to each tile")
     count = f"their count chosen per point from {AUTOMATIC_NEIGHBORS[0]} to {AUTOMATIC_NEIGHBORS[1]}" if automatic \
-        else f"the {DEFAULT_NEIGHBORS} nearest"
+        else f"the {_core.DEFAULT_NORMAL_NEIGHBORS[0]} nearest"
     warnings.warn(
         f"no normals given: estimating them (a quadric fitted to the nearest neighbours, {count}, "
         "oriented along a minimum spanning tree, closed parts outward, open parts up); a wrong "
@@ -575,7 +576,9 @@ def _estimated_normals(points, automatic, threads, progress, tile):
     if progress is not None:
         first = lambda f: progress(0.5 * f)  # noqa: E731
         second = lambda f: progress(0.5 + 0.5 * f)  # noqa: E731
-    normals = estimate_normals(points, neighbors="auto" if automatic else None, threads=threads, progress=first)
+    with warnings.catch_warnings():  # (a cloud too small for the scale was warned of already)
+        warnings.simplefilter("ignore", ScaleWarning)
+        normals = estimate_normals(points, neighbors="auto" if automatic else None, threads=threads, progress=first)
     return normals, second
 
 
@@ -819,7 +822,7 @@ def estimate_normals(points, *, neighbors=None, radius=None, orientation="mst", 
         raise ValueError(f"fit: expected 'quadric' or 'plane', got {fit!r}")
     fit_code = fits[fit.lower()]
     if radius is None and neighbors is None:
-        neighbors = 40 if fit_code == 1 else 18
+        neighbors = _core.DEFAULT_NORMAL_NEIGHBORS[0 if fit_code == 1 else 1]
     radius, neighbors = _scale(radius, neighbors, automatic=fit_code == 1)
     if isinstance(orientation, str):
         orientation = orientation.lower()

@@ -138,7 +138,8 @@ def estimate_curvatures(client, points, normals, *, method="aso", radius=None, n
     points, normals : array_like, shape (N, 3)
     method, radius, neighbors, **options
         As for :func:`point_set_curvatures.estimate_curvatures` (not ``tile``, nor ``method="vcm"``,
-        nor ``normal_refinement``); ``sample_weights`` given as an array (one weight per point)
+        nor ``normal_refinement``; normals and exactly one of ``radius`` and ``neighbors`` are
+        required here, where the single-process function can choose them); ``sample_weights`` given as an array (one weight per point)
         is sent to each tile with its rows.
     tile_size : float or None
         The side of the tiles; default: about 4 tiles per worker thread, and at most about

@@ -85,6 +85,11 @@ std::vector<CGAL::Curvature_estimate_status> smooth_point_set(Cloud& cloud, doub
   return CGAL::apss_smooth_point_set<CGAL::Sequential_tag>(cloud, radius, np);
 }
 
+std::size_t default_normal_neighbors(int fit)
+{
+  return CGAL::Point_set_curvatures::default_normal_neighbors(CGAL::Normal_fit(fit));
+}
+
 std::size_t oriented_normals(Cloud& cloud, const Scale& s, int orientation, const double target[3], int fit,
                              bool parallel, const Callback& cb)
 {

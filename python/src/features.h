@@ -27,6 +27,8 @@ std::vector<CGAL::Curvature_estimate_status> smooth_point_set(Cloud& cloud, doub
 // 3 automatic; fit: 0 plane, 1 quadric (CGAL::Normal_fit).
 std::size_t oriented_normals(Cloud& cloud, const Scale&, int orientation, const double target[3], int fit,
                              bool parallel, const Callback&);
+// CGAL::Point_set_curvatures::default_normal_neighbors() of a fit (0 plane, 1 quadric).
+std::size_t default_normal_neighbors(int fit);
 
 } // namespace psc_py
 

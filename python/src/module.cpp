@@ -257,6 +257,8 @@ PYBIND11_MODULE(_core, m)
   // none, the position blend of a run on estimated normals.
   namespace defaults = CGAL::Point_set_curvatures::front_end_defaults;
   m.attr("DEFAULT_NEIGHBORS") = defaults::neighbor_count;
+  // estimate_normals' default counts (quadric, plane)
+  m.attr("DEFAULT_NORMAL_NEIGHBORS") = py::make_tuple(default_normal_neighbors(1), default_normal_neighbors(0));
   m.def(
     "automatic_scale_by_default",
     [](const std::string& method, int variant) {
