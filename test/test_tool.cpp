@@ -928,11 +928,7 @@ Rgb16 wide_colour(std::size_t i)
 TEST_CASE("tool: LAS colours come out as 8-bit PLY colours, 16 bits in CSV, the same in tiles")
 {
   const std::vector<Oriented_point> pts = sphere(3000, 1.0);
-  const auto colours = [&](const std::string& name, const std::function<Rgb16(std::size_t)>& c) {
-    write_coloured_las(name, pts, c);
-  };
-  // 16 bits, and 8 bits stored in them
-  const auto wide = wide_colour;
+  // 16 bits (wide_colour), and 8 bits stored in them
   const auto narrow = [](std::size_t i) {
     return std::array<std::uint16_t, 3>{{std::uint16_t(i % 256), std::uint16_t(255 - i % 256), 7}};
   };
@@ -946,14 +942,14 @@ TEST_CASE("tool: LAS colours come out as 8-bit PLY colours, 16 bits in CSV, the 
     c[0] = i == east ? 300 : c[0];
     return c;
   };
-  colours("wide.las", wide);
-  colours("narrow.las", narrow);
-  colours("one_wide.las", one_wide);
+  write_coloured_las("wide.las", pts, wide_colour);
+  write_coloured_las("narrow.las", pts, narrow);
+  write_coloured_las("one_wide.las", pts, one_wide);
   for(const int kind : {0, 1, 2})
   {
     const char* names[] = {"wide.las", "narrow.las", "one_wide.las"};
     INFO(names[kind]);
-    const auto colour = [&](std::size_t i) { return kind == 0 ? wide(i) : kind == 1 ? narrow(i) : one_wide(i); };
+    const auto colour = [&](std::size_t i) { return kind == 0 ? wide_colour(i) : kind == 1 ? narrow(i) : one_wide(i); };
     const int shift = kind == 1 ? 0 : 8;
     const std::string in = q(file(names[kind]));
     const std::string options = " --neighbors 20 --orient +z";
@@ -996,8 +992,7 @@ TEST_CASE("tool: CloudCompare shows the 8-bit PLY colours of a LAS file's 16-bit
     return;
   }
   const std::vector<Oriented_point> pts = sphere(3000, 1.0);
-  const auto wide = wide_colour;
-  write_coloured_las("cc_wide.las", pts, wide);
+  write_coloured_las("cc_wide.las", pts, wide_colour);
   const fs::path dir = work_dir() / "cloudcompare_colours";
   fs::create_directories(dir);
   REQUIRE(run_tool(q(file("cc_wide.las")) + " " + q((dir / "out.ply").string()) + " --neighbors 20 --orient +z --quiet")
@@ -1012,7 +1007,7 @@ TEST_CASE("tool: CloudCompare shows the 8-bit PLY colours of a LAS file's 16-bit
     std::istringstream row(line);
     double x, y, z, r, g, b;
     row >> x >> y >> z >> r >> g >> b;
-    wrong += r != wide(i)[0] >> 8 || g != wide(i)[1] >> 8 || b != 255;
+    wrong += r != wide_colour(i)[0] >> 8 || g != wide_colour(i)[1] >> 8 || b != 255;
   }
   CHECK(i == pts.size());
   CHECK(wrong == 0);

@@ -20,7 +20,8 @@ C++ code runs; ``progress(fraction)`` is called on the calling thread and cancel
 ``False``): any other value (``True``, ``None``, ``0``, ...) continues. ``threads=None``
 uses every core (``CGAL::Parallel_tag``), ``threads=1`` runs sequentially
 (``CGAL::Sequential_tag``), ``threads=n`` runs on a TBB arena of ``n`` threads, capped to the
-cores TBB may use; results do not depend on it (bit for bit, every method). Ctrl-C cancels a run too (KeyboardInterrupt).
+cores TBB may use; results do not depend on it (bit for bit, every method). Ctrl-C cancels a
+run too (KeyboardInterrupt).
 
 Invalid arguments raise ``ValueError`` (with the C++ message when the C++ code detects
 them); arguments of a wrong type (a string for a number, a float for a count) raise
