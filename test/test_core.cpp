@@ -28,6 +28,7 @@
 #endif
 
 
+#include <array>
 #include <atomic>
 #include <functional>
 #include <limits>
@@ -2169,6 +2170,79 @@ TEST_CASE("Automatic scale: sequential == parallel, tiles == whole, normals too"
   }
   CHECK(differ == 0);
   CHECK(up >= 0.99 * double(a.size()));
+}
+
+// The first pass's test (Scale_ladder::gate) on the 40 nearest of points of a terrain at random
+// positions, one a unit of area: the share of the points it sends on to larger neighbourhoods.
+double first_pass_climbs(double noise, PSC::internal::Scale_ladder::Gate_fit fit)
+{
+  namespace I = PSC::internal;
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> side(0, 60);
+  std::normal_distribution<double> gauss(0, 1);
+  std::vector<std::array<double, 3>> p(3600);
+  for(auto& q : p)
+  {
+    q[0] = side(random);
+    q[1] = side(random);
+    q[2] = 2 * std::sin(q[0] / 9) * std::cos(q[1] / 13) + 0.5 * std::sin(q[0] / 3 + q[1] / 5) + noise * gauss(random);
+  }
+  I::Scale_ladder ladder;
+  ladder.smallest = ladder.largest = 40;
+  ladder.gate = true;
+  ladder.statistic = I::Scale_ladder::Statistic::NORMAL;
+  ladder.gate_fit = fit;
+  I::Ladder_scratch scratch;
+  std::size_t queries = 0, climbs = 0;
+  for(const auto& x : p)
+  {
+    if(std::abs(x[0] - 30) > 20 || std::abs(x[1] - 30) > 20)
+      continue;
+    // the driver's neighbourhood: the 40 nearest, scaled by knn_radius_factor times the 40th's distance
+    std::vector<std::pair<double, std::size_t>> d;
+    for(std::size_t j = 0; j < p.size(); ++j)
+      d.emplace_back(std::pow(p[j][0] - x[0], 2) + std::pow(p[j][1] - x[1], 2) + std::pow(p[j][2] - x[2], 2), j);
+    std::nth_element(d.begin(), d.begin() + 39, d.end());
+    const double r = I::knn_radius_factor * std::sqrt(d[39].first);
+    std::vector<double> qx, qy, qz, up(40, 0.0), one(40, 1.0);
+    for(std::size_t i = 0; i < 40; ++i)
+    {
+      qx.push_back((p[d[i].second][0] - x[0]) / r);
+      qy.push_back((p[d[i].second][1] - x[1]) / r);
+      qz.push_back((p[d[i].second][2] - x[2]) / r);
+    }
+    I::Neighborhood nb;
+    nb.size = 40;
+    nb.qx = qx.data();
+    nb.qy = qy.data();
+    nb.qz = qz.data();
+    nb.nx = nb.ny = up.data();
+    nb.nz = one.data();
+    nb.radius = r;
+    nb.query_normal[2] = 1;
+    const I::Scale_choice c = ladder.choose(nb, scratch);
+    REQUIRE(c.found);
+    ++queries;
+    climbs += c.climb ? 1 : 0;
+    CHECK(c.count == (c.climb ? 80u : 40u));
+  }
+  REQUIRE(queries > 1500);
+  return double(climbs) / double(queries);
+}
+
+TEST_CASE("Automatic scale: the normals' first test keeps most points of a clean random cloud, sends noisy ones on",
+          "[automatic_scale]")
+{
+  typedef PSC::internal::Scale_ladder::Gate_fit Fit;
+  // measured: 0.088 in a shared frame, 0.376 with the separate fits (the curvatures')
+  const double shared = first_pass_climbs(0, Fit::SHARED_FRAME), separate = first_pass_climbs(0, Fit::SEPARATE);
+  measured("first pass climbs, clean terrain: shared frame", shared);
+  measured("  separate fits", separate);
+  CHECK(shared < 0.15);
+  CHECK(shared < 0.5 * separate);
+  // noise of 0.3 times the spacing: every point goes on, with either test
+  for(Fit fit : {Fit::SHARED_FRAME, Fit::SEPARATE})
+    CHECK(first_pass_climbs(0.3, fit) > 0.99);
 }
 
 TEST_CASE("Automatic scale: refused with a radius, below neighbor_count, with refinement, and for plane normals",

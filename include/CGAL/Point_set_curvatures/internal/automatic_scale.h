@@ -79,6 +79,11 @@ constexpr double automatic_scale_gate_share = 0.05;
 // first, the clean terrain's points that the first pass's test sends on paid 640 neighbours:
 // 2.2 times as long).
 constexpr std::size_t automatic_scale_pass_growth = 4;
+// The same share for the test in a shared frame (Scale_ladder::Gate_fit::SHARED_FRAME, the
+// normals'): chosen on the clean and noisy scans and the real tiles of benchmark/README.md,
+// "Automatic scale" (at 0.05 it sends 25% of a clean terrain's points on, at 0.15 10%, at 0.2
+// 7%, with the same accuracy under noise).
+constexpr double automatic_scale_shared_frame_gate_share = 0.15;
 // The least size of the half of the smallest rung that the first pass's test fits (a quadric
 // has 6 coefficients); below it every point goes on to the next pass.
 constexpr std::size_t gate_least_half = 12;
@@ -173,6 +178,7 @@ struct Ladder_scratch
 {
   std::vector<double> d2;
   Sub_neighborhood chosen, trial;
+  std::vector<double> gate_frame;  // Scale_ladder::choose_in_shared_frame(): u, v, h, inner
 };
 
 // The chosen rung (its neighbourhood is left in the scratch's `chosen`): its rank on the ladder, its
@@ -221,6 +227,19 @@ struct Scale_ladder
   // the smallest count only), elsewhere the choice climbs (Scale_choice::climb) and the next
   // pass, on rungs k and 2 k, applies the rule itself.
   bool gate = false;
+
+  // How the first pass's test fits the nearest half and the whole smallest rung.
+  // SEPARATE: each as a rung (the weighted quadric, each in the frame of its own covariance).
+  // SHARED_FRAME: both unweighted, in the frame of the whole rung, in one pass over its points
+  // (choose_in_shared_frame()), with its own share (automatic_scale_shared_frame_gate_share).
+  // On random (Poisson-like) sampling of a clean terrain SEPARATE sends 39% of the points on,
+  // SHARED_FRAME 25% at the same share and 10% at its own; on the clean scans of
+  // scan_experiments 0.3-6.4% against 19-72% (a mobile profiler: 47% against 67%), with the
+  // same accuracy under noise. The normals use it. The mean curvature keeps SEPARATE: with
+  // SHARED_FRAME its first pass keeps points whose H is still noisy at the first rung (range
+  // noise 0.3 spacings: torus 0.0295 against 0.0283; benchmark/README.md, "Automatic scale").
+  enum class Gate_fit { SEPARATE, SHARED_FRAME };
+  Gate_fit gate_fit = Gate_fit::SEPARATE;
 
   // False for the passes before the last (automatic_scale_passes): a point keeping the top
   // rung there climbs to the next pass, which replaces its estimate, so none is computed; its
@@ -273,10 +292,145 @@ struct Scale_ladder
     return rung;
   }
 
+  // The first pass's test with Gate_fit::SHARED_FRAME (gate, largest == smallest): on the k
+  // nearest of `whole` (the driver's rule for ties), unweighted quadrics of all of them and of
+  // the nearest half, over the frame of their covariance; the noise from the growth of the
+  // residuals as in separated_noise(). Leaves the rung's neighbourhood in `scratch.chosen`
+  // where it is kept. As with SEPARATE, a rung whose quadric cannot be fitted is estimated as
+  // it is (as_first_rung); here the test of its spread is the unweighted covariance's.
+  Scale_choice choose_in_shared_frame(const Neighborhood& whole, Ladder_scratch& scratch) const
+  {
+    std::vector<double>& d2 = scratch.d2;
+    Sub_neighborhood& chosen = scratch.chosen;
+    Scale_choice c;
+    d2.resize(whole.size);
+    for(std::size_t i = 0; i < whole.size; ++i)
+      d2[i] = whole.qx[i] * whole.qx[i] + whole.qy[i] * whole.qy[i] + whole.qz[i] * whole.qz[i];
+    const std::size_t k = std::min(smallest, whole.size);
+    if(k == 0)
+      return c;
+    std::nth_element(d2.begin(), d2.begin() + (k - 1), d2.end());
+    if(d2[k - 1] == 0)
+      return c;  // (the k nearest at the query: no rung)
+    const double radius = std::min(knn_radius_factor * std::sqrt(d2[k - 1]), 1.0);
+    // the nearest half's radius, relative to the rung's (0: none)
+    const std::size_t half = smallest / 2;
+    double half_ratio = 0;
+    if(half >= gate_least_half && half <= k)
+    {
+      std::nth_element(d2.begin(), d2.begin() + (half - 1), d2.begin() + k);
+      if(d2[half - 1] > 0)
+        half_ratio = std::min(knn_radius_factor * std::sqrt(d2[half - 1]), 1.0) / radius;
+    }
+    chosen.take(whole, radius);
+    const Neighborhood& nb = chosen.nb;
+    const std::size_t n = nb.size;
+    // the frame: the covariance of the positions about their centroid
+    double centroid[3] = {0, 0, 0}, cov[6] = {0, 0, 0, 0, 0, 0}, values[3], axes[3][3];
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const double q[3] = {nb.qx[i], nb.qy[i], nb.qz[i]};
+      for(int a = 0, m = 0; a < 3; ++a)
+      {
+        centroid[a] += q[a];
+        for(int b = a; b < 3; ++b, ++m)
+          cov[m] += q[a] * q[b];
+      }
+    }
+    const auto as_first_rung = [&]() {
+      c.as_first_rung = true;
+      c.count = n;
+      chosen.take_attributes(whole);
+      return c;
+    };
+    if(n <= quadratic_height_coefficients)
+      return as_first_rung();
+    for(double& x : centroid)
+      x /= double(n);
+    for(int a = 0, m = 0; a < 3; ++a)
+      for(int b = a; b < 3; ++b, ++m)
+        cov[m] = cov[m] / double(n) - centroid[a] * centroid[b];
+    if(!symmetric_eigen_3(cov, values, axes) || !spreads_in_two_directions(values))
+      return as_first_rung();
+    // the heights over it, fitted on all points and on the nearest half
+    Quadratic_height_fit all, inner;
+    std::vector<double>& frame = scratch.gate_frame;
+    frame.resize(4 * n);
+    const double inner2 = half_ratio * half_ratio;
+    std::size_t n_inner = 0;
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const double q[3] = {nb.qx[i], nb.qy[i], nb.qz[i]};
+      const double p[3] = {q[0] - centroid[0], q[1] - centroid[1], q[2] - centroid[2]};
+      double* f = &frame[4 * i];
+      f[0] = axes[2][0] * p[0] + axes[2][1] * p[1] + axes[2][2] * p[2];
+      f[1] = axes[1][0] * p[0] + axes[1][1] * p[1] + axes[1][2] * p[2];
+      f[2] = axes[0][0] * p[0] + axes[0][1] * p[1] + axes[0][2] * p[2];
+      f[3] = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] < inner2 ? 1.0 : 0.0;
+      all.add(f[0], f[1], f[2], 1.0);
+      if(f[3] > 0)
+      {
+        inner.add(f[0], f[1], f[2], 1.0);
+        ++n_inner;
+      }
+    }
+    double a_all[6], a_inner[6] = {0, 0, 0, 0, 0, 0};
+    if(!all.solve(a_all))
+      return as_first_rung();
+    const bool inner_fitted = n_inner > quadratic_height_coefficients && inner.solve(a_inner);
+    double ss_all = 0, ss_inner = 0;
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const double* f = &frame[4 * i];
+      const double m[6] = {1.0, f[0], f[1], f[0] * f[0], f[0] * f[1], f[1] * f[1]};
+      double e = f[2], e_inner = f[2];
+      for(int j = 0; j < 6; ++j)
+      {
+        e -= a_all[j] * m[j];
+        e_inner -= a_inner[j] * m[j];
+      }
+      ss_all += e * e;
+      if(inner_fitted && f[3] > 0)
+        ss_inner += e_inner * e_inner;
+    }
+    // residual variances in input units (both fits are in the frame scaled by nb.radius)
+    const double r = nb.radius;
+    const double residual = ss_all / double(n - quadratic_height_coefficients) * r * r;
+    const double noise2 =
+      inner_fitted ? separated_noise(ss_inner / double(n_inner - quadratic_height_coefficients) * r * r,
+                                     half_ratio * r, residual, r)
+                   : std::numeric_limits<double>::quiet_NaN();
+    c.found = true;
+    c.count = n;
+    c.mean = -(a_all[3] + a_all[5]) / r;
+    if(!(noise2 < automatic_scale_shared_frame_gate_share * residual))  // (NaN: the point climbs)
+    {
+      c.climb = true;
+      c.count = 2 * smallest;
+      return c;
+    }
+    // the standard error of the statistic's first coefficient: sigma² gᵀ M⁻¹ g for an
+    // unweighted fit (H = -(a3 + a5) / r; a slope is a ratio of lengths), at the frame's origin
+    // (the rung's centroid, not the query; the normals do not read it, nor `mean`)
+    const bool by_normal = statistic == Statistic::NORMAL;
+    Quadratic_height_fit solve_for = all;
+    std::fill(solve_for.atb, solve_for.atb + 6, 0.0);
+    solve_for.atb[by_normal ? 1 : 3] = 1;
+    if(!by_normal)
+      solve_for.atb[5] = 1;
+    double y[6];
+    if(solve_for.solve(y))
+      c.mean_error = std::sqrt(std::max(0.0, noise2 * (by_normal ? y[1] / (r * r) : (y[3] + y[5]) / (r * r * r * r))));
+    chosen.take_attributes(whole);
+    return c;
+  }
+
   // Chooses the rung of `whole` (the neighbourhood of `largest`, scaled by its radius) and
   // leaves its neighbourhood, every field, in `scratch.chosen`.
   Scale_choice choose(const Neighborhood& whole, Ladder_scratch& scratch) const
   {
+    if(gate && gate_fit == Gate_fit::SHARED_FRAME)
+      return choose_in_shared_frame(whole, scratch);
     std::vector<double>& d2 = scratch.d2;
     Sub_neighborhood &chosen = scratch.chosen, &trial = scratch.trial;
     constexpr double inf = std::numeric_limits<double>::infinity();
