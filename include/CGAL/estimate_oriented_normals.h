@@ -625,7 +625,6 @@ std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, dou
   ladder.largest = automatic_scale_parameter(np, radius_given, name);
   ladder.smallest = k;
   ladder.statistic = Scale_ladder::Statistic::NORMAL;
-  ladder.gate_fit = Scale_ladder::Gate_fit::SHARED_FRAME;
   if(ladder.largest > 0 && fit != Normal_fit::QUADRIC)
     throw std::invalid_argument("estimate_oriented_normals: parameter 'automatic_scale' needs Normal_fit::QUADRIC");
   const Normal_orientation orientation =

@@ -42,6 +42,7 @@
 #include <CGAL/Point_set_curvatures/internal/estimation_driver.h>
 #include <CGAL/Point_set_curvatures/internal/knn_neighborhoods.h>
 #include <CGAL/Point_set_curvatures/internal/local_estimate.h>
+#include <CGAL/Point_set_curvatures/internal/pca_plane.h>
 #include <CGAL/Point_set_curvatures/internal/quadric_fit.h>
 
 #include <algorithm>
@@ -79,8 +80,7 @@ constexpr double automatic_scale_gate_share = 0.05;
 // first, the clean terrain's points that the first pass's test sends on paid 640 neighbours:
 // 2.2 times as long).
 constexpr std::size_t automatic_scale_pass_growth = 4;
-// The same share for the test in a shared frame (Scale_ladder::Gate_fit::SHARED_FRAME, the
-// normals'): chosen on the clean and noisy scans and the real tiles of benchmark/README.md,
+// The same share for the normals' test in a shared frame (Scale_ladder::choose_in_shared_frame()): chosen on the clean and noisy scans and the real tiles of benchmark/README.md,
 // "Automatic scale" (at 0.05 it sends 25% of a clean terrain's points on, at 0.15 10%, at 0.2
 // 7%, with the same accuracy under noise).
 constexpr double automatic_scale_shared_frame_gate_share = 0.15;
@@ -228,18 +228,17 @@ struct Scale_ladder
   // pass, on rungs k and 2 k, applies the rule itself.
   bool gate = false;
 
-  // How the first pass's test fits the nearest half and the whole smallest rung.
-  // SEPARATE: each as a rung (the weighted quadric, each in the frame of its own covariance).
-  // SHARED_FRAME: both unweighted, in the frame of the whole rung, in one pass over its points
-  // (choose_in_shared_frame()), with its own share (automatic_scale_shared_frame_gate_share).
-  // On random (Poisson-like) sampling of a clean terrain SEPARATE sends 39% of the points on,
-  // SHARED_FRAME 25% at the same share and 10% at its own; on the clean scans of
+  // How the first pass's test fits the nearest half and the whole smallest rung. For the mean
+  // curvature, each as a rung (the weighted quadric, each in the frame of its own covariance).
+  // For the normals, both unweighted, in the frame of the whole rung, in one pass over its
+  // points (choose_in_shared_frame()), with its own share (automatic_scale_shared_frame_gate_share).
+  // On random (Poisson-like) sampling of a clean terrain the separate fits send 39% of the
+  // points on, the shared frame 25% at the same share and 10% at its own; on the clean scans of
   // scan_experiments 0.3-6.4% against 19-72% (a mobile profiler: 47% against 67%), with the
-  // same accuracy under noise. The normals use it. The mean curvature keeps SEPARATE: with
-  // SHARED_FRAME its first pass keeps points whose H is still noisy at the first rung (range
-  // noise 0.3 spacings: torus 0.0295 against 0.0283; benchmark/README.md, "Automatic scale").
-  enum class Gate_fit { SEPARATE, SHARED_FRAME };
-  Gate_fit gate_fit = Gate_fit::SEPARATE;
+  // same accuracy of the normals under noise. The mean curvature keeps the separate fits: with
+  // the shared frame its first pass keeps points whose H is still noisy at the first rung
+  // (range noise 0.3 spacings: torus 0.0295 against 0.0283; benchmark/README.md, "Automatic
+  // scale").
 
   // False for the passes before the last (automatic_scale_passes): a point keeping the top
   // rung there climbs to the next pass, which replaces its estimate, so none is computed; its
@@ -292,12 +291,13 @@ struct Scale_ladder
     return rung;
   }
 
-  // The first pass's test with Gate_fit::SHARED_FRAME (gate, largest == smallest): on the k
-  // nearest of `whole` (the driver's rule for ties), unweighted quadrics of all of them and of
-  // the nearest half, over the frame of their covariance; the noise from the growth of the
-  // residuals as in separated_noise(). Leaves the rung's neighbourhood in `scratch.chosen`
-  // where it is kept. As with SEPARATE, a rung whose quadric cannot be fitted is estimated as
-  // it is (as_first_rung); here the test of its spread is the unweighted covariance's.
+  // The normals' first pass's test (gate, largest == smallest): on the k nearest of `whole`
+  // (the driver's rule for ties), unweighted quadrics of all of them and of the nearest half,
+  // over the frame of their covariance; the noise from the growth of the residuals as in
+  // separated_noise(). Leaves the rung's neighbourhood in `scratch.chosen` where it is kept.
+  // As with the separate fits, a rung whose quadric cannot be fitted is estimated as it is
+  // (as_first_rung); here the test of its spread is the unweighted covariance's. The choice
+  // has no mean_error (the normals do not read it).
   Scale_choice choose_in_shared_frame(const Neighborhood& whole, Ladder_scratch& scratch) const
   {
     std::vector<double>& d2 = scratch.d2;
@@ -325,33 +325,18 @@ struct Scale_ladder
     chosen.take(whole, radius);
     const Neighborhood& nb = chosen.nb;
     const std::size_t n = nb.size;
-    // the frame: the covariance of the positions about their centroid
-    double centroid[3] = {0, 0, 0}, cov[6] = {0, 0, 0, 0, 0, 0}, values[3], axes[3][3];
-    for(std::size_t i = 0; i < n; ++i)
-    {
-      const double q[3] = {nb.qx[i], nb.qy[i], nb.qz[i]};
-      for(int a = 0, m = 0; a < 3; ++a)
-      {
-        centroid[a] += q[a];
-        for(int b = a; b < 3; ++b, ++m)
-          cov[m] += q[a] * q[b];
-      }
-    }
     const auto as_first_rung = [&]() {
       c.as_first_rung = true;
       c.count = n;
       chosen.take_attributes(whole);
       return c;
     };
-    if(n <= quadratic_height_coefficients)
+    // the frame: the covariance of the positions about their centroid
+    Neighborhood_pca pca;
+    if(n <= quadratic_height_coefficients || !pca.compute(nb) || !spreads_in_two_directions(pca.values))
       return as_first_rung();
-    for(double& x : centroid)
-      x /= double(n);
-    for(int a = 0, m = 0; a < 3; ++a)
-      for(int b = a; b < 3; ++b, ++m)
-        cov[m] = cov[m] / double(n) - centroid[a] * centroid[b];
-    if(!symmetric_eigen_3(cov, values, axes) || !spreads_in_two_directions(values))
-      return as_first_rung();
+    const double* centroid = pca.centroid;
+    const double(*axes)[3] = pca.vectors;
     // the heights over it, fitted on all points and on the nearest half
     Quadratic_height_fit all, inner;
     std::vector<double>& frame = scratch.gate_frame;
@@ -402,26 +387,13 @@ struct Scale_ladder
                    : std::numeric_limits<double>::quiet_NaN();
     c.found = true;
     c.count = n;
-    c.mean = -(a_all[3] + a_all[5]) / r;
     if(!(noise2 < automatic_scale_shared_frame_gate_share * residual))  // (NaN: the point climbs)
     {
       c.climb = true;
       c.count = 2 * smallest;
-      return c;
     }
-    // the standard error of the statistic's first coefficient: sigma² gᵀ M⁻¹ g for an
-    // unweighted fit (H = -(a3 + a5) / r; a slope is a ratio of lengths), at the frame's origin
-    // (the rung's centroid, not the query; the normals do not read it, nor `mean`)
-    const bool by_normal = statistic == Statistic::NORMAL;
-    Quadratic_height_fit solve_for = all;
-    std::fill(solve_for.atb, solve_for.atb + 6, 0.0);
-    solve_for.atb[by_normal ? 1 : 3] = 1;
-    if(!by_normal)
-      solve_for.atb[5] = 1;
-    double y[6];
-    if(solve_for.solve(y))
-      c.mean_error = std::sqrt(std::max(0.0, noise2 * (by_normal ? y[1] / (r * r) : (y[3] + y[5]) / (r * r * r * r))));
-    chosen.take_attributes(whole);
+    else
+      chosen.take_attributes(whole);
     return c;
   }
 
@@ -429,7 +401,7 @@ struct Scale_ladder
   // leaves its neighbourhood, every field, in `scratch.chosen`.
   Scale_choice choose(const Neighborhood& whole, Ladder_scratch& scratch) const
   {
-    if(gate && gate_fit == Gate_fit::SHARED_FRAME)
+    if(gate && statistic == Statistic::NORMAL)
       return choose_in_shared_frame(whole, scratch);
     std::vector<double>& d2 = scratch.d2;
     Sub_neighborhood &chosen = scratch.chosen, &trial = scratch.trial;
