@@ -43,6 +43,7 @@
 #include <fstream>
 #include <functional>
 #include <limits>
+#include <map>
 #include <random>
 #include <set>
 #include <sstream>
@@ -1011,6 +1012,78 @@ TEST_CASE("tool: CloudCompare shows the 8-bit PLY colours of a LAS file's 16-bit
   }
   CHECK(i == pts.size());
   CHECK(wrong == 0);
+}
+
+// The LAS output read by a reader not written here: loaders.gl's LAS loader under Node.js
+// (test/las_third_party.mjs), from the node_modules folder named by PSC_LAS_READER_MODULES
+// (CI: npm install --prefix DIR @loaders.gl/las@4.5.1); skipped visibly without node or it.
+// The loader gives positions as float32 and no extra bytes: the points, header and standard
+// fields are compared here, the estimates' values by the tool's own tests.
+TEST_CASE("tool: a third-party LAS reader (loaders.gl) reads the LAS output: header, points and fields of the input")
+{
+  const char* modules = std::getenv("PSC_LAS_READER_MODULES");
+  if(std::system("command -v node > /dev/null 2>&1") != 0 || modules == nullptr ||
+     !fs::exists(fs::path(modules) / "@loaders.gl" / "las"))
+  {
+    skip_test("no third-party LAS reader: install Node.js, run npm install --prefix DIR @loaders.gl/las@4.5.1 "
+              "and set PSC_LAS_READER_MODULES=DIR/node_modules");
+    return;
+  }
+  const std::string script = q(std::string(PSC_DATA_DIR) + "/../test/las_third_party.mjs");
+  // the reader's lines "name values..." as a map
+  const auto reader = [&](const std::string& output, const std::string& mode, const std::string& input) {
+    const std::string log = file("third_party.txt");
+    const std::string command = "node " + script + " " + q(modules) + " " + q(output) + " " + mode + " " + q(input) +
+                                " > " + q(log) + " 2>&1";
+    const int status = std::system(command.c_str());
+    const std::string text = read_text(log);
+    INFO(text);
+    REQUIRE(status == 0);
+    std::map<std::string, std::string> facts;
+    std::istringstream lines(text);
+    for(std::string line; std::getline(lines, line);)
+    {
+      const std::size_t space = line.find(' ');
+      facts[line.substr(0, space)] = space == std::string::npos ? "" : line.substr(space + 1);
+    }
+    return facts;
+  };
+  // a LAS input (point format 3, with intensity, classification and colours): its format, its
+  // scale and offset, its points bit for bit (the same float32 from the same records) and its fields
+  const std::string las_in = repo_data("real/sample_c.las");
+  REQUIRE(run_tool(q(las_in) + " " + q(file("third_party.las")) + " --neighbors 40 --quiet").status == 0);
+  std::map<std::string, std::string> facts = reader(file("third_party.las"), "--las", las_in);
+  CHECK(facts["version"] == "1.4");
+  CHECK(facts["input_format"] == "3");
+  CHECK(facts["format"] == "3");
+  // format 3's 34 bytes, then the estimates: 14 doubles (nx ny nz k_min k_max mean gaussian,
+  // the two directions, normal_coherence, mean_error), neighbors (uint32) and valid (uchar)
+  CHECK(facts["record_length"] == std::to_string(34 + 14 * 8 + 4 + 1));
+  CHECK(facts["count"] == "14408 14408");
+  CHECK(facts["scale"] == "0.01 0.01 0.01");
+  CHECK(facts["position_difference"] == "0");
+  CHECK(facts["attributes_equal"] == "COLOR_0 classification intensity");
+  CHECK(facts["attributes_differ"].empty());
+  // a text input: format 6, the coordinates within half the scale (and float32's rounding of
+  // values below 10, 2^-24 * 16), float32 estimates of two fields
+  std::ofstream(file("third_party.xyz")) << read_text(repo_data("goursat_010000.xyz"));
+  REQUIRE(run_tool(q(file("third_party.xyz")) + " " + q(file("third_party_6.las")) +
+                   " --neighbors 40 --float --fields mean,valid --quiet")
+            .status == 0);
+  facts = reader(file("third_party_6.las"), "--text", file("third_party.xyz"));
+  CHECK(facts["version"] == "1.4");
+  CHECK(facts["format"] == "6");
+  CHECK(facts["record_length"] == std::to_string(30 + 4 + 1));
+  CHECK(facts["count"] == "10000 10000");
+  std::istringstream scale(facts["scale"]);
+  double sx = 0, sy = 0, sz = 0;
+  scale >> sx >> sy >> sz;
+  CHECK(sx > 0);
+  CHECK(sx <= 0.001);
+  CHECK(sy == sx);
+  CHECK(sz == sx);
+  const double difference = std::stod(facts["position_difference"]);
+  CHECK(difference <= 0.5 * sx + 16 * std::ldexp(1.0, -24));
 }
 
 TEST_CASE("tool: .xyz, .pwn, .off and ASCII, little- and big-endian binary .ply give the same result")
@@ -3647,6 +3720,44 @@ TEST_CASE("tool: a --memory-limit making hundreds of tiles or above the RAM is w
   const Run within = run_tool(q(file("limits.xyz")) + " " + q(file("limits.ply")) + " --memory-limit 100M");
   CHECK(within.status == 0);
   CHECK(within.err.empty());
+}
+
+// The peak memory of a tiled run against the limit (issue 45): a cloud of 200,000 points whose
+// run in memory takes several times the limit above the tool's own base (its run on a few
+// points), run in tiles under --memory-limit 10M. Measured: base 6.9 MB, in memory +70 MB,
+// in tiles +25 MB. Not under the sanitizers (their shadow memory is no measure of the tool's).
+TEST_CASE("tool: --memory-limit bounds the peak memory of a run in tiles, a few times the limit above the base")
+{
+#ifdef PSC_TEST_MEMORY_SANITIZED
+  skip_test("peak memory is not measured under the sanitizers");
+#else
+  {
+    std::ofstream out(file("peak_terrain.xyz"));
+    out.precision(10);
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> jitter(-0.25, 0.25);
+    for(int i = 0; i < 500; ++i)
+      for(int j = 0; j < 400; ++j)
+      {
+        const double x = i + jitter(random), y = j + jitter(random);
+        out << x << " " << y << " " << 5 * std::sin(0.05 * x) * std::cos(0.04 * y) << "\n";
+      }
+  }
+  write_xyz(file("peak_small.xyz"), plane(20, 0.2), false);
+  const std::string options = " --neighbors 40 --orient +z";
+  const std::pair<int, long> base = run_tool_peak_kb(q(file("peak_small.xyz")) + " " + q(file("peak.ply")) + options);
+  const std::pair<int, long> whole = run_tool_peak_kb(q(file("peak_terrain.xyz")) + " " + q(file("peak.ply")) + options);
+  const std::pair<int, long> tiled =
+    run_tool_peak_kb(q(file("peak_terrain.xyz")) + " " + q(file("peak.ply")) + options + " --memory-limit 10M");
+  REQUIRE(base.first == 0);
+  REQUIRE(whole.first == 0);
+  REQUIRE(tiled.first == 0);
+  const long limit_kb = 10 * 1024;
+  INFO("peak KB: base " << base.second << ", in memory " << whole.second << ", in tiles " << tiled.second);
+  CHECK(whole.second - base.second > 6 * limit_kb);  // (so that the limit has something to bound)
+  CHECK(tiled.second - base.second < 4 * limit_kb);
+  CHECK(2 * tiled.second < whole.second);
+#endif
 }
 
 // The tool without normals: quadric normals, orientation by the input's kind (said in the

@@ -4,6 +4,7 @@
 bit, dtypes and layouts, bad input, progress and cancellation, determinism, tiles."""
 
 import threading
+import time
 
 import numpy as np
 import pytest
@@ -399,24 +400,42 @@ def test_sequential_equals_parallel(method):
 
 
 def test_gil_released(sphere):
-    """Another Python thread runs while an estimation computes."""
+    """Another Python thread runs while an estimation computes: between two progress calls the
+    estimation is in C++, and with the interpreter's switch interval raised to a minute the
+    other thread can run there only if the GIL was released. No timing: a thread holding the
+    GIL leaves the counter exactly where it was (the control below), one that releases it lets
+    the counter move."""
+    import sys
     points, normals = sphere
-    ticks = []
+    counter = [0]
     done = threading.Event()
 
-    def tick():
+    def count():
         while not done.is_set():
-            ticks.append(1)
-            done.wait(0.001)
+            counter[0] += 1
+            time.sleep(0)  # (gives the GIL back at once to a thread that waits for it)
 
-    t = threading.Thread(target=tick)
-    t.start()
+    seen = []
+    interval = sys.getswitchinterval()
+    t = threading.Thread(target=count)
+    sys.setswitchinterval(60.0)
     try:
-        psc.estimate_curvatures(points, normals, method="pss", radius=0.3, threads=1)
+        t.start()
+        while counter[0] == 0:
+            time.sleep(0)
+        # control: Python code holding the GIL for a while does not let the thread run
+        before = counter[0]
+        sum(i * i for i in range(200000))
+        held = counter[0] - before
+        psc.estimate_curvatures(points, normals, method="pss", radius=0.3, threads=1,
+                                progress=lambda f: seen.append(counter[0]))
     finally:
         done.set()
+        sys.setswitchinterval(interval)
         t.join()
-    assert len(ticks) > 5
+    assert held == 0
+    assert len(seen) >= 3
+    assert seen[-1] > seen[0]
 
 
 # ---- tiles ----
