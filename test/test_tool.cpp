@@ -789,7 +789,8 @@ namespace {
 // property SKIP_REGULAR_EXPRESSION of test/CMakeLists.txt), so that a skip shows in the
 // summary instead of passing (issue 45). CTest then ignores the exit status: only test cases
 // that assert nothing before skipping may call it (each does so first), or the skip would
-// hide their failures.
+// hide their failures; the CTest test test_skips_come_first (test/skips_come_first.cmake)
+// checks the source for assertion macros before each call.
 void skip_test(const std::string& why)
 {
   std::cout << "PSC_TEST_SKIPPED: " << why << std::endl;
