@@ -1933,6 +1933,41 @@ TEST_CASE("estimate_oriented_normals: one scan line gives no normal, never a sid
   measured("airborne 5:1 lines, quadric normals: mean angle (deg)", sum / double(t.size()));
   measured("airborne 5:1 lines, quadric normals: worst angle (deg)", worst);
   CHECK(sum / double(t.size()) < 0.5);  // measured 0.20 (worst 0.81)
+
+  // A mobile profiler with range noise of 0.3 spacings (issue 44, item 5): near the track the 40
+  // nearest are the query's profile and the next profiles' points at the kernel's rim, where
+  // the weight vanishes: the weights leave one noisy line, whose band set the quadric's frame,
+  // and the normal lay about the line, sideways (19% of them more than 60 degrees off on a
+  // 16 x 16 m scan). The frame now comes from the unweighted neighbourhood there, and the
+  // automatic scale (the default) climbs to a rung that spreads in two directions.
+  const std::vector<scan::Sample> clean_profiles = scan::mobile_profiles(scan::wavy_terrain(), 2.0);
+  scan::Noise range_noise;
+  range_noise.range_sigma = 0.3 * scan::median_spacing(clean_profiles);
+  const std::vector<scan::Sample> profiles = scan::mobile_profiles(scan::wavy_terrain(), 2.0, 0.1, 0.0035, range_noise);
+  // the share of the normals given that are more than `degrees` off
+  const auto share_off = [&](const std::vector<Oriented_point>& estimated, double degrees) {
+    std::size_t off = 0, given = 0;
+    for(std::size_t i = 0; i < estimated.size(); ++i)
+      if(estimated[i].second != CGAL::NULL_VECTOR)
+      {
+        ++given;
+        off += line_angle_degrees(estimated[i].second, profiles[i].truth.normal) > degrees ? 1 : 0;
+      }
+    return double(off) / double(given);
+  };
+  std::vector<Oriented_point> automatic = scan::with_true_normals(profiles);
+  const std::size_t without = CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
+    automatic, PSC::parameters::neighbor_count(40, PSC::parameters::automatic_scale(640, pair_maps)));
+  measured("noisy mobile profiles: points without a normal (of " + std::to_string(profiles.size()) + ")",
+           double(without));
+  measured("noisy mobile profiles: share > 60 deg", share_off(automatic, 60));
+  measured("noisy mobile profiles: share > 20 deg", share_off(automatic, 20));
+  CHECK(without <= profiles.size() / 1000);      // measured 1 of 19496
+  CHECK(share_off(automatic, 60) < 0.002);  // measured 0.02%
+  CHECK(share_off(automatic, 20) < 0.02);   // measured 0.82%
+  // (with a fixed count of 40 the frame alone does not do: 8% of the normals more than 60
+  // degrees off; the fit has too little weight across the line. Not asserted: the default is
+  // the automatic scale)
 }
 
 TEST_CASE("estimate_oriented_normals: closed objects outward, open ones up, automatic orientation")

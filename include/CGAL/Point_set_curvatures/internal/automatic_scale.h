@@ -21,18 +21,25 @@
 // first rung alone (its nearest half against all of it), keeps it where the noise is clearly
 // absent, so that most points of a clean cloud never need the neighbourhood of 2 k.
 //
+// Rungs along one line. A rung whose neighbourhood, weighted by the fits' kernel, spreads along
+// one line while its points do not (weighted_line_spread_ratio of quadric_fit.h: a scan line
+// through the query, the next ones at the kernel's rim) tells little across the line, and under
+// noise its fit is poor: it is passed over, the first rung that spreads in two directions being
+// the smallest (the top rung of a pass is kept, so that a pass always ends with a choice), and
+// the first pass sends such a point on (both tests, normals and curvatures).
+//
 // The rule. Each rung's interval is its statistic plus or minus kappa standard errors; the
 // rule keeps the largest rung whose interval meets those of every smaller rung. Under noise
 // the standard error falls as the scale grows (about k^-1.5) and the rungs agree until the
 // surface's variation (bias) shows.
 //
 // The estimate is then the wrapped estimator on the chosen rung's neighbourhood. Where a
-// rung above the first is chosen (noise dominates), the mean curvature is that of the APSS
-// sphere on the same neighbourhood (a fit of the sphere, 2 to 4 times more robust to
-// position noise than estimators that differentiate a tensor) if it lies within kappa
-// standard errors of the rung's quadric (strongly anisotropic shapes bias the sphere at large
-// scales), and the anisotropic part (k_max - k_min, the directions) is the wrapped
-// estimator's. kappa, the noise share and the sphere's rule were chosen on the simulated
+// rung above the first is chosen (noise dominates, or the rungs below lay along one line), the
+// mean curvature is that of the APSS sphere on the same neighbourhood (a fit of the sphere, 2
+// to 4 times more robust to position noise than estimators that differentiate a tensor) if it
+// lies within kappa standard errors of the rung's quadric (strongly anisotropic shapes bias
+// the sphere at large scales), and the anisotropic part (k_max - k_min, the directions) is the
+// wrapped estimator's. kappa, the noise share and the sphere's rule were chosen on the simulated
 // scans of benchmark/scan_experiments (benchmark/README.md, "Automatic scale").
 
 #ifndef CGAL_POINT_SET_CURVATURES_INTERNAL_AUTOMATIC_SCALE_H
@@ -256,7 +263,7 @@ struct Scale_ladder
   // them; scaled frame) and the residual variance (input units) at the rung's radius.
   struct Rung_fit
   {
-    enum Outcome { NO_RUNG, FAILED, FITTED } outcome = FAILED;
+    enum Outcome { NO_RUNG, FAILED, FITTED, LINE } outcome = FAILED;
     Quadric_fit fit;
     double factor[2] = {0, 0}, residual = 0, radius = 0;
   };
@@ -284,7 +291,7 @@ struct Scale_ladder
     double sigma2 = 0;
     if(rung.fit.compute(target.nb) && rung.fit.variance_factors(target.nb, g, m, rung.factor, sigma2))
     {
-      rung.outcome = Rung_fit::FITTED;
+      rung.outcome = rung.fit.weighted_line ? Rung_fit::LINE : Rung_fit::FITTED;
       rung.radius = target.nb.radius;
       rung.residual = sigma2 * (rung.radius * rung.radius);
     }
@@ -335,6 +342,13 @@ struct Scale_ladder
     Neighborhood_pca pca;
     if(n <= quadratic_height_coefficients || !pca.compute(nb) || !spreads_in_two_directions(pca.values))
       return as_first_rung();
+    if(!final_pass && weighted_neighborhood_is_line(nb))
+    {
+      c.found = true;
+      c.climb = true;
+      c.count = 2 * smallest;
+      return c;
+    }
     const double* centroid = pca.centroid;
     const double(*axes)[3] = pca.vectors;
     // the heights over it, fitted on all points and on the nearest half
@@ -431,12 +445,13 @@ struct Scale_ladder
     if(gate && half >= gate_least_half && half <= whole.size)
     {
       const Rung_fit rung = fit_rung(whole, d2, ordered, half, reference, g, m, trial);
-      if(rung.outcome == Rung_fit::FITTED)
+      if(rung.outcome == Rung_fit::FITTED || rung.outcome == Rung_fit::LINE)
       {
         radius_half = rung.radius;
         residual_half = rung.residual;
       }
     }
+    bool line_below = false;  // a smaller rung's weighted neighbourhood lies along one line
     // (a cloud of fewer points than the smallest count: every point, as with neighbor_count)
     std::size_t k = std::min(smallest, whole.size);
     for(std::size_t j = 0; k > 0 && k <= whole.size && j < rungs(); ++j, k *= 2)
@@ -444,10 +459,22 @@ struct Scale_ladder
       Rung_fit rung = fit_rung(whole, d2, ordered, k, reference, g, m, c.found ? trial : chosen);
       if(rung.outcome == Rung_fit::NO_RUNG)
         continue;
+      if(rung.outcome == Rung_fit::LINE)
+      {
+        // (the first pass's rung is its top one, passed over too: the point climbs)
+        const bool top = 2 * k > whole.size || j + 1 == rungs();
+        if(c.found)
+          break;
+        if(gate || !top)
+        {
+          line_below = true;  // a larger rung may spread in two directions
+          continue;
+        }
+      }
       const Quadric_fit& fit = rung.fit;
       double* factor = rung.factor;
       double v[2] = {0, 0}, n[3];
-      if(rung.outcome != Rung_fit::FITTED || !fit.normal(n))
+      if((rung.outcome != Rung_fit::FITTED && rung.outcome != Rung_fit::LINE) || !fit.normal(n))
       {
         if(!c.found && j == 0)
         {
@@ -539,6 +566,12 @@ struct Scale_ladder
         c.climb = true;
         c.count = 2 * smallest;
       }
+    }
+    if(gate && !c.found && !c.as_first_rung && line_below && !final_pass)
+    {
+      c.found = true;
+      c.climb = true;
+      c.count = 2 * smallest;
     }
     if((c.found || c.as_first_rung) && !climbs(c))
       chosen.take_attributes(whole);

@@ -17,7 +17,10 @@
 // At the query x (the origin of the neighbourhood's scaled frame):
 // 1. the weighted covariance of the neighbours about their weighted centroid gives a frame
 //    (t1, t2, n0), n0 oriented like the query's input normal, and the neighbourhood's spread:
-//    neighbours spread along one direction only (one scan line) give no fit;
+//    neighbours spread along one direction only (one scan line) give no fit; where the weights
+//    leave one line but the neighbours themselves spread in two directions (the next scan
+//    lines at the kernel's rim), the unweighted covariance gives the frame
+//    (weighted_line_spread_ratio);
 // 2. over that frame the heights h = n0.q are fitted by weighted least squares,
 //      h(u, v) = a0 + a1 u + a2 v + a3 u² + a4 u v + a5 v²,
 //    the surface being the graph of h (height_field.h): its normal at u = v = 0 is
@@ -58,6 +61,76 @@ namespace internal {
 // a line give about 0.4 at 40 neighbours; one line with the scanner's range noise about 0.004.
 constexpr double min_tangent_spread_ratio = 0.05;
 
+// The least ratio of the second to the first standard deviation of a neighbourhood's positions
+// weighted by the fit's kernel for the fit's frame to come from them. Below it the weights leave
+// one line in effect (a scan line through the query, the next ones at the kernel's rim, where
+// the weight vanishes), and under range noise the line's noisy band, not the surface, sets the
+// frame: the normal then lies about the line, sideways (a mobile profiler with range noise of
+// 0.3 spacings: 19% of the normals more than 60 degrees off, weighted ratios 0.06 to 0.12,
+// unweighted 0.76 to 0.98; benchmark/README.md, section 8). There the frame comes from the
+// unweighted covariance, and the automatic scale takes the rung for one line (it climbs).
+constexpr double weighted_line_spread_ratio = 0.2;
+
+// The eigen-decomposition of the covariance of a neighbourhood's positions (scaled frame) about
+// their centroid, weighted by the fits' kernel (pss_weight) and, on request, unweighted, in one
+// pass.
+struct Weighted_covariance
+{
+  double values[3], vectors[3][3];  // ascending eigenvalues and their unit vectors
+  double unweighted_values[3] = {0, 0, 0}, unweighted_vectors[3][3];
+
+  // False without weight or eigen-decomposition (the unweighted values stay 0 if theirs fails).
+  bool compute(const Neighborhood& nb, bool unweighted)
+  {
+    double sw = 0, c[3] = {0, 0, 0}, cov[6] = {0, 0, 0, 0, 0, 0};
+    double uc[3] = {0, 0, 0}, ucov[6] = {0, 0, 0, 0, 0, 0};
+    for(std::size_t i = 0; i < nb.size; ++i)
+    {
+      const double q[3] = {nb.qx[i], nb.qy[i], nb.qz[i]};
+      const double w = pss_weight(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+      sw += w;
+      c[0] += w * q[0]; c[1] += w * q[1]; c[2] += w * q[2];
+      cov[0] += w * q[0] * q[0]; cov[1] += w * q[0] * q[1]; cov[2] += w * q[0] * q[2];
+      cov[3] += w * q[1] * q[1]; cov[4] += w * q[1] * q[2]; cov[5] += w * q[2] * q[2];
+      if(unweighted)
+      {
+        uc[0] += q[0]; uc[1] += q[1]; uc[2] += q[2];
+        ucov[0] += q[0] * q[0]; ucov[1] += q[0] * q[1]; ucov[2] += q[0] * q[2];
+        ucov[3] += q[1] * q[1]; ucov[4] += q[1] * q[2]; ucov[5] += q[2] * q[2];
+      }
+    }
+    if(!(sw > 0))
+      return false;
+    // the raw second moments minus the centroid's (the coordinates are scaled to |q| < 1, so
+    // the difference loses little)
+    const auto central = [](double* m, double* mean, double total) {
+      for(int a = 0; a < 3; ++a)
+        mean[a] /= total;
+      for(int a = 0, k = 0; a < 3; ++a)
+        for(int b = a; b < 3; ++b, ++k)
+          m[k] = m[k] / total - mean[a] * mean[b];
+    };
+    central(cov, c, sw);
+    if(!symmetric_eigen_3(cov, values, vectors))
+      return false;
+    if(unweighted)
+    {
+      central(ucov, uc, double(nb.size));
+      if(!symmetric_eigen_3(ucov, unweighted_values, unweighted_vectors))
+        unweighted_values[0] = unweighted_values[1] = unweighted_values[2] = 0;
+    }
+    return true;
+  }
+};
+
+// True if ascending eigenvalues `values` of a covariance spread along one line
+// (weighted_line_spread_ratio).
+inline bool spreads_along_one_line(const double values[3])
+{
+  return !(values[2] > 0) ||
+         !(values[1] >= weighted_line_spread_ratio * weighted_line_spread_ratio * values[2]);
+}
+
 // True if a covariance of positions whose eigenvalues are `values` (ascending) spreads in
 // two directions: see min_tangent_spread_ratio.
 inline bool spreads_in_two_directions(const double values[3])
@@ -86,6 +159,10 @@ struct Quadric_fit
   // The penalty's weight (see the header comment); 0: the plain least-squares quadric.
   double anisotropy_penalty = 5e-4;
 
+  // Set by compute(): the weighted covariance spreads along one line and the unweighted one
+  // does not (weighted_line_spread_ratio), so the frame came from the unweighted one.
+  bool weighted_line = false;
+
   // If set, compute() keeps each neighbour's weight, tangent coordinates and height there
   // (in_frame(), four values a neighbour) and variance_factors() on the same neighbourhood
   // reads them instead of computing them again.
@@ -95,29 +172,23 @@ struct Quadric_fit
   // fit has no solution.
   bool compute(const Neighborhood& nb)
   {
+    weighted_line = false;
     if(nb.size < quadratic_height_coefficients)
       return false;
-    // weighted centroid and covariance in one pass: the raw second moments minus the
-    // centroid's (the coordinates are scaled to |q| < 1, so the difference loses little)
-    double sw = 0, c[3] = {0, 0, 0}, cov[6] = {0, 0, 0, 0, 0, 0};
-    for(std::size_t i = 0; i < nb.size; ++i)
-    {
-      const double q[3] = {nb.qx[i], nb.qy[i], nb.qz[i]};
-      const double w = pss_weight(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
-      sw += w;
-      c[0] += w * q[0]; c[1] += w * q[1]; c[2] += w * q[2];
-      cov[0] += w * q[0] * q[0]; cov[1] += w * q[0] * q[1]; cov[2] += w * q[0] * q[2];
-      cov[3] += w * q[1] * q[1]; cov[4] += w * q[1] * q[2]; cov[5] += w * q[2] * q[2];
-    }
-    if(!(sw > 0))
+    // the frame: the eigenvectors of the weighted covariance, or of the unweighted one where
+    // the weights leave one line and the neighbours do not (weighted_line_spread_ratio)
+    Weighted_covariance covariance, both;
+    if(!covariance.compute(nb, false))
       return false;
-    for(double& x : c)
-      x /= sw;
-    for(int a = 0, k = 0; a < 3; ++a)
-      for(int b = a; b < 3; ++b, ++k)
-        cov[k] = cov[k] / sw - c[a] * c[b];
-    double values[3], vectors[3][3];
-    if(!symmetric_eigen_3(cov, values, vectors) || !spreads_in_two_directions(values))
+    const double* values = covariance.values;
+    const double(*vectors)[3] = covariance.vectors;
+    if(spreads_along_one_line(values) && both.compute(nb, true) && !spreads_along_one_line(both.unweighted_values))
+    {
+      weighted_line = true;
+      values = both.unweighted_values;
+      vectors = both.unweighted_vectors;
+    }
+    if(!spreads_in_two_directions(values))
       return false;
     orient_like(vectors[0], nb.query_normal, n0);
     for(int i = 0; i < 3; ++i)
@@ -244,6 +315,15 @@ struct Quadric_fit
     return std::isfinite(W[0]) && std::isfinite(W[1]) && std::isfinite(W[2]);
   }
 };
+
+// True if the covariance of the neighbourhood weighted by the fits' kernel spreads along one
+// line and the unweighted one does not (Quadric_fit::weighted_line).
+inline bool weighted_neighborhood_is_line(const Neighborhood& nb)
+{
+  Weighted_covariance covariance;
+  return covariance.compute(nb, true) && spreads_along_one_line(covariance.values) &&
+         !spreads_along_one_line(covariance.unweighted_values);
+}
 
 } // namespace internal
 } // namespace Point_set_curvatures
