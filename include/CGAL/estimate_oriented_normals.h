@@ -377,6 +377,21 @@ inline bool choose_part_sign(const std::vector<std::uint32_t>& part, const std::
   return closed;
 }
 
+// True if the edge between points i and j lies within 30 degrees of both tangent planes (of the
+// unit normals `n`): not across a thin part, whose two sheets are close.
+inline bool along_surface(const std::vector<double>& xyz, const std::vector<double>& n, std::uint32_t i,
+                          std::uint32_t j)
+{
+  const double* p = &xyz[3 * std::size_t(i)];
+  const double* q = &xyz[3 * std::size_t(j)];
+  const double e[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]};
+  const double l2 = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+  const double* ni = &n[3 * std::size_t(i)];
+  const double* nj = &n[3 * std::size_t(j)];
+  const double a = e[0] * ni[0] + e[1] * ni[1] + e[2] * ni[2], b = e[0] * nj[0] + e[1] * nj[1] + e[2] * nj[2];
+  return a * a <= 0.25 * l2 && b * b <= 0.25 * l2;
+}
+
 // The pieces of a closed part whose side the tree may have got wrong. A piece is a subtree
 // joined by edges the tree can trust: normals within about 45 degrees (weight at most 0.3) and
 // the edge within 30 degrees of both tangent planes; the tree enters a new piece where it
@@ -389,9 +404,20 @@ inline bool choose_part_sign(const std::vector<std::uint32_t>& part, const std::
 // the piece's points (d twice the spacing of the subsample) the sum of the differences gives its
 // side. The 2048 largest pieces, in decreasing size, with about 2e8 evaluations in all
 // (Stanford dragon of 23K points without normals: 96.4% of the output normals outward before,
-// 98.99% with it; benchmark/README.md, section 8); deterministic.
+// 98.99% with it; benchmark/README.md, section 8). The small pieces (at most
+// local_vote_piece_size points; on the thinnest parts, where the probes, a few spacings away,
+// cross to the other sheet) are then decided again, largest first, by their neighbours in the
+// graph (`offset`, `adjacency`) that lie in a piece before them, through the edges along the
+// surface: turned where the normals' dot products say so clearly (their sum below -0.8 times the
+// sum of their magnitudes: 90% of the weight against). Stanford dragon without normals, estimated
+// normals inward (benchmark/README.md, section 8): 5K points 316 -> 312, 23K 336 -> 207, 100K
+// 513 -> 475 (with any majority, 423, 178 and 423: the coarsest sample's thin parts mislead their
+// neighbours). Deterministic.
+constexpr std::size_t local_vote_piece_size = 100;
+constexpr double local_vote_margin = 0.8;
 inline void repair_closed_part(const std::vector<std::uint32_t>& part, const std::vector<std::uint32_t>& piece,
-                               const std::vector<Normal_record>& records, const std::vector<double>& xyz,
+                               const std::vector<Normal_record>& records, const std::vector<std::size_t>& offset,
+                               const std::vector<std::uint32_t>& adjacency, const std::vector<double>& xyz,
                                std::vector<double>& n)
 {
   // the part's pieces, largest first (ties by first point)
@@ -443,6 +469,11 @@ inline void repair_closed_part(const std::vector<std::uint32_t>& part, const std
   std::vector<std::uint32_t> field;
   for(std::size_t a = 0; a < part.size(); a += stride)
     field.push_back(part[a]);
+  const auto turn_piece = [&](std::size_t r) {
+    for(std::size_t a = ranges[r].begin; a < ranges[r].end; ++a)
+      for(int k = 0; k < 3; ++k)
+        n[3 * std::size_t(by_piece[a].second) + k] = -n[3 * std::size_t(by_piece[a].second) + k];
+  };
   auto winding = [&](const double x[3], std::uint32_t skip) {
     double w = 0;
     for(std::uint32_t j : field)
@@ -473,9 +504,37 @@ inline void repair_closed_part(const std::vector<std::uint32_t>& part, const std
       vote += winding(inside, id) - winding(outside, id);
     }
     if(vote < 0)
-      for(std::size_t a = ranges[r].begin; a < ranges[r].end; ++a)
-        for(int k = 0; k < 3; ++k)
-          n[3 * std::size_t(by_piece[a].second) + k] = -n[3 * std::size_t(by_piece[a].second) + k];
+      turn_piece(r);
+  }
+  // the small pieces by their neighbours in the pieces before them (larger, or decided; the
+  // largest, which set the part's side, stays). The part's pieces are numbered consecutively
+  // and a point's neighbours in the graph are in its part: a piece's rank by number.
+  const std::uint32_t first = by_piece.front().first;
+  std::vector<std::uint32_t> rank(by_piece.back().first - first + 1, 0);
+  for(std::size_t r = 0; r < ranges.size(); ++r)
+    rank[by_piece[ranges[r].begin].first - first] = static_cast<std::uint32_t>(r);
+  for(std::size_t r = 1; r < ranges.size(); ++r)
+  {
+    if(ranges[r].end - ranges[r].begin > local_vote_piece_size)
+      continue;
+    double vote = 0, weight = 0;
+    for(std::size_t a = ranges[r].begin; a < ranges[r].end; ++a)
+    {
+      const std::uint32_t i = by_piece[a].second;
+      const double* ni = &n[3 * std::size_t(i)];
+      for(std::size_t e = offset[i]; e < offset[i + 1]; ++e)
+      {
+        const std::uint32_t j = adjacency[e];
+        if(rank[piece[j] - first] >= r || !along_surface(xyz, n, i, j))
+          continue;
+        const double* nj = &n[3 * std::size_t(j)];
+        const double agreement = ni[0] * nj[0] + ni[1] * nj[1] + ni[2] * nj[2];
+        vote += agreement;
+        weight += std::abs(agreement);
+      }
+    }
+    if(vote < -local_vote_margin * weight)
+      turn_piece(r);
   }
 }
 
@@ -538,17 +597,6 @@ inline bool orient_along_spanning_tree(const std::vector<Normal_record>& records
   constexpr std::size_t reliable_bucket = std::size_t(0.3 * double(buckets));
   std::vector<std::uint32_t> piece(count, 0);
   std::uint32_t pieces = 0;
-  // an edge within 30 degrees of both tangent planes (not across a thin part)
-  auto along_surface = [&](std::uint32_t i, std::uint32_t j) {
-    const double* p = &xyz[3 * std::size_t(i)];
-    const double* q = &xyz[3 * std::size_t(j)];
-    const double e[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]};
-    const double l2 = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
-    const double* ni = &n[3 * std::size_t(i)];
-    const double* nj = &n[3 * std::size_t(j)];
-    const double a = e[0] * ni[0] + e[1] * ni[1] + e[2] * ni[2], b = e[0] * nj[0] + e[1] * nj[1] + e[2] * nj[2];
-    return a * a <= 0.25 * l2 && b * b <= 0.25 * l2;
-  };
   const std::size_t step = std::max<std::size_t>(1, by_height.size() / 100);
   std::size_t done = 0;
   auto visit = [&](std::uint32_t i) {
@@ -592,13 +640,14 @@ inline bool orient_along_spanning_tree(const std::vector<Normal_record>& records
       if(ni[0] * nj[0] + ni[1] * nj[1] + ni[2] * nj[2] < 0)
         for(int a = 0; a < 3; ++a)
           nj[a] = -nj[a];
-      piece[e.first] = lowest <= reliable_bucket && along_surface(e.second, e.first) ? piece[e.second] : pieces++;
+      piece[e.first] =
+        lowest <= reliable_bucket && along_surface(xyz, n, e.second, e.first) ? piece[e.second] : pieces++;
       if(!visit(e.first))
         return false;
     }
     lowest = buckets;
     if(choose_part_sign(part, xyz, n, upward))
-      repair_closed_part(part, piece, records, xyz, n);
+      repair_closed_part(part, piece, records, offset, adjacency, xyz, n);
   }
   return true;
 }

@@ -22,11 +22,13 @@
 // absent, so that most points of a clean cloud never need the neighbourhood of 2 k.
 //
 // Rungs along one line. A rung whose neighbourhood, weighted by the fits' kernel, spreads along
-// one line while its points do not (weighted_line_spread_ratio of quadric_fit.h: a scan line
-// through the query, the next ones at the kernel's rim) tells little across the line, and under
-// noise its fit is poor: it is passed over, the first rung that spreads in two directions being
-// the smallest (the top rung of a pass is kept, so that a pass always ends with a choice), and
-// the first pass sends such a point on (both tests, normals and curvatures).
+// one line (weighted_line_spread_ratio of quadric_fit.h: a scan line through the query, the next
+// ones at the kernel's rim) tells little across the line, and under noise its fit is poor: it is
+// passed over, the first rung that spreads in two directions being the smallest (the top rung of
+// a pass is kept, so that a pass always ends with a choice), and the first pass sends such a
+// point on, as it does where the nearest half of the first rung is such a line (its residuals
+// tell nothing of the noise across the line). (The normals' first pass sends a point on where the
+// weights leave one line and the points do not.)
 //
 // The rule. Each rung's interval is its statistic plus or minus kappa standard errors; the
 // rule keeps the largest rung whose interval meets those of every smaller rung. Under noise
@@ -342,7 +344,10 @@ struct Scale_ladder
     Neighborhood_pca pca;
     if(n <= quadratic_height_coefficients || !pca.compute(nb) || !spreads_in_two_directions(pca.values))
       return as_first_rung();
-    if(!final_pass && weighted_neighborhood_is_line(nb))
+    // (the normals' test: a line for the weights, not for the points; Quadric_fit::weighted_line)
+    Weighted_covariance weighted;
+    if(!final_pass && !spreads_along_one_line(pca.values) && weighted.compute(nb) &&
+       spreads_along_one_line(weighted.values))
     {
       c.found = true;
       c.climb = true;
@@ -445,7 +450,7 @@ struct Scale_ladder
     if(gate && half >= gate_least_half && half <= whole.size)
     {
       const Rung_fit rung = fit_rung(whole, d2, ordered, half, reference, g, m, trial);
-      if(rung.outcome == Rung_fit::FITTED || rung.outcome == Rung_fit::LINE)
+      if(rung.outcome == Rung_fit::FITTED)  // (along one line it tells nothing of the noise)
       {
         radius_half = rung.radius;
         residual_half = rung.residual;
@@ -461,10 +466,10 @@ struct Scale_ladder
         continue;
       if(rung.outcome == Rung_fit::LINE)
       {
-        // (the first pass's rung is its top one, passed over too: the point climbs)
-        const bool top = 2 * k > whole.size || j + 1 == rungs();
         if(c.found)
           break;
+        // (the first pass's rung is its top one, passed over too: the point climbs)
+        const bool top = 2 * k > whole.size || j + 1 == rungs();
         if(gate || !top)
         {
           line_below = true;  // a larger rung may spread in two directions

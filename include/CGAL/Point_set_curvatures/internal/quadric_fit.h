@@ -42,6 +42,7 @@
 
 #include <CGAL/Point_set_curvatures/internal/height_field.h>
 #include <CGAL/Point_set_curvatures/internal/local_estimate.h>
+#include <CGAL/Point_set_curvatures/internal/pca_plane.h>
 #include <CGAL/Point_set_curvatures/internal/pss.h>
 #include <CGAL/Point_set_curvatures/internal/symmetric_eigen_3.h>
 
@@ -72,18 +73,15 @@ constexpr double min_tangent_spread_ratio = 0.05;
 constexpr double weighted_line_spread_ratio = 0.2;
 
 // The eigen-decomposition of the covariance of a neighbourhood's positions (scaled frame) about
-// their centroid, weighted by the fits' kernel (pss_weight) and, on request, unweighted, in one
-// pass.
+// their centroid, weighted by the fits' kernel (pss_weight). (Unweighted: Neighborhood_pca.)
 struct Weighted_covariance
 {
   double values[3], vectors[3][3];  // ascending eigenvalues and their unit vectors
-  double unweighted_values[3] = {0, 0, 0}, unweighted_vectors[3][3];
 
-  // False without weight or eigen-decomposition (the unweighted values stay 0 if theirs fails).
-  bool compute(const Neighborhood& nb, bool unweighted)
+  // False without weight or eigen-decomposition.
+  bool compute(const Neighborhood& nb)
   {
     double sw = 0, c[3] = {0, 0, 0}, cov[6] = {0, 0, 0, 0, 0, 0};
-    double uc[3] = {0, 0, 0}, ucov[6] = {0, 0, 0, 0, 0, 0};
     for(std::size_t i = 0; i < nb.size; ++i)
     {
       const double q[3] = {nb.qx[i], nb.qy[i], nb.qz[i]};
@@ -92,34 +90,17 @@ struct Weighted_covariance
       c[0] += w * q[0]; c[1] += w * q[1]; c[2] += w * q[2];
       cov[0] += w * q[0] * q[0]; cov[1] += w * q[0] * q[1]; cov[2] += w * q[0] * q[2];
       cov[3] += w * q[1] * q[1]; cov[4] += w * q[1] * q[2]; cov[5] += w * q[2] * q[2];
-      if(unweighted)
-      {
-        uc[0] += q[0]; uc[1] += q[1]; uc[2] += q[2];
-        ucov[0] += q[0] * q[0]; ucov[1] += q[0] * q[1]; ucov[2] += q[0] * q[2];
-        ucov[3] += q[1] * q[1]; ucov[4] += q[1] * q[2]; ucov[5] += q[2] * q[2];
-      }
     }
     if(!(sw > 0))
       return false;
     // the raw second moments minus the centroid's (the coordinates are scaled to |q| < 1, so
     // the difference loses little)
-    const auto central = [](double* m, double* mean, double total) {
-      for(int a = 0; a < 3; ++a)
-        mean[a] /= total;
-      for(int a = 0, k = 0; a < 3; ++a)
-        for(int b = a; b < 3; ++b, ++k)
-          m[k] = m[k] / total - mean[a] * mean[b];
-    };
-    central(cov, c, sw);
-    if(!symmetric_eigen_3(cov, values, vectors))
-      return false;
-    if(unweighted)
-    {
-      central(ucov, uc, double(nb.size));
-      if(!symmetric_eigen_3(ucov, unweighted_values, unweighted_vectors))
-        unweighted_values[0] = unweighted_values[1] = unweighted_values[2] = 0;
-    }
-    return true;
+    for(int a = 0; a < 3; ++a)
+      c[a] /= sw;
+    for(int a = 0, k = 0; a < 3; ++a)
+      for(int b = a; b < 3; ++b, ++k)
+        cov[k] = cov[k] / sw - c[a] * c[b];
+    return symmetric_eigen_3(cov, values, vectors);
   }
 };
 
@@ -159,8 +140,8 @@ struct Quadric_fit
   // The penalty's weight (see the header comment); 0: the plain least-squares quadric.
   double anisotropy_penalty = 5e-4;
 
-  // Set by compute(): the weighted covariance spreads along one line and the unweighted one
-  // does not (weighted_line_spread_ratio), so the frame came from the unweighted one.
+  // Set by compute(): the weighted covariance spreads along one line (weighted_line_spread_ratio);
+  // the frame then came from the unweighted one where that one does not.
   bool weighted_line = false;
 
   // If set, compute() keeps each neighbour's weight, tangent coordinates and height there
@@ -177,16 +158,17 @@ struct Quadric_fit
       return false;
     // the frame: the eigenvectors of the weighted covariance, or of the unweighted one where
     // the weights leave one line and the neighbours do not (weighted_line_spread_ratio)
-    Weighted_covariance covariance, both;
-    if(!covariance.compute(nb, false))
+    Weighted_covariance covariance;
+    if(!covariance.compute(nb))
       return false;
     const double* values = covariance.values;
     const double(*vectors)[3] = covariance.vectors;
-    if(spreads_along_one_line(values) && both.compute(nb, true) && !spreads_along_one_line(both.unweighted_values))
+    weighted_line = spreads_along_one_line(values);
+    Neighborhood_pca unweighted;
+    if(weighted_line && unweighted.compute(nb) && !spreads_along_one_line(unweighted.values))
     {
-      weighted_line = true;
-      values = both.unweighted_values;
-      vectors = both.unweighted_vectors;
+      values = unweighted.values;
+      vectors = unweighted.vectors;
     }
     if(!spreads_in_two_directions(values))
       return false;
@@ -315,15 +297,6 @@ struct Quadric_fit
     return std::isfinite(W[0]) && std::isfinite(W[1]) && std::isfinite(W[2]);
   }
 };
-
-// True if the covariance of the neighbourhood weighted by the fits' kernel spreads along one
-// line and the unweighted one does not (Quadric_fit::weighted_line).
-inline bool weighted_neighborhood_is_line(const Neighborhood& nb)
-{
-  Weighted_covariance covariance;
-  return covariance.compute(nb, true) && spreads_along_one_line(covariance.values) &&
-         !spreads_along_one_line(covariance.unweighted_values);
-}
 
 } // namespace internal
 } // namespace Point_set_curvatures
