@@ -2204,6 +2204,33 @@ TEST_CASE("orientation: a piece of a closed part turned inward is turned back, t
       dots.n[3 * single[s] + a] = -dots.n[3 * single[s] + a];
   PSC::internal::repair_closed_part(dots.part, piece, graph.records, graph.offset, graph.adjacency, dots.xyz, dots.n);
   CHECK(outward(dots) == ball.size());
+  // A small piece is turned only where 90% of the weight of its neighbours' agreement is against
+  // it: on a plane, a piece of 200 points facing down (the largest), one of 150 facing up, and two
+  // single points facing up, one with 7 neighbours of the first and 3 of the second (kept), one
+  // with 10 of the first (turned). No record has a neighbour, so no spacing and no winding number.
+  Flat_part plane;
+  std::vector<std::uint32_t> plane_piece;
+  for(std::uint32_t i = 0; i < 352; ++i)
+  {
+    plane.add(Point(i % 20, i / 20, 0), Vector(0, 0, i < 200 ? -1 : 1));
+    plane_piece.push_back(i < 200 ? 0 : i < 350 ? 1 : i - 348);
+  }
+  const std::vector<std::vector<std::uint32_t> > around = {{0, 1, 2, 3, 4, 5, 6, 200, 201, 202},
+                                                           {10, 11, 12, 13, 14, 15, 16, 17, 18, 19}};
+  std::vector<std::size_t> offset(353, 0);
+  std::vector<std::uint32_t> adjacency;
+  for(std::uint32_t i = 0; i < 352; ++i)
+  {
+    if(i >= 350)
+      adjacency.insert(adjacency.end(), around[i - 350].begin(), around[i - 350].end());
+    offset[i + 1] = adjacency.size();
+  }
+  const std::vector<PSC::internal::Normal_record> no_records(352);
+  PSC::internal::repair_closed_part(plane.part, plane_piece, no_records, offset, adjacency, plane.xyz, plane.n);
+  CHECK(plane.normal(350).z() > 0);  // 70% against: kept
+  CHECK(plane.normal(351).z() < 0);  // all against: turned
+  CHECK(plane.normal(0).z() < 0);
+  CHECK(plane.normal(200).z() > 0);
 }
 
 // Issue 14: Ctrl-C is honoured within a batch (at most 1% of the points, ~0.25 s) even when

@@ -44,7 +44,10 @@ struct Normal_orientation
     /// side where the mean normal points up (+z). In a closed part, the pieces that the tree
     /// entered across a thin part or between nearly perpendicular normals (where the side it
     /// passes on is a guess) are each turned to the side that the generalized winding number
-    /// of the rest of the part says is outside. For closed or unknown shapes. Default.
+    /// of the rest of the part says is outside, and the small ones (at most 100 points) then to
+    /// the side of their neighbours along the surface where 90% of them agree on it. Thin
+    /// plates (about 12 spacings thick or less) can come out inward. For closed or unknown
+    /// shapes. Default.
     MINIMUM_SPANNING_TREE,
     /// Every normal makes a non-negative dot product with `vector` (airborne scans: +z).
     ALONG_VECTOR,
@@ -404,7 +407,8 @@ inline bool along_surface(const std::vector<double>& xyz, const std::vector<doub
 // the piece's points (d twice the spacing of the subsample) the sum of the differences gives its
 // side. The 2048 largest pieces, in decreasing size, with about 2e8 evaluations in all
 // (Stanford dragon of 23K points without normals: 96.4% of the output normals outward before,
-// 98.99% with it; benchmark/README.md, section 8). The small pieces (at most
+// 98.99% with it, 98.87% after later changes of the normals' scale; benchmark/README.md,
+// section 8). The small pieces (at most
 // local_vote_piece_size points; on the thinnest parts, where the probes, a few spacings away,
 // cross to the other sheet) are then decided again, largest first, by their neighbours in the
 // graph (`offset`, `adjacency`) that lie in a piece before them, through the edges along the
@@ -412,7 +416,8 @@ inline bool along_surface(const std::vector<double>& xyz, const std::vector<doub
 // sum of their magnitudes: 90% of the weight against). Stanford dragon without normals, estimated
 // normals inward (benchmark/README.md, section 8): 5K points 316 -> 312, 23K 336 -> 207, 100K
 // 513 -> 475 (with any majority, 423, 178 and 423: the coarsest sample's thin parts mislead their
-// neighbours). Deterministic.
+// neighbours). Deterministic. `part` is a connected part of the graph and its pieces are numbered
+// consecutively (as orient_along_spanning_tree() makes them); a neighbour outside is not read.
 constexpr std::size_t local_vote_piece_size = 100;
 constexpr double local_vote_margin = 0.8;
 inline void repair_closed_part(const std::vector<std::uint32_t>& part, const std::vector<std::uint32_t>& piece,
@@ -420,7 +425,7 @@ inline void repair_closed_part(const std::vector<std::uint32_t>& part, const std
                                const std::vector<std::uint32_t>& adjacency, const std::vector<double>& xyz,
                                std::vector<double>& n)
 {
-  // the part's pieces, largest first (ties by first point)
+  // the part's pieces, largest first (ties by piece number)
   std::vector<std::pair<std::uint32_t, std::uint32_t> > by_piece;  // (piece, point)
   by_piece.reserve(part.size());
   for(std::uint32_t i : part)
@@ -460,12 +465,12 @@ inline void repair_closed_part(const std::vector<std::uint32_t>& part, const std
     nearest.push_back(std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
                                 (p[2] - q[2]) * (p[2] - q[2])));
   }
-  if(nearest.empty())
-    return;
-  std::nth_element(nearest.begin(), nearest.begin() + nearest.size() / 2, nearest.end());
-  const double d = 2 * nearest[nearest.size() / 2] * std::sqrt(double(stride));
-  if(!(d > 0))
-    return;
+  double d = 0;  // (0 without a spacing, as on copies of one point: no winding number)
+  if(!nearest.empty())
+  {
+    std::nth_element(nearest.begin(), nearest.begin() + nearest.size() / 2, nearest.end());
+    d = 2 * nearest[nearest.size() / 2] * std::sqrt(double(stride));
+  }
   std::vector<std::uint32_t> field;
   for(std::size_t a = 0; a < part.size(); a += stride)
     field.push_back(part[a]);
@@ -489,7 +494,7 @@ inline void repair_closed_part(const std::vector<std::uint32_t>& part, const std
     }
     return w;
   };
-  for(std::size_t r = 1; r <= tested; ++r)
+  for(std::size_t r = 1; d > 0 && r <= tested; ++r)
   {
     const std::size_t size = ranges[r].end - ranges[r].begin, probed = std::min(size, probes);
     const std::uint32_t id = by_piece[ranges[r].begin].first;
@@ -525,7 +530,8 @@ inline void repair_closed_part(const std::vector<std::uint32_t>& part, const std
       for(std::size_t e = offset[i]; e < offset[i + 1]; ++e)
       {
         const std::uint32_t j = adjacency[e];
-        if(rank[piece[j] - first] >= r || !along_surface(xyz, n, i, j))
+        const std::size_t q = piece[j] - first;  // (wraps to a large value below `first`)
+        if(q >= rank.size() || rank[q] >= r || !along_surface(xyz, n, i, j))
           continue;
         const double* nj = &n[3 * std::size_t(j)];
         const double agreement = ni[0] * nj[0] + ni[1] * nj[1] + ni[2] * nj[2];

@@ -25,7 +25,8 @@
 // one line (weighted_line_spread_ratio of quadric_fit.h: a scan line through the query, the next
 // ones at the kernel's rim) tells little across the line, and under noise its fit is poor: it is
 // passed over, the first rung that spreads in two directions being the smallest (the top rung of
-// a pass is kept, so that a pass always ends with a choice), and the first pass sends such a
+// a pass is kept, so that a pass always ends with a choice, and so is the last line rung where the
+// rung above it cannot be fitted), and the first pass sends such a
 // point on, as it does where the nearest half of the first rung is such a line (its residuals
 // tell nothing of the noise across the line). (The normals' first pass sends a point on where the
 // weights leave one line and the points do not.)
@@ -344,7 +345,8 @@ struct Scale_ladder
     Neighborhood_pca pca;
     if(n <= quadratic_height_coefficients || !pca.compute(nb) || !spreads_in_two_directions(pca.values))
       return as_first_rung();
-    // (the normals' test: a line for the weights, not for the points; Quadric_fit::weighted_line)
+    // (the normals' test: a line for the weights, not for the points, as where Quadric_fit::compute()
+    // takes the unweighted frame)
     Weighted_covariance weighted;
     if(!final_pass && !spreads_along_one_line(pca.values) && weighted.compute(nb) &&
        spreads_along_one_line(weighted.values))
@@ -457,6 +459,10 @@ struct Scale_ladder
       }
     }
     bool line_below = false;  // a smaller rung's weighted neighbourhood lies along one line
+    // the last rung passed over for that (its neighbourhood kept in `trial`), taken where the
+    // rung above it cannot be fitted (a lone noisy line, whose longer neighbourhoods are thinner)
+    Rung_fit passed;
+    std::size_t passed_rank = 0;
     // (a cloud of fewer points than the smallest count: every point, as with neighbor_count)
     std::size_t k = std::min(smallest, whole.size);
     for(std::size_t j = 0; k > 0 && k <= whole.size && j < rungs(); ++j, k *= 2)
@@ -473,21 +479,33 @@ struct Scale_ladder
         if(gate || !top)
         {
           line_below = true;  // a larger rung may spread in two directions
+          passed = rung;
+          passed_rank = j;
+          std::swap(chosen, trial);
           continue;
         }
       }
+      std::size_t rank = j;
+      bool fallback = false;
+      double v[2] = {0, 0}, n[3];
+      if((rung.outcome != Rung_fit::FITTED && rung.outcome != Rung_fit::LINE) || !rung.fit.normal(n))
+      {
+        if(c.found || passed.outcome != Rung_fit::LINE || !passed.fit.normal(n))
+        {
+          if(!c.found && j == 0)
+          {
+            c.as_first_rung = true;
+            c.count = chosen.nb.size;
+          }
+          break;
+        }
+        rung = passed;
+        rank = passed_rank;
+        fallback = true;
+        std::swap(chosen, trial);
+      }
       const Quadric_fit& fit = rung.fit;
       double* factor = rung.factor;
-      double v[2] = {0, 0}, n[3];
-      if((rung.outcome != Rung_fit::FITTED && rung.outcome != Rung_fit::LINE) || !fit.normal(n))
-      {
-        if(!c.found && j == 0)
-        {
-          c.as_first_rung = true;
-          c.count = chosen.nb.size;
-        }
-        break;
-      }
       // to input units (the residual variance already is): H = -(a3 + a5) / r, its variance
       // factor over r⁴; a slope is a ratio of lengths, its variance factor over r²
       const double r = rung.radius, sigma2 = rung.residual;
@@ -554,10 +572,12 @@ struct Scale_ladder
       }
       c.mean_error = std::sqrt(noise2 * factor[0]);
       c.found = true;
-      c.rung = j;
+      c.rung = rank;
       c.mean = v[0];
       c.count = chosen.nb.size;  // (after the swap: target is the rung given up)
       std::copy(fit.n0, fit.n0 + 3, reference);  // one side for every rung
+      if(fallback)
+        break;  // (the rung above it could not be fitted)
     }
     if(gate && c.found)
     {

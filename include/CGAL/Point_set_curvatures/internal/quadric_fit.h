@@ -69,7 +69,8 @@ constexpr double min_tangent_spread_ratio = 0.05;
 // frame: the normal then lies about the line, sideways (a mobile profiler with range noise of
 // 0.3 spacings: 19% of the normals more than 60 degrees off, weighted ratios 0.06 to 0.12,
 // unweighted 0.76 to 0.98; benchmark/README.md, section 8). There the frame comes from the
-// unweighted covariance, and the automatic scale takes the rung for one line (it climbs).
+// unweighted covariance where that one does not spread along one line; and the automatic scale
+// takes any rung whose weighted covariance is below the ratio for one line (it climbs).
 constexpr double weighted_line_spread_ratio = 0.2;
 
 // The eigen-decomposition of the covariance of a neighbourhood's positions (scaled frame) about
