@@ -45,7 +45,7 @@ struct Normal_orientation
     /// entered across a thin part or between nearly perpendicular normals (where the side it
     /// passes on is a guess) are each turned to the side that the generalized winding number
     /// of the rest of the part says is outside, and the small ones (at most 100 points) then to
-    /// the side of their neighbours along the surface where 90% of them agree on it. Thin
+    /// the side of their neighbours along the surface where 90% of their agreement says so. Thin
     /// plates (about 12 spacings thick or less) can come out inward. For closed or unknown
     /// shapes. Default.
     MINIMUM_SPANNING_TREE,
@@ -395,29 +395,28 @@ inline bool along_surface(const std::vector<double>& xyz, const std::vector<doub
   return a * a <= 0.25 * l2 && b * b <= 0.25 * l2;
 }
 
-// The pieces of a closed part whose side the tree may have got wrong. A piece is a subtree
-// joined by edges the tree can trust: normals within about 45 degrees (weight at most 0.3) and
-// the edge within 30 degrees of both tangent planes; the tree enters a new piece where it
-// crossed between nearly perpendicular normals or across a thin part (a fin, an ear, a tail,
-// where a fit over both sheets gives them one side). Each piece but the largest (kept as the
-// part's sign made it) is turned if the rest of the part says it points inward: the
-// generalized winding number of the rest (sum (p_j - x) . n_j / |p_j - x|^3 over a regular
-// subsample, equal weights) is larger inside a closed surface with outward normals than
-// outside, also across the hole that the piece leaves, so at probes p - d n and p + d n of 16 of
-// the piece's points (d twice the spacing of the subsample) the sum of the differences gives its
-// side. The 2048 largest pieces, in decreasing size, with about 2e8 evaluations in all
-// (Stanford dragon of 23K points without normals: 96.4% of the output normals outward before,
-// 98.99% with it, 98.87% after later changes of the normals' scale; benchmark/README.md,
-// section 8). The small pieces (at most
-// local_vote_piece_size points; on the thinnest parts, where the probes, a few spacings away,
-// cross to the other sheet) are then decided again, largest first, by their neighbours in the
-// graph (`offset`, `adjacency`) that lie in a piece before them, through the edges along the
-// surface: turned where the normals' dot products say so clearly (their sum below -0.8 times the
-// sum of their magnitudes: 90% of the weight against). Stanford dragon without normals, estimated
-// normals inward (benchmark/README.md, section 8): 5K points 316 -> 312, 23K 336 -> 207, 100K
-// 513 -> 475 (with any majority, 423, 178 and 423: the coarsest sample's thin parts mislead their
-// neighbours). Deterministic. `part` is a connected part of the graph and its pieces are numbered
-// consecutively (as orient_along_spanning_tree() makes them); a neighbour outside is not read.
+// The pieces of a closed part whose side the tree may have got wrong. A piece is a subtree joined
+// by edges the tree can trust: normals within about 45 degrees (weight at most 0.3) and the edge
+// within 30 degrees of both tangent planes; the tree enters a new piece where it crossed between
+// nearly perpendicular normals or across a thin part (a fin, an ear, a tail, where a fit over both
+// sheets gives them one side). Each piece but the largest (kept as the part's sign made it) is
+// turned if the rest of the part says it points inward: the generalized winding number of the rest
+// (sum (p_j - x) . n_j / |p_j - x|^3 over a regular subsample, equal weights) is larger inside a
+// closed surface with outward normals than outside, also across the hole that the piece leaves, so
+// at probes p - d n and p + d n of 16 of the piece's points (d twice the spacing of the subsample)
+// the sum of the differences gives its side. The 2048 largest pieces, in decreasing size, with
+// about 2e8 evaluations in all (Stanford dragon of 23K points without normals: 96.4% of the output
+// normals outward before, 98.99% with it, 98.87% after later changes of the normals' scale;
+// benchmark/README.md, section 8). The small pieces (at most local_vote_piece_size points; on the
+// thinnest parts, where the probes, a few spacings away, cross to the other sheet) are then
+// decided again, largest first, by their neighbours in the graph (`offset`, `adjacency`) that lie
+// in a piece before them, through the edges along the surface: turned where the normals' dot
+// products say so clearly (their sum below -0.8 times the sum of their magnitudes: 90% of the
+// weight against). Stanford dragon without normals, estimated normals inward (benchmark/README.md,
+// section 8): 5K points 316 -> 312, 23K 336 -> 207, 100K 513 -> 475 (with any majority, 423, 178
+// and 423: the coarsest sample's thin parts mislead their neighbours). Deterministic. `part` is a
+// connected part of the graph and its pieces are numbered consecutively (as
+// orient_along_spanning_tree() makes them); a neighbour outside is not read.
 constexpr std::size_t local_vote_piece_size = 100;
 constexpr double local_vote_margin = 0.8;
 inline void repair_closed_part(const std::vector<std::uint32_t>& part, const std::vector<std::uint32_t>& piece,
