@@ -43,7 +43,6 @@
 #include <fstream>
 #include <functional>
 #include <limits>
-#include <numeric>
 #include <map>
 #include <random>
 #include <set>
@@ -2118,14 +2117,15 @@ TEST_CASE("orientation: on a 2.5-D cloud, ground turned against the roofs is not
 namespace {
 
 // The graph of internal::repair_closed_part() over points on a sphere: each point's 12 nearest
-// (records, the nearest first), symmetric (offset, adjacency as CSR).
+// (records, the nearest first), made symmetric by internal::normal_graph() as the spanning tree
+// makes it.
 struct Sphere_graph
 {
   std::vector<PSC::internal::Normal_record> records;
   std::vector<std::size_t> offset;
   std::vector<std::uint32_t> adjacency;
 
-  explicit Sphere_graph(const std::vector<Oriented_point>& ball) : records(ball.size()), offset(ball.size() + 1, 0)
+  explicit Sphere_graph(const std::vector<Oriented_point>& ball) : records(ball.size())
   {
     constexpr std::size_t k = PSC::internal::normal_graph_degree;
     for(std::size_t i = 0; i < ball.size(); ++i)
@@ -2138,23 +2138,9 @@ struct Sphere_graph
       for(std::size_t e = 0; e < k; ++e)
         records[i].neighbor[e] = d[e].second;
       records[i].degree = std::uint8_t(k);
+      records[i].status = CGAL::Curvature_estimate_status::VALID;
     }
-    for(std::size_t i = 0; i < ball.size(); ++i)
-      for(std::size_t e = 0; e < k; ++e)
-      {
-        ++offset[i + 1];
-        ++offset[records[i].neighbor[e] + 1];
-      }
-    std::partial_sum(offset.begin(), offset.end(), offset.begin());
-    adjacency.resize(offset.back());
-    std::vector<std::size_t> fill(offset.begin(), offset.end() - 1);
-    for(std::size_t i = 0; i < ball.size(); ++i)
-      for(std::size_t e = 0; e < k; ++e)
-      {
-        const std::uint32_t j = records[i].neighbor[e];
-        adjacency[fill[i]++] = j;
-        adjacency[fill[j]++] = std::uint32_t(i);
-      }
+    PSC::internal::normal_graph(records, offset, adjacency);
   }
 };
 

@@ -380,6 +380,37 @@ inline bool choose_part_sign(const std::vector<std::uint32_t>& part, const std::
   return closed;
 }
 
+// The symmetric graph of the records' neighbours over the VALID records, as CSR: the neighbours of
+// point i are adjacency[offset[i], offset[i + 1]) (up to 24: each record's and the records naming it).
+inline void normal_graph(const std::vector<Normal_record>& records, std::vector<std::size_t>& offset,
+                         std::vector<std::uint32_t>& adjacency)
+{
+  const std::size_t count = records.size();
+  auto usable = [&](std::size_t i) { return records[i].status == Curvature_estimate_status::VALID; };
+  offset.assign(count + 1, 0);  // up to 24 entries per point: 64 bits
+  for(std::size_t i = 0; i < count; ++i)
+    if(usable(i))
+      for(std::size_t e = 0; e < records[i].degree; ++e)
+        if(usable(records[i].neighbor[e]))
+        {
+          ++offset[i + 1];
+          ++offset[records[i].neighbor[e] + 1];
+        }
+  std::partial_sum(offset.begin(), offset.end(), offset.begin());
+  adjacency.assign(offset.back(), 0);
+  std::vector<std::size_t> fill(offset.begin(), offset.end() - 1);
+  for(std::size_t i = 0; i < count; ++i)
+    if(usable(i))
+      for(std::size_t e = 0; e < records[i].degree; ++e)
+      {
+        const std::uint32_t j = records[i].neighbor[e];
+        if(!usable(j))
+          continue;
+        adjacency[fill[i]++] = j;
+        adjacency[fill[j]++] = static_cast<std::uint32_t>(i);
+      }
+}
+
 // True if the edge between points i and j lies within 30 degrees of both tangent planes (of the
 // unit normals `n`): not across a thin part, whose two sheets are close.
 inline bool along_surface(const std::vector<double>& xyz, const std::vector<double>& n, std::uint32_t i,
@@ -554,31 +585,9 @@ inline bool orient_along_spanning_tree(const std::vector<Normal_record>& records
 {
   const std::size_t count = records.size();
   auto usable = [&](std::size_t i) { return records[i].status == Curvature_estimate_status::VALID; };
-  // symmetric adjacency (CSR)
-  std::vector<std::size_t> offset(count + 1, 0);  // up to 24 entries per point: 64 bits
-  for(std::size_t i = 0; i < count; ++i)
-    if(usable(i))
-      for(std::size_t e = 0; e < records[i].degree; ++e)
-        if(usable(records[i].neighbor[e]))
-        {
-          ++offset[i + 1];
-          ++offset[records[i].neighbor[e] + 1];
-        }
-  std::partial_sum(offset.begin(), offset.end(), offset.begin());
-  std::vector<std::uint32_t> adjacency(offset.back());
-  {
-    std::vector<std::size_t> fill(offset.begin(), offset.end() - 1);
-    for(std::size_t i = 0; i < count; ++i)
-      if(usable(i))
-        for(std::size_t e = 0; e < records[i].degree; ++e)
-        {
-          const std::uint32_t j = records[i].neighbor[e];
-          if(!usable(j))
-            continue;
-          adjacency[fill[i]++] = j;
-          adjacency[fill[j]++] = static_cast<std::uint32_t>(i);
-        }
-  }
+  std::vector<std::size_t> offset;
+  std::vector<std::uint32_t> adjacency;
+  normal_graph(records, offset, adjacency);
   // seeds: usable points by decreasing height
   std::vector<std::uint32_t> by_height;
   for(std::size_t i = 0; i < count; ++i)

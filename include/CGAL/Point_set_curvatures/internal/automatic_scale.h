@@ -260,6 +260,13 @@ struct Scale_ladder
   // gate's points ask for the next rung, the others kept the top rung of their pass.
   std::size_t climb_count() const { return gate ? 2 * largest : largest; }
   bool climbs(const Scale_choice& c) const { return c.found && !final_pass && c.count >= climb_count(); }
+  // The first pass's test sends the point on to the next pass (the neighbourhood of 2 smallest).
+  void send_on(Scale_choice& c) const
+  {
+    c.found = true;
+    c.climb = true;
+    c.count = 2 * smallest;
+  }
 
   // The fit of one rung: the plain quadric (the penalty of the normals' fit adds a bias that
   // does not grow as r³), the variance factors of the statistic's coefficients `g` (m of
@@ -351,9 +358,7 @@ struct Scale_ladder
     if(!final_pass && !spreads_along_one_line(pca.values) && weighted.compute(nb) &&
        spreads_along_one_line(weighted.values))
     {
-      c.found = true;
-      c.climb = true;
-      c.count = 2 * smallest;
+      send_on(c);
       return c;
     }
     const double* centroid = pca.centroid;
@@ -409,10 +414,7 @@ struct Scale_ladder
     c.found = true;
     c.count = n;
     if(!(noise2 < automatic_scale_shared_frame_gate_share * residual))  // (NaN: the point climbs)
-    {
-      c.climb = true;
-      c.count = 2 * smallest;
-    }
+      send_on(c);
     else
       chosen.take_attributes(whole);
     return c;
@@ -458,9 +460,9 @@ struct Scale_ladder
         residual_half = rung.residual;
       }
     }
-    bool line_below = false;  // a smaller rung's weighted neighbourhood lies along one line
-    // the last rung passed over for that (its neighbourhood kept in `trial`), taken where the
-    // rung above it cannot be fitted (a lone noisy line, whose longer neighbourhoods are thinner)
+    // the last rung passed over for lying along one line (LINE; its neighbourhood kept in `trial`):
+    // a larger rung may spread in two directions; taken where the rung above it cannot be fitted
+    // (a lone noisy line, whose longer neighbourhoods are thinner)
     Rung_fit passed;
     std::size_t passed_rank = 0;
     // (a cloud of fewer points than the smallest count: every point, as with neighbor_count)
@@ -478,7 +480,6 @@ struct Scale_ladder
         const bool top = 2 * k > whole.size || j + 1 == rungs();
         if(gate || !top)
         {
-          line_below = true;  // a larger rung may spread in two directions
           passed = rung;
           passed_rank = j;
           std::swap(chosen, trial);
@@ -587,17 +588,10 @@ struct Scale_ladder
       if(gate_noise2 < automatic_scale_gate_share * residual0)
         c.mean_error = std::sqrt(gate_noise2 * factor0[0]);
       else
-      {
-        c.climb = true;
-        c.count = 2 * smallest;
-      }
+        send_on(c);
     }
-    if(gate && !c.found && !c.as_first_rung && line_below && !final_pass)
-    {
-      c.found = true;
-      c.climb = true;
-      c.count = 2 * smallest;
-    }
+    if(gate && !c.found && !c.as_first_rung && passed.outcome == Rung_fit::LINE && !final_pass)
+      send_on(c);
     if((c.found || c.as_first_rung) && !climbs(c))
       chosen.take_attributes(whole);
     return c;
