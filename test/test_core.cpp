@@ -2060,6 +2060,53 @@ TEST_CASE("Automatic scale: the chosen count grows with the noise and shrinks wi
   CHECK(short_chosen.second < 1.1 * short_40.second);
 }
 
+TEST_CASE("Automatic scale: the noise told from two fits, unknown where the larger misses far more than the surface allows",
+          "[aso][automatic_scale]")
+{
+  using PSC::internal::separated_noise;
+  // radii 1 and 2: the surface's part of the residual variance grows 2^6 = 64 times
+  CHECK(separated_noise(1.0, 1.0, 1.0, 2.0) == Approx(1.0));          // all noise
+  CHECK(separated_noise(1.0, 1.0, 32.5, 2.0) == Approx(0.5));         // (64 - 32.5) / 63
+  CHECK(separated_noise(1.0, 1.0, 500.0, 2.0) == 0);                  // faster than r^6: no noise
+  CHECK(std::isnan(separated_noise(1.0, 1.0, 520.0, 2.0)));           // beyond 8 x 64: unknown
+  CHECK(std::isnan(separated_noise(1.0, 1.0, 1.0, 1.0001)));          // radii too close
+}
+
+TEST_CASE("ASO: the position fit is blended in inside a patch, left out where the neighbourhood is one-sided",
+          "[aso]")
+{
+  // a noisy wave on a grid (41 x 41 points) with its exact normals: the quadric of the positions
+  // differs from the ASO everywhere, and at the grid's edge it extrapolates from one side
+  const int half = 20;
+  const auto pts = noisy_height_field(half, 0.1, 2.0, 20, 5);
+  const auto with = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
+    pts, PSC::parameters::neighbor_count(40, PSC::parameters::position_fit_blend(0.5, maps())));
+  const auto without = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, PSC::parameters::neighbor_count(40, maps()));
+  std::size_t edge = 0, edge_same = 0, inside = 0, inside_same = 0;
+  for(std::size_t i = 0; i < pts.size(); ++i)
+  {
+    REQUIRE(with[i].is_valid());
+    REQUIRE(without[i].is_valid());
+    const double x = std::abs(pts[i].first.x()), y = std::abs(pts[i].first.y());
+    const bool same = with[i].mean_curvature == without[i].mean_curvature &&
+                      with[i].max_curvature == without[i].max_curvature;
+    if(x == half || y == half)
+    {
+      ++edge;
+      edge_same += same ? 1 : 0;
+    }
+    else if(x <= half - 6 && y <= half - 6)
+    {
+      ++inside;
+      inside_same += same ? 1 : 0;
+    }
+  }
+  CHECK(edge == 160);
+  CHECK(edge_same == edge);  // one-sided: the ASO alone
+  CHECK(inside == 841);
+  CHECK(inside_same == 0);   // blended
+}
+
 TEST_CASE("Automatic scale: exact on a plane and on a sphere, the count and error fields set", "[aso][automatic_scale]")
 {
   const auto auto_np = PSC::parameters::neighbor_count(40, PSC::parameters::automatic_scale(320, maps()));

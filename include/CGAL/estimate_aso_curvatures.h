@@ -219,8 +219,10 @@ Aso_estimator aso_estimator_from(const NamedParameters& np)
 ///     \cgalParamDescription{for normals estimated from the positions: the weight `w` of the
 ///       shape operator of a quadric fitted to the neighbours' positions alone, blended with
 ///       the ASO's as `(1 - w) ASO + w quadric` (`w` in `[0, 1]`; `std::invalid_argument`
-///       otherwise). With 0.5 the error on simulated scans without normals was 0.97 to 1.35
-///       times that with exact normals (benchmark/README.md, section 8)}
+///       otherwise), `w` falling to 0 where the neighbourhood is one-sided as for
+///       `normal_field_blend` (there the quadric extrapolates). With 0.5 the error on simulated
+///       scans without normals was 0.92 to 1.35 times that with exact normals
+///       (benchmark/README.md, section 8)}
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{0}
 ///   \cgalParamNEnd
