@@ -29,7 +29,9 @@
 // rung above it cannot be fitted), and the first pass sends such a
 // point on, as it does where the nearest half of the first rung is such a line (its residuals
 // tell nothing of the noise across the line). (The normals' first pass sends a point on where the
-// weights leave one line and the points do not.)
+// weights leave one line and the points do not.) For the mean curvature, a rung whose fit can
+// hardly tell it (two scan lines: ill_conditioned_curvature_factor) counts as such a line rung,
+// the nearest half of the first rung too; above a rung already chosen, one ends the climb.
 //
 // The rule. Each rung's interval is its statistic plus or minus kappa standard errors; the
 // rule keeps the largest rung whose interval meets those of every smaller rung. Under noise
@@ -97,6 +99,22 @@ constexpr double automatic_scale_shared_frame_gate_share = 0.15;
 // The least size of the half of the smallest rung that the first pass's test fits (a quadric
 // has 6 coefficients); below it every point goes on to the next pass.
 constexpr std::size_t gate_least_half = 12;
+
+// A rung whose mean curvature its fit can hardly tell is passed over as a rung along one line
+// is: its variance factor of H per unit of noise variance, times its point count (scale-free:
+// 100 to 700 where the points spread in two directions), above
+// ill_conditioned_curvature_factor, and its standard error, with the rung's residual variance
+// taken for noise, above ill_conditioned_curvature_error / r (an uncertainty of the size of a
+// curvature whose radius is ten times the rung's). That is a rung of two scan lines, at a
+// scan's edge or where lines lie far apart: a quadric through two noisy lines bends across them
+// as their noise says, the nearer half of the rung (one line and a few points of the next)
+// leaves residuals smaller still, and the comparison reads as no noise at all, keeping an
+// estimate in error by several times the surface's curvature (benchmark/scan_experiments, range
+// noise 0.3 spacings: `mobile` 0.0170 -> 0.0075, `airborne10` 0.0295 -> 0.0140; the factor
+// alone, without the error's bound, also moved clean scans' edges to larger one-sided rungs,
+// `wobbly8` 0.00198 -> 0.00211).
+constexpr double ill_conditioned_curvature_factor = 1e4;
+constexpr double ill_conditioned_curvature_error = 0.1;
 
 // How much faster than r⁶ the residual variance may grow from the smaller fit to the larger one
 // for separated_noise() to tell the noise (see there).
@@ -290,10 +308,20 @@ struct Scale_ladder
     double factor[2] = {0, 0}, residual = 0, radius = 0;
   };
 
+  // Whether a rung's fit can hardly tell the mean curvature (ill_conditioned_curvature_factor):
+  // its variance factor of H and residual variance in the rung's units (radius 1), n points.
+  static bool curvature_untold(double factor, double sigma2, std::size_t n)
+  {
+    return factor * double(n) > ill_conditioned_curvature_factor &&
+           factor * sigma2 > ill_conditioned_curvature_error * ill_conditioned_curvature_error;
+  }
+
   // Fits the k nearest of `whole` with the driver's radius rule (the k nearest and those tied
   // with the k-th: the k-th smallest of d2, found among those not below a previous rung's,
   // d2[0, ordered) holding the smallest values) in `target`, the fit oriented by `reference`.
-  // NO_RUNG where the k-th nearest is at the query (copies of it).
+  // NO_RUNG where the k-th nearest is at the query (copies of it); LINE where the rung's points
+  // lie along one line, or, for the mean curvature (m = 1), where its fit can hardly tell it
+  // (curvature_untold()).
   static Rung_fit fit_rung(const Neighborhood& whole, std::vector<double>& d2, std::size_t& ordered, std::size_t k,
                            const double reference[3], const double (*g)[6], int m, Sub_neighborhood& target)
   {
@@ -313,7 +341,8 @@ struct Scale_ladder
     double sigma2 = 0;
     if(rung.fit.compute(target.nb) && rung.fit.variance_factors(target.nb, g, m, rung.factor, sigma2))
     {
-      rung.outcome = rung.fit.weighted_line ? Rung_fit::LINE : Rung_fit::FITTED;
+      const bool line = rung.fit.weighted_line || (m == 1 && curvature_untold(rung.factor[0], sigma2, target.nb.size));
+      rung.outcome = line ? Rung_fit::LINE : Rung_fit::FITTED;
       rung.radius = target.nb.radius;
       rung.residual = sigma2 * (rung.radius * rung.radius);
     }
@@ -466,7 +495,8 @@ struct Scale_ladder
     if(gate && half >= gate_least_half && half <= whole.size)
     {
       const Rung_fit rung = fit_rung(whole, d2, ordered, half, reference, g, m, trial);
-      if(rung.outcome == Rung_fit::FITTED)  // (along one line it tells nothing of the noise)
+      // (along one line, or where it can hardly tell the curvature, it tells nothing of the noise)
+      if(rung.outcome == Rung_fit::FITTED)
       {
         radius_half = rung.radius;
         residual_half = rung.residual;
