@@ -302,7 +302,10 @@ estimate_aso_curvatures(const PointRange& points, const NamedParameters& np)
   I::Scale_ladder ladder;
   ladder.smallest = I::checked_scale<PointRange>(0.0, false, np, name);
   ladder.largest = largest;
-  return I::estimate_at_automatic_scale<ConcurrencyTag>(points, np, aso, sphere, ladder, name);
+  // where the rule climbed for noise, without the position fit (automatic_scale.h)
+  I::Aso_estimator at_noise_scale = aso;
+  at_noise_scale.settings.position_fit_blend = 0;
+  return I::estimate_at_automatic_scale<ConcurrencyTag>(points, np, aso, at_noise_scale, sphere, ladder, name);
 }
 
 /// \ingroup PkgPointSetCurvaturesRef

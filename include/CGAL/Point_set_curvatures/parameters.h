@@ -335,7 +335,11 @@ normal_field_blend(bool blend, const NamedParameters& np = CGAL::parameters::def
 /// terrestrial scan of a torus 2.7e-3 / 2.5e-3 / 1.9e-3, airborne scan lines 1.1e-3 / 0.85e-3 /
 /// 0.80e-3, two terrestrial scans merged 0.35e-3 / 0.23e-3 / 0.24e-3. With exact normals it
 /// costs accuracy. Where the quadric has no fit (neighbours along one line) the ASO is kept
-/// alone. Ignored with `aso_projection(AUTHORS_IMPLEMENTATION)`. Default 0.
+/// alone. With `automatic_scale`, it is left out where the rule chose a count above the smallest
+/// one because noise dominates: the normals come from large neighbourhoods there, and the
+/// quadric's bias at that scale exceeds what it saves (simulated scans, range noise 0.3 spacings:
+/// airborne lines 0.0116 -> 0.0099, a torus 0.0261 -> 0.0237; benchmark/README.md section 9).
+/// Ignored with `aso_projection(AUTHORS_IMPLEMENTATION)`. Default 0.
 template <class NamedParameters = CGAL::parameters::Default_named_parameters>
 CGAL::Named_function_parameters<double, internal_np::position_fit_blend_t, NamedParameters>
 position_fit_blend(double weight, const NamedParameters& np = CGAL::parameters::default_values())

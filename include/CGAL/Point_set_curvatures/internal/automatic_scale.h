@@ -44,8 +44,11 @@
 // to 4 times more robust to position noise than estimators that differentiate a tensor) if it
 // lies within kappa standard errors of the rung's quadric (strongly anisotropic shapes bias
 // the sphere at large scales), and the anisotropic part (k_max - k_min, the directions) is the
-// wrapped estimator's. kappa, the noise share and the sphere's rule were chosen on the simulated
-// scans of benchmark/scan_experiments (benchmark/README.md, "Automatic scale").
+// wrapped estimator's. Where the rule climbed because noise dominates (Scale_choice::noise_climb),
+// the wrapped estimator is the caller's `at_noise_scale` (for the ASO: without the position fit,
+// whose bias at those scales exceeds what it saves). kappa, the noise share, the sphere's rule
+// and that choice were made on the simulated scans of benchmark/scan_experiments
+// (benchmark/README.md, "Automatic scale").
 
 #ifndef CGAL_POINT_SET_CURVATURES_INTERNAL_AUTOMATIC_SCALE_H
 #define CGAL_POINT_SET_CURVATURES_INTERNAL_AUTOMATIC_SCALE_H
@@ -230,6 +233,9 @@ struct Scale_choice
   double mean_error = std::numeric_limits<double>::quiet_NaN();
   double mean = 0;  // the quadric's H at the chosen rung (mean curvature statistic)
   bool found = false;
+  // A rung above the smallest one fitted, kept by the rule because noise dominates the smallest
+  // one's residuals (not a rung reached past rungs along one line only).
+  bool noise_climb = false;
   // Not found because the first rung's quadric could not be fitted (too few points, or all
   // along one line): no fit tells the noise, so the first rung is estimated as it is, as with
   // a fixed count (its neighbourhood is in `chosen`, mean_error NaN). (A first rung at the
@@ -612,6 +618,7 @@ struct Scale_ladder
         if(!meet)
           break;
         std::swap(chosen, trial);
+        c.noise_climb = true;
       }
       c.mean_error = std::sqrt(noise2 * factor[0]);
       c.found = true;
@@ -640,16 +647,17 @@ struct Scale_ladder
   }
 };
 
-// The automatic scale around an estimator (see the header comment).
+// The automatic scale around an estimator (see the header comment); `at_noise_scale` is the
+// estimator where the rule climbed for noise (Scale_choice::noise_climb).
 template <class Estimator, class Sphere>
 struct Automatic_scale_estimator : Estimator_base
 {
-  Estimator estimator;
+  Estimator estimator, at_noise_scale;
   Sphere sphere;
   Scale_ladder ladder;
 
-  Automatic_scale_estimator(const Estimator& e, const Sphere& s, const Scale_ladder& l)
-    : Estimator_base(e), estimator(e), sphere(s), ladder(l)
+  Automatic_scale_estimator(const Estimator& e, const Estimator& at_noise, const Sphere& s, const Scale_ladder& l)
+    : Estimator_base(e), estimator(e), at_noise_scale(at_noise), sphere(s), ladder(l)
   {
   }
 
@@ -674,7 +682,7 @@ struct Automatic_scale_estimator : Estimator_base
       provisional.neighbor_count = c.count;
       return provisional;
     }
-    Local_estimate e = estimator(chosen.nb);
+    Local_estimate e = c.noise_climb ? at_noise_scale(chosen.nb) : estimator(chosen.nb);
     if(e.status == Curvature_estimate_status::VALID && c.rung > 0)
     {
       // the sphere's mean curvature where it agrees with the chosen rung's quadric (elsewhere
@@ -757,10 +765,12 @@ std::vector<Result> automatic_scale_passes(const Scale_ladder& ladder, const Run
   return result;
 }
 
-// The automatic scale of the estimator (automatic_scale_passes() on estimate_at_every_point()).
+// The automatic scale of the estimator (automatic_scale_passes() on estimate_at_every_point());
+// `at_noise_scale` where the rule climbed for noise (Automatic_scale_estimator).
 template <class ConcurrencyTag, class PointRange, class NamedParameters, class Estimator, class Sphere>
 auto estimate_at_automatic_scale(const PointRange& points, const NamedParameters& np, const Estimator& estimator,
-                                 const Sphere& sphere, const Scale_ladder& ladder, const char* function_name)
+                                 const Estimator& at_noise_scale, const Sphere& sphere, const Scale_ladder& ladder,
+                                 const char* function_name)
 {
   typedef decltype(estimate_at_every_point<ConcurrencyTag>(points, false, 0.0, np, estimator, function_name)) Results;
   typedef typename Results::value_type Estimate;
@@ -775,7 +785,8 @@ auto estimate_at_automatic_scale(const PointRange& points, const NamedParameters
     pass.progress_size = size;
     pass.cancelled = &cancelled;
     return estimate_at_every_point<ConcurrencyTag>(points, false, 0.0, np,
-                                                   Automatic_scale_estimator<Estimator, Sphere>(estimator, sphere, l),
+                                                   Automatic_scale_estimator<Estimator, Sphere>(estimator, at_noise_scale,
+                                                                                                sphere, l),
                                                    function_name, pass);
   };
   return automatic_scale_passes<Estimate>(
