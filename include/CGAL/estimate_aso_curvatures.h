@@ -302,9 +302,12 @@ estimate_aso_curvatures(const PointRange& points, const NamedParameters& np)
   I::Scale_ladder ladder;
   ladder.smallest = I::checked_scale<PointRange>(0.0, false, np, name);
   ladder.largest = largest;
-  // where the rule climbed for noise, without the position fit (automatic_scale.h)
+  // where the rule climbed for noise: without the position fit, and with the quartic kernel
+  // unless weight_kernel is given (automatic_scale.h)
   I::Aso_estimator at_noise_scale = aso;
   at_noise_scale.settings.position_fit_blend = 0;
+  if(CGAL::parameters::is_default_parameter<NamedParameters, Point_set_curvatures::internal_np::weight_kernel_t>::value)
+    at_noise_scale.settings.kernel_exponent = I::kernel_exponent(Apss_weight_kernel::SMOOTH_QUARTIC);
   return I::estimate_at_automatic_scale<ConcurrencyTag>(points, np, aso, at_noise_scale, sphere, ladder, name);
 }
 

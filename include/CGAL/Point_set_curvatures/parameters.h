@@ -338,7 +338,8 @@ normal_field_blend(bool blend, const NamedParameters& np = CGAL::parameters::def
 /// alone. With `automatic_scale`, it is left out where the rule chose a count above the smallest
 /// one because noise dominates: the normals come from large neighbourhoods there, and the
 /// quadric's bias at that scale exceeds what it saves (simulated scans, range noise 0.3 spacings:
-/// airborne lines 0.0116 -> 0.0099, a torus 0.0261 -> 0.0237; benchmark/README.md section 9).
+/// airborne lines 0.0116 -> 0.0099, a torus 0.0261 -> 0.0237; benchmark/README.md section 9);
+/// there the ASO also takes the quartic kernel unless `weight_kernel` is given.
 /// Ignored with `aso_projection(AUTHORS_IMPLEMENTATION)`. Default 0.
 template <class NamedParameters = CGAL::parameters::Default_named_parameters>
 CGAL::Named_function_parameters<double, internal_np::position_fit_blend_t, NamedParameters>

@@ -46,7 +46,9 @@
 // the sphere at large scales), and the anisotropic part (k_max - k_min, the directions) is the
 // wrapped estimator's. Where the rule climbed because noise dominates (Scale_choice::noise_climb),
 // the wrapped estimator is the caller's `at_noise_scale` (for the ASO: without the position fit,
-// whose bias at those scales exceeds what it saves). kappa, the noise share, the sphere's rule
+// whose bias at those scales exceeds what it saves, and with the quartic kernel unless one is
+// given: the rule tolerates a bias of about one standard error, which the narrower kernel
+// halves where it shows). kappa, the noise share, the sphere's rule
 // and that choice were made on the simulated scans of benchmark/scan_experiments
 // (benchmark/README.md, "Automatic scale").
 
@@ -324,12 +326,14 @@ struct Scale_ladder
 
   // Fits the k nearest of `whole` with the driver's radius rule (the k nearest and those tied
   // with the k-th: the k-th smallest of d2, found among those not below a previous rung's,
-  // d2[0, ordered) holding the smallest values) in `target`, the fit oriented by `reference`.
+  // d2[0, ordered) holding the smallest values) in `target`, the fit oriented by `reference`,
+  // with the variance factors of the m coefficient combinations `g` of `statistic`.
   // NO_RUNG where the k-th nearest is at the query (copies of it); LINE where the rung's points
-  // lie along one line, or, for the mean curvature (m = 1), where its fit can hardly tell it
+  // lie along one line, or, for the mean curvature, where its fit can hardly tell it
   // (curvature_untold()).
   static Rung_fit fit_rung(const Neighborhood& whole, std::vector<double>& d2, std::size_t& ordered, std::size_t k,
-                           const double reference[3], const double (*g)[6], int m, Sub_neighborhood& target)
+                           const double reference[3], Statistic statistic, const double (*g)[6], int m,
+                           Sub_neighborhood& target)
   {
     Rung_fit rung;
     std::nth_element(d2.begin() + ordered, d2.begin() + (k - 1), d2.end());
@@ -347,7 +351,8 @@ struct Scale_ladder
     double sigma2 = 0;
     if(rung.fit.compute(target.nb) && rung.fit.variance_factors(target.nb, g, m, rung.factor, sigma2))
     {
-      const bool line = rung.fit.weighted_line || (m == 1 && curvature_untold(rung.factor[0], sigma2, target.nb.size));
+      const bool line = rung.fit.weighted_line || (statistic == Statistic::MEAN_CURVATURE &&
+                                                   curvature_untold(rung.factor[0], sigma2, target.nb.size));
       rung.outcome = line ? Rung_fit::LINE : Rung_fit::FITTED;
       rung.radius = target.nb.radius;
       rung.residual = sigma2 * (rung.radius * rung.radius);
@@ -500,7 +505,7 @@ struct Scale_ladder
     const std::size_t half = smallest / 2;
     if(gate && half >= gate_least_half && half <= whole.size)
     {
-      const Rung_fit rung = fit_rung(whole, d2, ordered, half, reference, g, m, trial);
+      const Rung_fit rung = fit_rung(whole, d2, ordered, half, reference, statistic, g, m, trial);
       // (along one line, or where it can hardly tell the curvature, it tells nothing of the noise)
       if(rung.outcome == Rung_fit::FITTED)
       {
@@ -517,7 +522,7 @@ struct Scale_ladder
     std::size_t k = std::min(smallest, whole.size);
     for(std::size_t j = 0; k > 0 && k <= whole.size && j < rungs(); ++j, k *= 2)
     {
-      Rung_fit rung = fit_rung(whole, d2, ordered, k, reference, g, m, c.found ? trial : chosen);
+      Rung_fit rung = fit_rung(whole, d2, ordered, k, reference, statistic, g, m, c.found ? trial : chosen);
       if(rung.outcome == Rung_fit::NO_RUNG)
         continue;
       if(rung.outcome == Rung_fit::LINE)
