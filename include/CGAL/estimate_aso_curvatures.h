@@ -179,7 +179,8 @@ Aso_estimator aso_estimator_from(const NamedParameters& np)
 ///       `SMOOTH_CUBIC` (3) or `SMOOTH_QUARTIC` (4), with exact derivatives; `CONSTANT` is
 ///       refused (no derivative)}
 ///     \cgalParamType{`CGAL::Apss_weight_kernel`}
-///     \cgalParamDefault{`SMOOTH_CUBIC` (`SMOOTH` with `Aso_variant::PAPER`)}
+///     \cgalParamDefault{`SMOOTH_CUBIC` (`SMOOTH` with `Aso_variant::PAPER`); with `automatic_scale`,
+///       `SMOOTH_CUBIC` is `SMOOTH_QUARTIC` where a count above the smallest is kept for noise}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Point_set_curvatures::parameters::sample_weights}
 ///     \cgalParamDescription{the quadrature weights of the samples (`CGAL::Sample_weights`):
@@ -302,11 +303,12 @@ estimate_aso_curvatures(const PointRange& points, const NamedParameters& np)
   I::Scale_ladder ladder;
   ladder.smallest = I::checked_scale<PointRange>(0.0, false, np, name);
   ladder.largest = largest;
-  // where the rule climbed for noise: without the position fit, and with the quartic kernel
-  // unless weight_kernel is given (automatic_scale.h)
+  // where the rule climbed for noise: without the position fit, and the cubic kernel (the robust
+  // variant's) made quartic (automatic_scale.h); decided on the settings, however given, so that
+  // the tool and Python agree
   I::Aso_estimator at_noise_scale = aso;
   at_noise_scale.settings.position_fit_blend = 0;
-  if(CGAL::parameters::is_default_parameter<NamedParameters, Point_set_curvatures::internal_np::weight_kernel_t>::value)
+  if(aso.settings.kernel_exponent == I::kernel_exponent(Apss_weight_kernel::SMOOTH_CUBIC))
     at_noise_scale.settings.kernel_exponent = I::kernel_exponent(Apss_weight_kernel::SMOOTH_QUARTIC);
   return I::estimate_at_automatic_scale<ConcurrencyTag>(points, np, aso, at_noise_scale, sphere, ladder, name);
 }

@@ -87,7 +87,9 @@ neighbor_count(std::size_t k, const NamedParameters& np = CGAL::parameters::defa
 /// count is kept and the estimate is that of `neighbor_count(k)`. Where a larger count is
 /// chosen, the mean curvature is that of the APSS sphere on its neighbourhood when it agrees
 /// with the quadric's, the difference of the principal curvatures and the directions the
-/// ASO's. `Curvature_estimate::neighbor_count` is then the chosen count and
+/// ASO's, computed there without `position_fit_blend` and with the quartic kernel in place of the
+/// cubic one (the rule tolerates a bias of about one standard error, which both reduce on
+/// simulated noisy scans). `Curvature_estimate::neighbor_count` is then the chosen count and
 /// `Curvature_estimate::mean_curvature_error` the standard error of the mean curvature there.
 /// The counts are climbed in passes (2k for every point, then 4k, 8k, ... only where the
 /// previous pass kept its largest): a point pays at most twice the neighbourhood it ends
@@ -339,7 +341,7 @@ normal_field_blend(bool blend, const NamedParameters& np = CGAL::parameters::def
 /// one because noise dominates: the normals come from large neighbourhoods there, and the
 /// quadric's bias at that scale exceeds what it saves (simulated scans, range noise 0.3 spacings:
 /// airborne lines 0.0116 -> 0.0099, a torus 0.0261 -> 0.0237; benchmark/README.md section 9);
-/// there the ASO also takes the quartic kernel unless `weight_kernel` is given.
+/// there the ASO also takes the quartic kernel in place of the cubic one (see `automatic_scale`).
 /// Ignored with `aso_projection(AUTHORS_IMPLEMENTATION)`. Default 0.
 template <class NamedParameters = CGAL::parameters::Default_named_parameters>
 CGAL::Named_function_parameters<double, internal_np::position_fit_blend_t, NamedParameters>

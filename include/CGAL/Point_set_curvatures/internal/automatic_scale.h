@@ -46,9 +46,9 @@
 // the sphere at large scales), and the anisotropic part (k_max - k_min, the directions) is the
 // wrapped estimator's. Where the rule climbed because noise dominates (Scale_choice::noise_climb),
 // the wrapped estimator is the caller's `at_noise_scale` (for the ASO: without the position fit,
-// whose bias at those scales exceeds what it saves, and with the quartic kernel unless one is
-// given: the rule tolerates a bias of about one standard error, which the narrower kernel
-// halves where it shows). kappa, the noise share, the sphere's rule
+// whose bias at those scales exceeds what it saves, and with the quartic kernel in place of the
+// cubic one: the rule tolerates a bias of about one standard error, which the narrower kernel
+// reduces). kappa, the noise share, the sphere's rule
 // and that choice were made on the simulated scans of benchmark/scan_experiments
 // (benchmark/README.md, "Automatic scale").
 
