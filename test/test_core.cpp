@@ -2156,10 +2156,6 @@ TEST_CASE("Automatic scale: where the rule climbed for noise, no position fit an
       cloud, PSC::parameters::neighbor_count(
                40, PSC::parameters::automatic_scale(
                      640, PSC::parameters::weight_kernel(CGAL::Apss_weight_kernel::SMOOTH_QUARTIC, maps()))));
-    auto same = [](const Estimate& a, const Estimate& b) {
-      return a.mean_curvature == b.mean_curvature && a.min_curvature == b.min_curvature &&
-             a.max_curvature == b.max_curvature;
-    };
     std::size_t climbed = 0, as_without_blend = 0, as_quartic = 0, smallest = 0, blend_shows = 0;
     for(std::size_t i = 0; i < cloud.size(); ++i)
     {
@@ -2172,13 +2168,13 @@ TEST_CASE("Automatic scale: where the rule climbed for noise, no position fit an
       if(blended[i].neighbor_count >= 80)
       {
         ++climbed;
-        as_without_blend += same(blended[i], alone[i]) ? 1 : 0;
-        as_quartic += same(blended[i], quartic[i]) ? 1 : 0;
+        as_without_blend += same_estimate(blended[i], alone[i]) ? 1 : 0;
+        as_quartic += same_estimate(blended[i], quartic[i]) ? 1 : 0;
       }
       else
       {
         ++smallest;
-        blend_shows += same(blended[i], alone[i]) ? 0 : 1;
+        blend_shows += same_estimate(blended[i], alone[i]) ? 0 : 1;
       }
     }
     measured("no blend, quartic kernel where climbed, sigma " + std::to_string(sigma) + ": points at 80 or more",

@@ -48,9 +48,8 @@
 // the wrapped estimator is the caller's `at_noise_scale` (for the ASO: without the position fit,
 // whose bias at those scales exceeds what it saves, and with the quartic kernel in place of the
 // cubic one: the rule tolerates a bias of about one standard error, which the narrower kernel
-// reduces). kappa, the noise share, the sphere's rule
-// and that choice were made on the simulated scans of benchmark/scan_experiments
-// (benchmark/README.md, "Automatic scale").
+// reduces). kappa, the noise share, the sphere's rule and that choice were made on the simulated
+// scans of benchmark/scan_experiments (benchmark/README.md, "Automatic scale").
 
 #ifndef CGAL_POINT_SET_CURVATURES_INTERNAL_AUTOMATIC_SCALE_H
 #define CGAL_POINT_SET_CURVATURES_INTERNAL_AUTOMATIC_SCALE_H
@@ -324,16 +323,29 @@ struct Scale_ladder
            factor * sigma2 > ill_conditioned_curvature_error * ill_conditioned_curvature_error;
   }
 
+  // A statistic's coefficient combinations, m rows g of the quadric's six coefficients: a3 + a5
+  // (H = -(a3 + a5) / r), or the normal's slopes a1, a2.
+  struct Combinations
+  {
+    const double (*g)[6];
+    int m;
+  };
+  static Combinations combinations(Statistic statistic)
+  {
+    static constexpr double mean[1][6] = {{0, 0, 0, 1, 0, 1}};
+    static constexpr double normal[2][6] = {{0, 1, 0, 0, 0, 0}, {0, 0, 1, 0, 0, 0}};
+    return statistic == Statistic::NORMAL ? Combinations{normal, 2} : Combinations{mean, 1};
+  }
+
   // Fits the k nearest of `whole` with the driver's radius rule (the k nearest and those tied
   // with the k-th: the k-th smallest of d2, found among those not below a previous rung's,
   // d2[0, ordered) holding the smallest values) in `target`, the fit oriented by `reference`,
-  // with the variance factors of the m coefficient combinations `g` of `statistic`.
+  // with the variance factors of `statistic` (its coefficient combinations: combinations()).
   // NO_RUNG where the k-th nearest is at the query (copies of it); LINE where the rung's points
   // lie along one line, or, for the mean curvature, where its fit can hardly tell it
   // (curvature_untold()).
   static Rung_fit fit_rung(const Neighborhood& whole, std::vector<double>& d2, std::size_t& ordered, std::size_t k,
-                           const double reference[3], Statistic statistic, const double (*g)[6], int m,
-                           Sub_neighborhood& target)
+                           const double reference[3], Statistic statistic, Sub_neighborhood& target)
   {
     Rung_fit rung;
     std::nth_element(d2.begin() + ordered, d2.begin() + (k - 1), d2.end());
@@ -349,7 +361,8 @@ struct Scale_ladder
     rung.fit.anisotropy_penalty = 0;
     rung.fit.frame_cache = &target.frame;
     double sigma2 = 0;
-    if(rung.fit.compute(target.nb) && rung.fit.variance_factors(target.nb, g, m, rung.factor, sigma2))
+    const Combinations c = combinations(statistic);
+    if(rung.fit.compute(target.nb) && rung.fit.variance_factors(target.nb, c.g, c.m, rung.factor, sigma2))
     {
       const bool line = rung.fit.weighted_line || (statistic == Statistic::MEAN_CURVATURE &&
                                                    curvature_untold(rung.factor[0], sigma2, target.nb.size));
@@ -487,11 +500,7 @@ struct Scale_ladder
       d2[i] = whole.qx[i] * whole.qx[i] + whole.qy[i] * whole.qy[i] + whole.qz[i] * whole.qz[i];
     std::size_t ordered = 0;  // d2[0, ordered) holds the smallest values, each below the rest
     const bool by_normal = statistic == Statistic::NORMAL;
-    const int m = by_normal ? 2 : 1;
-    // the statistic's coefficients: a3 + a5 (H = -(a3 + a5) / r), or the slopes a1, a2
-    const double g_mean[1][6] = {{0, 0, 0, 1, 0, 1}};
-    const double g_normal[2][6] = {{0, 1, 0, 0, 0, 0}, {0, 0, 1, 0, 0, 0}};
-    const double (*g)[6] = by_normal ? g_normal : g_mean;
+    const int m = combinations(statistic).m;
     double lo[2] = {-inf, -inf}, hi[2] = {inf, inf};
     bool compared = false;  // intervals started (second rung reached)
     double reference[3] = {whole.query_normal[0], whole.query_normal[1], whole.query_normal[2]};
@@ -505,7 +514,7 @@ struct Scale_ladder
     const std::size_t half = smallest / 2;
     if(gate && half >= gate_least_half && half <= whole.size)
     {
-      const Rung_fit rung = fit_rung(whole, d2, ordered, half, reference, statistic, g, m, trial);
+      const Rung_fit rung = fit_rung(whole, d2, ordered, half, reference, statistic, trial);
       // (along one line, or where it can hardly tell the curvature, it tells nothing of the noise)
       if(rung.outcome == Rung_fit::FITTED)
       {
@@ -522,7 +531,7 @@ struct Scale_ladder
     std::size_t k = std::min(smallest, whole.size);
     for(std::size_t j = 0; k > 0 && k <= whole.size && j < rungs(); ++j, k *= 2)
     {
-      Rung_fit rung = fit_rung(whole, d2, ordered, k, reference, statistic, g, m, c.found ? trial : chosen);
+      Rung_fit rung = fit_rung(whole, d2, ordered, k, reference, statistic, c.found ? trial : chosen);
       if(rung.outcome == Rung_fit::NO_RUNG)
         continue;
       if(rung.outcome == Rung_fit::LINE)
