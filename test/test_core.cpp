@@ -2484,3 +2484,67 @@ TEST_CASE("average_spacing: the mean distance to the k + 1 nearest, itself inclu
   const std::vector<Oriented_point> none = {{Point(std::numeric_limits<double>::infinity(), 0, 0), Vector(0, 0, 1)}};
   CHECK(PSC::average_spacing<CGAL::Sequential_tag>(none, k, CGAL::parameters::point_map(point_map)) == 0);
 }
+
+TEST_CASE("Automatic scale, its sums and orders: moments, radix sort, distance ranks", "[automatic_scale][internal]")
+{
+  namespace I = CGAL::Point_set_curvatures::internal;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  // the normal equations from the 15 distinct monomials equal the outer products (to rounding)
+  I::Quadratic_height_fit products;
+  I::Quadratic_moments moments;
+  double fourth = 0;
+  for(int i = 0; i < 500; ++i)
+  {
+    const double u = uniform(rng), v = uniform(rng), h = uniform(rng), w = 0.5 + 0.5 * uniform(rng);
+    products.add(u, v, h, w);
+    moments.add(u, v, h, w);
+    fourth += w * (u * u + v * v) * (u * u + v * v);
+  }
+  double ata[6][6] = {}, atb[6] = {};
+  moments.fill(ata, atb);
+  for(int i = 0; i < 6; ++i)
+  {
+    CHECK(atb[i] == Approx(products.atb[i]).epsilon(1e-12).margin(1e-12));
+    for(int j = i; j < 6; ++j)
+      CHECK(ata[i][j] == Approx(products.ata[i][j]).epsilon(1e-12).margin(1e-12));
+  }
+  CHECK(moments.fourth() == Approx(fourth).epsilon(1e-12));
+  // the neighbourhoods' order by input position: the radix sort's, above 96 points, is std::sort's,
+  // with input positions of 1, 2 and 3 bytes
+  for(std::uint32_t cloud_size : {200u, 60000u, 3000000u})
+  {
+    I::Sorted_cloud cloud;
+    cloud.input_index.resize(cloud_size);
+    for(std::uint32_t i = 0; i < cloud_size; ++i)
+      cloud.input_index[i] = i;
+    std::shuffle(cloud.input_index.begin(), cloud.input_index.end(), rng);
+    std::vector<std::uint64_t> scratch;
+    for(std::size_t size : {10u, 95u, 96u, 150u, 640u})
+    {
+      std::vector<std::uint32_t> index(cloud_size);
+      for(std::uint32_t i = 0; i < cloud_size; ++i)
+        index[i] = i;
+      std::shuffle(index.begin(), index.end(), rng);
+      index.resize(size);
+      std::vector<std::uint32_t> expected = index;
+      std::sort(expected.begin(), expected.end(), [&](std::uint32_t a, std::uint32_t b) {
+        return cloud.input_index[a] < cloud.input_index[b];
+      });
+      I::sort_by_input_index(cloud, index.data(), index.size(), scratch);
+      CHECK(index == expected);
+    }
+  }
+  // the rungs' k-th distances: those of nth_element, ties and the neighbourhood's rim included
+  std::vector<double> d2(700);
+  for(std::size_t i = 0; i < d2.size(); ++i)
+    d2[i] = i % 7 == 0 ? 0.25 : 0.5 * (1 + uniform(rng));
+  d2[3] = 0;
+  d2[5] = 1.0;
+  I::Distance_ranks ranks;
+  ranks.assign(d2);
+  std::vector<double> sorted = d2;
+  std::sort(sorted.begin(), sorted.end());
+  for(std::size_t k : {1u, 20u, 40u, 80u, 100u, 160u, 320u, 640u, 700u})
+    CHECK(ranks.kth(k) == sorted[k - 1]);
+}

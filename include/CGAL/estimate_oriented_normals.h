@@ -222,7 +222,9 @@ inline Normal_record Normal_at_point::operator()(const Neighborhood& nb) const
   }
   const std::size_t c = candidates.size();
   const std::size_t degree = std::min(c, normal_graph_degree);
-  std::partial_sort(candidates.begin(), candidates.begin() + degree, candidates.end());
+  if(degree < c)
+    std::nth_element(candidates.begin(), candidates.begin() + degree, candidates.end());
+  std::sort(candidates.begin(), candidates.begin() + degree);
   for(std::size_t i = 0; i < degree; ++i)
     r.neighbor[i] = candidates[i].second;
   r.degree = static_cast<std::uint8_t>(degree);

@@ -92,10 +92,14 @@ constexpr double automatic_scale_gate_share = 0.05;
 // 2, a point kept at 320 or 640 searched 40 + 80 + 160 + 320 + 640 neighbours and fitted the
 // lower rungs in every pass; with 4, 40 + 160 + 640 (the tool's default on data/real/
 // sample_c.las, 78% of its points at 640: 6.8 s against 5.1 s, the same choices, estimates
-// equal to 1e-15; a clean terrain, 97% at 40: unchanged; with 16, one pass of 640 after the
-// first, the clean terrain's points that the first pass's test sends on paid 640 neighbours:
-// 2.2 times as long).
-constexpr std::size_t automatic_scale_pass_growth = 4;
+// equal to 1e-15); with 16, 40 + 640, one pass of 640 after the first for the points its test
+// sends on. Measured again once the fits and the search had become cheaper (2026-11-29; the
+// tool's default, 2 threads): 16 against 4, sample_c 1.14 s against 1.30 s, warsaw_small
+// 0.23 against 0.25, hexbin-crop (9% end at 40, 42% at 80 or 160) 2.50 against 2.74, a clean
+// 1M terrain with normals 11.7 against 12.4, without 22.4 against 22.9, a clean 200K terrain 4.4
+// against 4.2 (97% at 40): the same choices, estimates equal to 1e-15. (With the fits of the
+// time, 16 made the clean terrain 2.2 times as long.)
+constexpr std::size_t automatic_scale_pass_growth = 16;
 // The same share for the normals' test in a shared frame (Scale_ladder::choose_in_shared_frame()): chosen on the clean and noisy scans and the real tiles of benchmark/README.md,
 // "Automatic scale" (at 0.05 it sends 25% of a clean terrain's points on, at 0.15 10%, at 0.2
 // 7%, with the same accuracy under noise).
@@ -218,9 +222,53 @@ struct Sub_neighborhood
 
 // One thread's scratch of Scale_ladder::choose(); the chosen rung's neighbourhood is left in
 // `chosen`.
+// The k-th smallest squared distance of a neighbourhood's points to the query (its scaled units:
+// below 1 but for rounding) for the rungs' counts k: the values bucketed once into equal
+// intervals of [0, 1) by a counting sort, then each k-th selected within its bucket alone (about
+// 10 values of 640 on a surface, where a selection among all the values above the previous rung's
+// for each rung was 10% of a run of the automatic scale). The same values as nth_element's.
+struct Distance_ranks
+{
+  static constexpr int bins = 64;
+  std::vector<double> values;  // by bucket
+  std::uint32_t start[bins + 1] = {};
+
+  // (NaN, from extents that overflow a double, in the last bucket)
+  static int bucket(double d2)
+  {
+    const double x = d2 * bins;
+    return x >= 0 && x < bins ? static_cast<int>(x) : (x < 0 ? 0 : bins - 1);
+  }
+
+  void assign(const std::vector<double>& d2)
+  {
+    std::uint32_t count[bins] = {};
+    for(double v : d2)
+      ++count[bucket(v)];
+    start[0] = 0;
+    for(int b = 0; b < bins; ++b)
+      start[b + 1] = start[b] + count[b];
+    std::uint32_t next[bins];
+    std::copy(start, start + bins, next);
+    values.resize(d2.size());
+    for(double v : d2)
+      values[next[bucket(v)]++] = v;
+  }
+
+  // The k-th smallest, 1 <= k <= the count of values.
+  double kth(std::size_t k)
+  {
+    const std::size_t rank = k - 1;
+    const int b = static_cast<int>(std::upper_bound(start, start + bins + 1, rank) - start) - 1;
+    std::nth_element(values.begin() + start[b], values.begin() + rank, values.begin() + start[b + 1]);
+    return values[rank];
+  }
+};
+
 struct Ladder_scratch
 {
   std::vector<double> d2;
+  Distance_ranks ranks;
   Sub_neighborhood chosen, trial;
   std::vector<double> gate_frame;  // Scale_ladder::choose_in_shared_frame(): u, v, h, inner
 };
@@ -338,19 +386,16 @@ struct Scale_ladder
   }
 
   // Fits the k nearest of `whole` with the driver's radius rule (the k nearest and those tied
-  // with the k-th: the k-th smallest of d2, found among those not below a previous rung's,
-  // d2[0, ordered) holding the smallest values) in `target`, the fit oriented by `reference`,
+  // with the k-th: the k-th smallest of `ranks`) in `target`, the fit oriented by `reference`,
   // with the variance factors of `statistic` (its coefficient combinations: combinations()).
   // NO_RUNG where the k-th nearest is at the query (copies of it); LINE where the rung's points
   // lie along one line, or, for the mean curvature, where its fit can hardly tell it
   // (curvature_untold()).
-  static Rung_fit fit_rung(const Neighborhood& whole, std::vector<double>& d2, std::size_t& ordered, std::size_t k,
+  static Rung_fit fit_rung(const Neighborhood& whole, Distance_ranks& ranks, std::size_t k,
                            const double reference[3], Statistic statistic, Sub_neighborhood& target)
   {
     Rung_fit rung;
-    std::nth_element(d2.begin() + ordered, d2.begin() + (k - 1), d2.end());
-    ordered = k;
-    const double r2 = d2[k - 1];
+    const double r2 = ranks.kth(k);
     if(r2 == 0)
     {
       rung.outcome = Rung_fit::NO_RUNG;
@@ -498,7 +543,8 @@ struct Scale_ladder
     d2.resize(whole.size);
     for(std::size_t i = 0; i < whole.size; ++i)
       d2[i] = whole.qx[i] * whole.qx[i] + whole.qy[i] * whole.qy[i] + whole.qz[i] * whole.qz[i];
-    std::size_t ordered = 0;  // d2[0, ordered) holds the smallest values, each below the rest
+    Distance_ranks& ranks = scratch.ranks;
+    ranks.assign(d2);
     const bool by_normal = statistic == Statistic::NORMAL;
     const int m = combinations(statistic).m;
     double lo[2] = {-inf, -inf}, hi[2] = {inf, inf};
@@ -514,7 +560,7 @@ struct Scale_ladder
     const std::size_t half = smallest / 2;
     if(gate && half >= gate_least_half && half <= whole.size)
     {
-      const Rung_fit rung = fit_rung(whole, d2, ordered, half, reference, statistic, trial);
+      const Rung_fit rung = fit_rung(whole, ranks, half, reference, statistic, trial);
       // (along one line, or where it can hardly tell the curvature, it tells nothing of the noise)
       if(rung.outcome == Rung_fit::FITTED)
       {
@@ -531,7 +577,7 @@ struct Scale_ladder
     std::size_t k = std::min(smallest, whole.size);
     for(std::size_t j = 0; k > 0 && k <= whole.size && j < rungs(); ++j, k *= 2)
     {
-      Rung_fit rung = fit_rung(whole, d2, ordered, k, reference, statistic, c.found ? trial : chosen);
+      Rung_fit rung = fit_rung(whole, ranks, k, reference, statistic, c.found ? trial : chosen);
       if(rung.outcome == Rung_fit::NO_RUNG)
         continue;
       if(rung.outcome == Rung_fit::LINE)
@@ -719,14 +765,13 @@ struct Automatic_scale_estimator : Estimator_base
 };
 
 // The passes of the automatic scale: every point on the ladder's first rung with the test of
-// Scale_ladder::gate (the neighbourhood of k); then the points it sends on, on the rungs k, 2 k
-// and 4 k (the neighbourhood of 4 k); then, with the neighbourhood of 16 k, 64 k, ... (each
-// automatic_scale_pass_growth times the previous one) up to `largest` in turn, only the points
-// whose previous pass kept its top rung (the rule looks at
-// the rungs from the bottom up and stops at the first that disagrees, so a point that stopped
-// below the top rung of its pass has its choice on the whole ladder). Smooth surfaces without
-// noise stop at the first pass, and no point's largest neighbourhood is more than 4 times the
-// one it ends with. A point's result does not depend on the pass that computed it being
+// Scale_ladder::gate (the neighbourhood of k); then the points it sends on, on the rungs k, 2 k,
+// ..., 16 k (the neighbourhood of 16 k, automatic_scale_pass_growth k, or of `largest` if
+// smaller); then, with the neighbourhood of 256 k, ... (each automatic_scale_pass_growth times
+// the previous one) up to `largest` in turn, only the points whose previous pass kept its top
+// rung (the rule looks at the rungs from the bottom up and stops at the first that disagrees, so
+// a point that stopped below the top rung of its pass has its choice on the whole ladder).
+// Smooth surfaces without noise stop at the first pass. A point's result does not depend on the pass that computed it being
 // shared with other points (the tiles, the concurrency).
 // `run(ladder, visit, progress_start, progress_size, cancelled)` evaluates the points of the
 // mask `visit` (null: all) with neighbourhoods of ladder.largest, reporting progress in that

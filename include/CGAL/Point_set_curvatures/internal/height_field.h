@@ -98,6 +98,70 @@ struct Quadratic_height_fit
   }
 };
 
+// The same normal equations from the distinct sums they hold: sum w m mᵀ has 21 entries but 15
+// distinct monomials w u^a v^b (a + b <= 4), accumulated one sample at a time without the 6 x 6
+// products, then spread by fill() (the same sums up to rounding, in about half the operations).
+struct Quadratic_moments
+{
+  // w times 1, u, v, u², uv, v², u³, u²v, uv², v³, u⁴, u³v, u²v², uv³, v⁴: degree d from
+  // d (d + 1) / 2, by the power of v
+  double s[15] = {};
+  double sh[6] = {};  // sum w m h
+
+  void add(double u, double v, double w)
+  {
+    const double wu = w * u, wv = w * v;
+    const double wuu = wu * u, wuv = wu * v, wvv = wv * v;
+    const double wuuu = wuu * u, wuuv = wuu * v, wuvv = wuv * v, wvvv = wvv * v;
+    s[0] += w;
+    s[1] += wu;
+    s[2] += wv;
+    s[3] += wuu;
+    s[4] += wuv;
+    s[5] += wvv;
+    s[6] += wuuu;
+    s[7] += wuuv;
+    s[8] += wuvv;
+    s[9] += wvvv;
+    s[10] += wuuu * u;
+    s[11] += wuuu * v;
+    s[12] += wuuv * v;
+    s[13] += wuvv * v;
+    s[14] += wvvv * v;
+  }
+
+  void add(double u, double v, double h, double w)
+  {
+    add(u, v, w);
+    const double wh = w * h, wuh = wh * u, wvh = wh * v;
+    sh[0] += wh;
+    sh[1] += wuh;
+    sh[2] += wvh;
+    sh[3] += wuh * u;
+    sh[4] += wuh * v;
+    sh[5] += wvh * v;
+  }
+
+  // sum w (u² + v²)²
+  double fourth() const { return s[10] + 2.0 * s[12] + s[14]; }
+
+  // The upper triangle of sum w m mᵀ, and sum w m h if `atb`.
+  void fill(double ata[6][6], double* atb = nullptr) const
+  {
+    // the powers (of u, of v) of m = (1, u, v, u², uv, v²)
+    static constexpr int pu[6] = {0, 1, 0, 2, 1, 0}, pv[6] = {0, 0, 1, 0, 1, 2};
+    for(int i = 0; i < 6; ++i)
+      for(int j = i; j < 6; ++j)
+      {
+        const int d = pu[i] + pu[j] + pv[i] + pv[j];
+        ata[i][j] = s[d * (d + 1) / 2 + pv[i] + pv[j]];
+      }
+    if(atb)
+      for(int i = 0; i < 6; ++i)
+        atb[i] = sh[i];
+  }
+};
+
 // The gradient and Hessian (packed xx xy xz yy yz zz) of F(y) = n.y - h(t1.y, t2.y) at
 // u = v = 0, for the graph of h (coefficients `a`) over the frame (t1, t2, n).
 inline void height_field_gradient_hessian(const double a[6], const double t1[3], const double t2[3],

@@ -83,9 +83,11 @@ inline double knn_neighborhood(const Point_kd_tree& tree, const double* x, std::
     const double d2_max = farthest();
     return d2_max > 0 ? knn_radius_factor * std::sqrt(d2_max) : 1.0;
   }
-  // the k nearest first, then the k+1-th (the only one left): the order of (d2, id)
-  std::nth_element(neighbors.begin(), neighbors.begin() + (k - 1), neighbors.end());
-  double d2_k = neighbors[k - 1].first;
+  // the k nearest first, then the k+1-th (the only one left), in the order of (d2, id): the
+  // tree listed the k + 1 nearest, so the k+1-th is the largest of them and the k-th the largest
+  // of the others (two scans where a selection cost about 5% of a run of the automatic scale)
+  std::iter_swap(std::max_element(neighbors.begin(), neighbors.end()), neighbors.begin() + k);
+  double d2_k = std::max_element(neighbors.begin(), neighbors.begin() + k)->first;
   bool ties_beyond = false;
   if(d2_k == 0)
   {
@@ -130,15 +132,47 @@ struct Knn_scratch
 // in different orders, and which one serves a point depends on the whole cloud (the grid's
 // side comes from a sample): the input order is the one order a tile shares with the whole
 // cloud, so that its sums, hence its estimates, are bitwise the same.
+// The input positions are distinct, so the order is the one std::sort gives the keys (input
+// position, grid position); above radix_sort_least_size keys it is found by a least-significant-
+// digit radix sort on the input position's bytes, skipping the bytes all keys share (the sort
+// of 640 neighbours was 10% of a run of the automatic scale; the same order).
+constexpr std::size_t radix_sort_least_size = 96;
+
 inline void sort_by_input_index(const Sorted_cloud& cloud, std::uint32_t* index, std::size_t size,
                                 std::vector<std::uint64_t>& order)
 {
-  order.resize(size);
+  order.resize(2 * size);
+  std::uint64_t* key = order.data();
   for(std::size_t i = 0; i < size; ++i)
-    order[i] = (std::uint64_t(cloud.input_index[index[i]]) << 32) | index[i];
-  std::sort(order.begin(), order.end());
+    key[i] = (std::uint64_t(cloud.input_index[index[i]]) << 32) | index[i];
+  if(size < radix_sort_least_size)
+    std::sort(key, key + size);
+  else
+  {
+    std::uint32_t count[4][256] = {};
+    for(std::size_t i = 0; i < size; ++i)
+      for(int b = 0; b < 4; ++b)
+        ++count[b][(key[i] >> (32 + 8 * b)) & 0xff];
+    std::uint64_t* other = key + size;
+    for(int b = 0; b < 4; ++b)
+    {
+      const int shift = 32 + 8 * b;
+      if(count[b][(key[0] >> shift) & 0xff] == size)
+        continue;  // every key has this byte
+      std::uint32_t start[256];
+      std::uint32_t sum = 0;
+      for(int d = 0; d < 256; ++d)
+      {
+        start[d] = sum;
+        sum += count[b][d];
+      }
+      for(std::size_t i = 0; i < size; ++i)
+        other[start[(key[i] >> shift) & 0xff]++] = key[i];
+      std::swap(key, other);
+    }
+  }
   for(std::size_t i = 0; i < size; ++i)
-    index[i] = static_cast<std::uint32_t>(order[i]);
+    index[i] = static_cast<std::uint32_t>(key[i]);
 }
 
 // With a tile, the largest halo its own points need so far: a point's neighbourhood (radius
@@ -276,33 +310,48 @@ void visit_points_knn(const Sorted_cloud& cloud, std::size_t k, std::uint32_t fi
   });
 }
 
-// Side of the grid for neighbourhoods by count, from r_i = (1 + 2^-20) d_k at 4096 points
-// spread over the cloud (all of them if fewer), found with the tree (d_k = 0: the nearest
+// How many points knn_grid_side() samples among m: enough to cost the sides (4096 at most),
+// few enough that sampling, done on one thread before the visit, stays a small share of it
+// (one in 16 points; every point of a cloud of up to 512).
+inline std::size_t knn_grid_samples(std::size_t m)
+{
+  return std::min<std::size_t>(4096, std::max<std::size_t>(512, m / 16));
+}
+
+// Side of the grid for neighbourhoods by count, from r_i = (1 + 2^-20) d_k at knn_grid_samples()
+// points spread over the cloud (all of them if fewer), found with the tree (d_k = 0: the nearest
 // distance that is not 0, as for the neighbourhoods). The grid may have to use larger cells
 // than asked (grid_cell_size: huge extents, a far outlier), so each candidate side s is costed
 // at its effective cell side c(s): a point i is served by the grid if r_i <= c(s), at a cost
 // growing with the points of its 27 cells, about (9 k / pi) (c(s) / r_i)^2 on a surface;
-// otherwise by the tree, at a fixed cost. The side minimises the sum of these costs over the
-// samples (measured on this machine: 0.2 us per grid query plus 3 ns per point scanned, 4 us
-// per tree query), so that clouds of varying density (scans) keep their dense parts on the
-// grid and send the sparse ones to the tree. The samples are taken among the m points of
-// `xyz`: the points to visit (the tree holds them all). Returns 0 if the tree alone is
-// cheaper.
+// otherwise by the tree, at a cost growing with k. The side minimises the sum of these costs
+// over the samples (measured on this machine: 0.2 us per grid query plus 3 ns per point
+// scanned; 2.5 us plus 0.04 us a neighbour per tree query, 2.8, 4.1, 10.1 and 27.5 us for k =
+// 10, 40, 160 and 640 on 200,000 points of a surface, where a constant 4 us sent the large counts
+// of the automatic scale to the tree and made it 9% slower on data/real/sample_c.las), so that
+// clouds of varying density (scans) keep their dense parts on the grid and send the sparse ones
+// to the tree. The samples are taken among the m points of `xyz`: the points to visit (the tree
+// holds them all). Returns 0 if the tree alone is cheaper.
 inline double knn_grid_side(const Point_kd_tree& tree, const double* xyz, std::size_t m, std::size_t k,
                             const double lo[3], const double hi[3])
 {
-  const std::size_t samples = std::min<std::size_t>(m, 4096);
-  const std::size_t count = std::min(k + 1, tree.size());
+  const std::size_t samples = std::min<std::size_t>(m, knn_grid_samples(m));
+  const std::size_t count = std::min(k, tree.size());
   std::vector<double> r;
   std::vector<Point_kd_tree::Candidate> nearest;
   r.reserve(samples);
   for(std::size_t s = 0; s < samples; ++s)
   {
     const std::size_t i = (2 * s + 1) * m / (2 * samples);
-    tree.nearest(xyz + 3 * i, count, nearest);
-    double d2 = nearest[std::min(k, tree.size()) - 1].first;
-    for(std::size_t j = 0; d2 == 0 && j < nearest.size(); ++j)
-      d2 = nearest[j].first;
+    tree.nearest_unordered(xyz + 3 * i, count, nearest);
+    // the k-th distance (the largest of the k nearest), else the nearest that is not 0
+    double d2 = std::max_element(nearest.begin(), nearest.end())->first;
+    if(d2 == 0)
+    {
+      tree.nearest(xyz + 3 * i, std::min(k + 1, tree.size()), nearest);
+      for(std::size_t j = 0; d2 == 0 && j < nearest.size(); ++j)
+        d2 = nearest[j].first;
+    }
     const double ri = knn_radius_factor * std::sqrt(d2);
     if(ri > 0 && std::isfinite(ri))
       r.push_back(ri);
@@ -312,7 +361,7 @@ inline double knn_grid_side(const Point_kd_tree& tree, const double* xyz, std::s
   for(std::size_t i = 0; i < r.size(); ++i)
     inverse_r2[i + 1] = inverse_r2[i] + 1.0 / (r[i] * r[i]);
 
-  const double grid_query = 0.2, per_point = 0.003, tree_query = 4.0;  // microseconds
+  const double grid_query = 0.2, per_point = 0.003, tree_query = 2.5 + 0.04 * double(k);  // microseconds
   const double scanned = 9.0 * double(k) / 3.141592653589793;
   const double n_samples = double(std::max<std::size_t>(samples, 1));
   double best_cost = n_samples * tree_query, side = 0;  // the tree alone

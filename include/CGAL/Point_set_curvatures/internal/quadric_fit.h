@@ -182,7 +182,7 @@ struct Quadric_fit
 
     Quadratic_height_fit& fit = equations;
     fit = Quadratic_height_fit();
-    double fourth = 0;
+    Quadratic_moments moments;
     double* cache = nullptr;
     if(frame_cache)
     {
@@ -202,11 +202,11 @@ struct Quadric_fit
       }
       if(!inside)
         continue;
-      fit.add(u, v, h, w);
-      fourth += w * (u * u + v * v) * (u * u + v * v);
+      moments.add(u, v, h, w);
     }
+    moments.fill(fit.ata, fit.atb);
     // the penalty lambda ((a3 - a5)² + a4²) / 2 in the normal equations (upper triangle)
-    const double lambda = anisotropy_penalty * fourth;
+    const double lambda = anisotropy_penalty * moments.fourth();
     fit.ata[3][3] += lambda;
     fit.ata[3][5] -= lambda;
     fit.ata[5][5] += lambda;
@@ -222,7 +222,8 @@ struct Quadric_fit
   // these have no value.
   bool variance_factors(const Neighborhood& nb, const double (*g)[6], int count, double* factor, double& sigma2) const
   {
-    double b[6][6] = {}, sw = 0, sw2 = 0, ssr = 0;
+    double b[6][6] = {}, sw = 0, ssr = 0;
+    Quadratic_moments squared;  // the moments with weights w²
     const double* cache = frame_cache && frame_cache->size() == 4 * nb.size ? frame_cache->data() : nullptr;
     for(std::size_t i = 0; i < nb.size; ++i)
     {
@@ -238,16 +239,13 @@ struct Quadric_fit
       }
       else if(!in_frame(nb, i, w, u, v, e))
         continue;
-      const double m[6] = {1.0, u, v, u * u, u * v, v * v};
-      for(int j = 0; j < 6; ++j)
-        e -= a[j] * m[j];
+      e -= a[0] + a[1] * u + a[2] * v + a[3] * (u * u) + a[4] * (u * v) + a[5] * (v * v);
       sw += w;
-      sw2 += w * w;
       ssr += w * e * e;
-      for(int j = 0; j < 6; ++j)
-        for(int l = j; l < 6; ++l)
-          b[j][l] += w * w * m[j] * m[l];
+      squared.add(u, v, w * w);
     }
+    squared.fill(b);
+    const double sw2 = squared.s[0];
     const double n_eff = sw2 > 0 ? sw * sw / sw2 : 0.0;
     if(!(n_eff > 6.5))
       return false;
