@@ -37,6 +37,7 @@
 #include <tuple>
 #include <list>
 #include <random>
+#include <set>
 #include <thread>
 #include <vector>
 
@@ -2510,17 +2511,21 @@ TEST_CASE("Automatic scale, its sums and orders: moments, radix sort, distance r
       CHECK(ata[i][j] == Approx(products.ata[i][j]).epsilon(1e-12).margin(1e-12));
   }
   CHECK(moments.fourth() == Approx(fourth).epsilon(1e-12));
-  // the neighbourhoods' order by input position: the radix sort's, above 96 points, is std::sort's,
-  // with input positions of 1, 2 and 3 bytes
-  for(std::uint32_t cloud_size : {200u, 60000u, 3000000u})
+  // the neighbourhoods' order by input position: the radix sort's, from 96 points on, is std::sort's,
+  // with distinct input positions of 1 to 4 bytes
+  for(int bytes = 1; bytes <= 4; ++bytes)
   {
+    const std::uint64_t range = std::uint64_t(1) << (8 * bytes);
+    const std::uint32_t cloud_size = 200;  // grid positions
     I::Sorted_cloud cloud;
-    cloud.input_index.resize(cloud_size);
-    for(std::uint32_t i = 0; i < cloud_size; ++i)
-      cloud.input_index[i] = i;
+    std::uniform_int_distribution<std::uint64_t> any(0, range - 1);
+    std::set<std::uint32_t> taken;
+    while(taken.size() < cloud_size)
+      taken.insert(static_cast<std::uint32_t>(any(rng)));
+    cloud.input_index.assign(taken.begin(), taken.end());
     std::shuffle(cloud.input_index.begin(), cloud.input_index.end(), rng);
     std::vector<std::uint64_t> scratch;
-    for(std::size_t size : {10u, 95u, 96u, 150u, 640u})
+    for(std::size_t size : {10u, 95u, 96u, 150u, 200u})
     {
       std::vector<std::uint32_t> index(cloud_size);
       for(std::uint32_t i = 0; i < cloud_size; ++i)
@@ -2541,10 +2546,45 @@ TEST_CASE("Automatic scale, its sums and orders: moments, radix sort, distance r
     d2[i] = i % 7 == 0 ? 0.25 : 0.5 * (1 + uniform(rng));
   d2[3] = 0;
   d2[5] = 1.0;
+  d2[6] = 1.0 + 1e-12;  // (rounding at the rim)
   I::Distance_ranks ranks;
   ranks.assign(d2);
   std::vector<double> sorted = d2;
   std::sort(sorted.begin(), sorted.end());
-  for(std::size_t k : {1u, 20u, 40u, 80u, 100u, 160u, 320u, 640u, 700u})
+  // (100 and 101 in one bucket: the second selection within a bucket the first one reordered)
+  for(std::size_t k : {1u, 20u, 40u, 80u, 100u, 101u, 160u, 320u, 640u, 699u, 700u})
     CHECK(ranks.kth(k) == sorted[k - 1]);
+}
+
+TEST_CASE("Automatic scale in three passes (20, then 320, then 640): more accurate than the smallest count, "
+          "the same sequentially and in parallel",
+          "[aso][automatic_scale]")
+{
+  // exact normals, range noise 0.4 spacings on a gentle wave: most points climb past 320, which
+  // only the third pass (the neighbourhood of 640) can tell
+  const int half = 30;
+  const auto pts = noisy_height_field(half, 0.4, 2.0, 60, 5);
+  auto run = [&pts](auto tag, std::size_t largest) {
+    namespace P = PSC::parameters;
+    if(largest == 0)
+      return CGAL::estimate_aso_curvatures<decltype(tag)>(pts, P::neighbor_count(20, maps()));
+    return CGAL::estimate_aso_curvatures<decltype(tag)>(pts, P::neighbor_count(20, P::automatic_scale(largest, maps())));
+  };
+  const auto parallel = run(CGAL::Parallel_tag(), 640);
+  const auto sequential = run(CGAL::Sequential_tag(), 640);
+  std::size_t differ = 0, at_640 = 0;
+  for(std::size_t i = 0; i < pts.size(); ++i)
+  {
+    differ += same_estimate(parallel[i], sequential[i]) ? 0 : 1;
+    at_640 += parallel[i].is_valid() && parallel[i].neighbor_count >= 640 ? 1 : 0;
+  }
+  CHECK(differ == 0);
+  measured("three passes: points at 640", double(at_640));
+  CHECK(at_640 > pts.size() / 4);
+  const auto chosen = median_count_and_error(pts, parallel, half, 10, 2.0, 60);
+  const auto at_20 = median_count_and_error(pts, run(CGAL::Parallel_tag(), 0), half, 10, 2.0, 60);
+  measured("  mean |H - H*| automatic", chosen.second);
+  measured("  mean |H - H*| at 20", at_20.second);
+  CHECK(chosen.first >= 640);
+  CHECK(chosen.second < 0.1 * at_20.second);
 }

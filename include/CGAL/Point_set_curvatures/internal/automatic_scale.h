@@ -94,11 +94,12 @@ constexpr double automatic_scale_gate_share = 0.05;
 // sample_c.las, 78% of its points at 640: 6.8 s against 5.1 s, the same choices, estimates
 // equal to 1e-15); with 16, 40 + 640, one pass of 640 after the first for the points its test
 // sends on. Measured again once the fits and the search had become cheaper (2026-11-29; the
-// tool's default, 2 threads): 16 against 4, sample_c 1.14 s against 1.30 s, warsaw_small
-// 0.23 against 0.25, hexbin-crop (9% end at 40, 42% at 80 or 160) 2.50 against 2.74, a clean
-// 1M terrain with normals 11.7 against 12.4, without 22.4 against 22.9, a clean 200K terrain 4.4
-// against 4.2 (97% at 40): the same choices, estimates equal to 1e-15. (With the fits of the
-// time, 16 made the clean terrain 2.2 times as long.)
+// tool's default, 2 threads, one pair of runs each): 16 against 4, sample_c 1.14 s against
+// 1.30 s, warsaw_small 0.23 against 0.25, hexbin-crop (9% end at 40, 42% at 80 or 160) 2.50
+// against 2.74; on clean terrains within the run-to-run noise (about 10%): a 1M terrain with
+// normals 11.7 against 12.4, without 22.4 against 22.9, a 200K terrain 4.4 against 4.2 (97%
+// at 40). The same choices, estimates equal to 1e-15. (With the fits of the time, 16 made a
+// clean terrain 2.2 times as long.)
 constexpr std::size_t automatic_scale_pass_growth = 16;
 // The same share for the normals' test in a shared frame (Scale_ladder::choose_in_shared_frame()): chosen on the clean and noisy scans and the real tiles of benchmark/README.md,
 // "Automatic scale" (at 0.05 it sends 25% of a clean terrain's points on, at 0.15 10%, at 0.2
@@ -220,8 +221,6 @@ struct Sub_neighborhood
   }
 };
 
-// One thread's scratch of Scale_ladder::choose(); the chosen rung's neighbourhood is left in
-// `chosen`.
 // The k-th smallest squared distance of a neighbourhood's points to the query (its scaled units:
 // below 1 but for rounding) for the rungs' counts k: the values bucketed once into equal
 // intervals of [0, 1) by a counting sort, then each k-th selected within its bucket alone (about
@@ -265,6 +264,8 @@ struct Distance_ranks
   }
 };
 
+// One thread's scratch of Scale_ladder::choose(); the chosen rung's neighbourhood is left in
+// `chosen`.
 struct Ladder_scratch
 {
   std::vector<double> d2;
@@ -320,7 +321,7 @@ struct Scale_ladder
   // rungs; where it is less than automatic_scale_gate_share of the rung's residual variance
   // the rung is kept (smooth surfaces without noise: most points pay the neighbourhood of
   // the smallest count only), elsewhere the choice climbs (Scale_choice::climb) and the next
-  // pass, on rungs k and 2 k, applies the rule itself.
+  // pass, on rungs k, 2 k, ..., applies the rule itself.
   bool gate = false;
 
   // How the first pass's test fits the nearest half and the whole smallest rung. For the mean
@@ -345,7 +346,8 @@ struct Scale_ladder
   // gate's points ask for the next rung, the others kept the top rung of their pass.
   std::size_t climb_count() const { return gate ? 2 * largest : largest; }
   bool climbs(const Scale_choice& c) const { return c.found && !final_pass && c.count >= climb_count(); }
-  // The first pass's test sends the point on to the next pass (the neighbourhood of 2 smallest).
+  // The first pass's test sends the point on to the next pass (its count, 2 smallest, marks it; that
+  // pass's neighbourhood is automatic_scale_pass_growth times the smallest).
   void send_on(Scale_choice& c) const
   {
     c.found = true;

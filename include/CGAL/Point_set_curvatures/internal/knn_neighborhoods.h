@@ -133,7 +133,7 @@ struct Knn_scratch
 // side comes from a sample): the input order is the one order a tile shares with the whole
 // cloud, so that its sums, hence its estimates, are bitwise the same.
 // The input positions are distinct, so the order is the one std::sort gives the keys (input
-// position, grid position); above radix_sort_least_size keys it is found by a least-significant-
+// position, grid position); from radix_sort_least_size keys on it is found by a least-significant-
 // digit radix sort on the input position's bytes, skipping the bytes all keys share (the sort
 // of 640 neighbours was 10% of a run of the automatic scale; the same order).
 constexpr std::size_t radix_sort_least_size = 96;
