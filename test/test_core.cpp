@@ -2400,19 +2400,66 @@ double first_pass_climbs(double noise, PSC::internal::Scale_ladder::Statistic st
   return double(climbs) / double(queries);
 }
 
-TEST_CASE("Automatic scale: the normals' first test keeps most points of a clean random cloud, sends noisy ones on",
+TEST_CASE("Automatic scale: the first tests keep most points of a clean random cloud, send noisy ones on",
           "[automatic_scale]")
 {
   typedef PSC::internal::Scale_ladder::Statistic Statistic;
-  // measured: 0.088 in a shared frame (the normals'), 0.376 with the separate fits (the curvatures')
+  // measured: 0.104 in a shared frame (the normals'), 0.060 with the separate fits and the cubic
+  // (the curvatures'; 0.376 without the cubic)
   const double shared = first_pass_climbs(0, Statistic::NORMAL), separate = first_pass_climbs(0, Statistic::MEAN_CURVATURE);
   measured("first pass climbs, clean terrain: shared frame", shared);
-  measured("  separate fits", separate);
+  measured("  separate fits and the cubic", separate);
   CHECK(shared < 0.15);
-  CHECK(shared < 0.5 * separate);
-  // noise of 0.3 times the spacing: every point goes on, with either test
+  CHECK(separate < 0.12);
+  // noise of 0.3 times the spacing: every point goes on, with either test; the curvatures' at
+  // 0.03 too (a noise whose standard error of H at 40 exceeds the bias there)
   for(Statistic fit : {Statistic::NORMAL, Statistic::MEAN_CURVATURE})
     CHECK(first_pass_climbs(0.3, fit) > 0.99);
+  const double low_noise = first_pass_climbs(0.03, Statistic::MEAN_CURVATURE);
+  measured("first pass climbs, noise 0.03 spacings: separate fits and the cubic", low_noise);
+  CHECK(low_noise > 0.95);
+}
+
+TEST_CASE("Automatic scale: the first test's cubic: its residual variance, and none over scan lines",
+          "[automatic_scale]")
+{
+  namespace I = PSC::internal;
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> disc(-1, 1);
+  std::normal_distribution<double> gauss(0, 1);
+  const auto cubic = [](double u, double v) { return 0.1 + 0.2 * u - 0.3 * u * v + 0.4 * u * u * u - 0.2 * u * v * v; };
+  for(double sigma : {0.0, 0.01})
+  {
+    I::Cubic_height_fit fit;
+    for(int i = 0; i < 4000; ++i)
+    {
+      const double u = disc(random), v = disc(random);
+      fit.add(u, v, cubic(u, v) + sigma * gauss(random), 1 - 0.25 * (u * u + v * v));
+    }
+    double s2 = -1;
+    REQUIRE(fit.residual_variance(I::gate_cubic_least_pivot, s2));
+    measured("cubic residual variance over sigma^2 (sigma " + std::to_string(sigma) + ")", sigma > 0 ? s2 / (sigma * sigma) : s2);
+    if(sigma == 0)
+      CHECK(s2 < 1e-12);  // (an exact cubic: the rounding of sum w h² less the fitted part, 2e-16)
+    else
+      CHECK(s2 == Approx(sigma * sigma).epsilon(0.1));
+  }
+  // three noisy scan lines across the disc: the cubic's u v², v³ are nearly combinations of the
+  // lower monomials there (v takes three values), so the test tells nothing
+  I::Cubic_height_fit lines;
+  for(int i = 0; i < 60; ++i)
+  {
+    const double u = disc(random), v = 0.6 * (i % 3 - 1) + 0.01 * gauss(random);
+    lines.add(u, v, cubic(u, v) + 0.01 * gauss(random), 1.0);
+  }
+  double s2 = -1;
+  CHECK_FALSE(lines.residual_variance(I::gate_cubic_least_pivot, s2));
+  CHECK(lines.residual_variance(1e-10, s2));  // (the same samples pass a loose pivot)
+  // fewer than 11 effective samples: no variance
+  I::Cubic_height_fit few;
+  for(int i = 0; i < 10; ++i)
+    few.add(disc(random), disc(random), 0.0, 1.0);
+  CHECK_FALSE(few.residual_variance(1e-10, s2));
 }
 
 TEST_CASE("Automatic scale: refused with a radius, below neighbor_count, with refinement, and for plane normals",

@@ -123,7 +123,7 @@ void print_usage(std::ostream& os)
      << "  --neighbors auto   aso: each point's count chosen among " << automatic_smallest << ", "
      << 2 * automatic_smallest << ", ..., " << automatic_largest << " by the noise\n"
      << "                     its fits measure: 40 on clean surfaces, more on noisy scans (the\n"
-     << "                     neighbors field gives the count); --neighbors 40 is faster: 2x on\n"
+     << "                     neighbors field gives the count); --neighbors 40 is faster: 1.7x on\n"
      << "                     clean surfaces, 7x on a real airborne tile, where most counts grow\n"
      << "  --radius R         neighbourhoods of radius R, in the unit of the coordinates; or Nx\n"
      << "                     (e.g. 3.5x): N times the average spacing (CGAL::compute_average_\n"

@@ -117,8 +117,10 @@ def test_python_defaults_are_the_tools(tmp_path):
     # Positions only, no option on either side: estimate_curvatures(points) is the tool's
     # default run on a .xyz file, value for value (normals estimated with the automatic scale,
     # oriented "mst"; the robust ASO by the automatic scale with the position blend); and a
-    # method without the automatic scale takes 40 neighbours in both.
+    # method without the automatic scale takes 40 neighbours in both. With noise of about a third
+    # of the spacing, so that the automatic scale climbs (a clean surface stays at 40).
     points = np.loadtxt(os.path.join(DATA, "goursat_010000.xyz"))[:, :3]
+    points = points + np.random.default_rng(5).normal(scale=0.1, size=points.shape)
     path = tmp_path / "positions.xyz"
     np.savetxt(path, points, fmt="%.17g")
     for method, options in (("aso", []), ("pss", ["--method", "pss"])):
@@ -139,4 +141,7 @@ def test_python_defaults_are_the_tools(tmp_path):
         if method == "aso":
             assert len(np.unique(r["neighbors"][valid])) > 1  # the automatic scale: counts vary
         else:
-            assert (r["neighbors"][valid] == psc.DEFAULT_NEIGHBORS).all()
+            # (a neighbour tied with the 40th, within 1e-6 of its distance, counts too: one point here)
+            counts = r["neighbors"][valid]
+            assert (counts >= psc.DEFAULT_NEIGHBORS).all()
+            assert (counts == psc.DEFAULT_NEIGHBORS).mean() > 0.99

@@ -19,7 +19,9 @@
 // is less than half of the first rung's residual variance (smooth surfaces without noise),
 // the first rung is kept: its estimate is the one of the fixed count k. A first test, on the
 // first rung alone (its nearest half against all of it), keeps it where the noise is clearly
-// absent, so that most points of a clean cloud never need the neighbourhood of 2 k.
+// absent, and a second one where a cubic leaves little of the quadric's residuals (they are the
+// surface's third-order terms), so that most points of a clean cloud never need the
+// neighbourhood of 2 k.
 //
 // Rungs along one line. A rung whose neighbourhood, weighted by the fits' kernel, spreads along
 // one line (weighted_line_spread_ratio of quadric_fit.h: a scan line through the query, the next
@@ -101,9 +103,26 @@ constexpr double automatic_scale_gate_share = 0.05;
 // at 40). The same choices, estimates equal to 1e-15. (With the fits of the time, 16 made a
 // clean terrain 2.2 times as long.)
 constexpr std::size_t automatic_scale_pass_growth = 16;
-// The same share for the normals' test in a shared frame (Scale_ladder::choose_in_shared_frame()): chosen on the clean and noisy scans and the real tiles of benchmark/README.md,
-// "Automatic scale" (at 0.05 it sends 25% of a clean terrain's points on, at 0.15 10%, at 0.2
-// 7%, with the same accuracy under noise).
+// The first pass's second test (Scale_ladder::gate): the first rung is kept where a cubic fitted
+// to it, with the quadric's weights in the quadric's frame, leaves less than this share of the
+// quadric's residual variance (the third-order terms, not noise, made them), provided the cubic's
+// monomials are well told apart (relative pivots of at least gate_cubic_least_pivot: over two or
+// three scan lines a cubic follows the noise across them, and its residuals would read as no
+// noise). A point climbs only where both tests see noise. On a clean random terrain
+// (benchmark/large_cloud, 200K points) the first test alone sends 40% of the points on for the
+// curvatures and 12% for the normals, both tests 6.5% and 2.6%; on the clean scans of
+// scan_experiments, for the curvatures, the torus 73% -> 4.5%, merged scans 59% -> 1.8%, lines
+// 2:1 95% -> 2.8%, terrestrial 60% -> 1.2%, zigzag3 63% -> 38% (where the lines route points on,
+// unchanged: airborne 5:1 23%, lines 10:1 99%, a mobile profiler 88% -> 75%); the same estimates
+// (to three digits) under range noise of 0.1 and 0.3 spacings, and a noise of 0.01 spacings on
+// the terrain still sends 98% on (benchmark/README.md, "Automatic scale").
+constexpr double automatic_scale_gate_cubic_share = 0.2;
+constexpr double gate_cubic_least_pivot = 0.03;
+
+// The same share for the normals' test in a shared frame (Scale_ladder::choose_in_shared_frame()):
+// chosen on the clean and noisy scans and the real tiles of benchmark/README.md, "Automatic scale"
+// (at 0.05 it sends 25% of a clean terrain's points on, at 0.15 10%, at 0.2 7%, with the same
+// accuracy under noise).
 constexpr double automatic_scale_shared_frame_gate_share = 0.15;
 // The least size of the half of the smallest rung that the first pass's test fits (a quadric
 // has 6 coefficients); below it every point goes on to the next pass.
@@ -274,8 +293,8 @@ struct Ladder_scratch
   std::vector<double> gate_frame;  // Scale_ladder::choose_in_shared_frame(): u, v, h, inner
 };
 
-// The chosen rung (its neighbourhood is left in the scratch's `chosen`): its rank on the ladder, its
-// neighbour count, the standard error of H there (input units).
+// The chosen rung (its neighbourhood is left in the scratch's `chosen`): its rank on the ladder,
+// its neighbour count, the standard error of H there (input units).
 struct Scale_choice
 {
   std::size_t rung = 0;
@@ -316,23 +335,24 @@ struct Scale_ladder
   enum class Statistic { MEAN_CURVATURE, NORMAL };
   Statistic statistic = Statistic::MEAN_CURVATURE;
 
-  // The first pass's test, on the smallest rung alone (largest == smallest): the noise from
-  // the growth of the residuals between the nearest half of it and all of it, as between two
-  // rungs; where it is less than automatic_scale_gate_share of the rung's residual variance
-  // the rung is kept (smooth surfaces without noise: most points pay the neighbourhood of
-  // the smallest count only), elsewhere the choice climbs (Scale_choice::climb) and the next
-  // pass, on rungs k, 2 k, ..., applies the rule itself.
+  // The first pass's test, on the smallest rung alone (largest == smallest): the noise from the
+  // growth of the residuals between the nearest half of it and all of it, as between two rungs;
+  // where it is less than automatic_scale_gate_share of the rung's residual variance the rung is
+  // kept (smooth surfaces without noise: most points pay the neighbourhood of the smallest count
+  // only); it is also kept where a cubic leaves less than automatic_scale_gate_cubic_share of the
+  // quadric's residual variance (cubic_residual()); elsewhere the choice climbs
+  // (Scale_choice::climb) and the next pass, on rungs k, 2 k, ..., applies the rule itself.
   bool gate = false;
 
   // How the first pass's test fits the nearest half and the whole smallest rung. For the mean
-  // curvature, each as a rung (the weighted quadric, each in the frame of its own covariance).
-  // For the normals, both unweighted, in the frame of the whole rung, in one pass over its
-  // points (choose_in_shared_frame()), with its own share (automatic_scale_shared_frame_gate_share).
-  // On random (Poisson-like) sampling of a clean terrain the separate fits send 39% of the
-  // points on, the shared frame 25% at the same share and 10% at its own; on the clean scans of
-  // scan_experiments 0.3-6.4% against 19-72% (a mobile profiler: 47% against 67%), with the
-  // same accuracy of the normals under noise. The mean curvature keeps the separate fits: with
-  // the shared frame its first pass keeps points whose H is still noisy at the first rung
+  // curvature, each as a rung (the weighted quadric, each in the frame of its own covariance). For
+  // the normals, both unweighted, in the frame of the whole rung, in one pass over its points
+  // (choose_in_shared_frame()), with its own share (automatic_scale_shared_frame_gate_share). On
+  // random (Poisson-like) sampling of a clean terrain, without the cubic's test, the separate fits
+  // send 39% of the points on, the shared frame 25% at the same share and 10% at its own; on the
+  // clean scans of scan_experiments 0.3-6.4% against 19-72% (a mobile profiler: 47% against 67%),
+  // with the same accuracy of the normals under noise. The mean curvature keeps the separate fits:
+  // with the shared frame its first pass keeps points whose H is still noisy at the first rung
   // (range noise 0.3 spacings: torus 0.0295 against 0.0283; benchmark/README.md, "Automatic
   // scale").
 
@@ -346,8 +366,8 @@ struct Scale_ladder
   // gate's points ask for the next rung, the others kept the top rung of their pass.
   std::size_t climb_count() const { return gate ? 2 * largest : largest; }
   bool climbs(const Scale_choice& c) const { return c.found && !final_pass && c.count >= climb_count(); }
-  // The first pass's test sends the point on to the next pass (its count, 2 smallest, marks it; that
-  // pass's neighbourhood is automatic_scale_pass_growth times the smallest).
+  // The first pass's test sends the point on to the next pass (its count, 2 smallest, marks it;
+  // that pass's neighbourhood is automatic_scale_pass_growth times the smallest).
   void send_on(Scale_choice& c) const
   {
     c.found = true;
@@ -420,6 +440,22 @@ struct Scale_ladder
     return rung;
   }
 
+  // The residual variance (input units) of the weighted cubic over the points of a quadric's fit,
+  // in its frame and with its weights (its frame cache, Quadric_fit::frame_cache, of a
+  // neighbourhood of that radius); NaN where the cubic's monomials are not well told apart
+  // (gate_cubic_least_pivot) or too few points weigh.
+  static double cubic_residual(const std::vector<double>& frame, double radius)
+  {
+    Cubic_height_fit cubic;
+    for(std::size_t i = 0; i + 3 < frame.size(); i += 4)
+      if(frame[i] > 0)
+        cubic.add(frame[i + 1], frame[i + 2], frame[i + 3], frame[i]);
+    double sigma2;
+    if(!cubic.residual_variance(gate_cubic_least_pivot, sigma2))
+      return std::numeric_limits<double>::quiet_NaN();
+    return sigma2 * radius * radius;
+  }
+
   // The normals' first pass's test (gate, largest == smallest): on the k nearest of `whole`
   // (the driver's rule for ties), unweighted quadrics of all of them and of the nearest half,
   // over the frame of their covariance; the noise from the growth of the residuals as in
@@ -464,8 +500,8 @@ struct Scale_ladder
     Neighborhood_pca pca;
     if(n <= quadratic_height_coefficients || !pca.compute(nb) || !spreads_in_two_directions(pca.values))
       return as_first_rung();
-    // (the normals' test: a line for the weights, not for the points, as where Quadric_fit::compute()
-    // takes the unweighted frame)
+    // (the normals' test: a line for the weights, not for the points, as where
+    // Quadric_fit::compute() takes the unweighted frame)
     Weighted_covariance weighted;
     if(!final_pass && !spreads_along_one_line(pca.values) && weighted.compute(nb) &&
        spreads_along_one_line(weighted.values))
@@ -525,10 +561,21 @@ struct Scale_ladder
                    : std::numeric_limits<double>::quiet_NaN();
     c.found = true;
     c.count = n;
-    if(!(noise2 < automatic_scale_shared_frame_gate_share * residual))  // (NaN: the point climbs)
-      send_on(c);
-    else
+    bool kept = noise2 < automatic_scale_shared_frame_gate_share * residual;  // (NaN: not kept)
+    if(!kept)
+    {
+      // the second test, as the mean curvature's (cubic_residual()), unweighted as these fits
+      Cubic_height_fit cubic;
+      for(std::size_t i = 0; i < n; ++i)
+        cubic.add(frame[4 * i], frame[4 * i + 1], frame[4 * i + 2], 1.0);
+      double sigma2;
+      kept = cubic.residual_variance(gate_cubic_least_pivot, sigma2) &&
+             sigma2 * r * r < automatic_scale_gate_cubic_share * residual;
+    }
+    if(kept)
       chosen.take_attributes(whole);
+    else
+      send_on(c);
     return c;
   }
 
@@ -556,20 +603,6 @@ struct Scale_ladder
     // the smallest rung's values, variance factors and residual variance (input units), kept
     // until the second rung tells the noise
     double v0[2] = {0, 0}, factor0[2] = {0, 0}, residual0 = 0, radius0 = 0, noise2 = 0;
-    // the gate's fit of the nearest half of the smallest rung: its residual variance (input
-    // units; negative if it has none) and radius
-    double residual_half = -1, radius_half = 0;
-    const std::size_t half = smallest / 2;
-    if(gate && half >= gate_least_half && half <= whole.size)
-    {
-      const Rung_fit rung = fit_rung(whole, ranks, half, reference, statistic, trial);
-      // (along one line, or where it can hardly tell the curvature, it tells nothing of the noise)
-      if(rung.outcome == Rung_fit::FITTED)
-      {
-        radius_half = rung.radius;
-        residual_half = rung.residual;
-      }
-    }
     // the last rung passed over for lying along one line (LINE; its neighbourhood kept in `trial`):
     // a larger rung may spread in two directions; taken where the rung above it cannot be fitted
     // (a lone noisy line, whose longer neighbourhoods are thinner)
@@ -693,10 +726,21 @@ struct Scale_ladder
     }
     if(gate && c.found)
     {
-      // (NaN without the half's fit, or where the growth cannot tell: the point climbs)
-      const double gate_noise2 = residual_half >= 0 ? separated_noise(residual_half, radius_half, residual0, radius0)
-                                                    : std::numeric_limits<double>::quiet_NaN();
-      if(gate_noise2 < automatic_scale_gate_share * residual0)
+      // The cubic first, on the first rung's fit; where it does not keep the rung, the nearest
+      // half of it (NaN without its fit, or where the growth cannot tell: the point climbs).
+      double gate_noise2 = cubic_residual(chosen.frame, radius0);
+      bool kept = gate_noise2 < automatic_scale_gate_cubic_share * residual0;
+      const std::size_t half = smallest / 2;
+      if(!kept && half >= gate_least_half && half <= whole.size)
+      {
+        const Rung_fit rung = fit_rung(whole, ranks, half, reference, statistic, trial);
+        // (along one line, or where it can hardly tell the curvature, it tells nothing of the
+        // noise)
+        gate_noise2 = rung.outcome == Rung_fit::FITTED ? separated_noise(rung.residual, rung.radius, residual0, radius0)
+                                                       : std::numeric_limits<double>::quiet_NaN();
+        kept = gate_noise2 < automatic_scale_gate_share * residual0;
+      }
+      if(kept)
         c.mean_error = std::sqrt(gate_noise2 * factor0[0]);
       else
         send_on(c);
@@ -768,20 +812,19 @@ struct Automatic_scale_estimator : Estimator_base
 
 // The passes of the automatic scale: every point on the ladder's first rung with the test of
 // Scale_ladder::gate (the neighbourhood of k); then the points it sends on, on the rungs k, 2 k,
-// ..., 16 k (the neighbourhood of 16 k, automatic_scale_pass_growth k, or of `largest` if
-// smaller); then, with the neighbourhood of 256 k, ... (each automatic_scale_pass_growth times
-// the previous one) up to `largest` in turn, only the points whose previous pass kept its top
-// rung (the rule looks at the rungs from the bottom up and stops at the first that disagrees, so
-// a point that stopped below the top rung of its pass has its choice on the whole ladder).
-// Smooth surfaces without noise stop at the first pass. A point's result does not depend on the pass that computed it being
-// shared with other points (the tiles, the concurrency).
-// `run(ladder, visit, progress_start, progress_size, cancelled)` evaluates the points of the
-// mask `visit` (null: all) with neighbourhoods of ladder.largest, reporting progress in that
-// share of [0, 1] (the first pass half of it, each next one half of what is left) and setting
-// `cancelled` if the callback stopped it; `chosen_count(result)` is a valid result's chosen
-// neighbour count (the one asked for where the gate sends it on), else 0; `callback` is told
-// 1 when the passes end before the last. Cancelled, the points without their final estimate
-// are a default Result (NOT_COMPUTED).
+// ..., 16 k (the neighbourhood of 16 k, automatic_scale_pass_growth k, or of `largest` if smaller);
+// then, with the neighbourhood of 256 k, ... (each automatic_scale_pass_growth times the previous
+// one) up to `largest` in turn, only the points whose previous pass kept its top rung (the rule
+// looks at the rungs from the bottom up and stops at the first that disagrees, so a point that
+// stopped below the top rung of its pass has its choice on the whole ladder). Smooth surfaces
+// without noise stop at the first pass. A point's result does not depend on the pass that computed
+// it being shared with other points (the tiles, the concurrency). `run(ladder, visit,
+// progress_start, progress_size, cancelled)` evaluates the points of the mask `visit` (null: all)
+// with neighbourhoods of ladder.largest, reporting progress in that share of [0, 1] (the first pass
+// half of it, each next one half of what is left) and setting `cancelled` if the callback stopped
+// it; `chosen_count(result)` is a valid result's chosen neighbour count (the one asked for where
+// the gate sends it on), else 0; `callback` is told 1 when the passes end before the last.
+// Cancelled, the points without their final estimate are a default Result (NOT_COMPUTED).
 template <class Result, class Run, class Chosen_count>
 std::vector<Result> automatic_scale_passes(const Scale_ladder& ladder, const Run& run,
                                            const Chosen_count& chosen_count,

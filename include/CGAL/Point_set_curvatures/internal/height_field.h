@@ -24,6 +24,7 @@
 #include <CGAL/Point_set_curvatures/internal/local_estimate.h>
 #include <CGAL/Point_set_curvatures/internal/second_order_jet.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 
@@ -34,6 +35,46 @@ namespace internal {
 // Number of coefficients of the quadratic height field, hence the minimal number of
 // neighbours (query included) of the fits built on it.
 constexpr std::size_t quadratic_height_coefficients = 6;
+
+// The Cholesky factor L (lower triangle) of the normal equations A (upper triangle) of a
+// least-squares fit of N monomials. False when a monomial is numerically a combination of the
+// previous ones over the samples (collinear, or too few weighted samples): its relative pivot,
+// 1 minus the squared multiple correlation of that column with the previous ones, falls below
+// `least_pivot`.
+template <int N>
+bool cholesky_factor(const double (&A)[N][N], double (&L)[N][N], double least_pivot)
+{
+  for(int j = 0; j < N; ++j)
+  {
+    double d = A[j][j];
+    for(int k = 0; k < j; ++k)
+      d -= L[j][k] * L[j][k];
+    if(!(A[j][j] > 0) || !(d > least_pivot * A[j][j]) || !std::isfinite(d))
+      return false;
+    L[j][j] = std::sqrt(d);
+    for(int i = j + 1; i < N; ++i)
+    {
+      double s = A[j][i];
+      for(int k = 0; k < j; ++k)
+        s -= L[i][k] * L[j][k];
+      L[i][j] = s / L[j][j];
+    }
+  }
+  return true;
+}
+
+// y = L⁻¹ b for the factor of cholesky_factor().
+template <int N>
+void forward_substitution(const double (&L)[N][N], const double (&b)[N], double (&y)[N])
+{
+  for(int i = 0; i < N; ++i)
+  {
+    double s = b[i];
+    for(int k = 0; k < i; ++k)
+      s -= L[i][k] * y[k];
+    y[i] = s / L[i][i];
+  }
+}
 
 // Normal equations of the weighted fit, accumulated one sample at a time (constant memory).
 struct Quadratic_height_fit
@@ -53,37 +94,15 @@ struct Quadratic_height_fit
     }
   }
 
-  // Cholesky solve. Returns false when a monomial is numerically a combination of the
-  // previous ones over the samples (collinear or too few weighted samples): the relative
-  // pivot, 1 minus the squared multiple correlation of that column with the previous
-  // ones, falls below 1e-10 (its rounding error is about 1e-16 times the condition number).
+  // Cholesky solve (cholesky_factor() with a least relative pivot of 1e-10: its rounding error
+  // is about 1e-16 times the condition number).
   bool solve(double a[6]) const
   {
     double L[6][6] = {};
-    for(int j = 0; j < 6; ++j)
-    {
-      double d = ata[j][j];
-      for(int k = 0; k < j; ++k)
-        d -= L[j][k] * L[j][k];
-      if(!(ata[j][j] > 0) || !(d > 1e-10 * ata[j][j]) || !std::isfinite(d))
-        return false;
-      L[j][j] = std::sqrt(d);
-      for(int i = j + 1; i < 6; ++i)
-      {
-        double s = ata[j][i];
-        for(int k = 0; k < j; ++k)
-          s -= L[i][k] * L[j][k];
-        L[i][j] = s / L[j][j];
-      }
-    }
+    if(!cholesky_factor(ata, L, 1e-10))
+      return false;
     double y[6];
-    for(int i = 0; i < 6; ++i)
-    {
-      double s = atb[i];
-      for(int k = 0; k < i; ++k)
-        s -= L[i][k] * y[k];
-      y[i] = s / L[i][i];
-    }
+    forward_substitution(L, atb, y);
     for(int i = 5; i >= 0; --i)
     {
       double s = y[i];
@@ -159,6 +178,52 @@ struct Quadratic_moments
     if(atb)
       for(int i = 0; i < 6; ++i)
         atb[i] = sh[i];
+  }
+};
+
+// The weighted least-squares cubic height field (the quadratic's six monomials, then u³, u²v,
+// uv², v³), accumulated one sample at a time, for its residual variance: what is left of a
+// quadric's residuals once the third-order terms are fitted too (the automatic scale's first
+// test, automatic_scale.h).
+struct Cubic_height_fit
+{
+  double ata[10][10] = {};  // sum w m mᵀ (upper triangle)
+  double atb[10] = {};      // sum w m h
+  double shh = 0, sw = 0, sw2 = 0;  // sum w h², sum w, sum w²
+
+  void add(double u, double v, double h, double w)
+  {
+    const double uu = u * u, vv = v * v;
+    const double m[10] = {1.0, u, v, uu, u * v, vv, uu * u, uu * v, u * vv, vv * v};
+    for(int i = 0; i < 10; ++i)
+    {
+      const double wm = w * m[i];
+      atb[i] += wm * h;
+      for(int j = i; j < 10; ++j)
+        ata[i][j] += wm * m[j];
+    }
+    shh += w * h * h;
+    sw += w;
+    sw2 += w * w;
+  }
+
+  // The weighted mean squared residual times n_eff / (n_eff - 10), n_eff = (sum w)² / sum w²
+  // (as Quadric_fit::variance_factors() gives the quadric's with 6); the residuals' sum of squares
+  // is sum w h² less |L⁻¹ atb|². False where n_eff <= 10.5, or where a monomial's relative pivot
+  // (cholesky_factor()) is below `least_pivot`.
+  bool residual_variance(double least_pivot, double& sigma2) const
+  {
+    const double n_eff = sw2 > 0 ? sw * sw / sw2 : 0.0;
+    double L[10][10] = {};
+    if(!(n_eff > 10.5) || !cholesky_factor(ata, L, least_pivot))
+      return false;
+    double y[10];
+    forward_substitution(L, atb, y);
+    double fitted = 0;
+    for(double x : y)
+      fitted += x * x;
+    sigma2 = std::max(0.0, shh - fitted) / sw * n_eff / (n_eff - 10.0);
+    return std::isfinite(sigma2);
   }
 };
 
