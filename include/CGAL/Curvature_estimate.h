@@ -105,7 +105,9 @@ struct Curvature_estimate
   FT normal_coherence = nan();
   /// with the named parameter `Point_set_curvatures::parameters::automatic_scale()`: the
   /// standard error of the mean curvature of a quadric fitted to the neighbours' positions at
-  /// the chosen scale, from the noise its residuals show (0 where they show none). It measures
+  /// the chosen scale, from the noise its residuals show (0 where they show none; where the
+  /// smallest count is kept because a cubic fits its positions far better than the quadric, the
+  /// cubic's residual variance is taken for the noise, an upper bound). It measures
   /// the noise's share of the error, not the bias (surface variation within the
   /// neighbourhood, biased normals), and the estimate itself, which also uses the normals, is
   /// often more accurate than it says (see benchmark/README.md, "Automatic scale"); NaN

@@ -139,9 +139,9 @@ def test_python_defaults_are_the_tools(tmp_path):
         np.testing.assert_array_equal(tool["mean"], r["mean"])
         np.testing.assert_array_equal(tool["k_min"], r["k_min"])
         if method == "aso":
-            assert len(np.unique(r["neighbors"][valid])) > 1  # the automatic scale: counts vary
+            assert (r["neighbors"][valid] >= 80).sum() > 0.5 * valid.sum()  # the automatic scale climbed
         else:
             # (a neighbour tied with the 40th, within 1e-6 of its distance, counts too: one point here)
             counts = r["neighbors"][valid]
             assert (counts >= psc.DEFAULT_NEIGHBORS).all()
-            assert (counts == psc.DEFAULT_NEIGHBORS).mean() > 0.99
+            assert (counts != psc.DEFAULT_NEIGHBORS).sum() <= 2

@@ -30,7 +30,8 @@
 // a pass is kept, so that a pass always ends with a choice, and so is the last line rung where the
 // rung above it cannot be fitted), and the first pass sends such a
 // point on, as it does where the nearest half of the first rung is such a line (its residuals
-// tell nothing of the noise across the line). (The normals' first pass sends a point on where the
+// tell nothing of the noise across the line) and the cubic of the whole first rung does not keep
+// it (gate_cubic_least_pivot). (The normals' first pass sends a point on where the
 // weights leave one line and the points do not.) For the mean curvature, a rung whose fit can
 // hardly tell it (two scan lines: ill_conditioned_curvature_factor) counts as such a line rung,
 // the nearest half of the first rung too; above a rung already chosen, one ends the climb.
@@ -83,10 +84,11 @@ constexpr double automatic_scale_kappa = 3.0;
 // The least share of the smallest scale's residual variance that must be noise for a larger
 // scale to be considered (see the header comment).
 constexpr double automatic_scale_noise_share = 0.5;
-// The first pass's test (Scale_ladder::gate) keeps the smallest rung only where the noise is
-// less than this share of its residual variance: the fit of half the rung (about 10
-// effective points for 20) estimates the noise poorly, so only its clear absence is trusted
-// (chosen on the simulated scans: benchmark/README.md, "Automatic scale").
+// The first pass's test (Scale_ladder::gate, its nearest half against the whole first rung) keeps
+// the smallest rung where the noise it sees is less than this share of the rung's residual
+// variance: the fit of half the rung (about 10 effective points for 20) estimates the noise poorly,
+// so only its clear absence is trusted (chosen on the simulated scans: benchmark/README.md,
+// "Automatic scale"); the second test (automatic_scale_gate_cubic_share) keeps it too.
 constexpr double automatic_scale_gate_share = 0.05;
 // How much larger the neighbourhood of each pass after the first is than the previous one's
 // (a power of 2: the rungs double). A point that stops on rung j of the whole ladder has to see
@@ -108,24 +110,30 @@ constexpr std::size_t automatic_scale_pass_growth = 16;
 // quadric's residual variance (the third-order terms, not noise, made them), provided the cubic's
 // monomials are well told apart (relative pivots of at least gate_cubic_least_pivot: over two or
 // three scan lines a cubic follows the noise across them, and its residuals would read as no
-// noise). A point climbs only where both tests see noise. On a clean random terrain
-// (benchmark/large_cloud, 200K points) the first test alone sends 40% of the points on for the
-// curvatures and 12% for the normals, both tests 6.5% and 2.6%; on the clean scans of
+// noise). A point climbs only where both tests see noise; the cubic is fitted only where the first
+// test can be (half the smallest rung at least gate_least_half). On clean random terrains of
+// benchmark/large_cloud (1M points; a 200K crop) the first test alone sends 40% of the points on
+// for the curvatures and 12% for the normals, both tests 6.6% and 2.6%; on the clean scans of
 // scan_experiments, for the curvatures, the torus 73% -> 4.5%, merged scans 59% -> 1.8%, lines
-// 2:1 95% -> 2.8%, terrestrial 60% -> 1.2%, zigzag3 63% -> 38% (where the lines route points on,
-// unchanged: airborne 5:1 23%, lines 10:1 99%, a mobile profiler 88% -> 75%); the same estimates
-// (to three digits) under range noise of 0.1 and 0.3 spacings, and a noise of 0.01 spacings on
-// the terrain still sends 98% on (benchmark/README.md, "Automatic scale").
+// 2:1 95% -> 2.8%, terrestrial 60% -> 1.2%, zigzag3 63% -> 38%, a mobile profiler 88% -> 75%
+// (where line rungs route points on, unchanged: airborne 5:1 23%, lines 10:1 99%); the same
+// estimates (to three digits) under range noise of 0.1 and 0.3 spacings, and a noise of 0.01
+// spacings on the terrain still sends 98% on (benchmark/README.md, "Automatic scale").
 constexpr double automatic_scale_gate_cubic_share = 0.2;
+// The least relative pivot of the second test's cubic (Cubic_height_fit::residual_variance()):
+// about 0.1-0.2 for the weakest cubic monomial where the points spread over a disc, near 0 where
+// they lie on two or three lines. At 0.01 noisy lines 10 times farther apart than their spacing
+// kept a few points too many (0.0116 against 0.0115); at 1e-10, 33% of them (0.0140), and the
+// test "a rung of two noisy scan lines is passed over" fails.
 constexpr double gate_cubic_least_pivot = 0.03;
 
 // The same share for the normals' test in a shared frame (Scale_ladder::choose_in_shared_frame()):
 // chosen on the clean and noisy scans and the real tiles of benchmark/README.md, "Automatic scale"
-// (at 0.05 it sends 25% of a clean terrain's points on, at 0.15 10%, at 0.2 7%, with the same
-// accuracy under noise).
+// (without the cubic's test: at 0.05 it sends 25% of a clean terrain's points on, at 0.15 10%, at
+// 0.2 7%, with the same accuracy under noise).
 constexpr double automatic_scale_shared_frame_gate_share = 0.15;
 // The least size of the half of the smallest rung that the first pass's test fits (a quadric
-// has 6 coefficients); below it every point goes on to the next pass.
+// has 6 coefficients); below it neither test runs and every point goes on to the next pass.
 constexpr std::size_t gate_least_half = 12;
 
 // A rung whose mean curvature its fit can hardly tell is passed over as a rung along one line
@@ -459,7 +467,8 @@ struct Scale_ladder
   // The normals' first pass's test (gate, largest == smallest): on the k nearest of `whole`
   // (the driver's rule for ties), unweighted quadrics of all of them and of the nearest half,
   // over the frame of their covariance; the noise from the growth of the residuals as in
-  // separated_noise(). Leaves the rung's neighbourhood in `scratch.chosen` where it is kept.
+  // separated_noise(), and where that sees noise, the second test's cubic, unweighted as these
+  // fits. Leaves the rung's neighbourhood in `scratch.chosen` where it is kept.
   // As with the separate fits, a rung whose quadric cannot be fitted is estimated as it is
   // (as_first_rung); here the test of its spread is the unweighted covariance's. The choice
   // has no mean_error (the normals do not read it).
@@ -562,7 +571,7 @@ struct Scale_ladder
     c.found = true;
     c.count = n;
     bool kept = noise2 < automatic_scale_shared_frame_gate_share * residual;  // (NaN: not kept)
-    if(!kept)
+    if(!kept && half_ratio > 0)
     {
       // the second test, as the mean curvature's (cubic_residual()), unweighted as these fits
       Cubic_height_fit cubic;
@@ -724,27 +733,32 @@ struct Scale_ladder
       if(fallback)
         break;  // (the rung above it could not be fitted)
     }
-    if(gate && c.found)
+    const std::size_t half = smallest / 2;
+    if(gate && c.found && half >= gate_least_half && half <= whole.size)
     {
-      // The cubic first, on the first rung's fit; where it does not keep the rung, the nearest
-      // half of it (NaN without its fit, or where the growth cannot tell: the point climbs).
-      double gate_noise2 = cubic_residual(chosen.frame, radius0);
-      bool kept = gate_noise2 < automatic_scale_gate_cubic_share * residual0;
-      const std::size_t half = smallest / 2;
-      if(!kept && half >= gate_least_half && half <= whole.size)
+      // The cubic first, on the first rung's fit (`chosen`: the gate's pass has one rung, kept
+      // only where fitted); where it does not keep the rung, the nearest half of it (NaN without
+      // its fit, or where the growth cannot tell: the point climbs). `kept_noise2` is what the
+      // test that keeps the rung takes for the noise's variance.
+      CGAL_assertion(largest == smallest);
+      double kept_noise2 = cubic_residual(chosen.frame, radius0);
+      bool kept = kept_noise2 < automatic_scale_gate_cubic_share * residual0;
+      if(!kept)
       {
         const Rung_fit rung = fit_rung(whole, ranks, half, reference, statistic, trial);
-        // (along one line, or where it can hardly tell the curvature, it tells nothing of the
-        // noise)
-        gate_noise2 = rung.outcome == Rung_fit::FITTED ? separated_noise(rung.residual, rung.radius, residual0, radius0)
-                                                       : std::numeric_limits<double>::quiet_NaN();
-        kept = gate_noise2 < automatic_scale_gate_share * residual0;
+        // (along one line, or where it can hardly tell the curvature, it tells nothing of the noise)
+        kept_noise2 = rung.outcome == Rung_fit::FITTED
+                        ? separated_noise(rung.residual, rung.radius, residual0, radius0)
+                        : std::numeric_limits<double>::quiet_NaN();
+        kept = kept_noise2 < automatic_scale_gate_share * residual0;
       }
       if(kept)
-        c.mean_error = std::sqrt(gate_noise2 * factor0[0]);
+        c.mean_error = std::sqrt(kept_noise2 * factor0[0]);
       else
         send_on(c);
     }
+    else if(gate && c.found)
+      send_on(c);  // (too few points for either test)
     if(gate && !c.found && !c.as_first_rung && passed.outcome == Rung_fit::LINE && !final_pass)
       send_on(c);
     if((c.found || c.as_first_rung) && !climbs(c))

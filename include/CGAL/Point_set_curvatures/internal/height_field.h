@@ -183,8 +183,8 @@ struct Quadratic_moments
 
 // The weighted least-squares cubic height field (the quadratic's six monomials, then u³, u²v,
 // uv², v³), accumulated one sample at a time, for its residual variance: what is left of a
-// quadric's residuals once the third-order terms are fitted too (the automatic scale's first
-// test, automatic_scale.h).
+// quadric's residuals once the third-order terms are fitted too (the second test of the automatic
+// scale's first pass, automatic_scale.h).
 struct Cubic_height_fit
 {
   double ata[10][10] = {};  // sum w m mᵀ (upper triangle)
@@ -209,8 +209,9 @@ struct Cubic_height_fit
 
   // The weighted mean squared residual times n_eff / (n_eff - 10), n_eff = (sum w)² / sum w²
   // (as Quadric_fit::variance_factors() gives the quadric's with 6); the residuals' sum of squares
-  // is sum w h² less |L⁻¹ atb|². False where n_eff <= 10.5, or where a monomial's relative pivot
-  // (cholesky_factor()) is below `least_pivot`.
+  // is sum w h² less |L⁻¹ atb|² (rounding: about 1e-16 of sum w h², far below any noise where the
+  // heights are measured from a point of the neighbourhood). False where n_eff <= 10.5, or where a
+  // monomial's relative pivot (cholesky_factor()) is below `least_pivot`.
   bool residual_variance(double least_pivot, double& sigma2) const
   {
     const double n_eff = sw2 > 0 ? sw * sw / sw2 : 0.0;
