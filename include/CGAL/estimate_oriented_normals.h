@@ -210,23 +210,26 @@ inline Normal_record Normal_at_point::operator()(const Neighborhood& nb) const
     return r;
   }
   r.status = Curvature_estimate_status::VALID;
-  // the nearest neighbours other than the point itself, ties by input index
-  thread_local std::vector<std::pair<double, std::uint32_t> > candidates;
-  candidates.clear();
+  // the nearest neighbours other than the point itself, ties by input index: the smallest
+  // (d², index) pairs, kept sorted while the neighbourhood is read (most candidates are farther
+  // than the last kept and cost one comparison)
+  std::pair<double, std::uint32_t> nearest[normal_graph_degree];
+  std::size_t degree = 0;
   for(std::size_t i = 0; i < nb.size; ++i)
   {
     const double d2 = nb.qx[i] * nb.qx[i] + nb.qy[i] * nb.qy[i] + nb.qz[i] * nb.qz[i];
     if(d2 == 0)
       continue;  // the point itself, or a copy of it: no orientation to learn from it
-    candidates.emplace_back(d2, nb.input_index[nb.index[i]]);
+    const std::pair<double, std::uint32_t> candidate(d2, nb.input_index[nb.index[i]]);
+    if(degree == normal_graph_degree && !(candidate < nearest[degree - 1]))
+      continue;
+    std::size_t j = degree < normal_graph_degree ? degree++ : degree - 1;
+    for(; j > 0 && candidate < nearest[j - 1]; --j)
+      nearest[j] = nearest[j - 1];
+    nearest[j] = candidate;
   }
-  const std::size_t c = candidates.size();
-  const std::size_t degree = std::min(c, normal_graph_degree);
-  if(degree < c)
-    std::nth_element(candidates.begin(), candidates.begin() + degree, candidates.end());
-  std::sort(candidates.begin(), candidates.begin() + degree);
   for(std::size_t i = 0; i < degree; ++i)
-    r.neighbor[i] = candidates[i].second;
+    r.neighbor[i] = nearest[i].second;
   r.degree = static_cast<std::uint8_t>(degree);
   return r;
 }
