@@ -189,25 +189,37 @@ struct Sub_neighborhood
 
   // The positions of the points of `whole` closer than `radius` (in whole's scaled units), in
   // whole's order, scaled by `radius`; nb's other per-point fields are null until
-  // take_attributes().
-  void take(const Neighborhood& whole, double radius)
+  // take_attributes(). `d2`, if given, holds whole's squared distances to the query, computed
+  // as here (the copy is then written without branches: every point is written, and the next
+  // one overwrites it where it lies outside).
+  void take(const Neighborhood& whole, double radius, const double* d2 = nullptr)
   {
     const double r2 = radius * radius, inverse = 1.0 / radius;
     for(auto* v : {&qx, &qy, &qz})
-      v->resize(whole.size);
-    taken.resize(whole.size);
+      v->resize(whole.size + 1);
+    taken.resize(whole.size + 1);
     std::size_t n = 0;
-    for(std::size_t i = 0; i < whole.size; ++i)
-    {
-      const double d2 = whole.qx[i] * whole.qx[i] + whole.qy[i] * whole.qy[i] + whole.qz[i] * whole.qz[i];
-      if(!(d2 < r2))
-        continue;
-      qx[n] = whole.qx[i] * inverse;
-      qy[n] = whole.qy[i] * inverse;
-      qz[n] = whole.qz[i] * inverse;
-      taken[n] = static_cast<std::uint32_t>(i);
-      ++n;
-    }
+    if(d2)
+      for(std::size_t i = 0; i < whole.size; ++i)
+      {
+        qx[n] = whole.qx[i] * inverse;
+        qy[n] = whole.qy[i] * inverse;
+        qz[n] = whole.qz[i] * inverse;
+        taken[n] = static_cast<std::uint32_t>(i);
+        n += d2[i] < r2 ? 1 : 0;
+      }
+    else
+      for(std::size_t i = 0; i < whole.size; ++i)
+      {
+        const double d = whole.qx[i] * whole.qx[i] + whole.qy[i] * whole.qy[i] + whole.qz[i] * whole.qz[i];
+        if(!(d < r2))
+          continue;
+        qx[n] = whole.qx[i] * inverse;
+        qy[n] = whole.qy[i] * inverse;
+        qz[n] = whole.qz[i] * inverse;
+        taken[n] = static_cast<std::uint32_t>(i);
+        ++n;
+      }
     taken.resize(n);
     nb = whole;
     nb.size = n;
@@ -415,14 +427,16 @@ struct Scale_ladder
     return statistic == Statistic::NORMAL ? Combinations{normal, 2} : Combinations{mean, 1};
   }
 
-  // Fits the k nearest of `whole` with the driver's radius rule (the k nearest and those tied
-  // with the k-th: the k-th smallest of `ranks`) in `target`, the fit oriented by `reference`,
+  // Fits the k nearest of `whole` (`d2`: their squared distances, Sub_neighborhood::take()) with
+  // the driver's radius rule (the k nearest and those tied with the k-th: the k-th smallest of
+  // `ranks`) in `target`, the fit oriented by `reference`,
   // with the variance factors of `statistic` (its coefficient combinations: combinations()).
   // NO_RUNG where the k-th nearest is at the query (copies of it); LINE where the rung's points
   // lie along one line, or, for the mean curvature, where its fit can hardly tell it
   // (curvature_untold()).
-  static Rung_fit fit_rung(const Neighborhood& whole, Distance_ranks& ranks, std::size_t k,
-                           const double reference[3], Statistic statistic, Sub_neighborhood& target)
+  static Rung_fit fit_rung(const Neighborhood& whole, const std::vector<double>& d2, Distance_ranks& ranks,
+                           std::size_t k, const double reference[3], Statistic statistic,
+                           Sub_neighborhood& target)
   {
     Rung_fit rung;
     const double r2 = ranks.kth(k);
@@ -431,7 +445,7 @@ struct Scale_ladder
       rung.outcome = Rung_fit::NO_RUNG;
       return rung;
     }
-    target.take(whole, std::min(knn_radius_factor * std::sqrt(r2), 1.0));
+    target.take(whole, std::min(knn_radius_factor * std::sqrt(r2), 1.0), d2.data());
     std::copy(reference, reference + 3, target.nb.query_normal);
     rung.fit.anisotropy_penalty = 0;
     rung.fit.frame_cache = &target.frame;
@@ -621,7 +635,7 @@ struct Scale_ladder
     std::size_t k = std::min(smallest, whole.size);
     for(std::size_t j = 0; k > 0 && k <= whole.size && j < rungs(); ++j, k *= 2)
     {
-      Rung_fit rung = fit_rung(whole, ranks, k, reference, statistic, c.found ? trial : chosen);
+      Rung_fit rung = fit_rung(whole, d2, ranks, k, reference, statistic, c.found ? trial : chosen);
       if(rung.outcome == Rung_fit::NO_RUNG)
         continue;
       if(rung.outcome == Rung_fit::LINE)
@@ -745,7 +759,7 @@ struct Scale_ladder
       bool kept = kept_noise2 < automatic_scale_gate_cubic_share * residual0;
       if(!kept)
       {
-        const Rung_fit rung = fit_rung(whole, ranks, half, reference, statistic, trial);
+        const Rung_fit rung = fit_rung(whole, d2, ranks, half, reference, statistic, trial);
         // (along one line, or where it can hardly tell the curvature, it tells nothing of the noise)
         kept_noise2 = rung.outcome == Rung_fit::FITTED
                         ? separated_noise(rung.residual, rung.radius, residual0, radius0)
