@@ -427,6 +427,16 @@ def _scale(radius, neighbors, automatic=False):
     return None, _int("neighbors", neighbors, 1)
 
 
+def _default_neighbors(method, options):
+    """The scale of a run given neither ``radius`` nor ``neighbors``, as the tool's: ``"auto"``
+    where the library makes the automatic scale the default (the robust ASO), else
+    :data:`DEFAULT_NEIGHBORS`. ``method`` is a name of :data:`METHODS` in lower case; the options
+    are checked as :func:`estimate_curvatures` checks them."""
+    allowed = set(_COMMON_OPTIONS) | set(_METHOD_OPTIONS[method])
+    opts, _, _ = _options(f"method '{method}'", allowed, options)
+    return "auto" if _core.automatic_scale_by_default(method, opts.aso_variant) else DEFAULT_NEIGHBORS
+
+
 def _method(method):
     """The method's name in lower case; ValueError for unknown names."""
     if not isinstance(method, str) or method.lower() not in METHODS:
@@ -533,7 +543,7 @@ def estimate_curvatures(
         allowed.discard("tile")
     opts, tile, weights = _options(f"method '{method}'", allowed, options)
     if radius is None and neighbors is None:
-        neighbors = "auto" if _core.automatic_scale_by_default(method, opts.aso_variant) else DEFAULT_NEIGHBORS
+        neighbors = _default_neighbors(method, options)
     radius, neighbors = _scale(radius, neighbors, automatic=ESTIMATORS[method]["supports_automatic_scale"])
     progress = _progress(progress)
     points = _array(points, "points")

@@ -43,16 +43,30 @@ import numpy as np
 
 from . import _METHOD_OPTIONS, AUTOMATIC_NEIGHBORS, HaloTooSmall, SampleWeights, Status, TileGrid, _core, _int, _method, _real
 from . import _weights
-from . import _whole_cloud_box, _whole_cloud_scale
+from . import _default_neighbors, _whole_cloud_box, _whole_cloud_scale
 from . import estimate_curvatures as _estimate_curvatures
 
-__all__ = ["estimate_curvatures", "estimate_curvatures_file", "read_result", "estimate_tile", "RESULT_DTYPE"]
+__all__ = ["estimate_curvatures", "estimate_curvatures_file", "read_result", "estimate_tile", "RESULT_DTYPE",
+           "AUTOMATIC_RESULT_DTYPE"]
 
 _log = logging.getLogger(__name__)
 
 _FIELDS3 = ("normal", "min_direction", "max_direction")
 _FIELDS1 = ("k_min", "k_max", "mean", "gaussian", "normal_coherence")
 
+
+
+def _scale_of_run(method, radius, neighbors, options):
+    """(radius, neighbors) of a run: as given (at most one of them; ``neighbors="auto"`` in any
+    case as ``"auto"``), or with neither the single-process default (:func:`_default_neighbors`:
+    the automatic scale for the robust ASO)."""
+    if radius is not None and neighbors is not None:
+        raise ValueError("give either radius or neighbors, not both")
+    if radius is None and neighbors is None:
+        return None, _default_neighbors(method, {k: v for k, v in options.items() if k != "tile"})
+    if isinstance(neighbors, str) and neighbors.lower() == "auto":
+        return radius, "auto"
+    return radius, neighbors
 
 
 def _weight_array(options):
@@ -138,9 +152,10 @@ def estimate_curvatures(client, points, normals, *, method="aso", radius=None, n
     points, normals : array_like, shape (N, 3)
     method, radius, neighbors, **options
         As for :func:`point_set_curvatures.estimate_curvatures` (not ``tile``, nor ``method="vcm"``,
-        nor ``normal_refinement``; normals and exactly one of ``radius`` and ``neighbors`` are
-        required here, where the single-process function can choose them); ``sample_weights`` given as an array (one weight per point)
-        is sent to each tile with its rows.
+        nor ``normal_refinement``; normals are required here, where the single-process function
+        can estimate them); with neither ``radius`` nor ``neighbors``, its default (the automatic
+        scale, ``neighbors="auto"``, for the robust ASO); ``sample_weights`` given as an array
+        (one weight per point) is sent to each tile with its rows.
     tile_size : float or None
         The side of the tiles; default: about 4 tiles per worker thread, and at most about
         500 000 points per tile.
@@ -155,9 +170,8 @@ def estimate_curvatures(client, points, normals, *, method="aso", radius=None, n
     """
     if "tile" in options:
         raise ValueError("option 'tile' is chosen by point_set_curvatures.dask")
-    if (radius is None) == (neighbors is None):
-        raise ValueError("give exactly one of radius and neighbors")
     method = _method(method)
+    radius, neighbors = _scale_of_run(method, radius, neighbors, options)
     retries = _int("retries", retries, 0)
     tile_size = None if tile_size is None else _real("tile_size", tile_size)
     initial_halo = None if initial_halo is None else _real("initial_halo", initial_halo)
@@ -171,8 +185,7 @@ def estimate_curvatures(client, points, normals, *, method="aso", radius=None, n
     out.update({k: np.full(n, np.nan) for k in _FIELDS1})
     out["neighbors"] = np.zeros(n, dtype=np.int64)
     out["status"] = np.full(n, Status.NON_FINITE_POINT, dtype=np.uint8)
-    if isinstance(neighbors, str) and neighbors.lower() == "auto":
-        neighbors = "auto"
+    if neighbors == "auto":
         out["mean_error"] = np.full(n, np.nan)
     finite = np.isfinite(points).all(axis=1)
     if not finite.any():
@@ -295,6 +308,10 @@ RESULT_DTYPE = np.dtype([
     ("status", "u1"),
 ])
 
+#: The record under the automatic scale (``neighbors="auto"``, the default of the robust ASO):
+#: :data:`RESULT_DTYPE` and ``mean_error``, the standard error of ``mean`` at the chosen scale.
+AUTOMATIC_RESULT_DTYPE = np.dtype(RESULT_DTYPE.descr + [("mean_error", "<f8")])
+
 _XYZN = ("x", "y", "z", "nx", "ny", "nz")
 
 
@@ -397,11 +414,11 @@ def _scan_task(sources, blocks):
     return lo, hi, finite
 
 
-def _default_rows(rows, status=Status.NON_FINITE_POINT):
-    """Output records of points no tile estimates (the single-process values for non-finite
-    points): NaN, no neighbours, the given status."""
-    rec = np.zeros(rows, dtype=RESULT_DTYPE)
-    for k in _FIELDS3 + _FIELDS1:
+def _default_rows(rows, dtype, status=Status.NON_FINITE_POINT):
+    """Output records of `dtype` of points no tile estimates (the single-process values for
+    non-finite points): NaN, no neighbours, the given status."""
+    rec = np.zeros(rows, dtype=dtype)
+    for k in _FIELDS3 + _FIELDS1 + (("mean_error",) if "mean_error" in dtype.names else ()):
         rec[k] = np.nan
     rec["status"] = status
     return rec
@@ -416,17 +433,17 @@ def _count_task(sources, blocks, grid_args, output):
     grid = TileGrid(*grid_args)
     counts = np.zeros(len(grid) + 1, dtype=np.int64)
     bad = []
-    path, offset, _ = output
+    path, offset, _, dtype = output
     fd = os.open(path, os.O_WRONLY)
     try:
         for block in blocks:
             owner = grid.tile_of(_read(sources, block, _XYZN[:3]))
             counts += np.bincount(owner, minlength=len(grid) + 1)
             nonfinite = owner == len(grid)
-            rec = _default_rows(len(owner), Status.NOT_COMPUTED)
+            rec = _default_rows(len(owner), dtype, Status.NOT_COMPUTED)
             rec["status"][nonfinite] = Status.NON_FINITE_POINT
             data = rec.tobytes()
-            at = offset + int(block[3]) * RESULT_DTYPE.itemsize
+            at = offset + int(block[3]) * dtype.itemsize
             while data:
                 written = os.pwrite(fd, data, at)
                 data, at = data[written:], at + written
@@ -439,8 +456,8 @@ def _count_task(sources, blocks, grid_args, output):
 
 
 def _write_rows(output, rows, records):
-    path, offset, n = output
-    w = RESULT_DTYPE.itemsize
+    path, offset, n, dtype = output
+    w = dtype.itemsize
     mm = np.memmap(path, dtype=np.uint8, mode="r+", offset=offset, shape=(n, w))
     try:
         mm[rows] = records.view(np.uint8).reshape(-1, w)  # as bytes: several times faster
@@ -486,7 +503,7 @@ def _file_tile_task(sources, blocks, core_min, core_max, halo, output, kwargs):
         return result
     own, r = result
     rows = index[own]
-    records = np.empty(len(rows), dtype=RESULT_DTYPE)
+    records = np.empty(len(rows), dtype=output[3])
     for k, v in r.items():
         records[k] = v
     _write_rows(output, rows, records)
@@ -551,10 +568,13 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
         order.
     output_path : path
         Written as a ``.npy`` structured array of N records of :data:`RESULT_DTYPE` (the fields
-        of :func:`point_set_curvatures.estimate_curvatures`), row i for input point i; read it
-        with :func:`read_result` or ``np.load(path, mmap_mode="r")``.
+        of :func:`point_set_curvatures.estimate_curvatures`), or of :data:`AUTOMATIC_RESULT_DTYPE`
+        under the automatic scale (with ``mean_error``), row i for input point i; read it with
+        :func:`read_result` or ``np.load(path, mmap_mode="r")``.
     method, radius, neighbors, tile_size, threads, retries, initial_halo, **options
-        As for :func:`estimate_curvatures` (``sample_weights`` not as an array).
+        As for :func:`estimate_curvatures` (``sample_weights`` not as an array): with neither
+        ``radius`` nor ``neighbors``, the single-process default (the automatic scale for the
+        robust ASO, the default method).
     block_rows : int
         Rows read at a time, and the unit of spatial pruning.
 
@@ -591,12 +611,8 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
     if _weight_array(options) is not None:
         raise ValueError("option 'sample_weights': per-point weights (an array) are not supported for "
                          "clouds in files; use 'uniform' or 'tangent_voronoi_area'")
-    if (radius is None) == (neighbors is None):
-        raise ValueError("give exactly one of radius and neighbors")
-    if isinstance(neighbors, str):
-        raise ValueError("neighbors='auto' is not available for files here: use the tool's --neighbors auto, or "
-                         "point_set_curvatures.dask.estimate_curvatures on arrays")
     method = _method(method)
+    radius, neighbors = _scale_of_run(method, radius, neighbors, options)
     retries = _int("retries", retries, 0)
     block_rows = _int("block_rows", block_rows, 1)
     tile_size = None if tile_size is None else _real("tile_size", tile_size)
@@ -609,8 +625,9 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
     blocks = _blocks(sources, block_rows)
     n = sum(s[3] for s in sources)
     output_path = os.path.abspath(os.fspath(output_path))
-    out = np.lib.format.open_memmap(output_path, mode="w+", dtype=RESULT_DTYPE, shape=(n,))
-    output = (output_path, out.offset, n)
+    dtype = AUTOMATIC_RESULT_DTYPE if neighbors == "auto" else RESULT_DTYPE
+    out = np.lib.format.open_memmap(output_path, mode="w+", dtype=dtype, shape=(n,))
+    output = (output_path, out.offset, n, dtype)
     del out
     nthreads = max(1, sum(client.nthreads().values()))
     token = uuid.uuid4().hex[:8]
@@ -629,7 +646,7 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
               "grid_counts": None, "tile_reports": []}
     if finite == 0:
         if n:
-            _write_rows(output, np.arange(n), _default_rows(n))
+            _write_rows(output, np.arange(n), _default_rows(n, dtype))
         t = time.perf_counter() - t_start
         report["seconds"] = {"scan": t_scan - t_start, "count": 0.0, "tiles": 0.0, "total": t}
         return report

@@ -12,6 +12,7 @@ _Path = Union[str, "os.PathLike[str]"]
 
 BLOCK_ROWS: int
 RESULT_DTYPE: np.dtype
+AUTOMATIC_RESULT_DTYPE: np.dtype
 
 def estimate_tile(
     points: npt.ArrayLike,
@@ -22,7 +23,7 @@ def estimate_tile(
     *,
     method: str = ...,
     radius: Optional[float] = ...,
-    neighbors: Optional[int] = ...,
+    neighbors: Union[int, Literal["auto"], None] = ...,
     threads: Optional[int] = ...,
     **options: Any,
 ) -> Union[Tuple[np.ndarray, Dict[str, np.ndarray]], Tuple[str, float]]: ...
@@ -47,7 +48,7 @@ def estimate_curvatures_file(
     *,
     method: str = ...,
     radius: Optional[float] = ...,
-    neighbors: Optional[int] = ...,
+    neighbors: Union[int, Literal["auto"], None] = ...,
     tile_size: Optional[float] = ...,
     threads: Optional[int] = ...,
     retries: int = ...,

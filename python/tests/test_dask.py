@@ -77,8 +77,23 @@ def test_dask_automatic_scale(client, cloud, tmp_path):
     assert "mean_error" in single and np.median(single["neighbors"]) > 80
     assert_same(single, psc_dask.estimate_curvatures(client, points, normals, neighbors="auto", tile_size=1.0,
                                                      initial_halo=1e-3))
-    with pytest.raises(ValueError, match="not available for files"):
-        psc_dask.estimate_curvatures_file(client, tmp_path / "c.npy", tmp_path / "o.npy", neighbors="auto")
+    # by default too (neither radius nor neighbors), as the single-process run
+    assert_same(single, psc_dask.estimate_curvatures(client, points, normals, tile_size=1.0))
+    # the same from a file, the workers reading their tiles and writing the rows (with mean_error),
+    # by neighbors="auto" and by default (neither radius nor neighbors: the automatic scale of
+    # the robust ASO, as the single-process run's default)
+    np.save(tmp_path / "c.npy", np.hstack([points, normals]))
+    assert_same(single, psc.estimate_curvatures(points, normals))
+    for scale in ({"neighbors": "AUTO"}, {}):
+        report = psc_dask.estimate_curvatures_file(client, tmp_path / "c.npy", tmp_path / "o.npy", tile_size=1.0,
+                                                   initial_halo=1e-3, **scale)
+        assert report["resubmitted"] > 0
+        result = psc_dask.read_result(tmp_path / "o.npy")
+        assert result["mean_error"].dtype == np.float64 and np.isnan(result["mean_error"][17])
+        assert_same(single, {k: np.ascontiguousarray(v) for k, v in result.items()})
+    # and a fixed count keeps the record without mean_error
+    psc_dask.estimate_curvatures_file(client, tmp_path / "c.npy", tmp_path / "o.npy", neighbors=40)
+    assert "mean_error" not in psc_dask.read_result(tmp_path / "o.npy")
 
 
 def test_dask_error_cancels_pending_tiles(client, cloud):
@@ -395,8 +410,8 @@ def test_file_bad_input(client, tmp_path):
         with pytest.raises(ValueError, match=what):
             psc_dask.estimate_curvatures_file(client, tmp_path / name, tmp_path / "o.npy", radius=0.1)
     np.save(tmp_path / "ok.npy", np.hstack([p, q]))
-    with pytest.raises(ValueError, match="exactly one"):
-        psc_dask.estimate_curvatures_file(client, tmp_path / "ok.npy", tmp_path / "o.npy")
+    with pytest.raises(ValueError, match="not both"):
+        psc_dask.estimate_curvatures_file(client, tmp_path / "ok.npy", tmp_path / "o.npy", radius=0.5, neighbors=30)
     with pytest.raises(ValueError):
         psc_dask.estimate_curvatures_file(client, tmp_path / "ok.npy", tmp_path / "o.npy", radius=0.5,
                                           no_such_option=1)
