@@ -83,17 +83,17 @@ std::size_t finite_point_count(const Point_set& ps)
 void fill_point_set(Point_set& ps, const std::vector<double>& xyz, const std::vector<double>& normals)
 {
   const std::size_t n = xyz.size() / 3;
-  ps.reserve(n);
+  ps.resize(n);  // (every point at once: insert() one by one was a fifth of the read phase)
   if(!normals.empty())
     ps.add_normal_map();
   for(std::size_t i = 0; i < n; ++i)
   {
     const double* p = &xyz[3 * i];
-    const auto it = ps.insert(Point(p[0], p[1], p[2]));
+    ps.point(*(ps.begin() + i)) = Point(p[0], p[1], p[2]);
     if(!normals.empty())
     {
       const double* nv = &normals[3 * i];
-      ps.normal(*it) = Vector(nv[0], nv[1], nv[2]);
+      ps.normal(*(ps.begin() + i)) = Vector(nv[0], nv[1], nv[2]);
     }
   }
 }

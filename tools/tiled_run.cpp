@@ -332,6 +332,28 @@ Scanned_input read_or_scan(const std::string& path, const Read_options& options,
   std::vector<double> largest;  // per attribute, over every point
   Read_options o = options;
   o.chunk_points = 1 << 16;
+  // The share of the file read (the readers' progress), for the points' storage reserved at
+  // once for the count it predicts: grown chunk by chunk, reallocation and its first touch of
+  // fresh memory (page faults) took two thirds of the read phase (1M points of .xyz with
+  // normals: 0.93 s, the parsing 0.3 s).
+  double fraction_read = 0;
+  o.progress = [&fraction_read, &options](double f) {
+    fraction_read = f;
+    return !options.progress || options.progress(f);
+  };
+  const auto reserve_for = [&](std::size_t attribute_count, std::size_t with_normals) {
+    if(!(fraction_read > 0))
+      return;
+    const double predicted = 1.1 * double(s.points) / std::min(1.0, fraction_read) + double(o.chunk_points);
+    const double affordable = memory_limit / bytes_per_point(attribute_count);
+    const std::size_t count = std::size_t(std::min(predicted, affordable));
+    if(3 * count <= xyz.capacity())
+      return;
+    xyz.reserve(3 * count);
+    normals.reserve(with_normals * 3 * count);
+    for(std::vector<double>& a : attributes)
+      a.reserve(count);
+  };
   o.chunk = [&](const Point_cloud& c) {
     largest.resize(c.attributes.size(), -HUGE_VAL);
     for(std::size_t a = 0; a < c.attributes.size(); ++a)
@@ -372,9 +394,11 @@ Scanned_input read_or_scan(const std::string& path, const Read_options& options,
       std::vector<std::vector<double>>().swap(attributes);
       return;
     }
+    attributes.resize(c.attributes.size());
+    if(xyz.size() + c.xyz.size() > xyz.capacity())
+      reserve_for(c.attributes.size(), c.normals.empty() ? 0 : 1);
     xyz.insert(xyz.end(), c.xyz.begin(), c.xyz.end());
     normals.insert(normals.end(), c.normals.begin(), c.normals.end());
-    attributes.resize(c.attributes.size());
     for(std::size_t a = 0; a < c.attributes.size(); ++a)
       attributes[a].insert(attributes[a].end(), c.attributes[a].values.begin(), c.attributes[a].values.end());
   };
