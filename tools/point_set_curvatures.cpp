@@ -88,12 +88,13 @@ void fill_point_set(Point_set& ps, const std::vector<double>& xyz, const std::ve
     ps.add_normal_map();
   for(std::size_t i = 0; i < n; ++i)
   {
+    const Point_set::Index k = *(ps.begin() + i);
     const double* p = &xyz[3 * i];
-    ps.point(*(ps.begin() + i)) = Point(p[0], p[1], p[2]);
+    ps.point(k) = Point(p[0], p[1], p[2]);
     if(!normals.empty())
     {
       const double* nv = &normals[3 * i];
-      ps.normal(*(ps.begin() + i)) = Vector(nv[0], nv[1], nv[2]);
+      ps.normal(k) = Vector(nv[0], nv[1], nv[2]);
     }
   }
 }

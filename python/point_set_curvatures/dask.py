@@ -63,7 +63,7 @@ def _scale_of_run(method, radius, neighbors, options):
     if radius is not None and neighbors is not None:
         raise ValueError("give either radius or neighbors, not both")
     if radius is None and neighbors is None:
-        return None, _default_neighbors(method, {k: v for k, v in options.items() if k != "tile"})
+        return None, _default_neighbors(method, options)
     if isinstance(neighbors, str) and neighbors.lower() == "auto":
         return radius, "auto"
     return radius, neighbors

@@ -177,6 +177,14 @@ inline double separated_noise(double residual_small, double radius_small, double
   return std::clamp((growth * residual_small - residual_large) / (growth - 1), 0.0, residual_small);
 }
 
+// The squared distances of a neighbourhood's points to the query (its scaled units), in its order.
+inline void squared_distances(const Neighborhood& whole, std::vector<double>& d2)
+{
+  d2.resize(whole.size);
+  for(std::size_t i = 0; i < whole.size; ++i)
+    d2[i] = whole.qx[i] * whole.qx[i] + whole.qy[i] * whole.qy[i] + whole.qz[i] * whole.qz[i];
+}
+
 // A neighbourhood of the first points of another, in its own scaled frame: the positions for
 // the rungs' fits, the other fields only for the neighbourhood that an estimator reads.
 struct Sub_neighborhood
@@ -189,37 +197,24 @@ struct Sub_neighborhood
 
   // The positions of the points of `whole` closer than `radius` (in whole's scaled units), in
   // whole's order, scaled by `radius`; nb's other per-point fields are null until
-  // take_attributes(). `d2`, if given, holds whole's squared distances to the query, computed
-  // as here (the copy is then written without branches: every point is written, and the next
-  // one overwrites it where it lies outside).
-  void take(const Neighborhood& whole, double radius, const double* d2 = nullptr)
+  // take_attributes(). `d2`: whole's squared distances to the query (squared_distances()). The
+  // copy is written without branches: every point is written, at the place of the next one
+  // inside, which overwrites it where it lies outside.
+  void take(const Neighborhood& whole, double radius, const std::vector<double>& d2)
   {
     const double r2 = radius * radius, inverse = 1.0 / radius;
     for(auto* v : {&qx, &qy, &qz})
-      v->resize(whole.size + 1);
-    taken.resize(whole.size + 1);
-    std::size_t n = 0;
-    if(d2)
-      for(std::size_t i = 0; i < whole.size; ++i)
-      {
-        qx[n] = whole.qx[i] * inverse;
-        qy[n] = whole.qy[i] * inverse;
-        qz[n] = whole.qz[i] * inverse;
-        taken[n] = static_cast<std::uint32_t>(i);
-        n += d2[i] < r2 ? 1 : 0;
-      }
-    else
-      for(std::size_t i = 0; i < whole.size; ++i)
-      {
-        const double d = whole.qx[i] * whole.qx[i] + whole.qy[i] * whole.qy[i] + whole.qz[i] * whole.qz[i];
-        if(!(d < r2))
-          continue;
-        qx[n] = whole.qx[i] * inverse;
-        qy[n] = whole.qy[i] * inverse;
-        qz[n] = whole.qz[i] * inverse;
-        taken[n] = static_cast<std::uint32_t>(i);
-        ++n;
-      }
+      v->resize(whole.size);
+    taken.resize(whole.size);
+    std::size_t n = 0;  // (at most i: the writes stay within whole.size)
+    for(std::size_t i = 0; i < whole.size; ++i)
+    {
+      qx[n] = whole.qx[i] * inverse;
+      qy[n] = whole.qy[i] * inverse;
+      qz[n] = whole.qz[i] * inverse;
+      taken[n] = static_cast<std::uint32_t>(i);
+      n += d2[i] < r2 ? 1 : 0;
+    }
     taken.resize(n);
     nb = whole;
     nb.size = n;
@@ -427,7 +422,7 @@ struct Scale_ladder
     return statistic == Statistic::NORMAL ? Combinations{normal, 2} : Combinations{mean, 1};
   }
 
-  // Fits the k nearest of `whole` (`d2`: their squared distances, Sub_neighborhood::take()) with
+  // Fits the k nearest of `whole` (`d2`: their squared distances, squared_distances()) with
   // the driver's radius rule (the k nearest and those tied with the k-th: the k-th smallest of
   // `ranks`) in `target`, the fit oriented by `reference`,
   // with the variance factors of `statistic` (its coefficient combinations: combinations()).
@@ -445,7 +440,7 @@ struct Scale_ladder
       rung.outcome = Rung_fit::NO_RUNG;
       return rung;
     }
-    target.take(whole, std::min(knn_radius_factor * std::sqrt(r2), 1.0), d2.data());
+    target.take(whole, std::min(knn_radius_factor * std::sqrt(r2), 1.0), d2);
     std::copy(reference, reference + 3, target.nb.query_normal);
     rung.fit.anisotropy_penalty = 0;
     rung.fit.frame_cache = &target.frame;
@@ -491,26 +486,26 @@ struct Scale_ladder
     std::vector<double>& d2 = scratch.d2;
     Sub_neighborhood& chosen = scratch.chosen;
     Scale_choice c;
-    d2.resize(whole.size);
-    for(std::size_t i = 0; i < whole.size; ++i)
-      d2[i] = whole.qx[i] * whole.qx[i] + whole.qy[i] * whole.qy[i] + whole.qz[i] * whole.qz[i];
     const std::size_t k = std::min(smallest, whole.size);
     if(k == 0)
       return c;
-    std::nth_element(d2.begin(), d2.begin() + (k - 1), d2.end());
-    if(d2[k - 1] == 0)
+    squared_distances(whole, d2);
+    Distance_ranks& ranks = scratch.ranks;
+    ranks.assign(d2);
+    const double rung2 = ranks.kth(k);
+    if(rung2 == 0)
       return c;  // (the k nearest at the query: no rung)
-    const double radius = std::min(knn_radius_factor * std::sqrt(d2[k - 1]), 1.0);
+    const double radius = std::min(knn_radius_factor * std::sqrt(rung2), 1.0);
     // the nearest half's radius, relative to the rung's (0: none)
     const std::size_t half = smallest / 2;
     double half_ratio = 0;
     if(half >= gate_least_half && half <= k)
     {
-      std::nth_element(d2.begin(), d2.begin() + (half - 1), d2.begin() + k);
-      if(d2[half - 1] > 0)
-        half_ratio = std::min(knn_radius_factor * std::sqrt(d2[half - 1]), 1.0) / radius;
+      const double half2 = ranks.kth(half);
+      if(half2 > 0)
+        half_ratio = std::min(knn_radius_factor * std::sqrt(half2), 1.0) / radius;
     }
-    chosen.take(whole, radius);
+    chosen.take(whole, radius, d2);
     const Neighborhood& nb = chosen.nb;
     const std::size_t n = nb.size;
     const auto as_first_rung = [&]() {
@@ -612,9 +607,7 @@ struct Scale_ladder
     Sub_neighborhood &chosen = scratch.chosen, &trial = scratch.trial;
     constexpr double inf = std::numeric_limits<double>::infinity();
     Scale_choice c;
-    d2.resize(whole.size);
-    for(std::size_t i = 0; i < whole.size; ++i)
-      d2[i] = whole.qx[i] * whole.qx[i] + whole.qy[i] * whole.qy[i] + whole.qz[i] * whole.qz[i];
+    squared_distances(whole, d2);
     Distance_ranks& ranks = scratch.ranks;
     ranks.assign(d2);
     const bool by_normal = statistic == Statistic::NORMAL;
