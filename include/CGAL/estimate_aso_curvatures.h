@@ -180,7 +180,8 @@ Aso_estimator aso_estimator_from(const NamedParameters& np)
 ///       refused (no derivative)}
 ///     \cgalParamType{`CGAL::Apss_weight_kernel`}
 ///     \cgalParamDefault{`SMOOTH_CUBIC` (`SMOOTH` with `Aso_variant::PAPER`); with `automatic_scale`,
-///       `SMOOTH_CUBIC` is `SMOOTH_QUARTIC` where a count above the smallest is kept for noise}
+///       `SMOOTH_CUBIC` is `SMOOTH_QUARTIC` where a count above the smallest is kept for noise, and
+///       where a count is kept without noise over neighbours spread evenly around the point}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{Point_set_curvatures::parameters::sample_weights}
 ///     \cgalParamDescription{the quadrature weights of the samples (`CGAL::Sample_weights`):
@@ -304,13 +305,20 @@ estimate_aso_curvatures(const PointRange& points, const NamedParameters& np)
   ladder.smallest = I::checked_scale<PointRange>(0.0, false, np, name);
   ladder.largest = largest;
   // where the rule climbed for noise: without the position fit, and the cubic kernel (the robust
-  // variant's) made quartic (automatic_scale.h); decided on the settings, however given, so that
-  // the tool and Python agree
-  I::Aso_estimator at_noise_scale = aso;
-  at_noise_scale.settings.position_fit_blend = 0;
+  // variant's) made quartic (automatic_scale.h); where it kept a rung without noise and the
+  // neighbours spread evenly, the quartic kernel too (clean data: less bias, and no noise for
+  // the narrower kernel to pass on); decided on the settings, however given, so that the tool
+  // and Python agree
+  I::Scale_estimators<I::Aso_estimator> estimators{aso, aso, aso};
+  estimators.at_noise_scale.settings.position_fit_blend = 0;
   if(aso.settings.kernel_exponent == I::kernel_exponent(Apss_weight_kernel::SMOOTH_CUBIC))
-    at_noise_scale.settings.kernel_exponent = I::kernel_exponent(Apss_weight_kernel::SMOOTH_QUARTIC);
-  return I::estimate_at_automatic_scale<ConcurrencyTag>(points, np, aso, at_noise_scale, sphere, ladder, name);
+  {
+    const int quartic = I::kernel_exponent(Apss_weight_kernel::SMOOTH_QUARTIC);
+    estimators.at_noise_scale.settings.kernel_exponent = quartic;
+    estimators.where_even.settings.kernel_exponent = quartic;
+    estimators.narrower_where_even = true;
+  }
+  return I::estimate_at_automatic_scale<ConcurrencyTag>(points, np, estimators, sphere, ladder, name);
 }
 
 /// \ingroup PkgPointSetCurvaturesRef

@@ -51,8 +51,13 @@
 // the wrapped estimator is the caller's `at_noise_scale` (for the ASO: without the position fit,
 // whose bias at those scales exceeds what it saves, and with the quartic kernel in place of the
 // cubic one: the rule tolerates a bias of about one standard error, which the narrower kernel
-// reduces). kappa, the noise share, the sphere's rule and that choice were made on the simulated
-// scans of benchmark/scan_experiments (benchmark/README.md, "Automatic scale").
+// reduces). Where the rule kept a rung without noise and its neighbours spread evenly around
+// the point (spreads_evenly()), the wrapped estimator is the caller's `where_even` (for the ASO:
+// the quartic kernel too; without noise the narrower kernel's lesser bias is all gain, but where
+// scan lines lie far apart for the neighbourhood it sees fewer of them). kappa, the noise share,
+// the sphere's rule and those choices were made on the simulated scans of
+// benchmark/scan_experiments (benchmark/README.md, "Automatic scale" and "Scans without
+// normals").
 
 #ifndef CGAL_POINT_SET_CURVATURES_INTERNAL_AUTOMATIC_SCALE_H
 #define CGAL_POINT_SET_CURVATURES_INTERNAL_AUTOMATIC_SCALE_H
@@ -61,6 +66,7 @@
 #include <CGAL/Point_set_curvatures/internal/estimation_driver.h>
 #include <CGAL/Point_set_curvatures/internal/knn_neighborhoods.h>
 #include <CGAL/Point_set_curvatures/internal/local_estimate.h>
+#include <CGAL/Point_set_curvatures/internal/normal_field_fit.h>
 #include <CGAL/Point_set_curvatures/internal/pca_plane.h>
 #include <CGAL/Point_set_curvatures/internal/quadric_fit.h>
 
@@ -774,17 +780,43 @@ struct Scale_ladder
   }
 };
 
-// The automatic scale around an estimator (see the header comment); `at_noise_scale` is the
-// estimator where the rule climbed for noise (Scale_choice::noise_climb).
+// The estimators the automatic scale applies on the chosen rung: `estimator` by default;
+// `at_noise_scale` where the rule climbed for noise (Scale_choice::noise_climb); `where_even`,
+// if `narrower_where_even`, where the rule kept a rung without noise and the neighbourhood
+// spreads evenly around the point (spreads_evenly()).
+template <class Estimator>
+struct Scale_estimators
+{
+  Estimator estimator, at_noise_scale, where_even;
+  bool narrower_where_even = false;
+};
+
+// Whether a neighbourhood spreads evenly around its query, for Scale_estimators::where_even:
+// the axis ratio of its tangential spread (tangential_axis_ratio(), with the weights of the
+// quartic kernel that where_even takes for the ASO) at least normal_field_anisotropy_start, the
+// ratio below which the ASO starts blending in the normal-field fit (normal_field_fit.h). Where
+// scan lines lie far apart for the neighbourhood the narrower kernel sees fewer of them and the
+// ASO's derivatives follow the weights more (simulated lines 10:1, 8:1: 3.08e-3 -> 3.79e-3,
+// 1.98e-3 -> 2.13e-3 with the quartic everywhere; with this test 3.07e-3 and 1.95e-3:
+// benchmark/README.md, section 8).
+inline bool spreads_evenly(const Neighborhood& nb)
+{
+  return tangential_axis_ratio<4>(nb) >= normal_field_anisotropy_start;
+}
+
+// The automatic scale around an estimator (see the header comment), with the estimators of
+// Scale_estimators.
 template <class Estimator, class Sphere>
 struct Automatic_scale_estimator : Estimator_base
 {
-  Estimator estimator, at_noise_scale;
+  Estimator estimator, at_noise_scale, where_even;
+  bool narrower_where_even;
   Sphere sphere;
   Scale_ladder ladder;
 
-  Automatic_scale_estimator(const Estimator& e, const Estimator& at_noise, const Sphere& s, const Scale_ladder& l)
-    : Estimator_base(e), estimator(e), at_noise_scale(at_noise), sphere(s), ladder(l)
+  Automatic_scale_estimator(const Scale_estimators<Estimator>& e, const Sphere& s, const Scale_ladder& l)
+    : Estimator_base(e.estimator), estimator(e.estimator), at_noise_scale(e.at_noise_scale), where_even(e.where_even),
+      narrower_where_even(e.narrower_where_even), sphere(s), ladder(l)
   {
   }
 
@@ -809,7 +841,9 @@ struct Automatic_scale_estimator : Estimator_base
       provisional.neighbor_count = c.count;
       return provisional;
     }
-    Local_estimate e = c.noise_climb ? at_noise_scale(chosen.nb) : estimator(chosen.nb);
+    Local_estimate e = c.noise_climb                                          ? at_noise_scale(chosen.nb)
+                       : narrower_where_even && spreads_evenly(chosen.nb) ? where_even(chosen.nb)
+                                                                          : estimator(chosen.nb);
     if(e.status == Curvature_estimate_status::VALID && c.rung > 0)
     {
       // the sphere's mean curvature where it agrees with the chosen rung's quadric (elsewhere
@@ -890,14 +924,15 @@ std::vector<Result> automatic_scale_passes(const Scale_ladder& ladder, const Run
   return result;
 }
 
-// The automatic scale of the estimator (automatic_scale_passes() on estimate_at_every_point());
-// `at_noise_scale` where the rule climbed for noise (Automatic_scale_estimator).
+// The automatic scale of the estimators (automatic_scale_passes() on estimate_at_every_point();
+// Automatic_scale_estimator).
 template <class ConcurrencyTag, class PointRange, class NamedParameters, class Estimator, class Sphere>
-auto estimate_at_automatic_scale(const PointRange& points, const NamedParameters& np, const Estimator& estimator,
-                                 const Estimator& at_noise_scale, const Sphere& sphere, const Scale_ladder& ladder,
-                                 const char* function_name)
+auto estimate_at_automatic_scale(const PointRange& points, const NamedParameters& np,
+                                 const Scale_estimators<Estimator>& estimators, const Sphere& sphere,
+                                 const Scale_ladder& ladder, const char* function_name)
 {
-  typedef decltype(estimate_at_every_point<ConcurrencyTag>(points, false, 0.0, np, estimator, function_name)) Results;
+  typedef decltype(estimate_at_every_point<ConcurrencyTag>(points, false, 0.0, np, estimators.estimator,
+                                                           function_name)) Results;
   typedef typename Results::value_type Estimate;
   Area_cache areas;  // (the same in every pass)
   const auto run = [&](const Scale_ladder& l, const std::vector<char>* visit, double start, double size,
@@ -910,8 +945,7 @@ auto estimate_at_automatic_scale(const PointRange& points, const NamedParameters
     pass.progress_size = size;
     pass.cancelled = &cancelled;
     return estimate_at_every_point<ConcurrencyTag>(points, false, 0.0, np,
-                                                   Automatic_scale_estimator<Estimator, Sphere>(estimator, at_noise_scale,
-                                                                                                sphere, l),
+                                                   Automatic_scale_estimator<Estimator, Sphere>(estimators, sphere, l),
                                                    function_name, pass);
   };
   return automatic_scale_passes<Estimate>(

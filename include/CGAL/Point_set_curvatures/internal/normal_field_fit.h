@@ -58,8 +58,12 @@
 #ifndef CGAL_POINT_SET_CURVATURES_INTERNAL_NORMAL_FIELD_FIT_H
 #define CGAL_POINT_SET_CURVATURES_INTERNAL_NORMAL_FIELD_FIT_H
 
+#include <CGAL/Point_set_curvatures/internal/local_estimate.h>
+#include <CGAL/Point_set_curvatures/internal/weight_kernel.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 namespace CGAL {
 namespace Point_set_curvatures {
@@ -108,6 +112,36 @@ inline double axis_ratio(double m11, double m12, double m22)
 inline double normal_field_anisotropy_weight(double ratio)
 {
   return smooth_step(ratio, normal_field_anisotropy_start, normal_field_anisotropy_end);
+}
+
+// The axis ratio (axis_ratio()) of a neighbourhood's tangential spread, in the tangent plane of
+// the query's normal, its moments sum t^(P-1) q q^T weighted as the ASO's gradient moments with
+// the kernel (1 - d²/r²)^P (one pass; 0 without a normal). The ASO measures the same from its
+// own sums; this is for a choice made before the ASO runs (automatic_scale.h).
+template <int P>
+inline double tangential_axis_ratio(const Neighborhood& nb)
+{
+  const double l = std::sqrt(nb.query_normal[0] * nb.query_normal[0] + nb.query_normal[1] * nb.query_normal[1] +
+                              nb.query_normal[2] * nb.query_normal[2]);
+  if(!(l > 0))
+    return 0;
+  const double n[3] = {nb.query_normal[0] / l, nb.query_normal[1] / l, nb.query_normal[2] / l};
+  double t1[3], t2[3];
+  tangent_basis(n, t1, t2);
+  double m11 = 0, m12 = 0, m22 = 0;
+  for(std::size_t i = 0; i < nb.size; ++i)
+  {
+    const double t = 1 - (nb.qx[i] * nb.qx[i] + nb.qy[i] * nb.qy[i] + nb.qz[i] * nb.qz[i]);
+    if(!(t > 0))
+      continue;
+    const double w = power_of<P - 1>(t);
+    const double u = nb.qx[i] * t1[0] + nb.qy[i] * t1[1] + nb.qz[i] * t1[2];
+    const double v = nb.qx[i] * t2[0] + nb.qy[i] * t2[1] + nb.qz[i] * t2[2];
+    m11 += w * u * u;
+    m12 += w * u * v;
+    m22 += w * v * v;
+  }
+  return axis_ratio(m11, m12, m22);
 }
 
 // The weighted sums of the fit over the neighbours (weight w, tangential position (u, v),
