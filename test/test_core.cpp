@@ -2245,9 +2245,41 @@ TEST_CASE("Automatic scale: the quartic kernel where a count is kept without noi
   measured("  mean |H - H*| there, automatic (quartic)", error / double(kept));
   measured("  the same, fixed count 40 (cubic)", fixed_error / double(kept));
   CHECK(kept > 0.95 * double(inside));
-  CHECK(as_quartic == kept);
+  CHECK(as_quartic > 0.98 * double(kept));  // (measured: all of them)
   CHECK(as_fixed < 0.01 * double(kept));
   CHECK(error < 0.9 * fixed_error);  // (measured: 2.53e-4 against 3.17e-4; the largest |H*| 0.044)
+
+  // Rows 8 apart with points 1 apart along them (the same wave across the rows): the 40 nearest
+  // hold the query's row and the next ones near the kernel's rim, the spread is uneven, and the
+  // points kept at the smallest count keep the cubic (the fixed count's estimate; the quartic's
+  // differs by up to 2.8e-3). (Most points pass over that rung as one line: measured 275 kept of
+  // 990.)
+  std::vector<Oriented_point> rows;
+  for(int i = -60; i <= 60; ++i)
+    for(int j = -8; j <= 8; ++j)
+    {
+      const double x = i + jitter(rng), y = 8.0 * j, dz = amplitude * w * std::cos(w * x);
+      rows.emplace_back(Point(x, y, amplitude * std::sin(w * x)), Vector(-dz, 0, 1) / std::sqrt(1 + dz * dz));
+    }
+  const auto rows_chosen = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
+    rows, PSC::parameters::neighbor_count(40, PSC::parameters::automatic_scale(640, maps())));
+  const auto rows_fixed = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(rows, PSC::parameters::neighbor_count(40, maps()));
+  std::size_t rows_inside = 0, rows_kept = 0, rows_as_fixed = 0;
+  for(std::size_t k = 0; k < rows.size(); ++k)
+  {
+    if(std::abs(rows[k].first.x()) > 45 || std::abs(rows[k].first.y()) > 40)
+      continue;
+    ++rows_inside;
+    if(!rows_chosen[k].is_valid() || rows_chosen[k].neighbor_count >= 80)
+      continue;
+    ++rows_kept;
+    // (to rounding: the automatic scale evaluates a copy of the rung's neighbourhood)
+    rows_as_fixed += std::abs(rows_chosen[k].mean_curvature - rows_fixed[k].mean_curvature) < 1e-12 ? 1 : 0;
+  }
+  measured("rows 8 apart: points kept at the smallest count", double(rows_kept));
+  measured("  of them equal to the fixed count (cubic)", double(rows_as_fixed));
+  CHECK(rows_kept > 0.2 * double(rows_inside));
+  CHECK(rows_as_fixed > 0.98 * double(rows_kept));
 
   // The indicator: the axis ratio of the tangential spread, weighted as the quartic's gradient
   // moments, on a disc of a grid (even) and on three lines 0.85 r apart (uneven: one through the

@@ -52,9 +52,11 @@
 // whose bias at those scales exceeds what it saves, and with the quartic kernel in place of the
 // cubic one: the rule tolerates a bias of about one standard error, which the narrower kernel
 // reduces). Where the rule kept a rung without noise and its neighbours spread evenly around
-// the point (spreads_evenly()), the wrapped estimator is the caller's `where_even` (for the ASO:
-// the quartic kernel too; without noise the narrower kernel's lesser bias is all gain, but where
-// scan lines lie far apart for the neighbourhood it sees fewer of them). kappa, the noise share,
+// the point (spreads_evenly(), in the plane of the rung's reference normal), the wrapped
+// estimator is the caller's `where_even` if it gives one (for the ASO: the quartic kernel too,
+// where the kernel is the robust variant's cubic; without noise the narrower kernel's lesser
+// bias is all gain, but where scan lines lie far apart for the neighbourhood it sees fewer of
+// them); not where the first rung could not be fitted (Scale_choice::as_first_rung). kappa, the noise share,
 // the sphere's rule and those choices were made on the simulated scans of
 // benchmark/scan_experiments (benchmark/README.md, "Automatic scale" and "Scans without
 // normals").

@@ -116,8 +116,9 @@ inline double normal_field_anisotropy_weight(double ratio)
 
 // The axis ratio (axis_ratio()) of a neighbourhood's tangential spread, in the tangent plane of
 // the query's normal, its moments sum t^(P-1) q q^T weighted as the ASO's gradient moments with
-// the kernel (1 - d²/r²)^P (one pass; 0 without a normal). The ASO measures the same from its
-// own sums; this is for a choice made before the ASO runs (automatic_scale.h).
+// the kernel (1 - d²/r²)^P (one pass; 0 without a normal). The ASO measures about the same from
+// its own sums (with the sample weights, in the plane of its corrected normal); this is for a
+// choice made before the ASO runs (automatic_scale.h).
 template <int P>
 inline double tangential_axis_ratio(const Neighborhood& nb)
 {
