@@ -12,7 +12,10 @@
 //   scan_experiments [--neighbors K] [--normal-neighbors K1,K2...] [--only torus,airborne,merged,
 //                    airborne2,airborne10,polygon5,zigzag5,zigzag3,wobbly5,wobbly8,mobile,terrestrial]
 //                    [--noise SIGMA_IN_SPACINGS] [--quantum Q] [--line-spacing S] [--dump PREFIX]
-//                    [--auto LARGEST]  (the automatic scale: normals and ASO, ladder 40 .. LARGEST)
+//                    [--auto LARGEST]  (the automatic scale: normals and ASO, ladder 40 .. LARGEST;
+//                                       columns auto, with the position fit blended at 0.5 as for
+//                                       estimated normals, and auto-given, without, as the tool on
+//                                       a cloud with normals)
 //                    [--rows exact,default,auto640,...]  (the normal sources to run)
 
 #include "bench_support.h"
@@ -176,6 +179,12 @@ std::vector<Curvature_method> curvature_methods()
                         c, P::automatic_scale(std::max(k, automatic_largest),
                              P::neighbor_count(k, P::position_fit_blend(0.5, CGAL::parameters::point_map(Point_map())
                                                                               .normal_map(Normal_map())))));
+                    }});
+  if(automatic_largest > 0)  // the tool's default on a cloud with normals: no position fit
+    list.push_back({"auto-given", [](const Cloud& c, std::size_t k) {
+                      return CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
+                        c, P::automatic_scale(std::max(k, automatic_largest),
+                             P::neighbor_count(k, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()))));
                     }});
   PSC_METHOD("apss", estimate_apss_curvatures, );
   PSC_METHOD("pss", estimate_pss_curvatures, );
