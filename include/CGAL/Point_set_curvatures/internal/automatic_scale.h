@@ -811,14 +811,12 @@ inline bool spreads_evenly(const Neighborhood& nb)
 template <class Estimator, class Sphere>
 struct Automatic_scale_estimator : Estimator_base
 {
-  Estimator estimator, at_noise_scale, where_even;
-  bool narrower_where_even;
+  Scale_estimators<Estimator> estimators;
   Sphere sphere;
   Scale_ladder ladder;
 
   Automatic_scale_estimator(const Scale_estimators<Estimator>& e, const Sphere& s, const Scale_ladder& l)
-    : Estimator_base(e.estimator), estimator(e.estimator), at_noise_scale(e.at_noise_scale), where_even(e.where_even),
-      narrower_where_even(e.narrower_where_even), sphere(s), ladder(l)
+    : Estimator_base(e.estimator), estimators(e), sphere(s), ladder(l)
   {
   }
 
@@ -829,7 +827,7 @@ struct Automatic_scale_estimator : Estimator_base
     const Sub_neighborhood& chosen = scratch.chosen;
     if(c.as_first_rung)
     {
-      Local_estimate e = estimator(chosen.nb);
+      Local_estimate e = estimators.estimator(chosen.nb);
       e.neighbor_count = c.count;
       return e;
     }
@@ -843,9 +841,9 @@ struct Automatic_scale_estimator : Estimator_base
       provisional.neighbor_count = c.count;
       return provisional;
     }
-    Local_estimate e = c.noise_climb                                          ? at_noise_scale(chosen.nb)
-                       : narrower_where_even && spreads_evenly(chosen.nb) ? where_even(chosen.nb)
-                                                                          : estimator(chosen.nb);
+    Local_estimate e = c.noise_climb ? estimators.at_noise_scale(chosen.nb)
+                       : estimators.narrower_where_even && spreads_evenly(chosen.nb) ? estimators.where_even(chosen.nb)
+                                                                                     : estimators.estimator(chosen.nb);
     if(e.status == Curvature_estimate_status::VALID && c.rung > 0)
     {
       // the sphere's mean curvature where it agrees with the chosen rung's quadric (elsewhere
