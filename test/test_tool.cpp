@@ -3212,7 +3212,7 @@ TEST_CASE("tool: --memory-limit tiles give the in-memory output bitwise, by radi
   // no temporary file is left
   CHECK(files_starting_with(".tiled_") == 0);
 
-  // without normals, each tile estimates those its curvatures need (a local orientation)
+  // without normals, a first pass of tiles estimates them (here with a local orientation)
   write_xyz(file("no_normals.xyz"), pts, false);
   for(const std::string scale : {"--radius 0.12", "--neighbors 30"})
   {
@@ -3230,11 +3230,31 @@ TEST_CASE("tool: --memory-limit tiles give the in-memory output bitwise, by radi
     CHECK(a == b);
   }
 
+  // the default orientation (a spanning tree over the whole cloud) and the default scale: the
+  // normals estimated in tiles first, oriented over the whole cloud, then the curvature tiles
+  // (6000 points: 3.0 MB in memory with the automatic scale, 2.5 MB for the gathered normals)
+  {
+    const std::string options = " --normal-neighbors 12 --fields normal,mean,valid,neighbors";
+    const Run memory = run_tool(q(file("no_normals.xyz")) + " " + q(file("mst_memory.ply")) + options);
+    const Run tiled = run_tool(q(file("no_normals.xyz")) + " " + q(file("mst_tiled.ply")) + options + " --memory-limit 2900K");
+    REQUIRE(memory.status == 0);
+    REQUIRE(tiled.status == 0);
+    INFO(tiled.out);
+    CHECK(memory.out.find("  tiles") == std::string::npos);
+    CHECK(tiled.out.find("oriented over the whole cloud in memory") != std::string::npos);
+    CHECK(tiled.out.find("oriented mst: along a minimum spanning tree") != std::string::npos);
+    const std::string a = read_text(file("mst_memory.ply")), b = read_text(file("mst_tiled.ply"));
+    CHECK(a.size() > 6000 * 40);
+    CHECK(a == b);
+  }
+
   // what cannot be tiled is refused with the reason and what to do
   {
     const Run r = run_tool(q(file("no_normals.xyz")) + " " + q(file("x.ply")) + " --radius 0.12 --memory-limit 300K");
     CHECK(r.status == 2);
-    CHECK(r.err.find("which needs a local orientation, --orient +z") != std::string::npos);
+    CHECK(r.err.find("orienting them along a spanning tree over the whole cloud (--orient auto here) needs "
+                     "--memory-limit 2.") != std::string::npos);
+    CHECK(r.err.find("or orient them locally, tile by tile: --orient +z") != std::string::npos);
     const Run s = run_tool(in + " " + q(file("x.ply")) + " --radius 3x --memory-limit 300K");
     CHECK(s.status == 2);
     CHECK(s.err.find("--radius 3x needs the whole cloud") != std::string::npos);
@@ -3393,6 +3413,17 @@ TEST_CASE("tool: real airborne tiles without normals, ground up, vegetation vali
     CHECK(median(ground_c) > 0.98);
     CHECK(median(vegetation_c) < median(ground_c));
   }
+}
+
+// Issue 42, item 2: the default on a real LAS file larger than the memory limit, without
+// normals. --orient auto makes it 2.5-D (a spanning tree over the whole cloud, with its
+// near-vertical normals up): the normals are estimated in tiles first and oriented over the
+// whole cloud, bitwise as in memory (sample_c: 22 curvature tiles after 4 tiles of normals at
+// 8M; warsaw_small in one tile of each).
+TEST_CASE("tool: the default tiles a real LAS file without normals, bitwise as in memory")
+{
+  same_whole_and_tiled(repo_data("real/sample_c.las"), "", {"8M"}, ".csv");
+  same_whole_and_tiled(repo_data("real/warsaw_small.las"), "--fields mean,normal,valid", {"1500K"}, ".csv");
 }
 
 // Class 1 of issue 30: the tiles' halo retry when the cloud has fewer points than a
@@ -3930,8 +3961,9 @@ TEST_CASE("tool: without normals, the default pipeline and what the summary says
   REQUIRE(paper.status == 0);
   CHECK(paper.out.find("aso (paper's variant)") != std::string::npos);
   CHECK(paper.out.find("blended") == std::string::npos);
-  // in tiles the automatic orientation (a spanning tree over the whole cloud) is refused with
-  // what to do, as the spanning tree is: the tiled run never differs from the whole one
+  // in tiles the automatic orientation (a spanning tree over the whole cloud) orients the
+  // normals gathered from the tiles in memory; below the memory they need it is refused with
+  // what to do: the tiled run never differs from the whole one
   fs::remove(file("tiled.csv"));  // (same_whole_and_tiled() writes one)
   const Run tiled = run_tool(q(file("terrain.las")) + " " + q(file("tiled.csv")) + " --memory-limit 200K");
   CHECK(tiled.status == 2);
@@ -3943,8 +3975,8 @@ TEST_CASE("tool: without normals, the default pipeline and what the summary says
   REQUIRE(whole_z.status == 0);
   // neighbourhoods of up to 640 points span these 3000: no tiling lowers the peak, so one tile
   // (641 before, each the whole cloud: 200 times as long)
-  CHECK(tiled_z.out.find("  tiles       1 (memory limit 0.195312 MB; at most 3000 points with a halo of inf)") !=
-        std::string::npos);
+  CHECK(tiled_z.out.find("  tiles       1 (memory limit 0.195312 MB; at most 3000 points with a halo of inf; "
+                         "the normals first in 1 tile)") != std::string::npos);
   CHECK(read_text(file("tiled_z.csv")) == read_text(file("whole_z.csv")));
   // bad values
   CHECK(run_tool(q(file("terrain.xyz")) + " " + q(file("x.csv")) + " --position-blend 1.5").status == 2);

@@ -49,54 +49,83 @@ Orientation_choice choose_orientation(const Options& o, bool las, bool has_pulse
   return c;
 }
 
+namespace {
+
+// The named parameters of the normals' estimation as the options say, oriented by `orientation`.
+template <class Callback>
+auto normal_parameters(const Options& o, const CGAL::Normal_orientation& orientation, const PSC::Tile& tile,
+                       const Callback& progress)
+{
+  return PSC::parameters::neighbor_count(
+    normal_neighbor_count(o),
+    PSC::parameters::automatic_scale(
+      normal_automatic_largest(o),
+      PSC::parameters::normal_fit(
+        o.normal_fit, PSC::parameters::normal_orientation(
+                        orientation, PSC::parameters::tile(tile, CGAL::parameters::callback(progress))))));
+}
+
+} // namespace
+
+void Vertical_count::add(double x, double y, double z)
+{
+  if(x == 0 && y == 0 && z == 0)
+    return;
+  ++usable;
+  up += z > 0 ? 1 : 0;
+  if(PSC::is_near_vertical(x, y, z))
+  {
+    ++vertical;
+    vertical_up += z > 0 ? 1 : 0;
+  }
+}
+
+std::string automatic_orientation_text(const Vertical_count& c)
+{
+  const std::string within =
+    cat(percent_text(c.vertical, c.usable), "% of the estimated normals within 60 degrees of the vertical");
+  if(c.usable == 0)
+    return "none: no normal could be estimated (--orient auto)";
+  if(PSC::is_two_and_a_half_d(c.vertical, c.usable))
+    return cat("+z (LAS file, 2.5-D: ", within, "; ", percent_text(c.vertical_up, c.vertical), "% of those point up",
+               c.vertical_up < c.vertical ? ", the others are the undersides of closed objects, turned outward" : "",
+               "; the steeper ones along a minimum spanning tree; --orient auto)");
+  return cat("mst (LAS file, not 2.5-D: ", within, "): along a minimum spanning tree, closed parts "
+             "outward, open parts up; ", percent_text(c.up, c.usable), "% of them point up; --orient auto)");
+}
+
 std::size_t estimate_normals(Point_set& ps, const Options& o, Orientation_choice& choice, const Progress& progress,
                              const PSC::Tile& tile)
 {
   if(!ps.has_normal_map())
     ps.add_normal_map();
   const std::size_t without = CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
-    ps, PSC::parameters::neighbor_count(
-          normal_neighbor_count(o),
-          PSC::parameters::automatic_scale(
-            normal_automatic_largest(o),
-            PSC::parameters::normal_fit(
-              o.normal_fit, PSC::parameters::normal_orientation(
-                              choice.orientation,
-                              PSC::parameters::tile(tile, CGAL::parameters::callback(progress)))))));
+    ps, normal_parameters(o, choice.orientation, tile, progress));
   if(interrupted)
     throw Cancelled();
   if(choice.orientation.kind == CGAL::Normal_orientation::AUTOMATIC)
   {
     // what the estimated normals hold (measured, not what the rule meant to do; the output holds
     // the estimators' corrected normals, which may turn a few: the report states those apart)
-    std::size_t usable = 0, vertical = 0, vertical_up = 0, up = 0;
+    Vertical_count count;
     for(Point_set::Index i : ps)
-    {
-      const Vector& n = ps.normal(i);
-      if(n == CGAL::NULL_VECTOR)
-        continue;
-      ++usable;
-      up += n.z() > 0 ? 1 : 0;
-      if(PSC::is_near_vertical(n.x(), n.y(), n.z()))
-      {
-        ++vertical;
-        vertical_up += n.z() > 0 ? 1 : 0;
-      }
-    }
-    const std::string within =
-      cat(percent_text(vertical, usable), "% of the estimated normals within 60 degrees of the vertical");
-    if(usable == 0)
-      choice.text = "none: no normal could be estimated (--orient auto)";
-    else if(PSC::is_two_and_a_half_d(vertical, usable))
-      choice.text = cat("+z (LAS file, 2.5-D: ", within, "; ", percent_text(vertical_up, vertical), "% of those point up",
-                        vertical_up < vertical ? ", the others are the undersides of closed objects, turned outward"
-                                               : "",
-                        "; the steeper ones along a minimum spanning tree; --orient auto)");
-    else
-      choice.text = cat("mst (LAS file, not 2.5-D: ", within, "): along a minimum spanning tree, closed parts "
-                        "outward, open parts up; ", percent_text(up, usable), "% of them point up; --orient auto)");
+      count.add(ps.normal(i).x(), ps.normal(i).y(), ps.normal(i).z());
+    choice.text = automatic_orientation_text(count);
   }
   return without;
+}
+
+std::vector<PSC::internal::Normal_record> estimate_normal_records(Point_set& ps, const Options& o,
+                                                                  const Progress& progress, const PSC::Tile& tile)
+{
+  bool cancelled = false;
+  std::vector<PSC::internal::Normal_record> records =
+    PSC::internal::estimate_normal_records<CGAL::Parallel_tag>(
+      ps, false, 0.0, normal_parameters(o, CGAL::Normal_orientation::along_vector(0, 0, 1), tile, progress),
+      progress, cancelled);
+  if(cancelled || interrupted)
+    throw Cancelled();
+  return records;
 }
 
 } // namespace psc_tool

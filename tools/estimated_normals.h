@@ -64,6 +64,17 @@ struct Orientation_choice
 // The orientation for a LAS input (`las`) with or without pulse directions, or another input.
 Orientation_choice choose_orientation(const Options& o, bool las, bool has_pulses);
 
+// What a cloud's oriented normals hold, for the summary of --orient auto: the normals (not
+// zero), those within 60 degrees of the vertical, those of them pointing up, all pointing up.
+struct Vertical_count
+{
+  std::size_t usable = 0, vertical = 0, vertical_up = 0, up = 0;
+  void add(double x, double y, double z);  // (a zero normal is not counted)
+};
+
+// What the summary says of an automatic orientation whose normals hold `count`.
+std::string automatic_orientation_text(const Vertical_count& count);
+
 // Estimates the normals of the point set as the options say, oriented as `choice` says (its
 // text completed for the automatic orientation): of every point, or of the tile's own points
 // (the others get a zero normal; the tile needs an orientation along a vector). Returns the
@@ -71,6 +82,14 @@ Orientation_choice choose_orientation(const Options& o, bool las, bool has_pulse
 // CGAL::Point_set_curvatures::Halo_too_small when the tile's halo is too small.
 std::size_t estimate_normals(Point_set& ps, const Options& o, Orientation_choice& choice, const Progress& progress,
                              const CGAL::Point_set_curvatures::Tile& tile);
+
+// The first step of estimate_normals() alone, for an orientation over the whole cloud gathered
+// from tiles (tiled_normals.h): the unoriented normals and nearest neighbours (indices of `ps`)
+// of the tile's own points (the others NOT_COMPUTED). Throws Cancelled when interrupted,
+// CGAL::Point_set_curvatures::Halo_too_small when the tile's halo is too small.
+std::vector<CGAL::Point_set_curvatures::internal::Normal_record>
+estimate_normal_records(Point_set& ps, const Options& o, const Progress& progress,
+                        const CGAL::Point_set_curvatures::Tile& tile);
 
 } // namespace psc_tool
 

@@ -28,6 +28,27 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef Kernel::Point_3 Point;
 typedef Kernel::Vector_3 Vector;
 typedef CGAL::Point_set_3<Point, Vector> Point_set;
+
+// A point set of the given points and normals (none if `normals` is empty).
+inline void fill_point_set(Point_set& ps, const std::vector<double>& xyz, const std::vector<double>& normals)
+{
+  const std::size_t n = xyz.size() / 3;
+  ps.resize(n);  // (every point at once: insert() one by one was a fifth of the read phase)
+  if(!normals.empty())
+    ps.add_normal_map();
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const Point_set::Index k = *(ps.begin() + i);
+    const double* p = &xyz[3 * i];
+    ps.point(k) = Point(p[0], p[1], p[2]);
+    if(!normals.empty())
+    {
+      const double* nv = &normals[3 * i];
+      ps.normal(k) = Vector(nv[0], nv[1], nv[2]);
+    }
+  }
+}
+
 typedef CGAL::Curvature_estimate<Kernel> Estimate;
 typedef std::vector<Estimate> Estimates;
 

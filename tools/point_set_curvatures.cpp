@@ -35,6 +35,7 @@
 #include "run_report.h"
 #include "read_point_cloud.h"
 #include "run_summary.h"
+#include "tiled_normals.h"
 #include "tiled_run.h"
 #include "tool_support.h"
 #include "write_las.h"
@@ -77,26 +78,6 @@ std::size_t finite_point_count(const Point_set& ps)
     const Point& p = ps.point(i);
     return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z());
   }));
-}
-
-// A point set of the given points and normals (none if `normals` is empty).
-void fill_point_set(Point_set& ps, const std::vector<double>& xyz, const std::vector<double>& normals)
-{
-  const std::size_t n = xyz.size() / 3;
-  ps.resize(n);  // (every point at once: insert() one by one was a fifth of the read phase)
-  if(!normals.empty())
-    ps.add_normal_map();
-  for(std::size_t i = 0; i < n; ++i)
-  {
-    const Point_set::Index k = *(ps.begin() + i);
-    const double* p = &xyz[3 * i];
-    ps.point(k) = Point(p[0], p[1], p[2]);
-    if(!normals.empty())
-    {
-      const double* nv = &normals[3 * i];
-      ps.normal(k) = Vector(nv[0], nv[1], nv[2]);
-    }
-  }
 }
 
 // --require-normals on a file without normals: an Error.
@@ -157,18 +138,17 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
   const std::size_t n = std::size_t(input.points);
   const std::string too_large = cat(in_quotes(o.input), " holds ", n, " points, more than fit in the memory limit (",
                                     memory_limit / (1 << 20), " MB, --memory-limit)");
-  // Without normals, each tile estimates those of the points its curvatures need
-  // (range_estimator.h).
+  // Without normals, they are estimated first, tile by tile, and given to the curvature tiles
+  // (tiled_normals.h); with a spanning tree they are oriented over the whole cloud in memory.
   const bool with_normals = input.cloud.has_normals();
   refuse_without_normals(o, with_normals);
-  if(!with_normals)
-  {
-    if(orientation.orientation.kind == CGAL::Normal_orientation::MINIMUM_SPANNING_TREE ||
-       orientation.orientation.kind == CGAL::Normal_orientation::AUTOMATIC)
-      throw Error(cat(too_large, " and has no normals: they are estimated tile by tile, which needs a local "
-                      "orientation, --orient +z (airborne scans), another axis, or viewpoint:X,Y,Z (a spanning "
-                      "tree, which --orient auto uses here, spans the whole cloud); or raise --memory-limit"));
-  }
+  const bool global = !with_normals && CGAL::Point_set_curvatures::internal::is_global(orientation.orientation);
+  if(global && memory_limit < least_memory_for_tiled_normals(double(n), true))
+    throw Error(cat(too_large, " and has no normals: ",
+                    "orienting them along a spanning tree over the whole cloud (",
+                    o.orientation_text == "auto" ? "--orient auto here" : "--orient mst", ") needs --memory-limit ",
+                    memory_argument(least_memory_for_tiled_normals(double(n), global)), " or more; or orient them "
+                    "locally, tile by tile: --orient +z (airborne scans), another axis, or viewpoint:X,Y,Z"));
   if(!o.scale.by_count && o.scale.spacing_multiple > 0)
     throw Error(cat(too_large, ": --radius ", o.scale.spacing_multiple, "x needs the whole cloud for the average "
                     "spacing; give the radius as a length, or raise --memory-limit"));
@@ -179,6 +159,7 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
   reserve_output(o, output, o.drop_attributes && !las ? std::vector<Attribute>() : input.cloud.attributes, n, las);
   Tiling tiling;
   tiling.memory_limit = memory_limit;
+  tiling.point_bytes = bytes_per_point(input.cloud.attributes.size(), scale.automatic_largest > 0);
   if(scale.by_count)
     tiling.neighbors = scale.largest_count();
   else
@@ -191,7 +172,8 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
   const auto slow_tiling = [&](const char* makes, std::size_t tiles, std::size_t few_grid, double few_points) {
     return cat("--memory-limit ", size_text(memory_limit), makes, tiles, " tiles, each read again from the input "
                "with its halo: slow; --memory-limit ",
-               memory_argument(few_points * bytes_per_point(input.cloud.attributes.size())), " gives at most ",
+               memory_argument(few_points * tiling.point_bytes + (with_normals ? 0.0 : 24.0 * double(n))),
+               " gives at most ",
                plural(few_grid, "tile"));
   };
   bool slow_tiling_said = false;
@@ -201,24 +183,22 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
         c.progress.note(cat(program, ": warning: ", slow_tiling(" makes up to ", tiles, few_grid, few_points),
                             " (Ctrl-C to stop)"));
   };
-  const double normal_halo_guess = with_normals ? 0.0 : density_halo(input, normal_largest_count(o));
-  tiling.extra_halo = normal_halo_guess;
-  tiling.box_halo = !with_normals;  // (range_estimator.h)
-  Orientation_choice tile_orientation = orientation;  // (the estimator's, completed when estimated)
-  Range_estimator estimator(o, scale, tile_orientation, with_normals,
-                            scale.by_count ? density_halo(input, scale.largest_count()) : tiling.halo,
-                            normal_halo_guess);
-  const std::array<int, 3> pulse = pulse_attributes(input.cloud.attributes);
+  Orientation_choice tile_orientation = orientation;  // (completed when estimated)
+  Tiled_normals normals;
+  if(!with_normals)
+  {
+    normals = estimate_tiled_normals(o.input, read_options, input, o, tile_orientation, tiling);
+    tiling.normals = &normals.normals;
+    tiling.memory_limit = std::max(0.0, tiling.memory_limit - 24.0 * double(n));
+  }
+  Range_estimator estimator(o, scale, tile_orientation, true);
   const Tile_estimator estimate = [&](Tile_points& points, const PSC::Tile& tile,
                                       const Progress& progress) -> Row_source {
     auto ps = std::make_shared<Point_set>();
     fill_point_set(*ps, points.xyz, points.normals);
     std::vector<double>().swap(points.xyz);
     std::vector<double>().swap(points.normals);
-    Pulse_values pulses = {{nullptr, nullptr, nullptr}};
-    if(!with_normals && orientation.scanner)  // (a file with normals may have no pulses)
-      for(int a = 0; a < 3; ++a)
-        pulses[a] = &points.attributes[pulse[a]];
+    const Pulse_values pulses = {{nullptr, nullptr, nullptr}};
     std::shared_ptr<Estimates> estimates;
     try
     {
@@ -240,7 +220,7 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
     o.input, read_options, input, tiling, estimate,
     [&summary](std::size_t i, const Output_row& r) { summary.add(i, r); },
     [&](const Row_source& rows) {
-      add_normal_warnings(c.warnings, o, with_normals, tile_orientation, summary, estimator.undirected());
+      add_normal_warnings(c.warnings, o, with_normals, tile_orientation, summary, normals.undirected);
       const auto write_start = std::chrono::steady_clock::now();
       write_output(c, output, scale,
                    o.drop_attributes && !las ? std::vector<Attribute>() : input.cloud.attributes, n, summary, rows,
@@ -252,13 +232,21 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
   print_report(c, scale, n,
                with_normals ? std::string() : cat(normal_fit_description(o), ", oriented ", tile_orientation.text),
                summary,
-               cat("count ", s3(count_seconds), ", density ", s3(report.density_seconds), ", tile reads ",
+               cat("count ", s3(count_seconds),
+                   !with_normals ? cat(", normals: density ", s3(normals.report.density_seconds), ", tile reads ",
+                                  s3(normals.report.read_seconds), ", tiles ", s3(normals.report.estimate_seconds),
+                                  ", orientation ", s3(normals.orientation_seconds))
+                            : std::string(),
+                   ", density ", s3(report.density_seconds), ", tile reads ",
                    s3(report.read_seconds), ", curvatures ", s3(report.estimate_seconds), ", tile rows ",
                    s3(report.rows_seconds),
                    ", merge and write ", s3(write_seconds)),
                cat(report.tiles, " (memory limit ", memory_limit / (1 << 20), " MB; at most ", report.largest_range,
                    " points with a halo of ", report.halo, report.halo_growths
-                     ? cat("; ", report.halo_growths, " tiles read again with a larger halo") : std::string(), ")"));
+                     ? cat("; ", report.halo_growths, " tiles read again with a larger halo") : std::string(),
+                   !with_normals ? cat("; the normals first in ", plural(normals.report.tiles, "tile"),
+                                       global ? ", oriented over the whole cloud in memory" : "")
+                                 : std::string(), ")"));
   return 0;
 }
 
@@ -325,7 +313,13 @@ int run(const Options& o)
     !o.drop_attributes || o.orient_scanner || (las && o.orientation_text == "auto") || las_output;
   read_options.allow_truncated = o.allow_truncated;
   read_options.progress = progress.phase("reading");
-  Scanned_input input = read_or_scan(o.input, read_options, memory_limit > 0 ? memory_limit : HUGE_VAL);
+  // (the automatic scale of the curvatures takes more memory, and so does a spanning tree over
+  // the estimated normals: --orient mst, or auto but on a LAS file with pulse directions)
+  const bool automatic_scale = estimation_scale(o, false).automatic_largest > 0;
+  const bool spanning_tree = CGAL::Point_set_curvatures::internal::is_global(o.orientation) ||
+                             o.orientation_text == "auto";
+  Scanned_input input = read_or_scan(o.input, read_options, memory_limit > 0 ? memory_limit : HUGE_VAL,
+                                     automatic_scale, spanning_tree);
   for(const std::string& w : input.cloud.warnings)
     warn(w);
   const std::array<int, 3> pulse = pulse_attributes(input.cloud.attributes);

@@ -4,19 +4,10 @@
 // The tool's one estimation step, the same for every run: the estimates of a range of points,
 // which is the whole cloud in memory (one tile covering all of space,
 // CGAL::Point_set_curvatures::Tile::whole_space()) or one tile of a file larger than the
-// memory limit with its halo (tiled_run.h). When the file has no normals, those of the range
-// are estimated first (estimated_normals.h: with the range's own tile, turned towards the
-// scanner for --orient scanner), then the curvatures with the chosen method (methods.h).
-//
-// Without normals, a tile's halo H is shared by two needs: the curvatures of its own points
-// read the points within the curvature halo h of its core (guessed from the density by count,
-// then grown to what the estimator asks for), and their normals are those of the "normal
-// tile" whose core is the core grown by h on every side, whose own points need their
-// neighbours within the normal halo of that box. The tiles are read with a halo along each
-// axis (Tiling::box_halo), which holds both when H >= h + normal halo: the normals are given
-// H - h (the largest the range supports), and when they need more, H grows to h plus what
-// they need (Halo_too_small). Sums are rounded up and differences down, so that a halo said
-// to suffice does. The whole cloud's halo is infinite: nothing grows.
+// memory limit with its halo (tiled_run.h). When the cloud in memory has no normals, they are
+// estimated first (estimated_normals.h; turned towards the scanner for --orient scanner); a
+// tile always has its normals: the file's, or those estimated in a first pass over the tiles
+// (tiled_normals.h). Then the curvatures with the chosen method (methods.h).
 
 #ifndef POINT_SET_CURVATURES_TOOL_RANGE_ESTIMATOR_H
 #define POINT_SET_CURVATURES_TOOL_RANGE_ESTIMATOR_H
@@ -44,10 +35,9 @@ typedef std::array<const std::vector<double>*, 3> Pulse_values;
 class Range_estimator
 {
 public:
-  // `with_normals`: the file has normals (none are estimated). The first halos of a tile:
-  // `curvature_halo_guess` for the curvatures, `normal_halo_guess` for the normals.
+  // `with_normals`: the points have normals (none are estimated; a tile must have them).
   Range_estimator(const Options& o, const Estimation_settings& scale, Orientation_choice& orientation,
-                  bool with_normals, double curvature_halo_guess = 0, double normal_halo_guess = 0);
+                  bool with_normals);
 
   // The estimates of the points of `ps` (all of them, the tile's own points otherwise; the
   // normals of `ps` are set when estimated). `phase(name)` starts the progress phase of
@@ -58,8 +48,8 @@ public:
   Estimates estimate(Point_set& ps, const CGAL::Point_set_curvatures::Tile& tile, const Pulse_values& pulses,
                      const std::function<Progress(const char*)>& phase);
 
-  // Own points of the ranges estimated so far that got a normal but whose pulse has no
-  // direction (their normal keeps the +z orientation); seconds spent on the normals.
+  // Points that got a normal but whose pulse has no direction (their normal keeps the +z
+  // orientation); seconds spent on the normals.
   std::size_t undirected() const { return m_undirected; }
   double normals_seconds() const { return m_normals_seconds; }
 
@@ -68,9 +58,6 @@ private:
   const Estimation_settings m_scale;
   Orientation_choice& m_orientation;
   const bool m_with_normals;
-  const double m_curvature_halo_guess, m_normal_halo_guess;
-  double m_curvature_halo;  // the current tile's (grown over the retries of a tile)
-  CGAL::Bbox_3 m_last_core;
   std::size_t m_undirected = 0;
   double m_normals_seconds = 0;
 };

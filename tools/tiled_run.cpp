@@ -24,20 +24,14 @@ namespace psc_tool {
 
 namespace PSC = CGAL::Point_set_curvatures;
 
-double bytes_per_point(std::size_t attributes) { return 300.0 + 16.0 * double(attributes); }
+double bytes_per_point(std::size_t attributes, bool automatic_scale, bool spanning_tree)
+{
+  return 16.0 * double(attributes) + std::max(automatic_scale ? 500.0 : 300.0, spanning_tree ? 480.0 : 0.0);
+}
 
 namespace {
 
 bool finite_point(const double* p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
-
-// The largest distance along an axis from p to the tile's core (0 inside).
-double box_distance(const PSC::Tile& tile, const double* p)
-{
-  double d = 0;
-  for(int a = 0; a < 3; ++a)
-    d = std::max({d, tile.core.min(a) - p[a], p[a] - tile.core.max(a)});
-  return d;
-}
 
 // Appends point k of `from` to `to` (coordinates, normal, attribute values).
 void append_point(const Point_cloud& from, std::size_t k, std::vector<double>& xyz, std::vector<double>& normals,
@@ -317,7 +311,8 @@ double density_halo(const Scanned_input& input, std::size_t k)
   return PSC::halo_guess_for_count(CGAL::Bbox_3(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]), input.finite, k);
 }
 
-Scanned_input read_or_scan(const std::string& path, const Read_options& options, double memory_limit)
+Scanned_input read_or_scan(const std::string& path, const Read_options& options, double memory_limit,
+                           bool automatic_scale, bool spanning_tree)
 {
   Scanned_input s;
   for(int a = 0; a < 3; ++a)
@@ -345,7 +340,8 @@ Scanned_input read_or_scan(const std::string& path, const Read_options& options,
     if(!(fraction_read > 0))
       return;
     const double predicted = 1.1 * double(s.points) / std::min(1.0, fraction_read) + double(o.chunk_points);
-    const double affordable = memory_limit / bytes_per_point(attribute_count);
+    const double affordable = memory_limit / bytes_per_point(attribute_count, automatic_scale,
+                                                             spanning_tree && with_normals == 0);
     const std::size_t count = std::size_t(std::min(predicted, affordable));
     if(3 * count <= xyz.capacity())
       return;
@@ -386,7 +382,8 @@ Scanned_input read_or_scan(const std::string& path, const Read_options& options,
     s.points += c.size();
     if(!keeping)
       return;
-    if(double(s.points) * bytes_per_point(c.attributes.size()) > memory_limit)
+    if(double(s.points) * bytes_per_point(c.attributes.size(), automatic_scale, spanning_tree && c.normals.empty()) >
+       memory_limit)
     {
       keeping = false;
       std::vector<double>().swap(xyz);
@@ -417,18 +414,15 @@ Scanned_input read_or_scan(const std::string& path, const Read_options& options,
   return s;
 }
 
-Tiled_report run_tiled(const std::string& path, const Read_options& options, const Scanned_input& input,
-                       const Tiling& tiling, const Tile_estimator& estimate,
-                       const std::function<void(std::size_t, const Output_row&)>& own_row,
-                       const std::function<void(const Row_source&)>& write)
+Tiled_report visit_tiles(const std::string& path, const Read_options& options, const Scanned_input& input,
+                         const Tiling& tiling, const Tile_visitor& visit)
 {
   Tiled_report report;
-  const std::size_t attribute_count = input.cloud.attributes.size();
-  const bool with_normals = input.cloud.has_normals();
+  const std::size_t attribute_count = options.keep_attributes ? input.cloud.attributes.size() : 0;
+  const bool with_normals = input.cloud.has_normals() || tiling.normals;
   double lo[3], hi[3];
   tile_box(input, lo, hi);
-  double first_halo = (tiling.neighbors > 0 ? density_halo(input, tiling.neighbors) : tiling.halo) +
-                      tiling.extra_halo;
+  double first_halo = tiling.neighbors > 0 ? density_halo(input, tiling.neighbors) : tiling.halo;
   if(std::isnan(first_halo))
     first_halo = HUGE_VAL;  // (the whole cloud: never wrong)
   double halo = first_halo;
@@ -449,7 +443,8 @@ Tiled_report run_tiled(const std::string& path, const Read_options& options, con
   }
   density.finish();
   report.density_seconds = seconds_since(density_start);
-  const double budget = tiling.memory_limit / bytes_per_point(attribute_count);
+  const double budget =
+    tiling.memory_limit / (tiling.point_bytes > 0 ? tiling.point_bytes : bytes_per_point(attribute_count));
   const CGAL::Bbox_3 box(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
   // halved extents: the extent of finite bounds may overflow (from -1e308 to 1e308)
   double half[3], longest = 0;
@@ -518,9 +513,8 @@ Tiled_report run_tiled(const std::string& path, const Read_options& options, con
     tiling.grid_chosen(tiles, report.few_tiles_grid, report.few_tiles_points);
   }
 
-  // 2. The tiles, each read from the file with its halo, estimated, and its own rows written
-  // to a temporary file. Non-finite points are nobody's own: the first tile writes their rows.
-  Row_store store(tiling.temporary_prefix + "tiles-", attribute_count);
+  // 2. The tiles, each read from the file with its halo and visited. Non-finite points are
+  // nobody's own: the first tile takes them as its own.
   for(std::size_t t = 0; t < grid.size(); ++t)
   {
     if(!may_own_points(t))
@@ -560,7 +554,7 @@ Tiled_report run_tiled(const std::string& path, const Read_options& options, con
             const bool finite = finite_point(p);
             if(finite)
             {
-              const double d = tiling.box_halo ? box_distance(tile, p) : tile.distance_to_core(p[0], p[1], p[2]);
+              const double d = tile.distance_to_core(p[0], p[1], p[2]);
               if(!(d <= halo))
               {
                 next_distance = std::min(next_distance, d);
@@ -570,6 +564,9 @@ Tiled_report run_tiled(const std::string& path, const Read_options& options, con
             else if(t != 0)
               continue;
             append_point(c, k, points.xyz, points.normals, points.attributes);
+            if(tiling.normals)
+              points.normals.insert(points.normals.end(), &(*tiling.normals)[3 * (c.first + k)],
+                                    &(*tiling.normals)[3 * (c.first + k)] + 3);
             points.index.push_back(c.first + k);
             finite_count += finite;
             const bool is_own = finite ? tile.owns(p[0], p[1], p[2]) : true;
@@ -592,10 +589,9 @@ Tiled_report run_tiled(const std::string& path, const Read_options& options, con
       const bool whole_cloud = finite_count == input.finite;
       if(whole_cloud)
         halo = HUGE_VAL;
-      Row_source rows;
       try
       {
-        rows = estimate(points, grid.tile(t, halo), tiling.phase(name + " curvatures"));
+        visit(points, own, grid.tile(t, halo), tiling.phase(name + " " + tiling.estimate_phase));
       }
       catch(const PSC::Halo_too_small& e)
       {
@@ -615,6 +611,27 @@ Tiled_report run_tiled(const std::string& path, const Read_options& options, con
       report.largest_range = std::max(report.largest_range, range);
       report.halo = std::max(report.halo, halo);
       ++report.tiles;
+      break;
+    }
+    if(tiling.interrupted && tiling.interrupted())
+      throw Cancelled();
+  }
+  return report;
+}
+
+Tiled_report run_tiled(const std::string& path, const Read_options& options, const Scanned_input& input,
+                       const Tiling& tiling, const Tile_estimator& estimate,
+                       const std::function<void(std::size_t, const Output_row&)>& own_row,
+                       const std::function<void(const Row_source&)>& write)
+{
+  // 1. The tiles, each estimated and its own rows written to a temporary file.
+  const std::size_t attribute_count = input.cloud.attributes.size();
+  Row_store store(tiling.temporary_prefix + "tiles-", attribute_count);
+  double rows_seconds = 0;
+  Tiled_report report = visit_tiles(
+    path, options, input, tiling,
+    [&](Tile_points& points, const std::vector<char>& own, const PSC::Tile& tile, const Progress& progress) {
+      const Row_source rows = estimate(points, tile, progress);
       const auto rows_start = std::chrono::steady_clock::now();
       store.begin_segment();
       Output_row r;
@@ -631,14 +648,12 @@ Tiled_report run_tiled(const std::string& path, const Read_options& options, con
         store.put(points.index[k], r, values.data());
         own_row(points.index[k], r);
       }
-      report.rows_seconds += seconds_since(rows_start);
-      break;
-    }
-    if(tiling.interrupted && tiling.interrupted())
-      throw Cancelled();
-  }
+      rows_seconds += seconds_since(rows_start);
+    });
+  report.rows_seconds = rows_seconds;
+  report.estimate_seconds -= rows_seconds;
 
-  // 3. The rows in input order: a merge of the tiles' segments, each sorted by input index,
+  // 2. The rows in input order: a merge of the tiles' segments, each sorted by input index,
   // read through buffers that share half the memory limit (1 MB each at most, 16 rows at least).
   store.finish();
   const std::size_t segments = store.segments();

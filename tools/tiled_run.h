@@ -11,8 +11,9 @@
 // rows of its own points to a temporary file, sorted by input index. A final merge of these
 // files gives the rows in input order to the writer. Neighbourhoods by count start from a
 // halo guessed from the density and grow it when the library says it is too small
-// (Halo_too_small: before estimating, or after it when the sample weights' areas need more),
-// as do the normals estimated per tile (the tool's estimator, range_estimator.h).
+// (Halo_too_small: before estimating, or after it when the sample weights' areas need more).
+// A file without normals first has its normals estimated in a pass over tiles of their own
+// (visit_tiles(), tiled_normals.h), then given to the curvature tiles (Tiling::normals).
 
 #ifndef POINT_SET_CURVATURES_TOOL_TILED_RUN_H
 #define POINT_SET_CURVATURES_TOOL_TILED_RUN_H
@@ -53,18 +54,23 @@ struct Scanned_input
   std::vector<double> sample;
 };
 
-// The memory an in-memory run takes per point with `attributes` input attributes (measured
-// with /usr/bin/time -v, see the README).
-double bytes_per_point(std::size_t attributes);
+// The memory an in-memory run takes per point with `attributes` input attributes, with the
+// automatic scale or not, with normals estimated and oriented along a spanning tree or not
+// (the peak RSS of 1M points of a terrain without attributes, 2026-11-30: at --neighbors 40, 366
+// bytes a point with normals in the file, 364 with normals estimated along +z, 479 along a
+// spanning tree; with the automatic scale 500, with or without normals; the user manual).
+double bytes_per_point(std::size_t attributes, bool automatic_scale = false, bool spanning_tree = false);
 
 // The first halo for neighbourhoods of `k` nearest: the library's guess
 // (PSC::halo_guess_for_count) on the box of the 0.1% to 99.9% quantiles of the sample (the
 // box of the tiles).
 double density_halo(const Scanned_input& input, std::size_t k);
 
-// Reads `path` in chunks; keeps the points as long as their estimated memory stays within
+// Reads `path` in chunks; keeps the points as long as their estimated memory
+// (bytes_per_point(), the spanning tree counted if the file has no normals) stays within
 // `memory_limit` bytes.
-Scanned_input read_or_scan(const std::string& path, const Read_options& options, double memory_limit);
+Scanned_input read_or_scan(const std::string& path, const Read_options& options, double memory_limit,
+                           bool automatic_scale, bool spanning_tree);
 
 // Row i of the output (i in increasing order).
 typedef std::function<void(std::size_t, Output_row&)> Row_source;
@@ -74,19 +80,20 @@ struct Tiling
   double memory_limit = 0;     // bytes
   double halo = 0;             // the halo of the tiles by radius
   std::size_t neighbors = 0;   // by count (halo unused): the tiles start with density_halo()
-  double extra_halo = 0;       // added to the first halo (the estimator's own needs)
-  // A halo along each axis: the points read are those within `halo` of the core in every
-  // coordinate (a box around the core, which holds the Euclidean halo, and every point
-  // within h2 of the core grown by h1 on every side when halo >= h1 + h2: an estimator
-  // whose own tile is such a grown core, as the normals estimated per tile).
-  bool box_halo = false;
-  // A tile's halo grows when the estimator throws Halo_too_small (by count, or an estimator
-  // with needs of its own such as normals).
+  // (a tile's halo grows when the estimator throws Halo_too_small)
   std::string temporary_prefix;  // the rows' temporary file is named prefix + "tiles-XXXXXX"
   // starts a progress phase (the reads, the estimations) and returns its callback
   std::function<Progress(const std::string&)> phase;
   // called after every tile; true to cancel (Cancelled is thrown)
   std::function<bool()> interrupted;
+  // The bytes per point of a tile with its halo (0: bytes_per_point() of the attributes read,
+  // without the automatic scale).
+  double point_bytes = 0;
+  // Normals by input index (3 per point), given to the tiles of a file without normals: those
+  // estimated in a first pass (tiled_normals.h).
+  const std::vector<double>* normals = nullptr;
+  // the name of a tile's estimation phase in the progress line ("tile 3/8 curvatures")
+  std::string estimate_phase = "curvatures";
   // called once the tile grid is chosen, before the tiles: its size, and the finest grid of
   // at most Tiled_report::few_tiles tiles (its size, the most points a tile of it reads)
   std::function<void(std::size_t tiles, std::size_t few_tiles_grid, double few_tiles_points)> grid_chosen;
@@ -110,11 +117,23 @@ struct Tiled_report
   double rows_seconds = 0;  // the tiles' rows to their temporary files
   // The grid of at most `few_tiles` tiles closest to the one chosen: its number of tiles and
   // the most points of one of them with its first halo (the memory limit that would choose
-  // it, divided by bytes_per_point()).
+  // it, divided by Tiling::point_bytes).
   static constexpr std::size_t few_tiles = 100;
   std::size_t few_tiles_grid = 0;
   double few_tiles_points = 0;
 };
+
+// Visits a tile's points (`own[k]`: point k is the tile's own). Throws
+// CGAL::Point_set_curvatures::Halo_too_small when the halo must grow.
+typedef std::function<void(Tile_points& points, const std::vector<char>& own,
+                           const CGAL::Point_set_curvatures::Tile& tile, const Progress& progress)>
+  Tile_visitor;
+
+// Chooses the tiles (the density pass) and reads each with its halo, in turn, for `visit`
+// (read again with a larger halo when it asks). The report's times: the reads and the visits.
+// With `options.keep_attributes` false the tiles hold no attribute values.
+Tiled_report visit_tiles(const std::string& path, const Read_options& options, const Scanned_input& input,
+                         const Tiling& tiling, const Tile_visitor& visit);
 
 // Runs the tiles and then `write(rows)`, where rows(i, r) gives row i in input order; every
 // row also goes to `own_row(i, r)` once, as soon as its tile is estimated (for a summary).

@@ -671,23 +671,41 @@ inline bool orient_along_spanning_tree(const std::vector<Normal_record>& records
   return true;
 }
 
-// The common body of the two overloads.
-template <class ConcurrencyTag, class PointRange, class NamedParameters>
-std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, double radius,
-                                      const NamedParameters& np)
+// The orientation that the named parameters ask for (checked: a finite target).
+template <class NamedParameters>
+Normal_orientation chosen_normal_orientation(const NamedParameters& np)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
-  typedef typename NP_helper::Geom_traits Geom_traits;
-  typedef typename Geom_traits::Vector_3 Vector_3;
-  static_assert(NP_helper::has_normal_map(),
-                "Error: no normal map. Pass CGAL::parameters::normal_map(...): the normals are "
-                "written there.");
+  const Normal_orientation orientation =
+    choose_parameter(get_parameter(np, internal_np::normal_orientation), Normal_orientation());
+  for(double t : orientation.target)
+    if(!std::isfinite(t))
+      throw std::invalid_argument("estimate_oriented_normals: parameter 'normal_orientation' needs a finite target");
+  return orientation;
+}
+
+// The count k of the normals' fit (0 by radius).
+template <class NamedParameters>
+std::size_t normal_neighbor_count(const NamedParameters& np, bool radius_given)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const Normal_fit fit = choose_parameter(get_parameter(np, internal_np::normal_fit), Normal_fit::QUADRIC);
+  return choose_parameter(get_parameter(np, internal_np::neighbor_count),
+                          radius_given ? std::size_t(0) : default_normal_neighbors(fit));
+}
+
+// The normals' scale, checked (std::invalid_argument): the radius or count, and the automatic
+// scale's ladder (largest 0 without it).
+template <class NamedParameters>
+Scale_ladder normal_scale_ladder(const NamedParameters& np, bool radius_given, double radius)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
   const char* name = "estimate_oriented_normals";
   const Normal_fit fit = choose_parameter(get_parameter(np, internal_np::normal_fit), Normal_fit::QUADRIC);
-  const std::size_t k = choose_parameter(get_parameter(np, internal_np::neighbor_count),
-                                         radius_given ? std::size_t(0) : default_normal_neighbors(fit));
+  const std::size_t k = normal_neighbor_count(np, radius_given);
   check_scale(radius, k, !radius_given, name);
   Scale_ladder ladder;
   ladder.largest = automatic_scale_parameter(np, radius_given, name);
@@ -695,29 +713,43 @@ std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, dou
   ladder.statistic = Scale_ladder::Statistic::NORMAL;
   if(ladder.largest > 0 && fit != Normal_fit::QUADRIC)
     throw std::invalid_argument("estimate_oriented_normals: parameter 'automatic_scale' needs Normal_fit::QUADRIC");
-  const Normal_orientation orientation =
-    choose_parameter(get_parameter(np, internal_np::normal_orientation), Normal_orientation());
-  for(double t : orientation.target)
-    if(!std::isfinite(t))
-      throw std::invalid_argument("estimate_oriented_normals: parameter 'normal_orientation' needs a finite target");
-  const std::function<bool(double)> callback =
-    choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
-  // the spanning tree (which AUTOMATIC may choose) spans the whole cloud
-  const bool global = orientation.kind == Normal_orientation::MINIMUM_SPANNING_TREE ||
-                      orientation.kind == Normal_orientation::AUTOMATIC;
+  return ladder;
+}
 
-  // 1. Unoriented normals and nearest neighbours, on the driver (the input normals are not read).
+// Whether the orientation spans the whole cloud: the spanning tree, which AUTOMATIC may choose.
+inline bool is_global(const Normal_orientation& orientation)
+{
+  return orientation.kind == Normal_orientation::MINIMUM_SPANNING_TREE ||
+         orientation.kind == Normal_orientation::AUTOMATIC;
+}
+
+// Step 1 of estimate_oriented_normals(): the unoriented normal and the nearest neighbours of
+// every point (indices of `points`), on the driver; with a tile, of the tile's own points only
+// (the others NOT_COMPUTED), whatever the orientation: a global orientation is then the
+// caller's, over the records of every tile gathered (as the tool does for files larger than
+// its memory limit), bitwise as over the whole cloud. `callback` gets the fraction done and
+// returns false to cancel, which sets `cancelled`. The input normals are not read.
+template <class ConcurrencyTag, class PointRange, class NamedParameters>
+std::vector<Normal_record> estimate_normal_records(PointRange& points, bool radius_given, double radius,
+                                                   const NamedParameters& np,
+                                                   const std::function<bool(double)>& callback, bool& cancelled)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
+  typedef typename NP_helper::Geom_traits Geom_traits;
+  typedef typename Geom_traits::Vector_3 Vector_3;
+  const char* name = "estimate_oriented_normals";
+  const Normal_fit fit = choose_parameter(get_parameter(np, internal_np::normal_fit), Normal_fit::QUADRIC);
+  const std::size_t k = normal_neighbor_count(np, radius_given);
+  const Scale_ladder ladder = normal_scale_ladder(np, radius_given, radius);
   Neighborhood_options options;
   options.function_name = name;
   options.tile = choose_parameter(get_parameter(np, internal_np::tile), Tile::whole_space());
   options.has_tile = !options.tile.is_whole_space();
-  if(options.has_tile && global)
-    throw std::invalid_argument("estimate_oriented_normals: parameter 'tile' needs an orientation along a vector "
-                                "or towards a point: a spanning tree, and the automatic choice, need the whole cloud");
-  bool cancelled = false;
   if(callback)
-    options.callback = [&callback, &cancelled, global](double f) {
-      const bool go_on = callback(global ? 0.7 * f : f);
+    options.callback = [&callback, &cancelled](double f) {
+      const bool go_on = callback(f);
       cancelled = cancelled || !go_on;
       return go_on;
     };
@@ -750,9 +782,20 @@ std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, dou
   if(!options.has_tile)  // (with a tile, the other points are not computed)
     for(const Normal_record& r : records)
       cancelled = cancelled || r.status == Curvature_estimate_status::NOT_COMPUTED;
+  return records;
+}
 
-  // 2. Orientation.
+// Step 2 of estimate_oriented_normals(): the unit normals `n` (3 per record, zero where a
+// record is not VALID) of `records` oriented as `orientation` says, `xyz` holding the points'
+// coordinates (3 per record). For AUTOMATIC, the cloud is 2.5-D by the records' normals. The
+// spanning tree's `tree_progress` gets the fraction of the points visited; returns false if
+// it cancelled.
+inline bool orient_normal_records(const std::vector<Normal_record>& records, const std::vector<double>& xyz,
+                                  const Normal_orientation& orientation, std::vector<double>& n,
+                                  const std::function<bool(double)>& tree_progress)
+{
   const std::size_t count = records.size();
+  const bool global = is_global(orientation);
   bool upward = false;  // AUTOMATIC on a 2.5-D cloud
   if(orientation.kind == Normal_orientation::AUTOMATIC)
   {
@@ -765,13 +808,9 @@ std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, dou
       }
     upward = is_two_and_a_half_d(vertical, usable);
   }
-  std::vector<double> n(3 * count, 0.0), xyz(3 * count, 0.0);
-  std::size_t i = 0;
-  for(auto it = points.begin(); it != points.end(); ++it, ++i)
+  n.assign(3 * count, 0.0);
+  for(std::size_t i = 0; i < count; ++i)
   {
-    const auto& p = get(point_map, *it);
-    const double x[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
-    std::copy(x, x + 3, &xyz[3 * i]);
     if(records[i].status != Curvature_estimate_status::VALID)
       continue;
     std::copy(records[i].normal, records[i].normal + 3, &n[3 * i]);
@@ -780,17 +819,62 @@ std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, dou
     double t[3] = {orientation.target[0], orientation.target[1], orientation.target[2]};
     if(orientation.kind == Normal_orientation::TOWARDS_POINT)
       for(int a = 0; a < 3; ++a)
-        t[a] -= x[a];
+        t[a] -= xyz[3 * i + a];
     if(n[3 * i] * t[0] + n[3 * i + 1] * t[1] + n[3 * i + 2] * t[2] < 0)
       for(int a = 0; a < 3; ++a)
         n[3 * i + a] = -n[3 * i + a];
   }
-  if(global && !cancelled)
+  return !global || orient_along_spanning_tree(records, xyz, n, upward, tree_progress);
+}
+
+// The common body of the two overloads.
+template <class ConcurrencyTag, class PointRange, class NamedParameters>
+std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, double radius,
+                                      const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
+  typedef typename NP_helper::Geom_traits Geom_traits;
+  typedef typename Geom_traits::Vector_3 Vector_3;
+  static_assert(NP_helper::has_normal_map(),
+                "Error: no normal map. Pass CGAL::parameters::normal_map(...): the normals are "
+                "written there.");
+  normal_scale_ladder(np, radius_given, radius);  // (its exceptions first, as before the split)
+  const Normal_orientation orientation = chosen_normal_orientation(np);
+  const std::function<bool(double)> callback =
+    choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
+  const bool global = is_global(orientation);
+  if(!choose_parameter(get_parameter(np, internal_np::tile), Tile::whole_space()).is_whole_space() && global)
+    throw std::invalid_argument("estimate_oriented_normals: parameter 'tile' needs an orientation along a vector "
+                                "or towards a point: a spanning tree, and the automatic choice, need the whole cloud");
+
+  // 1. Unoriented normals and nearest neighbours (the fit is the first 70% of the progress
+  // with the spanning tree).
+  bool cancelled = false;
+  std::function<bool(double)> fit_progress;
+  if(callback)
+    fit_progress = [&callback, global](double f) { return callback(global ? 0.7 * f : f); };
+  const std::vector<Normal_record> records =
+    estimate_normal_records<ConcurrencyTag>(points, radius_given, radius, np, fit_progress, cancelled);
+
+  // 2. Orientation.
+  const auto point_map = NP_helper::get_const_point_map(points, np);
+  std::vector<double> n, xyz(3 * records.size(), 0.0);
+  std::size_t i = 0;
+  for(auto it = points.begin(); it != points.end(); ++it, ++i)
+  {
+    const auto& p = get(point_map, *it);
+    xyz[3 * i] = CGAL::to_double(p.x());
+    xyz[3 * i + 1] = CGAL::to_double(p.y());
+    xyz[3 * i + 2] = CGAL::to_double(p.z());
+  }
+  if(!cancelled)
   {
     std::function<bool(double)> tree_progress;
     if(callback)
       tree_progress = [&callback](double f) { return callback(0.7 + 0.3 * f); };
-    cancelled = !orient_along_spanning_tree(records, xyz, n, upward, tree_progress);
+    cancelled = !orient_normal_records(records, xyz, orientation, n, tree_progress);
   }
 
   // 3. Output: the normals, zero where there is none (those points are then INVALID_NORMAL
