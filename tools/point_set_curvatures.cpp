@@ -143,7 +143,7 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
   const bool with_normals = input.cloud.has_normals();
   refuse_without_normals(o, with_normals);
   const bool global = !with_normals && CGAL::Point_set_curvatures::internal::is_global(orientation.orientation);
-  if(global && memory_limit < least_memory_for_tiled_normals(double(n), true))
+  if(memory_limit < least_memory_for_tiled_normals(double(n), global))
     throw Error(cat(too_large, " and has no normals: ",
                     "orienting them along a spanning tree over the whole cloud (",
                     o.orientation_text == "auto" ? "--orient auto here" : "--orient mst", ") needs --memory-limit ",
@@ -172,7 +172,7 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
   const auto slow_tiling = [&](const char* makes, std::size_t tiles, std::size_t few_grid, double few_points) {
     return cat("--memory-limit ", size_text(memory_limit), makes, tiles, " tiles, each read again from the input "
                "with its halo: slow; --memory-limit ",
-               memory_argument(few_points * tiling.point_bytes + (with_normals ? 0.0 : 24.0 * double(n))),
+               memory_argument(few_points * tiling.point_bytes + (with_normals ? 0.0 : gathered_normal_bytes * double(n))),
                " gives at most ",
                plural(few_grid, "tile"));
   };
@@ -189,7 +189,7 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
   {
     normals = estimate_tiled_normals(o.input, read_options, input, o, tile_orientation, tiling);
     tiling.normals = &normals.normals;
-    tiling.memory_limit = std::max(0.0, tiling.memory_limit - 24.0 * double(n));
+    tiling.memory_limit = std::max(0.0, tiling.memory_limit - gathered_normal_bytes * double(n));
   }
   Range_estimator estimator(o, scale, tile_orientation, true);
   const Tile_estimator estimate = [&](Tile_points& points, const PSC::Tile& tile,

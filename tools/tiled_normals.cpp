@@ -28,8 +28,14 @@ namespace {
 // also the oriented normals and the tree's graph (offsets, 24 neighbours of 4 bytes, the bucket
 // queue's edges, arrays of a byte to 4 bytes per point: by_height, visited, piece, part);
 // otherwise the normals only.
-double gathered_bytes(bool global) { return global ? double(sizeof(Normal_record)) + 24 : 24; }
-double peak_bytes(bool global) { return global ? gathered_bytes(true) + 24 + 8 + 96 + 64 + 17 : 24; }
+double gathered_bytes(bool global)
+{
+  return global ? double(sizeof(Normal_record)) + 24 : gathered_normal_bytes;
+}
+double peak_bytes(bool global)
+{
+  return global ? gathered_bytes(true) + gathered_normal_bytes + 8 + 96 + 64 + 17 : gathered_normal_bytes;
+}
 
 } // namespace
 

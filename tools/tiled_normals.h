@@ -31,6 +31,10 @@
 
 namespace psc_tool {
 
+// The bytes a point of the file that the estimated normals take once gathered (3 doubles),
+// beside the curvature tiles.
+constexpr double gathered_normal_bytes = 24;
+
 // The least memory limit for the normals of `points` points oriented over the whole cloud
 // (`global`: a spanning tree): the gathered arrays at the orientation's peak, with a quarter
 // more as headroom (the tiles, before, have all but the records and coordinates); 0 otherwise

@@ -685,19 +685,8 @@ Normal_orientation chosen_normal_orientation(const NamedParameters& np)
   return orientation;
 }
 
-// The count k of the normals' fit (0 by radius).
-template <class NamedParameters>
-std::size_t normal_neighbor_count(const NamedParameters& np, bool radius_given)
-{
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  const Normal_fit fit = choose_parameter(get_parameter(np, internal_np::normal_fit), Normal_fit::QUADRIC);
-  return choose_parameter(get_parameter(np, internal_np::neighbor_count),
-                          radius_given ? std::size_t(0) : default_normal_neighbors(fit));
-}
-
-// The normals' scale, checked (std::invalid_argument): the radius or count, and the automatic
-// scale's ladder (largest 0 without it).
+// The normals' scale, checked (std::invalid_argument): the radius or the count k of the fit
+// (ladder.smallest; 0 by radius), and the automatic scale's ladder (largest 0 without it).
 template <class NamedParameters>
 Scale_ladder normal_scale_ladder(const NamedParameters& np, bool radius_given, double radius)
 {
@@ -705,7 +694,8 @@ Scale_ladder normal_scale_ladder(const NamedParameters& np, bool radius_given, d
   using CGAL::parameters::get_parameter;
   const char* name = "estimate_oriented_normals";
   const Normal_fit fit = choose_parameter(get_parameter(np, internal_np::normal_fit), Normal_fit::QUADRIC);
-  const std::size_t k = normal_neighbor_count(np, radius_given);
+  const std::size_t k = choose_parameter(get_parameter(np, internal_np::neighbor_count),
+                                         radius_given ? std::size_t(0) : default_normal_neighbors(fit));
   check_scale(radius, k, !radius_given, name);
   Scale_ladder ladder;
   ladder.largest = automatic_scale_parameter(np, radius_given, name);
@@ -741,8 +731,8 @@ std::vector<Normal_record> estimate_normal_records(PointRange& points, bool radi
   typedef typename Geom_traits::Vector_3 Vector_3;
   const char* name = "estimate_oriented_normals";
   const Normal_fit fit = choose_parameter(get_parameter(np, internal_np::normal_fit), Normal_fit::QUADRIC);
-  const std::size_t k = normal_neighbor_count(np, radius_given);
   const Scale_ladder ladder = normal_scale_ladder(np, radius_given, radius);
+  const std::size_t k = ladder.smallest;
   Neighborhood_options options;
   options.function_name = name;
   options.tile = choose_parameter(get_parameter(np, internal_np::tile), Tile::whole_space());
