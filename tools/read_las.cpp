@@ -161,11 +161,25 @@ double extra_value(const char* p, int data_type)
 
 } // namespace
 
-Point_cloud read_las(Byte_source& bytes, const std::string& path, const Read_options& options)
+namespace {
+
+// The fields of a LAS header that locate and decode the point records, checked.
+struct Las_header
 {
-  const bool keep_attributes = options.keep_attributes;
+  int minor = 0, format = 0;
+  std::size_t header_size = 0, record_length = 0;
+  std::uint64_t point_offset = 0, count = 0, file_size = 0;
+  std::uint32_t vlr_count = 0;
+  double scale[3] = {1, 1, 1}, offset[3] = {0, 0, 0}, min_bound[3] = {0, 0, 0}, max_bound[3] = {0, 0, 0};
+};
+
+// Reads the header at the start of `bytes` (which it leaves there) and checks it; throws Error
+// for what read_las() refuses. The point records are not checked to be in the file.
+Las_header read_las_header(Byte_source& bytes, const std::string& path)
+{
   auto fail = [&](const std::string& what) { throw Error(cat(in_quotes(path), ": ", what)); };
-  const std::uint64_t file_size = bytes.remaining();
+  Las_header l;
+  l.file_size = bytes.remaining();
   if(bytes.fill(227) < 227)
     fail("not a LAS file (shorter than a LAS header)");
   const char* h = bytes.data();
@@ -174,53 +188,77 @@ Point_cloud read_las(Byte_source& bytes, const std::string& path, const Read_opt
   const int major = little<std::uint8_t>(h + 24), minor = little<std::uint8_t>(h + 25);
   if(major != 1 || minor > 4)
     fail(cat("LAS version ", major, ".", minor, " is not supported (1.0 to 1.4 are)"));
-  const std::size_t header_size = little<std::uint16_t>(h + 94);
-  const std::uint64_t point_offset = little<std::uint32_t>(h + 96);
-  const std::uint32_t vlr_count = little<std::uint32_t>(h + 100);
+  l.minor = minor;
+  l.header_size = little<std::uint16_t>(h + 94);
+  l.point_offset = little<std::uint32_t>(h + 96);
+  l.vlr_count = little<std::uint32_t>(h + 100);
   const int format_byte = little<std::uint8_t>(h + 104);
-  const std::size_t record_length = little<std::uint16_t>(h + 105);
+  l.record_length = little<std::uint16_t>(h + 105);
   const std::size_t required_header = minor >= 4 ? 375 : minor == 3 ? 235 : 227;
   if(format_byte & 0xC0)
     fail("compressed LAS (LAZ) data: decompress it first, for example with 'laszip -i FILE -o FILE.las'");
-  const int format = format_byte;
+  const int format = l.format = format_byte;
   if(format > 10 || (format > 5 && minor < 4) || (format > 3 && minor < 3))
     fail(cat("point data record format ", format, " is not valid in LAS 1.", minor));
-  if(header_size < required_header)
-    fail(cat("header size ", header_size, " is smaller than the ", required_header, " bytes of a LAS 1.", minor,
+  if(l.header_size < required_header)
+    fail(cat("header size ", l.header_size, " is smaller than the ", required_header, " bytes of a LAS 1.", minor,
              " header"));
-  if(point_offset < header_size || point_offset > file_size)
-    fail(cat("offset to the point data ", point_offset, " is outside the file (header ", header_size,
-             " bytes, file ", file_size, " bytes)"));
-  if(record_length < format_size[format])
-    fail(cat("point record length ", record_length, " is smaller than the ", format_size[format],
+  if(l.point_offset < l.header_size || l.point_offset > l.file_size)
+    fail(cat("offset to the point data ", l.point_offset, " is outside the file (header ", l.header_size,
+             " bytes, file ", l.file_size, " bytes)"));
+  if(l.record_length < format_size[format])
+    fail(cat("point record length ", l.record_length, " is smaller than the ", format_size[format],
              " bytes of point format ", format));
-  double scale[3], offset[3], max_bound[3], min_bound[3];
   for(int a = 0; a < 3; ++a)
   {
-    scale[a] = little<double>(h + 131 + 8 * a);
-    offset[a] = little<double>(h + 155 + 8 * a);
-    max_bound[a] = little<double>(h + 179 + 16 * a);
-    min_bound[a] = little<double>(h + 187 + 16 * a);
-    if(!(scale[a] != 0) || !std::isfinite(scale[a]) || !std::isfinite(offset[a]))
-      fail(cat("invalid ", "XYZ"[a], " scale factor ", scale[a], " or offset ", offset[a]));
+    l.scale[a] = little<double>(h + 131 + 8 * a);
+    l.offset[a] = little<double>(h + 155 + 8 * a);
+    l.max_bound[a] = little<double>(h + 179 + 16 * a);
+    l.min_bound[a] = little<double>(h + 187 + 16 * a);
+    if(!(l.scale[a] != 0) || !std::isfinite(l.scale[a]) || !std::isfinite(l.offset[a]))
+      fail(cat("invalid ", "XYZ"[a], " scale factor ", l.scale[a], " or offset ", l.offset[a]));
   }
-  std::uint64_t count = little<std::uint32_t>(h + 107);
+  l.count = little<std::uint32_t>(h + 107);
   if(minor >= 4)
   {
-    if(bytes.fill(header_size) < 375)
+    if(bytes.fill(l.header_size) < 375)
       fail("truncated LAS 1.4 header");
     h = bytes.data();
     const std::uint64_t count64 = little<std::uint64_t>(h + 247);
-    if(count != 0 && count != count64)
-      fail(cat("the header's point counts disagree (", count, " and ", count64, ")"));
-    count = count64;
+    if(l.count != 0 && l.count != count64)
+      fail(cat("the header's point counts disagree (", l.count, " and ", count64, ")"));
+    l.count = count64;
   }
+  return l;
+}
+
+// The records declared that are in the file (what follows them is allowed: waveforms,
+// extended variable length records).
+std::uint64_t complete_records(const Las_header& l)
+{
+  return (l.file_size - l.point_offset) / l.record_length;
+}
+
+} // namespace
+
+Point_cloud read_las(Byte_source& bytes, const std::string& path, const Read_options& options)
+{
+  const bool keep_attributes = options.keep_attributes;
+  auto fail = [&](const std::string& what) { throw Error(cat(in_quotes(path), ": ", what)); };
+  const Las_header l = read_las_header(bytes, path);
+  const std::uint64_t file_size = l.file_size, point_offset = l.point_offset;
+  const std::size_t header_size = l.header_size, record_length = l.record_length;
+  const std::uint32_t vlr_count = l.vlr_count;
+  const int minor = l.minor, format = l.format;
+  const double* const scale = l.scale;
+  const double* const offset = l.offset;
+  const double* const min_bound = l.min_bound;
+  const double* const max_bound = l.max_bound;
+  std::uint64_t count = l.count;
   Point_cloud cloud;
-  // the records declared must be in the file (what follows them is allowed: waveforms,
-  // extended variable length records)
-  if((long double)count * record_length > (long double)(file_size - point_offset))
+  if(count > complete_records(l))
   {
-    const std::uint64_t complete = (file_size - point_offset) / record_length;
+    const std::uint64_t complete = complete_records(l);
     if(!options.allow_truncated)
       fail(cat("truncated: the header declares ", count, " points of ", record_length, " bytes from byte ",
                point_offset, ", the file has ", file_size, " bytes (", complete, " complete records: "
@@ -596,4 +634,26 @@ Point_cloud read_las(Byte_source& bytes, const std::string& path, const Read_opt
 }
 
 } // namespace input
+
+Las_point_layout las_point_layout(const std::string& path)
+{
+  using namespace input;
+  Byte_source bytes(path, regular_file_size(path), Progress());
+  const Las_header l = read_las_header(bytes, path);
+  if(l.count > complete_records(l))
+    throw Error(cat(in_quotes(path), ": truncated: the header declares ", l.count, " points of ", l.record_length,
+                    " bytes from byte ", l.point_offset, ", the file has ", l.file_size, " bytes (",
+                    complete_records(l), " complete records)"));
+  Las_point_layout layout;
+  layout.offset = l.point_offset;
+  layout.count = l.count;
+  layout.record_size = l.record_length;
+  for(int a = 0; a < 3; ++a)
+  {
+    layout.scale[a] = l.scale[a];
+    layout.shift[a] = l.offset[a];
+  }
+  return layout;
+}
+
 } // namespace psc_tool

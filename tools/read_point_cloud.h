@@ -173,6 +173,20 @@ struct Ply_vertex_layout
 // properties in or before the vertices (records of varying size), or a file too short.
 Ply_vertex_layout ply_vertex_layout(const std::string& path);
 
+// Where the point records of an uncompressed LAS file lie: record i at offset + i *
+// record_size, its coordinates the little-endian int32 X Y Z at its start, x = X * scale[0] +
+// shift[0] (as read_point_cloud() computes them), and so on.
+struct Las_point_layout
+{
+  std::uint64_t offset = 0, count = 0, record_size = 0;
+  double scale[3] = {1, 1, 1}, shift[3] = {0, 0, 0};
+};
+
+// The layout of the point records of the LAS file `path`, from its header as
+// read_point_cloud() reads it; the records are not read, but the file must hold every one.
+// Throws Error for what read_point_cloud() refuses in the header, or a file too short.
+Las_point_layout las_point_layout(const std::string& path);
+
 } // namespace psc_tool
 
 #endif

@@ -551,8 +551,9 @@ def estimate_curvatures(
         radius, neighbors = _whole_cloud_scale(points, radius, neighbors)
     if normals is None:
         normals, progress = _estimated_normals(points, neighbors == "auto", threads, progress, tile)
-        if method == "aso" and options.get("position_fit_blend") is None:  # (only the ASO reads it)
-            opts.position_fit_blend = _core.default_position_fit_blend(opts.aso_variant, True)
+        blend = _blend_on_estimated_normals(method, options)
+        if blend is not None:
+            opts.position_fit_blend = blend
     return _core.estimate_curvatures(
         method,
         points,
@@ -565,6 +566,17 @@ def estimate_curvatures(
         tile,
         weights,
     )
+
+
+def _blend_on_estimated_normals(method, options):
+    """The option position_fit_blend of a run on normals estimate_curvatures estimated: the
+    library's default for them, None where the method does not read it (only the ASO does) or
+    the caller gave it. The options are those checked by estimate_curvatures."""
+    if method != "aso" or options.get("position_fit_blend") is not None:
+        return None
+    variant = options.get("aso_variant")
+    variant = _core._Options().aso_variant if variant is None else _choice("aso_variant", variant, _ASO_VARIANTS)
+    return _core.default_position_fit_blend(variant, True)
 
 
 def _estimated_normals(points, automatic, threads, progress, tile):
@@ -806,6 +818,29 @@ def apss_smooth_point_set(
 _AXES = {"+x": (1, 0, 0), "-x": (-1, 0, 0), "+y": (0, 1, 0), "-y": (0, -1, 0), "+z": (0, 0, 1), "-z": (0, 0, -1)}
 
 
+def _orientation(orientation):
+    """(kind, target) of a normal orientation as estimate_normals() takes it (kind: 0 spanning
+    tree, 1 along the target, 2 towards it, 3 automatic); ValueError for anything else."""
+    if isinstance(orientation, str):
+        orientation = orientation.lower()
+        if orientation == "mst":
+            return 0, (0.0, 0.0, 1.0)
+        if orientation == "auto":
+            return 3, (0.0, 0.0, 1.0)
+        if orientation in _AXES:
+            return 1, tuple(float(v) for v in _AXES[orientation])
+        raise ValueError(f"orientation: expected 'mst', 'auto', '+x', ..., '-z', ('along', v) or ('towards', p), got {orientation!r}")
+    try:
+        what, target = orientation
+        target = tuple(_real("orientation vector", v) for v in target)
+    except (TypeError, ValueError):
+        raise ValueError(f"orientation: expected ('along', (x, y, z)) or ('towards', (x, y, z)), got {orientation!r}") from None
+    what = what.lower() if isinstance(what, str) else what
+    if what not in ("along", "towards") or len(target) != 3:
+        raise ValueError(f"orientation: expected ('along', (x, y, z)) or ('towards', (x, y, z)), got {orientation!r}")
+    return (1 if what == "along" else 2), target
+
+
 def estimate_normals(points, *, neighbors=None, radius=None, orientation="mst", fit="quadric", threads=None,
                      progress=None):
     """Oriented normals for a cloud without (``CGAL::estimate_oriented_normals``): the
@@ -835,26 +870,7 @@ def estimate_normals(points, *, neighbors=None, radius=None, orientation="mst", 
     if radius is None and neighbors is None:
         neighbors = _core.DEFAULT_NORMAL_NEIGHBORS[0 if fit_code == 1 else 1]
     radius, neighbors = _scale(radius, neighbors, automatic=fit_code == 1)
-    if isinstance(orientation, str):
-        orientation = orientation.lower()
-        if orientation == "mst":
-            kind, target = 0, (0.0, 0.0, 1.0)
-        elif orientation == "auto":
-            kind, target = 3, (0.0, 0.0, 1.0)
-        elif orientation in _AXES:
-            kind, target = 1, _AXES[orientation]
-        else:
-            raise ValueError(f"orientation: expected 'mst', 'auto', '+x', ..., '-z', ('along', v) or ('towards', p), got {orientation!r}")
-    else:
-        try:
-            what, target = orientation
-            target = tuple(_real("orientation vector", v) for v in target)
-        except (TypeError, ValueError):
-            raise ValueError(f"orientation: expected ('along', (x, y, z)) or ('towards', (x, y, z)), got {orientation!r}") from None
-        what = what.lower() if isinstance(what, str) else what
-        if what not in ("along", "towards") or len(target) != 3:
-            raise ValueError(f"orientation: expected ('along', (x, y, z)) or ('towards', (x, y, z)), got {orientation!r}")
-        kind = 1 if what == "along" else 2
+    kind, target = _orientation(orientation)
     progress = _progress(progress)
     points = _array(points, "points")
     radius, neighbors = _whole_cloud_scale(points, radius, neighbors)

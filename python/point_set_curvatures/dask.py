@@ -15,8 +15,9 @@ neighbours are found: a tile whose halo is too small fails with
 (with the ASO's default sample weights, also when its neighbours' areas need a larger one).
 
 :func:`estimate_curvatures` takes arrays held by the client and scatters each tile's points;
-:func:`estimate_curvatures_file` takes PLY / .npy files that the workers read themselves, tile
-by tile, writing their own points' rows of a .npy output (for clouds larger than the client).
+:func:`estimate_curvatures_file` takes PLY, .npy and LAS files that the workers read themselves,
+tile by tile, writing their own points' rows of a .npy output (for clouds larger than the
+client); files without normals get them in a first pass of tiles.
 
 Both survive the loss of workers: a task whose worker dies is run again elsewhere (dask's
 ``retries``), and with :func:`estimate_curvatures` a tile whose scattered rows were lost with
@@ -42,7 +43,9 @@ from concurrent.futures import CancelledError
 import numpy as np
 
 from . import _METHOD_OPTIONS, AUTOMATIC_NEIGHBORS, HaloTooSmall, SampleWeights, Status, TileGrid, _core, _int, _method, _real
+from . import _blend_on_estimated_normals, _orientation, _threads
 from . import _weights
+from . import _file_sources as _files
 from . import _default_neighbors, _whole_cloud_box, _whole_cloud_scale
 from . import estimate_curvatures as _estimate_curvatures
 
@@ -312,102 +315,13 @@ RESULT_DTYPE = np.dtype([
 #: :data:`RESULT_DTYPE` and ``mean_error``, the standard error of ``mean`` at the chosen scale.
 AUTOMATIC_RESULT_DTYPE = np.dtype(RESULT_DTYPE.descr + [("mean_error", "<f8")])
 
-_XYZN = ("x", "y", "z", "nx", "ny", "nz")
-
-
-def _ply_source(path):
-    """(offset, record dtype, rows) of the vertices of a binary PLY file, as the package's PLY
-    reader (the tool's, ``_core.ply_vertex_layout``) finds them: x y z and the normals (nx ny
-    nz or normal_x normal_y normal_z), of any scalar type."""
-    layout = _core.ply_vertex_layout(path)
-    if layout["normals"] is None:
-        raise ValueError(f"{path}: the PLY vertices have no normals (nx ny nz or normal_x normal_y normal_z); "
-                         "estimate them first, e.g. with point_set_curvatures.estimate_normals")
-    order = ">" if layout["big_endian"] else "<"
-    roles = layout["xyz"] + layout["normals"]  # (name, numpy type code, offset) each
-    record = np.dtype({"names": list(_XYZN), "formats": [order + code for _, code, _ in roles],
-                       "offsets": [offset for _, _, offset in roles], "itemsize": layout["record_size"]})
-    return layout["offset"], record, layout["count"]
-
-
-def _npy_source(path):
-    """(offset, record dtype, rows) of an (N, 6) .npy array of floats (x y z nx ny nz)."""
-    try:
-        a = np.load(path, mmap_mode="r", allow_pickle=False)
-    except ValueError as e:
-        raise ValueError(f"{path}: not a readable .npy array ({e})") from None
-    shape, dtype, offset = a.shape, a.dtype, getattr(a, "offset", 0)
-    fortran = a.ndim == 2 and not a.flags.c_contiguous
-    del a
-    if len(shape) != 2 or shape[1] != 6 or dtype.kind != "f" or dtype.fields is not None:
-        raise ValueError(f"{path}: expected a .npy array of shape (N, 6) of float32 or float64 "
-                         f"(x y z nx ny nz), got shape {shape} and dtype {dtype}")
-    if fortran and shape[0] > 1:
-        raise ValueError(f"{path}: Fortran-order .npy arrays are not supported (save a C-order array)")
-    s = dtype.itemsize
-    record = np.dtype({"names": list(_XYZN), "formats": [dtype] * 6, "offsets": [a * s for a in range(6)],
-                       "itemsize": 6 * s})
-    return offset, record, shape[0]
-
-
-def _open_sources(paths):
-    """The cloud of a file or list of files: a list of (path, offset, record dtype, rows)."""
-    if isinstance(paths, (str, bytes)) or hasattr(paths, "__fspath__"):
-        paths = [paths]
-    sources = []
-    for path in paths:
-        path = os.path.abspath(os.fspath(path))
-        with open(path, "rb") as f:
-            magic = f.read(6)
-        if magic.startswith(b"ply"):
-            offset, dtype, rows = _ply_source(path)
-        elif magic == b"\x93NUMPY":
-            offset, dtype, rows = _npy_source(path)
-        else:
-            raise ValueError(f"{path}: neither a PLY nor a .npy file")
-        size = os.path.getsize(path)
-        if size < offset + rows * dtype.itemsize:
-            raise ValueError(f"{path}: truncated ({size} bytes, the header announces "
-                             f"{offset + rows * dtype.itemsize})")
-        sources.append((path, offset, dtype, rows))
-    if not sources:
-        raise ValueError("no input file")
-    return sources
-
-
-def _blocks(sources, block_rows):
-    """Every block of the cloud: an int64 array of rows (source, first row, end row, first
-    global index)."""
-    out, base = [], 0
-    for s, (_, _, _, rows) in enumerate(sources):
-        for start in range(0, rows, block_rows):
-            out.append((s, start, min(rows, start + block_rows), base + start))
-        base += rows
-    return np.array(out, dtype=np.int64).reshape(-1, 4)
-
-
-def _read(sources, block, columns):
-    """Reads `columns` of a block as a float64 (rows, len(columns)) array (the block mapped
-    only while reading: the file's pages do not stay in the worker's memory)."""
-    s, start, stop, _ = (int(v) for v in block)
-    path, offset, dtype, _ = sources[s]
-    mm = np.memmap(path, dtype=dtype, mode="r", offset=offset + start * dtype.itemsize, shape=(stop - start,))
-    try:
-        out = np.empty((stop - start, len(columns)))
-        for a, c in enumerate(columns):
-            out[:, a] = mm[c]
-        return out
-    finally:
-        del mm
-
-
 def _scan_task(sources, blocks):
     """Pass 1, on a worker: per block, the bounding box of its finite points and their count."""
     lo = np.full((len(blocks), 3), np.inf)
     hi = np.full((len(blocks), 3), -np.inf)
     finite = np.zeros(len(blocks), dtype=np.int64)
     for b, block in enumerate(blocks):
-        p = _read(sources, block, _XYZN[:3])
+        p = _files.read(sources, block, _files.XYZ)
         p = p[np.isfinite(p).all(axis=1)]
         if len(p):
             lo[b], hi[b], finite[b] = p.min(axis=0), p.max(axis=0), len(p)
@@ -437,7 +351,7 @@ def _count_task(sources, blocks, grid_args, output):
     fd = os.open(path, os.O_WRONLY)
     try:
         for block in blocks:
-            owner = grid.tile_of(_read(sources, block, _XYZN[:3]))
+            owner = grid.tile_of(_files.read(sources, block, _files.XYZ))
             counts += np.bincount(owner, minlength=len(grid) + 1)
             nonfinite = owner == len(grid)
             rec = _default_rows(len(owner), dtype, Status.NOT_COMPUTED)
@@ -476,38 +390,37 @@ def _peak_rss():
         return 0
 
 
-def _file_tile_task(sources, blocks, core_min, core_max, halo, output, kwargs):
-    """A tile, on a worker: reads from the files the points of `blocks` within the halo box
-    (input order kept), estimates the tile and writes its own points' rows into the output.
-    Idempotent (a retried task rewrites the same bytes). Returns a summary, or
-    ``("halo", required_halo)``."""
-    t0 = time.perf_counter()
+def _halo_points(sources, blocks, core_min, core_max, halo, normals):
+    """The points of `blocks` within the halo box of a tile, in input order: (their indices in
+    the cloud, points, normals); the normals read from the files (``normals`` "files"), from
+    the (N, 3) .npy array of estimated normals at the path ``normals``, or not (None: None)."""
     box_lo = np.asarray(core_min, dtype=float) - halo
     box_hi = np.asarray(core_max, dtype=float) + halo
-    index, points, normals = [], [], []
+    index, points, given = [], [], []
     for block in blocks:
-        p = _read(sources, block, _XYZN[:3])
+        p = _files.read(sources, block, _files.XYZ)
         sel = np.nonzero(np.all((p >= box_lo) & (p <= box_hi), axis=1))[0]
         if len(sel):
             index.append(sel + int(block[3]))
             points.append(p[sel])
-            normals.append(_read(sources, block, _XYZN[3:])[sel])
-    if index:
-        index, points, normals = np.concatenate(index), np.concatenate(points), np.concatenate(normals)
-    else:
-        index, points, normals = np.zeros(0, dtype=np.int64), np.zeros((0, 3)), np.zeros((0, 3))
-    t1 = time.perf_counter()
-    result = estimate_tile(points, normals, core_min, core_max, halo, **kwargs)
-    t2 = time.perf_counter()
-    if isinstance(result[0], str):
-        return result
-    own, r = result
-    rows = index[own]
-    records = np.empty(len(rows), dtype=output[3])
-    for k, v in r.items():
-        records[k] = v
-    _write_rows(output, rows, records)
-    t3 = time.perf_counter()
+            if normals == "files":
+                given.append(_files.read(sources, block, _files.NORMALS)[sel])
+    index = np.concatenate(index) if index else np.zeros(0, dtype=np.int64)
+    points = np.concatenate(points) if points else np.zeros((0, 3))
+    if normals is None:
+        return index, points, None
+    if normals == "files":
+        return index, points, np.concatenate(given) if given else np.zeros((0, 3))
+    estimated = np.load(normals, mmap_mode="r")
+    try:
+        return index, points, np.array(estimated[index], dtype=np.float64)
+    finally:
+        del estimated
+
+
+def _tile_summary(rows, index, t0, t1, t2, t3):
+    """What a tile task returns: its own rows written, the points it read, the sums of the
+    rows' indices (checked by the client), the time of each phase, the worker's memory."""
     u = rows.astype(np.uint64)
     return {
         "own": len(rows),
@@ -522,6 +435,88 @@ def _file_tile_task(sources, blocks, core_min, core_max, halo, output, kwargs):
         "start": time.time() - (t3 - t0),
         "stop": time.time(),
     }
+
+
+def _file_tile_task(sources, blocks, core_min, core_max, halo, output, kwargs, normals="files"):
+    """A tile, on a worker: reads from the files the points of `blocks` within the halo box
+    (input order kept), and their normals (``normals``: as :func:`_halo_points`), estimates
+    the tile and writes its own points' rows into the output. Idempotent (a retried task
+    rewrites the same bytes). Returns a summary, or ``("halo", required_halo)``."""
+    t0 = time.perf_counter()
+    index, points, normals = _halo_points(sources, blocks, core_min, core_max, halo, normals)
+    t1 = time.perf_counter()
+    result = estimate_tile(points, normals, core_min, core_max, halo, **kwargs)
+    t2 = time.perf_counter()
+    if isinstance(result[0], str):
+        return result
+    own, r = result
+    rows = index[own]
+    records = np.empty(len(rows), dtype=output[3])
+    for k, v in r.items():
+        records[k] = v
+    _write_rows(output, rows, records)
+    return _tile_summary(rows, index, t0, t1, t2, time.perf_counter())
+
+
+def _record_dtype():
+    """A point's normal record in the file of a spanning tree's pass: its unoriented normal,
+    its nearest neighbours (indices of the cloud; zero past ``degree``), their number, its
+    status."""
+    return np.dtype([("normal", "<f8", (3,)), ("neighbor", "<u4", (_core.NORMAL_RECORD_DEGREE,)),
+                     ("degree", "u1"), ("status", "u1")])
+
+
+def _file_normal_tile_task(sources, blocks, core_min, core_max, halo, output, neighbors, orientation, threads):
+    """A tile of the normals' pass, on a worker: the normals of its own points, oriented
+    (``orientation`` (kind, target) of a per-point orientation) or, for a spanning tree
+    (``orientation`` None), their records (:func:`_record_dtype`), written into their rows of
+    ``output``. Returns a summary as :func:`_file_tile_task`, or ``("halo", required_halo)``."""
+    t0 = time.perf_counter()
+    index, points, _ = _halo_points(sources, blocks, core_min, core_max, halo, None)
+    t1 = time.perf_counter()
+    tile = (tuple(core_min), tuple(core_max), float(halo))
+    try:
+        normal, neighbor, degree, status = _core.normal_records(points, None, neighbors, 1, tile, _threads(threads),
+                                                                None)
+    except HaloTooSmall as e:
+        return ("halo", float(e.required_halo))
+    own = np.all((points >= np.asarray(core_min)) & (points < np.asarray(core_max)), axis=1)  # Tile::owns
+    rows = index[own]
+    if orientation is None:
+        records = np.zeros(len(rows), dtype=output[3])
+        records["normal"] = normal[own]
+        d = degree[own]
+        listed = np.arange(neighbor.shape[1]) < d[:, None]
+        records["neighbor"] = np.where(listed, index[neighbor[own]], 0)  # (as indices of the cloud)
+        records["degree"] = d
+        records["status"] = status[own]
+    else:
+        kind, target = orientation
+        oriented = _core.orient_normal_records(normal, neighbor, degree, status, points, kind, list(target), 1, None)
+        records = np.ascontiguousarray(oriented[own])
+    t2 = time.perf_counter()
+    _write_rows(output, rows, records)
+    return _tile_summary(rows, index, t0, t1, t2, time.perf_counter())
+
+
+def _orient_task(sources, blocks, records_path, output, nonfinite, orientation, threads):
+    """The spanning tree's pass, on one worker: the records of every point (their file at
+    ``records_path``; the non-finite points', which no tile wrote, marked so) oriented over the
+    whole cloud as ``estimate_normals`` orients them, written to ``output``. Returns
+    {"seconds", "peak_rss"}."""
+    t0 = time.perf_counter()
+    records = np.load(records_path, mmap_mode="r")
+    try:
+        status = np.array(records["status"])
+        status[nonfinite] = Status.NON_FINITE_POINT
+        xyz = np.concatenate([_files.read(sources, b, _files.XYZ) for b in blocks]) if len(blocks) else np.zeros((0, 3))
+        kind, target = orientation
+        normals = _core.orient_normal_records(records["normal"], records["neighbor"], records["degree"], status, xyz,
+                                              kind, list(target), _threads(threads), None)
+    finally:
+        del records
+    _write_rows(output, np.arange(len(normals)), normals)
+    return {"seconds": time.perf_counter() - t0, "peak_rss": _peak_rss()}
 
 
 @contextlib.contextmanager
@@ -552,7 +547,7 @@ def read_result(path):
 
 def estimate_curvatures_file(client, input_path, output_path, *, method="aso", radius=None, neighbors=None,
                              tile_size=None, threads=1, retries=2, initial_halo=None, block_rows=BLOCK_ROWS,
-                             **options):
+                             normal_orientation=None, **options):
     """Estimates curvatures of a cloud stored in files on a dask.distributed cluster, the
     workers reading their own tiles from the files and writing their own points' results.
 
@@ -560,12 +555,14 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
     ----------
     client : distributed.Client
     input_path : path or list of paths
-        A binary PLY file (little- or big-endian; vertex properties ``x y z`` and ``nx ny
-        nz`` or ``normal_x normal_y normal_z`` of any scalar type, other scalar properties
-        ignored, no list property in or before the vertex element; its header is read by the
-        package's PLY reader, the tool's), or a ``.npy`` array of shape (N, 6) (float32 or float64, C
-        order, columns x y z nx ny nz); a list of such files is one cloud, concatenated in
-        order.
+        A binary PLY file (little- or big-endian; vertex properties ``x y z`` and, if it has
+        them, ``nx ny nz`` or ``normal_x normal_y normal_z``, of any scalar type, other scalar
+        properties ignored, no list property in or before the vertex element; its header is
+        read by the package's PLY reader, the tool's), a ``.npy`` array of shape (N, 6) (x y z
+        nx ny nz) or (N, 3) (x y z) (float32 or float64, C order), or an uncompressed LAS file
+        (1.0 to 1.4, any point format; its coordinates as the package's LAS reader gives them,
+        its other fields not read); a list of such files is one cloud, concatenated in order,
+        every file with normals or none.
     output_path : path
         Written as a ``.npy`` structured array of N records of :data:`RESULT_DTYPE` (the fields
         of :func:`point_set_curvatures.estimate_curvatures`), or of :data:`AUTOMATIC_RESULT_DTYPE`
@@ -577,26 +574,43 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
         robust ASO, the default method).
     block_rows : int
         Rows read at a time, and the unit of spatial pruning.
+    normal_orientation : str or tuple or None
+        For files without normals, which are then estimated as
+        :func:`point_set_curvatures.estimate_curvatures` estimates them (the automatic scale
+        with the automatic scale, else the 40 nearest; and ``position_fit_blend`` 0.5 for the
+        ASO), their orientation, as :func:`point_set_curvatures.estimate_normals` takes it.
+        Default: ``"auto"`` for LAS files (the tool's default for LAS files without pulse
+        directions, which the Dask route does not read: +z on 2.5-D scans), else ``"mst"``
+        (``estimate_curvatures(points, None)``'s). ``"mst"`` and ``"auto"`` need the whole
+        cloud: the tiles write each point's unoriented normal and 12 nearest neighbours (74
+        bytes a point) to a temporary file beside the output, and one task orients them all
+        (about 400 bytes a point on one worker); ``"+z"``, another axis, ``("along", v)`` or
+        ``("towards", p)`` orient each point in its tile. Refused for files with normals.
 
     Every path must be readable (inputs) and writable (output) under the same name by the
     client and every worker (a shared file system on a cluster). The result is bitwise equal to
     :func:`point_set_curvatures.estimate_curvatures` on the concatenated arrays (converted to
-    float64).
+    float64); without normals, to it on the normals of
+    ``estimate_normals(points, neighbors=..., orientation=normal_orientation)`` with
+    ``position_fit_blend=0.5`` (``estimate_curvatures(points, None)`` for ``"mst"``).
 
     Returns
     -------
     dict
         A report: ``points``, ``finite_points``, ``tiles`` (tasks that estimated a non-empty
         tile), ``resubmitted`` (tiles run again with a larger halo), ``tile_side``,
-        ``grid_counts``, ``seconds`` (per phase: ``scan``, ``count``, ``tiles``, ``total``) and
+        ``grid_counts``, ``seconds`` (per phase: ``scan``, ``count``, ``normals``, ``tiles``,
+        ``total``), ``normals`` (files without normals: ``tiles``, ``resubmitted``,
+        ``spanning_tree``, ``tile_reports``, ``orientation`` (the orienting task's ``seconds``
+        and ``peak_rss``, or None), ``seconds``) and
         ``tile_reports`` (one dict per tile task: ``own``, ``halo_points``, ``read_seconds``,
         ``compute_seconds``, ``write_seconds``, ``peak_rss`` of the worker process, ``pid``,
         ``start``, ``stop``).
 
     How it runs: pass 1 (tasks over groups of blocks) finds each block's bounding box; pass 2
     counts the own points of every tile of the grid (and writes the rows of non-finite points);
-    then one task per non-empty tile reads only the blocks whose box meets the tile's halo box,
-    estimates and writes. Only paths, boxes and block numbers travel in the tasks, and only
+    without normals, the normals' pass (above) on the same tiles; then one task per non-empty
+    tile reads only the blocks whose box meets the tile's halo box, estimates and writes. Only paths, boxes and block numbers travel in the tasks, and only
     summaries come back. The workers write disjoint rows of a preallocated memory-mapped
     output rather than sending results to the client: the client then never holds more than
     the small per-block and per-tile arrays (gathering would need the whole result, about 121
@@ -604,10 +618,10 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
     bytes. Every point is checked to be written by exactly one tile (own counts per tile, and
     sums of the indices), else RuntimeError.
     """
-    from distributed import as_completed
-
     if "tile" in options:
         raise ValueError("option 'tile' is chosen by point_set_curvatures.dask")
+    if normal_orientation is not None:
+        _orientation(normal_orientation)  # (checked before any file is read or written)
     if _weight_array(options) is not None:
         raise ValueError("option 'sample_weights': per-point weights (an array) are not supported for "
                          "clouds in files; use 'uniform' or 'tangent_voronoi_area'")
@@ -621,9 +635,19 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
     kwargs = dict(method=method, radius=radius, neighbors=neighbors, threads=threads, **options)
     # the arguments checked here, not by every task (dask would retry a failing task)
     _estimate_curvatures(np.zeros((0, 3)), np.zeros((0, 3)), tile=_check_tile(radius), **kwargs)
-    sources = _open_sources(input_path)
-    blocks = _blocks(sources, block_rows)
-    n = sum(s[3] for s in sources)
+    sources = _files.open_sources(input_path)
+    blocks = _files.blocks(sources, block_rows)
+    n = sum(s.rows for s in sources)
+    with_normals = _files.has_normals(sources[0])
+    if with_normals and normal_orientation is not None:
+        raise ValueError("normal_orientation: the files have normals, which are used as they are")
+    if not with_normals:
+        if normal_orientation is None:  # the tool's default: LAS files are scans, often 2.5-D
+            normal_orientation = "auto" if all(s.scale is not None for s in sources) else "mst"
+        orientation = _orientation(normal_orientation)
+        blend = _blend_on_estimated_normals(method, options)
+        if blend is not None:
+            kwargs["position_fit_blend"] = blend
     output_path = os.path.abspath(os.fspath(output_path))
     dtype = AUTOMATIC_RESULT_DTYPE if neighbors == "auto" else RESULT_DTYPE
     out = np.lib.format.open_memmap(output_path, mode="w+", dtype=dtype, shape=(n,))
@@ -648,11 +672,15 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
         if n:
             _write_rows(output, np.arange(n), _default_rows(n, dtype))
         t = time.perf_counter() - t_start
-        report["seconds"] = {"scan": t_scan - t_start, "count": 0.0, "tiles": 0.0, "total": t}
+        report["seconds"] = {"scan": t_scan - t_start, "count": 0.0, "normals": 0.0, "tiles": 0.0, "total": t}
         return report
     lo, hi = block_lo.min(axis=0), block_hi.max(axis=0)
     radius, neighbors = _whole_cloud_box(finite, lo, hi, radius, neighbors)
     kwargs.update(radius=radius, neighbors=neighbors)
+    if not with_normals:  # estimate_curvatures' own estimate of the normals
+        _, normal_neighbors = _whole_cloud_box(finite, lo, hi, None,
+                                               "auto" if neighbors == "auto" else _core.DEFAULT_NORMAL_NEIGHBORS[0],
+                                               "normals: ")
     if tile_size is None:
         tile_size = _tile_side(lo, hi, max(4 * nthreads, math.ceil(finite / 500_000)))
     grid_args = (tuple(lo), tuple(hi), float(tile_size))
@@ -671,19 +699,52 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
     if int(counts.sum()) != finite or len(nonfinite) != n - finite:
         raise RuntimeError("point_set_curvatures.dask: the passes over the files disagree (files modified?)")
 
-    halo = _first_halo(radius, neighbors, initial_halo, lo, hi, finite)
-
-    def submit(i, h):
+    def near(i, h):
+        """The blocks whose box meets tile i's halo box."""
         tile = grid.tile(i, h)
         box_lo = np.asarray(tile.core_min) - h
         box_hi = np.asarray(tile.core_max) + h
-        near = np.all((block_hi >= box_lo) & (block_lo <= box_hi), axis=1)
-        return client.submit(_file_tile_task, sources, blocks[near], tile.core_min, tile.core_max, h, output,
-                             kwargs, key=f"psc-tile-{token}-{i}-{h!r}", retries=retries)
+        return tile, blocks[np.all((block_hi >= box_lo) & (block_lo <= box_hi), axis=1)]
+
+    temporary = []  # files of the normals' pass, removed whatever happens
+    try:
+        normals = "files"
+        if not with_normals:
+            normals = _estimate_file_normals(client, sources, blocks, near, counts, nonfinite, lo, hi, finite,
+                                             normal_neighbors, orientation, initial_halo, threads, retries, token,
+                                             output_path, temporary, report)
+        t_normals = time.perf_counter()
+
+        def submit(i, h):
+            tile, tile_blocks = near(i, h)
+            return client.submit(_file_tile_task, sources, tile_blocks, tile.core_min, tile.core_max, h, output,
+                                 kwargs, normals, key=f"psc-tile-{token}-{i}-{h!r}", retries=retries)
+
+        report["tile_reports"], report["resubmitted"] = _tile_pass(
+            client, submit, counts, _first_halo(radius, neighbors, initial_halo, lo, hi, finite), lo, hi, n, nonfinite)
+    finally:
+        for path in temporary:
+            with contextlib.suppress(OSError):
+                os.remove(path)
+    t_tiles = time.perf_counter()
+    report.update(tiles=len(report["tile_reports"]), tile_side=float(tile_size), grid_counts=tuple(grid.counts))
+    report["seconds"] = {"scan": t_scan - t_start, "count": t_count - t_scan, "normals": t_normals - t_count,
+                         "tiles": t_tiles - t_normals, "total": t_tiles - t_start}
+    return report
+
+
+def _tile_pass(client, submit, counts, halo, lo, hi, n, nonfinite):
+    """Runs ``submit(i, halo)`` (a future of a tile task) for every tile i with own points
+    (``counts``), resubmits with a larger halo the tiles that ask for one, and checks that
+    the tiles wrote every finite point of the n exactly once (own counts per tile, and sums of
+    the indices); returns (the tiles' summaries, each with the halo it ended with, ``"halo"``,
+    and the number of resubmissions)."""
+    from distributed import as_completed
 
     pending = {}
     for i in np.nonzero(counts)[0]:
         pending[submit(int(i), halo)] = (int(i), halo)
+    reports, resubmitted = [], 0
     index_sum = index_square_sum = 0
     with _cancel_on_error(client, pending):
         done = as_completed(list(pending))
@@ -696,23 +757,74 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
                 new = submit(i, h)
                 pending[new] = (i, h)
                 done.add(new)
-                report["resubmitted"] += 1
+                resubmitted += 1
                 continue
             if result["own"] != counts[i]:
                 raise RuntimeError(f"point_set_curvatures.dask: tile {i} wrote {result['own']} points, "
                                    f"{counts[i]} expected")
             result["tile"] = i
-            report["tile_reports"].append(result)
+            result["halo"] = h
+            reports.append(result)
             index_sum += result["index_sum"]
             index_square_sum += result["index_square_sum"]
-    t_tiles = time.perf_counter()
     # every finite index exactly once: counts above, sums here (the squares modulo 2**64)
     bad = [int(v) for v in nonfinite]
     expected_sum = n * (n - 1) // 2 - sum(bad)
     expected_squares = ((n - 1) * n * (2 * n - 1) // 6 - sum(v * v for v in bad)) % (1 << 64)
     if index_sum != expected_sum or index_square_sum % (1 << 64) != expected_squares:
         raise RuntimeError("point_set_curvatures.dask: the tiles did not write every point exactly once")
-    report.update(tiles=len(report["tile_reports"]), tile_side=float(tile_size), grid_counts=tuple(grid.counts))
-    report["seconds"] = {"scan": t_scan - t_start, "count": t_count - t_scan, "tiles": t_tiles - t_count,
-                         "total": t_tiles - t_start}
-    return report
+    return reports, resubmitted
+
+
+def _estimate_file_normals(client, sources, blocks, near, counts, nonfinite, lo, hi, finite, neighbors, orientation,
+                           initial_halo, threads, retries, token, output_path, temporary, report):
+    """The normals of a cloud whose files have none, as ``estimate_normals(points,
+    neighbors=neighbors, orientation=orientation)`` gives them (bitwise): one task per tile
+    estimates its own points' (and orients them, for an orientation per point); for a
+    spanning tree ("mst", "auto") the tiles write each point's record (its unoriented normal
+    and nearest neighbours) and one task orients them over the whole cloud. Returns the path
+    of the (N, 3) .npy array of normals, a temporary file beside the output (listed in
+    ``temporary``); reports in ``report["normals"]``."""
+    n = int(counts.sum()) + len(nonfinite)
+    kind, target = orientation
+    spanning_tree = kind in (0, 3)
+    if spanning_tree and n > np.iinfo(np.uint32).max:
+        raise ValueError(f"a spanning tree orients at most {np.iinfo(np.uint32).max} points, the files hold {n}: "
+                         "give normal_orientation='+z' (airborne scans), another axis or ('towards', scanner)")
+    t0 = time.perf_counter()
+    normals_path = f"{output_path}.{token}.normals.npy"
+    temporary.append(normals_path)
+    mm = np.lib.format.open_memmap(normals_path, mode="w+", dtype=np.float64, shape=(n, 3))
+    normals_output = (normals_path, mm.offset, n, np.dtype((np.float64, (3,))))
+    del mm
+    if spanning_tree:
+        records_path = f"{output_path}.{token}.records.npy"
+        temporary.append(records_path)
+        dtype = _record_dtype()
+        mm = np.lib.format.open_memmap(records_path, mode="w+", dtype=dtype, shape=(n,))
+        tile_output = (records_path, mm.offset, n, dtype)
+        del mm
+    else:
+        tile_output = normals_output
+
+    def submit(i, h):
+        tile, tile_blocks = near(i, h)
+        return client.submit(_file_normal_tile_task, sources, tile_blocks, tile.core_min, tile.core_max, h,
+                             tile_output, neighbors, None if spanning_tree else (kind, target), threads,
+                             key=f"psc-normals-{token}-{i}-{h!r}", retries=retries)
+
+    count = AUTOMATIC_NEIGHBORS[1] if neighbors == "auto" else neighbors
+    halo = float(initial_halo) if initial_halo is not None else _core.halo_guess_for_count(
+        tuple(map(float, lo)), tuple(map(float, hi)), int(finite), int(count))
+    tiles, resubmitted = _tile_pass(client, submit, counts, halo, lo, hi, n, nonfinite)
+    t1 = time.perf_counter()
+    orientation_report = None
+    if spanning_tree:
+        future = client.submit(_orient_task, sources, blocks, records_path, normals_output, nonfinite, (kind, target),
+                               threads, key=f"psc-orient-{token}", retries=retries)
+        orientation_report = future.result()
+        future.release()
+    report["normals"] = {"tiles": len(tiles), "resubmitted": resubmitted, "tile_reports": tiles,
+                         "spanning_tree": spanning_tree, "orientation": orientation_report,
+                         "seconds": {"tiles": t1 - t0, "orientation": time.perf_counter() - t1}}
+    return normals_path

@@ -8,6 +8,8 @@ from typing import Any, Dict, Literal, Optional, Sequence, Tuple, Union
 import numpy as np
 import numpy.typing as npt
 
+from . import Orientation
+
 _Path = Union[str, "os.PathLike[str]"]
 
 BLOCK_ROWS: int
@@ -54,6 +56,7 @@ def estimate_curvatures_file(
     retries: int = ...,
     initial_halo: Optional[float] = ...,
     block_rows: int = ...,
+    normal_orientation: Optional[Orientation] = ...,
     **options: Any,
 ) -> Dict[str, Any]: ...
 def read_result(path: _Path) -> Dict[str, np.ndarray]: ...

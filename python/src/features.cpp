@@ -4,6 +4,7 @@
 // Python bindings: the algebraic sphere features, the flow and the normal estimation.
 
 #include "features.h"
+#include "run.h"
 
 #include <CGAL/apss_smooth_point_set.h>
 #include <CGAL/estimate_tangent_voronoi_areas.h>
@@ -90,28 +91,68 @@ std::size_t default_normal_neighbors(int fit)
   return CGAL::Point_set_curvatures::default_normal_neighbors(CGAL::Normal_fit(fit));
 }
 
+namespace {
+
+CGAL::Normal_orientation normal_orientation(int orientation, const double target[3])
+{
+  if(orientation == 1)
+    return CGAL::Normal_orientation::along_vector(target[0], target[1], target[2]);
+  if(orientation == 2)
+    return CGAL::Normal_orientation::towards_point(target[0], target[1], target[2]);
+  if(orientation == 3)
+    return CGAL::Normal_orientation::automatic();
+  return CGAL::Normal_orientation::minimum_spanning_tree();
+}
+
+// The normals' named parameters but the orientation's.
+template <class Base>
+auto normal_parameters(const Scale& s, int fit, const Base& base)
+{
+  namespace P = CGAL::Point_set_curvatures::parameters;
+  return P::normal_fit(fit == 0 ? CGAL::Normal_fit::PLANE : CGAL::Normal_fit::QUADRIC,
+                       P::automatic_scale(s.automatic_largest, P::neighbor_count(s.by_count ? s.k : 0, base)));
+}
+
+} // namespace
+
 std::size_t oriented_normals(Cloud& cloud, const Scale& s, int orientation, const double target[3], int fit,
                              bool parallel, const Callback& cb)
 {
   namespace P = CGAL::Point_set_curvatures::parameters;
-  CGAL::Normal_orientation o = CGAL::Normal_orientation::minimum_spanning_tree();
-  if(orientation == 1)
-    o = CGAL::Normal_orientation::along_vector(target[0], target[1], target[2]);
-  else if(orientation == 2)
-    o = CGAL::Normal_orientation::towards_point(target[0], target[1], target[2]);
-  else if(orientation == 3)
-    o = CGAL::Normal_orientation::automatic();
-  const auto np = P::normal_orientation(o, P::normal_fit(fit == 0 ? CGAL::Normal_fit::PLANE : CGAL::Normal_fit::QUADRIC,
-                    P::automatic_scale(s.automatic_largest,
-                    P::neighbor_count(s.by_count ? s.k : 0,
-                      CGAL::parameters::point_map(CGAL::First_of_pair_property_map<Oriented>())
-                        .normal_map(CGAL::Second_of_pair_property_map<Oriented>())
-                        .callback(cb)))));
+  const auto np = P::normal_orientation(normal_orientation(orientation, target),
+                    normal_parameters(s, fit, CGAL::parameters::point_map(CGAL::First_of_pair_property_map<Oriented>())
+                                                .normal_map(CGAL::Second_of_pair_property_map<Oriented>())
+                                                .callback(cb)));
   if(parallel)
     return s.by_count ? CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(cloud, np)
                       : CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(cloud, s.radius, np);
   return s.by_count ? CGAL::estimate_oriented_normals<CGAL::Sequential_tag>(cloud, np)
                     : CGAL::estimate_oriented_normals<CGAL::Sequential_tag>(cloud, s.radius, np);
+}
+
+std::vector<Normal_record> normal_records(Cloud& cloud, const Scale& s, int fit, const Tile_arg& t, bool parallel,
+                                          const Callback& cb)
+{
+  namespace P = CGAL::Point_set_curvatures::parameters;
+  namespace I = CGAL::Point_set_curvatures::internal;
+  const auto np = normal_parameters(
+    s, fit, P::tile(t.has ? t.tile : CGAL::Point_set_curvatures::Tile::whole_space(),
+                    CGAL::parameters::point_map(CGAL::First_of_pair_property_map<Oriented>())));
+  bool cancelled = false;
+  std::vector<Normal_record> records =
+    parallel ? I::estimate_normal_records<CGAL::Parallel_tag>(cloud, !s.by_count, s.radius, np, cb, cancelled)
+             : I::estimate_normal_records<CGAL::Sequential_tag>(cloud, !s.by_count, s.radius, np, cb, cancelled);
+  if(cancelled)
+    throw Cancelled_error();
+  return records;
+}
+
+void orient_normal_records(const std::vector<Normal_record>& records, const std::vector<double>& xyz,
+                           int orientation, const double target[3], std::vector<double>& normals, const Callback& cb)
+{
+  if(!CGAL::Point_set_curvatures::internal::orient_normal_records(records, xyz, normal_orientation(orientation, target),
+                                                                   normals, cb))
+    throw Cancelled_error();
 }
 
 } // namespace psc_py

@@ -10,6 +10,7 @@
 #include "common.h"
 
 #include <CGAL/estimate_algebraic_sphere_features.h>
+#include <CGAL/estimate_oriented_normals.h>
 
 namespace psc_py {
 
@@ -27,6 +28,16 @@ std::vector<CGAL::Curvature_estimate_status> smooth_point_set(Cloud& cloud, doub
 // 3 automatic; fit: 0 plane, 1 quadric (CGAL::Normal_fit).
 std::size_t oriented_normals(Cloud& cloud, const Scale&, int orientation, const double target[3], int fit,
                              bool parallel, const Callback&);
+// The two steps of oriented_normals() apart, for a cloud estimated in tiles (the Dask file
+// route): the unoriented normal and 12 nearest neighbours of every point (of the tile's own
+// points with a tile: the others NOT_COMPUTED), then their orientation over the records of the
+// whole cloud, `xyz` 3 coordinates a record, into `normals` (3 a record, zero where a record
+// is not VALID). Both are CGAL::estimate_oriented_normals()'s, bitwise.
+typedef CGAL::Point_set_curvatures::internal::Normal_record Normal_record;
+std::vector<Normal_record> normal_records(Cloud& cloud, const Scale&, int fit, const Tile_arg&, bool parallel,
+                                          const Callback&);
+void orient_normal_records(const std::vector<Normal_record>& records, const std::vector<double>& xyz,
+                           int orientation, const double target[3], std::vector<double>& normals, const Callback&);
 // CGAL::Point_set_curvatures::default_normal_neighbors() of a fit (0 plane, 1 quadric).
 std::size_t default_normal_neighbors(int fit);
 

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // Python bindings: the package's file readers (tools/read_point_cloud.h, the tool's), for
-// point_set_curvatures.read_point_cloud() and the Dask driver's blocks of binary PLY files.
+// point_set_curvatures.read_point_cloud() and the Dask driver's blocks of binary PLY and LAS files.
 // Their errors (a malformed or unreadable file) are ValueErrors with the readers' message.
 
 #ifndef POINT_SET_CURVATURES_PYTHON_FILE_READERS_H
@@ -106,6 +106,20 @@ inline py::dict ply_vertex_layout_py(const std::string& path)
   };
   d["xyz"] = roles(layout.xyz);
   d["normals"] = roles(layout.normal);
+  return d;
+}
+
+// Where the point records of an uncompressed LAS file lie: {"offset", "count", "record_size",
+// "scale" (3), "shift" (3)}; x = X * scale[0] + shift[0] for the int32 X at the record's start.
+inline py::dict las_point_layout_py(const std::string& path)
+{
+  const psc_tool::Las_point_layout layout = reading([&] { return psc_tool::las_point_layout(path); });
+  py::dict d;
+  d["offset"] = layout.offset;
+  d["count"] = layout.count;
+  d["record_size"] = layout.record_size;
+  d["scale"] = py::make_tuple(layout.scale[0], layout.scale[1], layout.scale[2]);
+  d["shift"] = py::make_tuple(layout.shift[0], layout.shift[1], layout.shift[2]);
   return d;
 }
 

@@ -15,6 +15,7 @@
 #include "features.h"
 #include "file_readers.h"
 #include "input_arrays.h"
+#include "normal_records.h"
 #include "output_arrays.h"
 #include "run.h"
 #include "surface.h"
@@ -307,11 +308,18 @@ PYBIND11_MODULE(_core, m)
         py::arg("options"));
   m.def("estimate_normals", &normals_py, py::arg("points"), py::arg("radius"), py::arg("neighbors"),
         py::arg("orientation"), py::arg("target"), py::arg("fit"), py::arg("threads"), py::arg("progress"));
+  m.attr("NORMAL_RECORD_DEGREE") = record_degree;
+  m.def("normal_records", &normal_records_py, py::arg("points"), py::arg("radius"), py::arg("neighbors"),
+        py::arg("fit"), py::arg("tile"), py::arg("threads"), py::arg("progress"));
+  m.def("orient_normal_records", &orient_normal_records_py, py::arg("normal"), py::arg("neighbor"),
+        py::arg("degree"), py::arg("status"), py::arg("xyz"), py::arg("orientation"), py::arg("target"),
+        py::arg("threads"), py::arg("progress"));
 
   // The package's file readers (the tool's), for read_point_cloud() and the Dask driver.
   m.def("read_point_cloud", &read_point_cloud_py, py::arg("path"), py::arg("columns"), py::arg("attributes"),
         py::arg("allow_truncated"));
   m.def("ply_vertex_layout", &ply_vertex_layout_py, py::arg("path"));
+  m.def("las_point_layout", &las_point_layout_py, py::arg("path"));
 
   py::class_<Surface>(m, "_Surface")
     .def(py::init<const py::handle&, const py::handle&, double, int>(), py::arg("points"), py::arg("normals"),

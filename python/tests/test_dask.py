@@ -392,11 +392,9 @@ def test_file_bad_input(client, tmp_path):
     p, q = fibonacci_sphere(100)
     (tmp_path / "ascii.ply").write_text(
         "ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\nproperty float z\nend_header\n")
-    np.save(tmp_path / "shape.npy", np.zeros((10, 3)))
+    np.save(tmp_path / "shape.npy", np.zeros((10, 4)))
     np.save(tmp_path / "ints.npy", np.zeros((10, 6), dtype=np.int32))
-    (tmp_path / "nonormal.ply").write_bytes(
-        b"ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty double x\nproperty double y\n"
-        b"property double z\nend_header\n" + bytes(24))
+    np.save(tmp_path / "xyz.npy", p)
     (tmp_path / "list.ply").write_bytes(
         b"ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty double x\nproperty double y\n"
         b"property double z\nproperty list uchar int idx\nend_header\n" + bytes(25))
@@ -405,13 +403,69 @@ def test_file_bad_input(client, tmp_path):
         f.truncate(os.path.getsize(tmp_path / "short.ply") - 50)
     (tmp_path / "text.txt").write_text("1 2 3 0 0 1\n")
     for name, what in [("ascii.ply", "only binary"), ("shape.npy", "shape"), ("ints.npy", "float"),
-                       ("nonormal.ply", "nx"), ("list.ply", "list"), ("short.ply", "truncated"),
+                       ("list.ply", "list"), ("short.ply", "truncated"),
                        ("text.txt", "neither")]:
         with pytest.raises(ValueError, match=what):
             psc_dask.estimate_curvatures_file(client, tmp_path / name, tmp_path / "o.npy", radius=0.1)
     np.save(tmp_path / "ok.npy", np.hstack([p, q]))
+    with pytest.raises(ValueError, match="has no normals"):  # one cloud: every file with normals or none
+        psc_dask.estimate_curvatures_file(client, [tmp_path / "ok.npy", tmp_path / "xyz.npy"], tmp_path / "o.npy")
+    with pytest.raises(ValueError, match="normal_orientation: the files have normals"):
+        psc_dask.estimate_curvatures_file(client, tmp_path / "ok.npy", tmp_path / "o.npy", normal_orientation="+z")
+    with pytest.raises(ValueError, match="orientation: expected"):
+        psc_dask.estimate_curvatures_file(client, tmp_path / "xyz.npy", tmp_path / "o.npy", normal_orientation="up")
+    with open(DATA_DIR + "/real/sample_c.las", "rb") as f:
+        (tmp_path / "laz.las").write_bytes(f.read(104) + bytes([f.read(1)[0] | 0x80]) + f.read(300))
+    with pytest.raises(ValueError, match="LAZ"):
+        psc_dask.estimate_curvatures_file(client, tmp_path / "laz.las", tmp_path / "o.npy")
     with pytest.raises(ValueError, match="not both"):
         psc_dask.estimate_curvatures_file(client, tmp_path / "ok.npy", tmp_path / "o.npy", radius=0.5, neighbors=30)
     with pytest.raises(ValueError):
         psc_dask.estimate_curvatures_file(client, tmp_path / "ok.npy", tmp_path / "o.npy", radius=0.5,
                                           no_such_option=1)
+
+
+# ---------------------------------------------------------------------------------------------
+# Files without normals: the normals estimated tile by tile, as estimate_curvatures does
+# ---------------------------------------------------------------------------------------------
+
+DATA_DIR = os.environ.get("PSC_DATA_DIR", os.path.join(os.path.dirname(__file__), "..", "..", "data"))
+
+
+def test_file_las_without_normals(client, tmp_path):
+    """A LAS file (no normals): by default the tool's route, normals by the automatic scale
+    oriented by normal_orientation 'auto' (the spanning tree's records gathered from the tiles),
+    bitwise the single-process estimate on the coordinates the package's LAS reader gives; and
+    with a per-point orientation (+z), oriented in the tiles."""
+    path = os.path.join(DATA_DIR, "real", "sample_c.las")
+    points = psc.read_point_cloud(path)["points"]
+    blend = {"position_fit_blend": 0.5}
+    for orientation, neighbors in [("auto", 40), ("+z", "auto")]:
+        kwargs = {} if orientation == "auto" else {"normal_orientation": orientation}
+        report = psc_dask.estimate_curvatures_file(client, path, tmp_path / "o.npy", neighbors=neighbors,
+                                                   tile_size=60.0, **kwargs)
+        normals = psc.estimate_normals(points, neighbors=None if neighbors == 40 else "auto", orientation=orientation)
+        expected = psc.estimate_curvatures(points, normals, neighbors=neighbors, **blend)
+        assert_same(read_output(tmp_path / "o.npy"), expected)
+        assert report["normals"]["tiles"] >= 4 and report["normals"]["spanning_tree"] == (orientation == "auto")
+        assert (normals[:, 2] > 0).mean() > 0.97  # an airborne tile: its normals up
+        assert sorted(os.listdir(tmp_path)) == ["o.npy"]  # the normals' files removed
+
+
+def test_file_npy_without_normals_as_in_memory(client, tmp_path):
+    """An (N, 3) .npy file: estimate_curvatures(points, None), bitwise (a spanning tree over a
+    closed noisy sphere, outward), halos too small at first in both passes."""
+    points, _ = fibonacci_sphere(6000, radius=1.0, center=(1.0, 2.0, 3.0))
+    points += np.random.default_rng(3).normal(scale=0.004, size=points.shape)
+    points = points[np.random.default_rng(4).permutation(len(points))]
+    points[11] = np.nan
+    np.save(tmp_path / "c.npy", points)
+    with pytest.warns(UserWarning, match="no normals given"):
+        expected = psc.estimate_curvatures(points, None)
+    report = psc_dask.estimate_curvatures_file(client, tmp_path / "c.npy", tmp_path / "o.npy", tile_size=0.7,
+                                               initial_halo=0.05)
+    result = read_output(tmp_path / "o.npy")
+    assert_same(result, expected)
+    assert report["normals"]["resubmitted"] > 0 and report["resubmitted"] > 0
+    valid = result["status"] == psc.Status.VALID
+    assert valid.mean() > 0.99 and abs(np.median(result["mean"][valid]) - 1.0) < 0.05  # outward: H = 1/R
