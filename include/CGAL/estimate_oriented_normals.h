@@ -10,6 +10,7 @@
 #define CGAL_ESTIMATE_ORIENTED_NORMALS_H
 
 #include <CGAL/Point_set_curvatures/internal/automatic_scale.h>
+#include <CGAL/Point_set_curvatures/internal/crossing_parity.h>
 #include <CGAL/Point_set_curvatures/internal/evaluate_at_every_point.h>
 #include <CGAL/Point_set_curvatures/internal/pca_plane.h>
 #include <CGAL/Point_set_curvatures/internal/quadric_fit.h>
@@ -45,9 +46,14 @@ struct Normal_orientation
     /// entered across a thin part or between nearly perpendicular normals (where the side it
     /// passes on is a guess) are each turned to the side that the generalized winding number
     /// of the rest of the part says is outside, and the small ones (at most 100 points) then to
-    /// the side of their neighbours along the surface where 90% of their agreement says so. Thin
-    /// plates (about 12 spacings thick or less) can come out inward. For closed or unknown
-    /// shapes. Default.
+    /// the side of their neighbours along the surface where 90% of their agreement says so. Then
+    /// each part seen from all sides (closed or not; not those of a 2.5-D cloud under
+    /// `AUTOMATIC`) has each point's side checked by the parity of the surface crossings along
+    /// its normal's line (even outward, odd inward, counted on a grid of the part's points),
+    /// where a sample finds normals inward: the far face of a thin plate, which the tree reaches
+    /// round a knife-edge rim with the near face's side, and plates whose small flux left their
+    /// side to the mean normal. Plates thinner than about 3 nearest-neighbour distances stay
+    /// undecided (their faces share the grid's cells). For closed or unknown shapes. Default.
     MINIMUM_SPANNING_TREE,
     /// Every normal makes a non-negative dot product with `vector` (airborne scans: +z).
     ALONG_VECTOR,
@@ -582,8 +588,11 @@ inline void repair_closed_part(const std::vector<std::uint32_t>& part, const std
 // Orients the unit normals `n` (3 per point; records that are not VALID have none) by Prim's
 // algorithm on the symmetric graph of the records' neighbours, weights 1 - |n_i . n_j|
 // (quantized), from the highest unvisited usable point of each connected part; then turns
-// each part as a whole (choose_part_sign(), with `upward`). Deterministic. `progress` gets the
-// fraction of the points visited; returns false if cancelled.
+// each part as a whole (choose_part_sign(), with `upward`), repairs closed parts piece by
+// piece (repair_closed_part()) and, unless `upward`, checks each point of a part seen from all
+// sides by the parity of the crossings along its normal (repair_by_crossing_parity()).
+// Deterministic. `progress` gets the fraction of the points visited; returns false if
+// cancelled.
 inline bool orient_along_spanning_tree(const std::vector<Normal_record>& records,
                                        const std::vector<double>& xyz, std::vector<double>& n, bool upward,
                                        const std::function<bool(double)>& progress)
@@ -618,6 +627,23 @@ inline bool orient_along_spanning_tree(const std::vector<Normal_record>& records
   std::uint32_t pieces = 0;
   const std::size_t step = std::max<std::size_t>(1, by_height.size() / 100);
   std::size_t done = 0;
+  // for repair_by_crossing_parity(): the graph's neighbours, the farthest of a point's nearest
+  std::vector<signed char> vote(upward ? 0 : count, 0);
+  const auto neighbors = [&](std::uint32_t i, const auto& f) {
+    for(std::size_t a = offset[i]; a < offset[i + 1]; ++a)
+      f(adjacency[a]);
+  };
+  const auto reach = [&](std::uint32_t i) {
+    double farthest = 0;
+    const double* p = &xyz[3 * std::size_t(i)];
+    for(std::size_t e = 0; e < records[i].degree; ++e)
+    {
+      const double* q = &xyz[3 * std::size_t(records[i].neighbor[e])];
+      farthest = std::max(farthest, std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                                              (p[2] - q[2]) * (p[2] - q[2])));
+    }
+    return farthest;
+  };
   auto visit = [&](std::uint32_t i) {
     visited[i] = 1;
     part.push_back(i);
@@ -667,6 +693,8 @@ inline bool orient_along_spanning_tree(const std::vector<Normal_record>& records
     lowest = buckets;
     if(choose_part_sign(part, xyz, n, upward))
       repair_closed_part(part, piece, records, offset, adjacency, xyz, n);
+    if(!upward)  // (a 2.5-D cloud's open parts are turned up, point by point)
+      repair_by_crossing_parity(part, xyz, n, neighbors, reach, vote);
   }
   return true;
 }
