@@ -183,7 +183,7 @@ void print_usage(std::ostream& os)
      << "                     bounded memory (--radius as a length; without normals, they are\n"
      << "                     estimated in tiles first; a spanning tree (mst, auto but on LAS\n"
      << "                     files with pulses) orients them over the whole cloud in memory,\n"
-     << "                     about 410 bytes a point; not --method vcm,\n"
+     << "                     about 450 bytes a point; not --method vcm,\n"
      << "                     which needs every point; the automatic scale's halos\n"
      << "                     reach " << automatic_largest << " neighbours). A limit that makes more than 500 tiles, or\n"
      << "                     above the machine's RAM, is warned of\n"

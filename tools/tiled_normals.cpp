@@ -26,15 +26,16 @@ namespace {
 // The bytes per point of the file that the gathered arrays take while the tiles are estimated,
 // and at their peak: with a spanning tree, the records and coordinates, then at the orientation
 // also the oriented normals and the tree's graph (offsets, 24 neighbours of 4 bytes, the bucket
-// queue's edges, arrays of a byte to 4 bytes per point: by_height, visited, piece, part);
-// otherwise the normals only.
+// queue's edges, arrays of a byte to 4 bytes per point: by_height, visited, piece, part; and
+// the parity check's 29: its grid of at most 8 bytes a point, a part's scales and their sorted
+// copy, the points it turns, the votes); otherwise the normals only.
 double gathered_bytes(bool global)
 {
   return global ? double(sizeof(Normal_record)) + 24 : gathered_normal_bytes;
 }
 double peak_bytes(bool global)
 {
-  return global ? gathered_bytes(true) + gathered_normal_bytes + 8 + 96 + 64 + 17 : gathered_normal_bytes;
+  return global ? gathered_bytes(true) + gathered_normal_bytes + 8 + 96 + 64 + 17 + 29 : gathered_normal_bytes;
 }
 
 } // namespace

@@ -577,8 +577,8 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
     normal_orientation : str or tuple or None
         For files without normals, which are then estimated as
         :func:`point_set_curvatures.estimate_curvatures` estimates them (the automatic scale
-        with the automatic scale, else the 40 nearest; and ``position_fit_blend`` 0.5 for the
-        ASO), their orientation, as :func:`point_set_curvatures.estimate_normals` takes it.
+        with the automatic scale, else the 40 nearest; and ``position_fit_blend`` the library's
+        default for estimated normals, 0.5 for the robust ASO), their orientation, as :func:`point_set_curvatures.estimate_normals` takes it.
         Default: ``"auto"`` for LAS files (the tool's default for LAS files without pulse
         directions, which the Dask route does not read: +z on 2.5-D scans), else ``"mst"``
         (``estimate_curvatures(points, None)``'s). ``"mst"`` and ``"auto"`` need the whole
@@ -592,7 +592,8 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
     :func:`point_set_curvatures.estimate_curvatures` on the concatenated arrays (converted to
     float64); without normals, to it on the normals of
     ``estimate_normals(points, neighbors=..., orientation=normal_orientation)`` with
-    ``position_fit_blend=0.5`` (``estimate_curvatures(points, None)`` for ``"mst"``).
+    ``position_fit_blend=0.5`` for the robust ASO (``estimate_curvatures(points, None)`` for
+    ``"mst"``).
 
     Returns
     -------
@@ -645,6 +646,9 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
         if normal_orientation is None:  # the tool's default: LAS files are scans, often 2.5-D
             normal_orientation = "auto" if all(s.scale is not None for s in sources) else "mst"
         orientation = _orientation(normal_orientation)
+        if orientation[0] in (0, 3) and n > np.iinfo(np.uint32).max:
+            raise ValueError(f"a spanning tree orients at most {np.iinfo(np.uint32).max} points, the files hold {n}: "
+                             "give normal_orientation='+z' (airborne scans), another axis or ('towards', scanner)")
         blend = _blend_on_estimated_normals(method, options)
         if blend is not None:
             kwargs["position_fit_blend"] = blend
@@ -787,10 +791,7 @@ def _estimate_file_normals(client, sources, blocks, near, counts, nonfinite, lo,
     ``temporary``); reports in ``report["normals"]``."""
     n = int(counts.sum()) + len(nonfinite)
     kind, target = orientation
-    spanning_tree = kind in (0, 3)
-    if spanning_tree and n > np.iinfo(np.uint32).max:
-        raise ValueError(f"a spanning tree orients at most {np.iinfo(np.uint32).max} points, the files hold {n}: "
-                         "give normal_orientation='+z' (airborne scans), another axis or ('towards', scanner)")
+    spanning_tree = kind in (0, 3)  # (at most 2**32 - 1 points: checked by the caller)
     t0 = time.perf_counter()
     normals_path = f"{output_path}.{token}.normals.npy"
     temporary.append(normals_path)
@@ -822,7 +823,8 @@ def _estimate_file_normals(client, sources, blocks, near, counts, nonfinite, lo,
     if spanning_tree:
         future = client.submit(_orient_task, sources, blocks, records_path, normals_output, nonfinite, (kind, target),
                                threads, key=f"psc-orient-{token}", retries=retries)
-        orientation_report = future.result()
+        with _cancel_on_error(client, {future: None}):
+            orientation_report = future.result()
         future.release()
     report["normals"] = {"tiles": len(tiles), "resubmitted": resubmitted, "tile_reports": tiles,
                          "spanning_tree": spanning_tree, "orientation": orientation_report,

@@ -101,6 +101,10 @@ inline py::array_t<double> orient_normal_records_py(const py::handle& normal, co
     if(s > int(CGAL::Curvature_estimate_status::TWO_SHEETS))
       throw py::value_error("orient_normal_records: an unknown status " + std::to_string(s));
     r.status = CGAL::Curvature_estimate_status(s);
+    // a VALID record's normal is a unit vector (the orientation walks rays along it)
+    const double l2 = r.normal[0] * r.normal[0] + r.normal[1] * r.normal[1] + r.normal[2] * r.normal[2];
+    if(r.status == CGAL::Curvature_estimate_status::VALID && !(l2 > 0.98 && l2 < 1.02))
+      throw py::value_error("orient_normal_records: a valid record whose normal is not a unit vector");
   }
   const std::vector<double> points(px.data(), px.data() + 3 * n);
   std::vector<double> normals;

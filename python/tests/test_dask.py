@@ -469,3 +469,33 @@ def test_file_npy_without_normals_as_in_memory(client, tmp_path):
     assert report["normals"]["resubmitted"] > 0 and report["resubmitted"] > 0
     valid = result["status"] == psc.Status.VALID
     assert valid.mean() > 0.99 and abs(np.median(result["mean"][valid]) - 1.0) < 0.05  # outward: H = 1/R
+
+
+def test_orient_normal_records_refuses_bad_records():
+    """The binding of the spanning tree's pass checks the records it is given (they come from a
+    temporary file): neighbour indices within the records, known statuses, unit normals where
+    valid (the orientation walks rays along them)."""
+    from point_set_curvatures import _core
+
+    def records():
+        normal = np.zeros((3, 3))
+        normal[:, 2] = 1.0
+        return (normal, np.zeros((3, _core.NORMAL_RECORD_DEGREE), np.uint32), np.zeros(3, np.uint8),
+                np.zeros(3, np.uint8), np.zeros((3, 3)))
+
+    n = _core.orient_normal_records(*records(), 0, [0.0, 0.0, 1.0], 1, None)
+    assert n.shape == (3, 3) and np.all(n[:, 2] == 1.0)
+    normal, neighbor, degree, status, xyz = records()
+    normal[1] = 0.0
+    with pytest.raises(ValueError, match="unit vector"):
+        _core.orient_normal_records(normal, neighbor, degree, status, xyz, 0, [0.0, 0.0, 1.0], 1, None)
+    status[1] = psc.Status.DEGENERATE_FIT  # not valid: no normal needed
+    _core.orient_normal_records(normal, neighbor, degree, status, xyz, 0, [0.0, 0.0, 1.0], 1, None)
+    normal, neighbor, degree, status, xyz = records()
+    degree[0], neighbor[0, 0] = 1, 3
+    with pytest.raises(ValueError, match="beyond the records"):
+        _core.orient_normal_records(normal, neighbor, degree, status, xyz, 0, [0.0, 0.0, 1.0], 1, None)
+    normal, neighbor, degree, status, xyz = records()
+    status[2] = 99
+    with pytest.raises(ValueError, match="unknown status"):
+        _core.orient_normal_records(normal, neighbor, degree, status, xyz, 0, [0.0, 0.0, 1.0], 1, None)

@@ -51,6 +51,9 @@ public:
     if(cell(p, c))
       m_bits[c / 64] |= std::uint64_t(1) << (c % 64);
   }
+  // The most samples a ray from within the box takes to leave it in steps of half a cell (its
+  // diagonal in half-cells, and a margin).
+  std::size_t most_steps() const { return 2 * (m_dims[0] + m_dims[1] + m_dims[2]) + 8; }
   // -1 outside the box, else whether the cell of p is occupied.
   int occupied(const double p[3]) const
   {
@@ -79,29 +82,37 @@ private:
 };
 
 // The runs of occupied cells that the ray p + t d (d unit) enters, sampled from t = `start` in
-// steps of `step`, until it leaves the grid.
+// steps of `step` (half a cell), until it leaves the grid; at most grid.most_steps() samples (a
+// step below the coordinates' precision, as on near-duplicate points far from the origin, would
+// not move the ray).
 inline std::size_t crossings(const Occupancy_grid& grid, const double p[3], const double d[3], double start,
                              double step)
 {
   std::size_t runs = 0;
   bool in_run = false;
-  for(double t = start;; t += step)
+  const std::size_t most = grid.most_steps();
+  for(std::size_t s = 0; s < most; ++s)
   {
+    const double t = start + double(s) * step;
     const double q[3] = {p[0] + t * d[0], p[1] + t * d[1], p[2] + t * d[2]};
     const int o = grid.occupied(q);
     if(o < 0)
-      return runs;
+      break;
     runs += (o == 1 && !in_run) ? 1 : 0;
     in_run = o == 1;
   }
+  return runs;
 }
 
 // The parity test's constants: cells of 0.75 times the median distance from a point to its
 // farthest graph neighbour, each point marking its tangent disc of half that distance (so that
 // a sheet sampled at random has no holes a ray slips through, and stays a cell or two thick);
 // rays from 1.5 cells out in steps of half a cell. A part is checked only if it has at least
-// `least_points` points, fits `most_cells_per_axis` and `most_cells`, and the test is decisive
-// (the two rays of opposite parities) at `least_decisive` of a sample of its points: parts
+// `least_points` points, fits `most_cells_per_axis`, `most_cells` and `cells_per_point` times its
+// points (the grid at most 8 bytes a point: its memory is counted with the orientation's, in
+// tools/tiled_normals.cpp, with the 29 bytes a point this check takes in all), and the test is decisive
+// (the two rays of opposite parities) at `least_decisive` of a sample of its points (every
+// part.size() / 1024-th, 1024 to 2047 of them): parts
 // seen from all sides, not open scenes (a terrestrial scan's: 38% decisive, flips there would be
 // noise); and only if the sample finds normals inward (at least `least_inward` of them and
 // `least_inward_share` of the sample: a part oriented right costs the sample's rays only, where
@@ -110,7 +121,8 @@ inline std::size_t crossings(const Occupancy_grid& grid, const double p[3], cons
 // each point whose rays did not confirm it turns if most of its graph neighbours' normals face
 // the other way.
 constexpr std::size_t parity_least_points = 64, parity_most_cells_per_axis = 1024,
-                      parity_most_cells = std::size_t(1) << 27, parity_sample = 1024, relaxation_rounds = 10;
+                      parity_most_cells = std::size_t(1) << 27, parity_cells_per_point = 64, parity_sample = 1024,
+                      relaxation_rounds = 10;
 constexpr std::size_t least_inward = 3;
 constexpr double parity_cell = 0.75, parity_splat = 0.5, parity_start = 1.5, least_decisive = 0.8,
                  least_inward_share = 0.005;
@@ -143,7 +155,8 @@ std::size_t repair_by_crossing_parity(const std::vector<std::uint32_t>& part, co
       hi[a] = (std::max)(hi[a], xyz[3 * std::size_t(i) + a] + 2 * h);
     }
   Occupancy_grid grid;
-  if(!grid.init(lo, hi, h, parity_most_cells_per_axis, parity_most_cells))
+  if(!grid.init(lo, hi, h, parity_most_cells_per_axis,
+                (std::min)(parity_most_cells, parity_cells_per_point * part.size())))
     return 0;
   for(std::size_t k = 0; k < part.size(); ++k)
   {
