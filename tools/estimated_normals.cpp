@@ -44,7 +44,8 @@ Orientation_choice choose_orientation(const Options& o, bool las, bool has_pulse
   else
   {
     c.orientation = CGAL::Normal_orientation::minimum_spanning_tree();
-    c.text = "mst: along a minimum spanning tree, closed parts outward, open parts up (--orient auto)";
+    c.text = "mst: along a minimum spanning tree, closed parts outward, open parts up, parts seen from all sides "
+             "checked point by point by the parity of the crossings along the normals (--orient auto)";
   }
   return c;
 }
@@ -91,7 +92,8 @@ std::string automatic_orientation_text(const Vertical_count& c)
                c.vertical_up < c.vertical ? ", the others are the undersides of closed objects, turned outward" : "",
                "; the steeper ones along a minimum spanning tree; --orient auto)");
   return cat("mst (LAS file, not 2.5-D: ", within, "): along a minimum spanning tree, closed parts "
-             "outward, open parts up; ", percent_text(c.up, c.usable), "% of them point up; --orient auto)");
+             "outward, open parts up, parts seen from all sides checked point by point by the parity of the "
+             "crossings along the normals; ", percent_text(c.up, c.usable), "% of them point up; --orient auto)");
 }
 
 std::size_t estimate_normals(Point_set& ps, const Options& o, Orientation_choice& choice, const Progress& progress,

@@ -591,7 +591,8 @@ def _estimated_normals(points, automatic, threads, progress, tile):
         else f"the {_core.DEFAULT_NORMAL_NEIGHBORS[0]} nearest"
     warnings.warn(
         f"no normals given: estimating them (a quadric fitted to the nearest neighbours, {count}, "
-        "oriented along a minimum spanning tree, closed parts outward, open parts up); a wrong "
+        "oriented along a minimum spanning tree, closed parts outward, open parts up, parts seen from all sides "
+        "checked point by point by the parity of the crossings along the normals); a wrong "
         "orientation flips the sign of the curvatures: call estimate_normals() to choose "
         "(orientation='auto' for airborne scans, ('towards', scanner) for a terrestrial one)",
         UserWarning, stacklevel=3)
