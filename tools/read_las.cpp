@@ -239,6 +239,15 @@ std::uint64_t complete_records(const Las_header& l)
   return (l.file_size - l.point_offset) / l.record_length;
 }
 
+// The message of a file that holds fewer records than its header declares, up to the count of
+// the complete ones (each reader ends it as it treats the file).
+std::string truncated_text(const std::string& path, const Las_header& l)
+{
+  return cat(in_quotes(path), ": truncated: the header declares ", l.count, " points of ", l.record_length,
+             " bytes from byte ", l.point_offset, ", the file has ", l.file_size, " bytes (", complete_records(l),
+             " complete records");
+}
+
 } // namespace
 
 Point_cloud read_las(Byte_source& bytes, const std::string& path, const Read_options& options)
@@ -260,9 +269,7 @@ Point_cloud read_las(Byte_source& bytes, const std::string& path, const Read_opt
   {
     const std::uint64_t complete = complete_records(l);
     if(!options.allow_truncated)
-      fail(cat("truncated: the header declares ", count, " points of ", record_length, " bytes from byte ",
-               point_offset, ", the file has ", file_size, " bytes (", complete, " complete records: "
-               "--allow-truncated reads them)"));
+      throw Error(truncated_text(path, l) + ": --allow-truncated reads them)");
     cloud.warnings.push_back(cat(in_quotes(path), ": truncated: read the ", complete, " complete points of the ",
                                  count, " the header declares (--allow-truncated)"));
     count = complete;
@@ -641,9 +648,7 @@ Las_point_layout las_point_layout(const std::string& path)
   Byte_source bytes(path, regular_file_size(path), Progress());
   const Las_header l = read_las_header(bytes, path);
   if(l.count > complete_records(l))
-    throw Error(cat(in_quotes(path), ": truncated: the header declares ", l.count, " points of ", l.record_length,
-                    " bytes from byte ", l.point_offset, ", the file has ", l.file_size, " bytes (",
-                    complete_records(l), " complete records)"));
+    throw Error(truncated_text(path, l) + ")");
   Las_point_layout layout;
   layout.offset = l.point_offset;
   layout.count = l.count;

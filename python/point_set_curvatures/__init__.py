@@ -579,6 +579,12 @@ def _blend_on_estimated_normals(method, options):
     return _core.default_position_fit_blend(variant, True)
 
 
+def _estimated_normal_neighbors(automatic):
+    """The normals' scale of estimate_curvatures without normals: the automatic scale under the
+    automatic scale, else estimate_normals' default count of the quadric."""
+    return "auto" if automatic else int(_core.DEFAULT_NORMAL_NEIGHBORS[0])
+
+
 def _estimated_normals(points, automatic, threads, progress, tile):
     """(normals, progress of the estimation that follows) for estimate_curvatures without
     normals: as the tool's for a file without them, with its warning; the progress callable
@@ -602,7 +608,8 @@ def _estimated_normals(points, automatic, threads, progress, tile):
         second = lambda f: progress(0.5 + 0.5 * f)  # noqa: E731
     with warnings.catch_warnings():  # (a cloud too small for the scale was warned of already)
         warnings.simplefilter("ignore", ScaleWarning)
-        normals = estimate_normals(points, neighbors="auto" if automatic else None, threads=threads, progress=first)
+        normals = estimate_normals(points, neighbors=_estimated_normal_neighbors(automatic), threads=threads,
+                                   progress=first)
     return normals, second
 
 
@@ -840,6 +847,12 @@ def _orientation(orientation):
     if what not in ("along", "towards") or len(target) != 3:
         raise ValueError(f"orientation: expected ('along', (x, y, z)) or ('towards', (x, y, z)), got {orientation!r}")
     return (1 if what == "along" else 2), target
+
+
+def _spans_whole_cloud(kind):
+    """Whether an orientation kind of _orientation() needs the whole cloud (the spanning tree,
+    which the automatic one may choose): the library's internal::is_global()."""
+    return kind in (0, 3)
 
 
 def estimate_normals(points, *, neighbors=None, radius=None, orientation="mst", fit="quadric", threads=None,

@@ -43,7 +43,7 @@ from concurrent.futures import CancelledError
 import numpy as np
 
 from . import _METHOD_OPTIONS, AUTOMATIC_NEIGHBORS, HaloTooSmall, SampleWeights, Status, TileGrid, _core, _int, _method, _real
-from . import _blend_on_estimated_normals, _orientation, _threads
+from . import _blend_on_estimated_normals, _estimated_normal_neighbors, _orientation, _spans_whole_cloud, _threads
 from . import _weights
 from . import _file_sources as _files
 from . import _default_neighbors, _whole_cloud_box, _whole_cloud_scale
@@ -122,10 +122,14 @@ def estimate_tile(points, normals, core_min, core_max, halo, *, method="aso", ra
                                  threads=threads, tile=tile, **options)
     except HaloTooSmall as e:
         return ("halo", float(e.required_halo))
-    p = np.asarray(points)
-    lo, hi = np.asarray(core_min), np.asarray(core_max)
-    own = np.all((p >= lo) & (p < hi), axis=1)  # Tile::owns, half-open
+    own = _owns(points, core_min, core_max)
     return own, {k: v[own] for k, v in r.items()}
+
+
+def _owns(points, core_min, core_max):
+    """The mask of the rows of ``points`` that the tile of that core owns (Tile::owns, half-open)."""
+    p = np.asarray(points)
+    return np.all((p >= np.asarray(core_min)) & (p < np.asarray(core_max)), axis=1)
 
 
 def _tile_side(lo, hi, count):
@@ -480,7 +484,7 @@ def _file_normal_tile_task(sources, blocks, core_min, core_max, halo, output, ne
                                                                 None)
     except HaloTooSmall as e:
         return ("halo", float(e.required_halo))
-    own = np.all((points >= np.asarray(core_min)) & (points < np.asarray(core_max)), axis=1)  # Tile::owns
+    own = _owns(points, core_min, core_max)
     rows = index[own]
     if orientation is None:
         records = np.zeros(len(rows), dtype=output[3])
@@ -646,7 +650,7 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
         if normal_orientation is None:  # the tool's default: LAS files are scans, often 2.5-D
             normal_orientation = "auto" if all(s.scale is not None for s in sources) else "mst"
         orientation = _orientation(normal_orientation)
-        if orientation[0] in (0, 3) and n > np.iinfo(np.uint32).max:
+        if _spans_whole_cloud(orientation[0]) and n > np.iinfo(np.uint32).max:
             raise ValueError(f"a spanning tree orients at most {np.iinfo(np.uint32).max} points, the files hold {n}: "
                              "give normal_orientation='+z' (airborne scans), another axis or ('towards', scanner)")
         blend = _blend_on_estimated_normals(method, options)
@@ -682,8 +686,7 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
     radius, neighbors = _whole_cloud_box(finite, lo, hi, radius, neighbors)
     kwargs.update(radius=radius, neighbors=neighbors)
     if not with_normals:  # estimate_curvatures' own estimate of the normals
-        _, normal_neighbors = _whole_cloud_box(finite, lo, hi, None,
-                                               "auto" if neighbors == "auto" else _core.DEFAULT_NORMAL_NEIGHBORS[0],
+        _, normal_neighbors = _whole_cloud_box(finite, lo, hi, None, _estimated_normal_neighbors(neighbors == "auto"),
                                                "normals: ")
     if tile_size is None:
         tile_size = _tile_side(lo, hi, max(4 * nthreads, math.ceil(finite / 500_000)))
@@ -741,8 +744,7 @@ def _tile_pass(client, submit, counts, halo, lo, hi, n, nonfinite):
     """Runs ``submit(i, halo)`` (a future of a tile task) for every tile i with own points
     (``counts``), resubmits with a larger halo the tiles that ask for one, and checks that
     the tiles wrote every finite point of the n exactly once (own counts per tile, and sums of
-    the indices); returns (the tiles' summaries, each with the halo it ended with, ``"halo"``,
-    and the number of resubmissions)."""
+    the indices); returns (the tiles' summaries, the number of resubmissions)."""
     from distributed import as_completed
 
     pending = {}
@@ -767,7 +769,6 @@ def _tile_pass(client, submit, counts, halo, lo, hi, n, nonfinite):
                 raise RuntimeError(f"point_set_curvatures.dask: tile {i} wrote {result['own']} points, "
                                    f"{counts[i]} expected")
             result["tile"] = i
-            result["halo"] = h
             reports.append(result)
             index_sum += result["index_sum"]
             index_square_sum += result["index_square_sum"]
@@ -791,7 +792,7 @@ def _estimate_file_normals(client, sources, blocks, near, counts, nonfinite, lo,
     ``temporary``); reports in ``report["normals"]``."""
     n = int(counts.sum()) + len(nonfinite)
     kind, target = orientation
-    spanning_tree = kind in (0, 3)  # (at most 2**32 - 1 points: checked by the caller)
+    spanning_tree = _spans_whole_cloud(kind)  # (at most 2**32 - 1 points: checked by the caller)
     t0 = time.perf_counter()
     normals_path = f"{output_path}.{token}.normals.npy"
     temporary.append(normals_path)
@@ -814,10 +815,8 @@ def _estimate_file_normals(client, sources, blocks, near, counts, nonfinite, lo,
                              tile_output, neighbors, None if spanning_tree else (kind, target), threads,
                              key=f"psc-normals-{token}-{i}-{h!r}", retries=retries)
 
-    count = AUTOMATIC_NEIGHBORS[1] if neighbors == "auto" else neighbors
-    halo = float(initial_halo) if initial_halo is not None else _core.halo_guess_for_count(
-        tuple(map(float, lo)), tuple(map(float, hi)), int(finite), int(count))
-    tiles, resubmitted = _tile_pass(client, submit, counts, halo, lo, hi, n, nonfinite)
+    tiles, resubmitted = _tile_pass(client, submit, counts, _first_halo(None, neighbors, initial_halo, lo, hi, finite),
+                                    lo, hi, n, nonfinite)
     t1 = time.perf_counter()
     orientation_report = None
     if spanning_tree:
