@@ -237,25 +237,35 @@ inline Pass_shares pass_shares(bool area_pass, std::size_t refinements, double r
   return shares;
 }
 
-// By count on a tile with sample weights, after the estimation: the own points' neighbours
-// lie within `extent` of the core. A neighbour p_j of an own point x_i (|p_j - x_i| <= r_i)
-// is within r_i minus x_i's depth in the core of the core, hence within `extent` of it; its
-// area is the whole-cloud one if the points it depends on (`area_reach`, per point of the
-// range) are within the halo. Otherwise throws Halo_too_small with the farthest such reach
-// (the reach of an area computed in a truncated range only overestimates the true one).
+// By count on a tile with sample weights: the halo that the areas of the own points' neighbours
+// need, where those neighbours lie within `extent` of the core. A neighbour p_j of an own point
+// x_i (|p_j - x_i| <= r_i) is within r_i minus x_i's depth in the core of the core, hence within
+// `extent` of it; its area is the whole-cloud one if the points it depends on (`area_reach`, per
+// point of the range) are within the halo: the farthest such reach, at least `extent` (the
+// reach of an area computed in a truncated range only overestimates the true one).
 template <class PointRange, class PointMap>
-void check_area_halo(const PointRange& points, const PointMap& point_map, const Tile& tile, double extent,
-                     const std::vector<double>& area_reach)
+double area_halo_requirement(const PointRange& points, const PointMap& point_map, const Tile& tile, double extent,
+                             const std::vector<double>& area_reach)
 {
-  double required = 0;
+  double required = extent;
   std::size_t i = 0;
   for(auto it = points.begin(); it != points.end(); ++it, ++i)
   {
     const auto& p = get(point_map, *it);
     const double d = tile.distance_to_core(to_double(p.x()), to_double(p.y()), to_double(p.z()));
-    if(d <= extent && area_reach[i] > tile.halo)
-      required = (std::max)(required, area_reach[i]);
+    if(d <= extent && area_reach[i] > required)
+      required = area_reach[i];
   }
+  return required;
+}
+
+// After the estimation: throws Halo_too_small if the areas of the own points' neighbours
+// (area_halo_requirement()) reach beyond the halo.
+template <class PointRange, class PointMap>
+void check_area_halo(const PointRange& points, const PointMap& point_map, const Tile& tile, double extent,
+                     const std::vector<double>& area_reach)
+{
+  const double required = area_halo_requirement(points, point_map, tile, extent, area_reach);
   if(required > tile.halo)
     throw Halo_too_small(required, tile.halo);
 }
@@ -411,11 +421,32 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
     options.point_weights = &areas;
     options.halo_radii = radius_given ? 2 : 1;
     if(tile_by_count)
+    {
       neighbor_extent = &own_neighbor_extent;
+      // the search refuses a neighbour whose area reaches beyond the halo, before any estimate
+      // (check_area_halo() below would refuse it only after estimating every point)
+      options.point_reach = &area_reach;
+    }
   }
-  std::vector<Estimate> result = estimation_after_refinements<Estimate, Geom_traits, ConcurrencyTag>(
-    points, radius_given, radius, visit_k, point_map, normal_map, estimator.normal_refinements,
-    [&](std::size_t r) { return share(pass_index + r); }, evaluation, cancelled);
+  std::vector<Estimate> result;
+  try
+  {
+    result = estimation_after_refinements<Estimate, Geom_traits, ConcurrencyTag>(
+      points, radius_given, radius, visit_k, point_map, normal_map, estimator.normal_refinements,
+      [&](std::size_t r) { return share(pass_index + r); }, evaluation, cancelled);
+  }
+  catch(const Halo_too_small& e)
+  {
+    // The search refused the halo (a neighbour, or a neighbour's area, beyond it): the next run
+    // holds every point within the halo it asks for, and check_area_halo() there would refuse
+    // it again, after estimating every point, for the areas of those points that reach farther.
+    // Those the range holds are known: asked for at once (lone-star.las by count in tiles read
+    // again 50 -> 42 times with the default, 84 -> 69 with --neighbors 40).
+    if(!neighbor_extent)
+      throw;
+    throw Halo_too_small(area_halo_requirement(points, point_map, options.tile, e.required_halo(), area_reach),
+                         options.tile.halo);
+  }
   if(neighbor_extent && !cancelled)
     check_area_halo(points, point_map, options.tile, neighbor_extent->value(), area_reach);
   return result;

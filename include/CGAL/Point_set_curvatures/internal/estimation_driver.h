@@ -188,6 +188,10 @@ struct Neighborhood_options
   double halo_radii = 1;
   // Per input point, a weight the visitor receives per neighbour (nb.sample_weight), or null.
   const std::vector<double>* point_weights = nullptr;
+  // With a tile by count: per input point, how far from the core the points its weight depends
+  // on lie (a neighbour's area), or null. A neighbour reaching beyond the halo makes the search
+  // ask for a larger halo, as a neighbour beyond it does, before any estimate is computed.
+  const std::vector<double>* point_reach = nullptr;
   // Per input point, whether it is visited (non-zero), or null for every point: the others
   // (of the tile's own points) stay NOT_COMPUTED but are neighbours as usual.
   const std::vector<char>* visit = nullptr;
@@ -378,6 +382,15 @@ void read_and_sort(const PointRange& points, PointMap point_map, NormalMap norma
     for_index_chunks<ConcurrencyTag>(n_usable, [&](std::size_t first, std::size_t last) {
       for(std::size_t k = first; k < last; ++k)
         cloud.sample_weight[k] = (*options.point_weights)[cloud.input_index[k]];
+    });
+  }
+
+  if(options.point_reach && options.has_tile)
+  {
+    cloud.reach.resize(n_usable);
+    for_index_chunks<ConcurrencyTag>(n_usable, [&](std::size_t first, std::size_t last) {
+      for(std::size_t k = first; k < last; ++k)
+        cloud.reach[k] = (*options.point_reach)[cloud.input_index[k]];
     });
   }
 

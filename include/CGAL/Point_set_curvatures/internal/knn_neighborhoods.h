@@ -200,6 +200,24 @@ public:
     }
     return !m_exceeded.load(std::memory_order_relaxed);
   }
+  // Records what the weights of the neighbours (grid positions `neighbors`, `size` of them) of
+  // a neighbourhood need (their reach, Sorted_cloud::reach, if the cloud has it); false as
+  // check().
+  bool check_reach(const Sorted_cloud& cloud, const std::uint32_t* neighbors, std::size_t size)
+  {
+    if(cloud.reach.empty())
+      return !m_exceeded.load(std::memory_order_relaxed);
+    double most = 0;
+    for(std::size_t i = 0; i < size; ++i)
+      most = std::max(most, cloud.reach[neighbors[i]]);
+    if(most > m_options.tile.halo)
+    {
+      std::lock_guard<std::mutex> lock(m_mutex);
+      m_required = std::max(m_required, most);
+      m_exceeded.store(true, std::memory_order_relaxed);
+    }
+    return !m_exceeded.load(std::memory_order_relaxed);
+  }
   // Throws Halo_too_small if a point needed more than the tile's halo.
   void enforce() const
   {
@@ -312,7 +330,7 @@ void visit_points_knn(const Sorted_cloud& cloud, std::size_t k, std::uint32_t fi
         selected[size] = selected[i];
         size += d2[i] < r2 ? 1 : 0;
       }
-      if(!halo.check(x, radius))
+      if(!halo.check(x, radius) || !halo.check_reach(cloud, selected, size))
         continue;
       sort_by_input_index(cloud, selected, size, scratch.order);
       visit_neighborhood(cloud, query, radius, selected, size, scratch.buffer, visit);
@@ -420,7 +438,7 @@ void visit_cloud_knn(const Sorted_cloud& cloud, const Point_kd_tree& tree, std::
       s.index.resize(s.neighbors.size());
       for(std::size_t j = 0; j < s.neighbors.size(); ++j)
         s.index[j] = s.neighbors[j].second;
-      if(!halo.check(x, radius))
+      if(!halo.check(x, radius) || !halo.check_reach(cloud, s.index.data(), s.index.size()))
         continue;
       sort_by_input_index(cloud, s.index.data(), s.index.size(), s.order);
       s.buffer.set_size(0);

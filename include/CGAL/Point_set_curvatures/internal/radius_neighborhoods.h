@@ -79,6 +79,7 @@ struct Sorted_cloud
   std::vector<char> own;
   std::size_t own_count = 0;  // points estimated (own points, or every usable point)
   std::vector<double> sample_weight;  // per point, grid order; empty: equal weights
+  std::vector<double> reach;  // per point, grid order (Neighborhood_options::point_reach); empty: none
 
   bool is_own(std::size_t k) const { return own.empty() || own[k] != 0; }
 };
