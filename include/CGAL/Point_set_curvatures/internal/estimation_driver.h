@@ -375,24 +375,18 @@ void read_and_sort(const PointRange& points, PointMap point_map, NormalMap norma
     }
   });
 
-  // Sample weights in grid order.
+  // Per-point values given in input order (sample weights, the weights' reach), in grid order.
+  auto to_grid_order = [&](const std::vector<double>& given, std::vector<double>& out) {
+    out.resize(n_usable);
+    for_index_chunks<ConcurrencyTag>(n_usable, [&](std::size_t first, std::size_t last) {
+      for(std::size_t k = first; k < last; ++k)
+        out[k] = given[cloud.input_index[k]];
+    });
+  };
   if(options.point_weights)
-  {
-    cloud.sample_weight.resize(n_usable);
-    for_index_chunks<ConcurrencyTag>(n_usable, [&](std::size_t first, std::size_t last) {
-      for(std::size_t k = first; k < last; ++k)
-        cloud.sample_weight[k] = (*options.point_weights)[cloud.input_index[k]];
-    });
-  }
-
+    to_grid_order(*options.point_weights, cloud.sample_weight);
   if(options.point_reach && options.has_tile)
-  {
-    cloud.reach.resize(n_usable);
-    for_index_chunks<ConcurrencyTag>(n_usable, [&](std::size_t first, std::size_t last) {
-      for(std::size_t k = first; k < last; ++k)
-        cloud.reach[k] = (*options.point_reach)[cloud.input_index[k]];
-    });
-  }
+    to_grid_order(*options.point_reach, cloud.reach);
 
   // The tile's own points (among those to visit).
   cloud.own_count = n_usable;

@@ -191,14 +191,7 @@ public:
   {
     if(!m_options.has_tile)
       return true;
-    const double need = m_options.halo_radii * radius - m_options.tile.distance_inside_core(x[0], x[1], x[2]);
-    if(need > m_options.tile.halo)
-    {
-      std::lock_guard<std::mutex> lock(m_mutex);
-      m_required = std::max(m_required, need);
-      m_exceeded.store(true, std::memory_order_relaxed);
-    }
-    return !m_exceeded.load(std::memory_order_relaxed);
+    return require(m_options.halo_radii * radius - m_options.tile.distance_inside_core(x[0], x[1], x[2]));
   }
   // Records what the weights of the neighbours (grid positions `neighbors`, `size` of them) of
   // a neighbourhood need (their reach, Sorted_cloud::reach, if the cloud has it); false as
@@ -210,13 +203,7 @@ public:
     double most = 0;
     for(std::size_t i = 0; i < size; ++i)
       most = std::max(most, cloud.reach[neighbors[i]]);
-    if(most > m_options.tile.halo)
-    {
-      std::lock_guard<std::mutex> lock(m_mutex);
-      m_required = std::max(m_required, most);
-      m_exceeded.store(true, std::memory_order_relaxed);
-    }
-    return !m_exceeded.load(std::memory_order_relaxed);
+    return require(most);
   }
   // Throws Halo_too_small if a point needed more than the tile's halo.
   void enforce() const
@@ -226,6 +213,19 @@ public:
   }
 
 private:
+  // Records that a point needs a halo of `need`; false once any point needed more than the
+  // tile's halo.
+  bool require(double need)
+  {
+    if(need > m_options.tile.halo)
+    {
+      std::lock_guard<std::mutex> lock(m_mutex);
+      m_required = std::max(m_required, need);
+      m_exceeded.store(true, std::memory_order_relaxed);
+    }
+    return !m_exceeded.load(std::memory_order_relaxed);
+  }
+
   const Neighborhood_options& m_options;
   std::mutex m_mutex;
   double m_required = 0;
