@@ -264,7 +264,7 @@ TEST_CASE("Normal-field fit: exact on a one-sided sphere cap, refused on a line"
       f.au += w * dot(n, t1) * dot(p, t1); f.av += w * dot(n, t1) * dot(p, t2);
       f.bu += w * dot(n, t2) * dot(p, t1); f.bv += w * dot(n, t2) * dot(p, t2);
     }
-    double S[3];
+    double S[3] = {0, 0, 0};
     REQUIRE(f.solve(S));
     INFO("tilt " << tilt);
     CHECK(std::abs(S[0] - 1 / R) < 1e-12);
@@ -281,7 +281,7 @@ TEST_CASE("Normal-field fit: exact on a one-sided sphere cap, refused on a line"
       f.w += 1; f.u += pu; f.v += pv; f.uu += pu * pu; f.uv += pu * pv; f.vv += pv * pv;
       f.a += pu; f.au += pu * pu; f.av += pu * pv;
     }
-    double S[3];
+    double S[3] = {0, 0, 0};
     CHECK(f.solve(S) == (across > 1e-3));
   }
 }

@@ -1923,7 +1923,7 @@ TEST_CASE("Algebraic_shape_operator_fit with named parameters: the cloud functio
   namespace P = PSC::parameters;
   const auto cloud_robust = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
     pts, r, P::sample_weights(CGAL::Sample_weights::UNIFORM, maps()));  // the fit's weights: 1
-  auto at = [&](std::size_t i, auto&& fit) {
+  auto at = [&](auto&& fit) {
     for(const auto& p : pts)
       fit.add_neighbor(p.first, p.second);
     return fit.estimate();
@@ -1933,13 +1933,13 @@ TEST_CASE("Algebraic_shape_operator_fit with named parameters: the cloud functio
   {
     const Point& x = pts[i].first;
     typedef CGAL::Algebraic_shape_operator_fit<Kernel> Fit;
-    const Estimate paper = at(i, Fit(x, r));
-    CHECK(same_estimate(paper, at(i, Fit(x, r, P::aso_variant(CGAL::Aso_variant::PAPER)))));
-    CHECK(same_estimate(at(i, Fit(x, r, CGAL::Aso_projection::AUTHORS_IMPLEMENTATION, CGAL::Apss_weight_kernel::SMOOTH_CUBIC)),
-                        at(i, Fit(x, r, P::aso_projection(CGAL::Aso_projection::AUTHORS_IMPLEMENTATION,
+    const Estimate paper = at(Fit(x, r));
+    CHECK(same_estimate(paper, at(Fit(x, r, P::aso_variant(CGAL::Aso_variant::PAPER)))));
+    CHECK(same_estimate(at(Fit(x, r, CGAL::Aso_projection::AUTHORS_IMPLEMENTATION, CGAL::Apss_weight_kernel::SMOOTH_CUBIC)),
+                        at(Fit(x, r, P::aso_projection(CGAL::Aso_projection::AUTHORS_IMPLEMENTATION,
                                                           P::weight_kernel(CGAL::Apss_weight_kernel::SMOOTH_CUBIC))))));
-    const Estimate robust = at(i, Fit(x, r, P::aso_variant(CGAL::Aso_variant::ROBUST)));
-    CHECK(same_estimate(robust, at(i, Fit(x, r, P::aso_options(PSC::aso_variant_options(CGAL::Aso_variant::ROBUST))))));
+    const Estimate robust = at(Fit(x, r, P::aso_variant(CGAL::Aso_variant::ROBUST)));
+    CHECK(same_estimate(robust, at(Fit(x, r, P::aso_options(PSC::aso_variant_options(CGAL::Aso_variant::ROBUST))))));
     CHECK_FALSE(same_estimate(robust, paper));
     // the cloud function's estimate at that point, to rounding (its sums run in another order)
     REQUIRE(robust.is_valid());

@@ -2794,7 +2794,7 @@ TEST_CASE("tool: LAS output is LAS 1.4 with the estimates as extra bytes, per an
   CHECK(l.point_offset == 375 + 54 + 16 + 54 + 192 * names.size());
   CHECK(l.record_length == 34 + 14 * 8 + 4 + 1 + 4 + 2 + 2);
   REQUIRE(l.file.size() == l.point_offset + n * l.record_length);
-  std::size_t mean_at, valid_at, neighbors_at, amplitude_at, reflectance_at, deviation_at;
+  std::size_t mean_at = 0, valid_at = 0, neighbors_at = 0, amplitude_at = 0, reflectance_at = 0, deviation_at = 0;
   REQUIRE(l.extra("mean", mean_at));
   REQUIRE(l.extra("valid", valid_at));
   REQUIRE(l.extra("neighbors", neighbors_at));
@@ -2841,7 +2841,7 @@ TEST_CASE("tool: LAS output is LAS 1.4 with the estimates as extra bytes, per an
   CHECK(f.descriptors[5].options == 1);
   CHECK(std::isnan(le<double>(f.descriptors[5].no_data, 0)));
   CHECK(f.record_length == 34 + 14 * 4 + 4 + 1 + 4 + 2 + 2);
-  std::size_t float_mean_at;
+  std::size_t float_mean_at = 0;
   REQUIRE(f.extra("mean", float_mean_at));
   CHECK(le<float>(f.record(7), float_mean_at) == float(le<double>(l.record(7), mean_at)));
 
@@ -2889,7 +2889,7 @@ TEST_CASE("tool: LAS output is LAS 1.4 with the estimates as extra bytes, per an
     CHECK(b.scale[a] == 1e-6);
   }
   double worst_ball = 0;
-  std::size_t ball_mean_at;
+  std::size_t ball_mean_at = 0;
   REQUIRE(b.extra("mean", ball_mean_at));
   for(std::size_t i = 0; i < ball.size(); ++i)
   {
@@ -3825,7 +3825,7 @@ TEST_CASE("tool: a run killed while computing leaves no temporary file, and the 
     write_text(file(name), "partial");
   // kept: a run still going (this process), other names
   const std::string running = ".killed.ply.tmp-" + std::to_string(::getpid()) + "-kEePmE";
-  for(const std::string name : {running, std::string(".killed.ply.tmp-notes.txt"), std::string(".other.ply.tmp-AbC123"),
+  for(const std::string& name : {running, std::string(".killed.ply.tmp-notes.txt"), std::string(".other.ply.tmp-AbC123"),
                                 std::string("killed.ply.tmp-AbC123")})
     write_text(file(name), "keep");
   const Run next = run_tool(q(file("killed.xyz")) + " " + q(file("killed.ply")) + " --radius 0.3");
@@ -3843,7 +3843,7 @@ TEST_CASE("tool: a run killed while computing leaves no temporary file, and the 
   const Run again = run_tool(q(file("killed.xyz")) + " " + q(file("killed.ply")) + " --radius 0.3");
   CHECK(again.status == 0);
   CHECK(again.err.find("note:") == std::string::npos);
-  for(const std::string name : {running, std::string(".killed.ply.tmp-notes.txt"), std::string(".other.ply.tmp-AbC123"),
+  for(const std::string& name : {running, std::string(".killed.ply.tmp-notes.txt"), std::string(".other.ply.tmp-AbC123"),
                                 std::string("killed.ply.tmp-AbC123")})
     fs::remove(file(name));
 }

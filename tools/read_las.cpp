@@ -428,7 +428,7 @@ Point_cloud read_las(Byte_source& bytes, const std::string& path, const Read_opt
     column_of[f] = present[f] ? int(cloud.attributes.size()) : -1;
     if(present[f])
     {
-      cloud.attributes.push_back(Attribute{names[f], types[f], {}});
+      cloud.attributes.push_back(Attribute(names[f], types[f]));
       cloud.attributes.back().las_field = f;
     }
   }
@@ -491,7 +491,7 @@ Point_cloud read_las(Byte_source& bytes, const std::string& path, const Read_opt
           Scalar_type::FLOAT64, Scalar_type::FLOAT32, Scalar_type::FLOAT64};
         x.attribute = cloud.attributes.size();
         cloud.attributes.push_back(
-          Attribute{name, (options_bits & 24) ? Scalar_type::FLOAT64 : raw_type[data_type], {}});
+          Attribute(name, (options_bits & 24) ? Scalar_type::FLOAT64 : raw_type[data_type]));
         cloud.attributes.back().las_descriptor.assign(e, 192);
         extras.push_back(x);
       }

@@ -235,7 +235,7 @@ void add_attributes(Ply_header& h, Point_cloud& cloud, bool keep, std::size_t re
     if(p.list || std::find(h.role_property, h.role_property + 6, int(i)) != h.role_property + 6)
       continue;
     h.attribute_of[i] = int(cloud.attributes.size());
-    cloud.attributes.push_back(Attribute{p.name, p.type, {}});
+    cloud.attributes.push_back(Attribute(p.name, p.type));
     cloud.attributes.back().values.reserve(reserved);
   }
 }

@@ -148,7 +148,7 @@ Point_cloud read_xyz(Byte_source& bytes, const std::string& path, const Read_opt
       if(roles[c] < 0 && names[c] != "_")
       {
         attribute_of[c] = int(cloud.attributes.size());
-        cloud.attributes.push_back(Attribute{names[c], Scalar_type::FLOAT64, {}});
+        cloud.attributes.push_back(Attribute(names[c], Scalar_type::FLOAT64));
       }
   };
   if(explicit_columns)

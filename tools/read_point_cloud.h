@@ -36,6 +36,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace psc_tool {
@@ -51,6 +52,9 @@ const char* ply_type_name(Scalar_type t);
 // doubles, which represent every value of every type exactly.
 struct Attribute
 {
+  Attribute() = default;
+  Attribute(std::string name_, Scalar_type type_) : name(std::move(name_)), type(type_) {}
+
   std::string name;
   Scalar_type type = Scalar_type::FLOAT64;
   std::vector<double> values;  // one per point

@@ -642,14 +642,6 @@ private:
 const char* gnuplot_colors[] = {"#1b9e77", "#d95f02", "#7570b3", "#e7298a", "#66a61e",
                                 "#e6ab02", "#a6761d", "#666666", "#1f78b4", "#b2df8a"};
 
-int estimator_style(const std::vector<Estimator>& list, const std::string& name)
-{
-  for(std::size_t i = 0; i < list.size(); ++i)
-    if(list[i].name == name)
-      return int(i);
-  return int(list.size());
-}
-
 std::string gp_quote(const std::string& s) { return "'" + s + "'"; }
 
 // One data block per estimator, columns: x value of each quantity.
