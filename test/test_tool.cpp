@@ -173,7 +173,7 @@ std::string q(const std::string& path) { return "'" + path + "'"; }
 
 // The tool's exit status and its peak resident memory in KB (the rusage of its shell, which
 // includes the children it waited for), its output discarded.
-std::pair<int, long> run_tool_peak_kb(const std::string& args)
+[[maybe_unused]] std::pair<int, long> run_tool_peak_kb(const std::string& args)
 {
   const std::string command = std::string("'") + PSC_TOOL_PATH + "' " + args + " > /dev/null 2>&1";
   std::vector<char> sh(std::begin("sh"), std::end("sh")), c(std::begin("-c"), std::end("-c")),
