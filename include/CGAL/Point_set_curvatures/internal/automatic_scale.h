@@ -232,6 +232,7 @@ struct Sub_neighborhood
     nb.nx = nb.ny = nb.nz = nullptr;
     nb.sample_weight = nullptr;
     nb.index = nullptr;
+    nb.plain_quadric = nullptr;
     nb.radius = whole.radius * radius;
   }
 
@@ -314,6 +315,9 @@ struct Ladder_scratch
   Distance_ranks ranks;
   Sub_neighborhood chosen, trial;
   std::vector<double> gate_frame;  // Scale_ladder::choose_in_shared_frame(): u, v, h, inner
+  // The chosen rung's plain quadric (Scale_ladder::fit_rung()), where choose() fitted it:
+  // `chosen.nb.plain_quadric` points to it then, for the estimate at that rung.
+  Quadric_fit chosen_fit;
 };
 
 // The chosen rung (its neighbourhood is left in the scratch's `chosen`): its rank on the ladder,
@@ -472,9 +476,10 @@ struct Scale_ladder
   static double cubic_residual(const std::vector<double>& frame, double radius)
   {
     Cubic_height_fit cubic;
-    for(std::size_t i = 0; i + 3 < frame.size(); i += 4)
-      if(frame[i] > 0)
-        cubic.add(frame[i + 1], frame[i + 2], frame[i + 3], frame[i]);
+    for(std::size_t b = 0; b + 7 < frame.size(); b += 8)  // (pairs of neighbours)
+      for(std::size_t l = 0; l < 2; ++l)
+        if(frame[b + l] > 0)
+          cubic.add(frame[b + 2 + l], frame[b + 4 + l], frame[b + 6 + l], frame[b + l]);
     double sigma2;
     if(!cubic.residual_variance(gate_cubic_least_pivot, sigma2))
       return std::numeric_limits<double>::quiet_NaN();
@@ -744,6 +749,8 @@ struct Scale_ladder
       c.rung = rank;
       c.mean = v[0];
       c.count = chosen.nb.size;  // (after the swap: target is the rung given up)
+      scratch.chosen_fit = fit;
+      scratch.chosen_fit.frame_cache = nullptr;  // (a cache of `trial`'s or `chosen`'s)
       std::copy(fit.n0, fit.n0 + 3, reference);  // one side for every rung
       if(fallback)
         break;  // (the rung above it could not be fitted)
@@ -777,7 +784,10 @@ struct Scale_ladder
     if(gate && !c.found && !c.as_first_rung && passed.outcome == Rung_fit::LINE && !final_pass)
       send_on(c);
     if((c.found || c.as_first_rung) && !climbs(c))
+    {
       chosen.take_attributes(whole);
+      chosen.nb.plain_quadric = c.found ? &scratch.chosen_fit : nullptr;
+    }
     return c;
   }
 };

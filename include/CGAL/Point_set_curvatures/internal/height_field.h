@@ -21,6 +21,7 @@
 #ifndef CGAL_POINT_SET_CURVATURES_INTERNAL_HEIGHT_FIELD_H
 #define CGAL_POINT_SET_CURVATURES_INTERNAL_HEIGHT_FIELD_H
 
+#include <CGAL/Point_set_curvatures/internal/lane_pair.h>
 #include <CGAL/Point_set_curvatures/internal/local_estimate.h>
 #include <CGAL/Point_set_curvatures/internal/second_order_jet.h>
 
@@ -120,18 +121,19 @@ struct Quadratic_height_fit
 // The same normal equations from the distinct sums they hold: sum w m mᵀ has 21 entries but 15
 // distinct monomials w u^a v^b (a + b <= 4), accumulated one sample at a time without the 6 x 6
 // products, then spread by fill() (the same sums up to rounding, in about half the operations).
-struct Quadratic_moments
+template <class T>
+struct Quadratic_sums
 {
   // w times 1, u, v, u², uv, v², u³, u²v, uv², v³, u⁴, u³v, u²v², uv³, v⁴: degree d from
   // d (d + 1) / 2, by the power of v
-  double s[15] = {};
-  double sh[6] = {};  // sum w m h
+  T s[15] = {};
+  T sh[6] = {};  // sum w m h
 
-  void add(double u, double v, double w)
+  void add(T u, T v, T w)
   {
-    const double wu = w * u, wv = w * v;
-    const double wuu = wu * u, wuv = wu * v, wvv = wv * v;
-    const double wuuu = wuu * u, wuuv = wuu * v, wuvv = wuv * v, wvvv = wvv * v;
+    const T wu = w * u, wv = w * v;
+    const T wuu = wu * u, wuv = wu * v, wvv = wv * v;
+    const T wuuu = wuu * u, wuuv = wuu * v, wuvv = wuv * v, wvvv = wvv * v;
     s[0] += w;
     s[1] += wu;
     s[2] += wv;
@@ -149,16 +151,29 @@ struct Quadratic_moments
     s[14] += wvvv * v;
   }
 
-  void add(double u, double v, double h, double w)
+  void add(T u, T v, T h, T w)
   {
     add(u, v, w);
-    const double wh = w * h, wuh = wh * u, wvh = wh * v;
+    const T wh = w * h, wuh = wh * u, wvh = wh * v;
     sh[0] += wh;
     sh[1] += wuh;
     sh[2] += wvh;
     sh[3] += wuh * u;
     sh[4] += wuh * v;
     sh[5] += wvh * v;
+  }
+};
+
+struct Quadratic_moments : Quadratic_sums<double>
+{
+  Quadratic_moments() = default;
+  // the sums of two lanes (lane_pair.h) added
+  explicit Quadratic_moments(const Quadratic_sums<Lane_pair>& pair)
+  {
+    for(int i = 0; i < 15; ++i)
+      s[i] = fold(pair.s[i]);
+    for(int i = 0; i < 6; ++i)
+      sh[i] = fold(pair.sh[i]);
   }
 
   // sum w (u² + v²)²

@@ -24,6 +24,8 @@ namespace internal {
 // The measured least neighbour counts (public: parameters.h), under their former name.
 namespace default_min_neighbors = CGAL::Point_set_curvatures::default_min_neighbors;
 
+struct Quadric_fit;  // (quadric_fit.h)
+
 // The neighbours of one query point. Coordinates are centred at the query point and
 // divided by the radius (q = (p - x) / r, so |q| < 1), which keeps every sum of the
 // fits of order one whatever the units and the distance to the origin (LiDAR data sits
@@ -49,6 +51,10 @@ struct Neighborhood
   // for equal weights: the estimators that support them multiply each neighbour's kernel
   // weight by it.
   const double* sample_weight = nullptr;
+  // Where the automatic scale fitted these positions with the plain quadric of its rungs
+  // (automatic_scale.h), that fit, which an estimator needing the same quadric with its penalty
+  // refits without a pass over the points (Quadric_fit::refit_with_penalty()); else null.
+  const Quadric_fit* plain_quadric = nullptr;
 };
 
 // The reference orientation of the estimators' robust orientation (ASO, APSS) from the

@@ -33,6 +33,7 @@
 #define CGAL_POINT_SET_CURVATURES_INTERNAL_PSS_H
 
 #include <CGAL/Point_set_curvatures/internal/height_field.h>
+#include <CGAL/Point_set_curvatures/internal/lane_pair.h>
 #include <CGAL/Point_set_curvatures/internal/local_estimate.h>
 #include <CGAL/Point_set_curvatures/internal/symmetric_eigen_3.h>
 
@@ -52,6 +53,13 @@ inline double pss_weight(double d2)
 {
   const double t = 1.0 - d2;
   return t > 0 ? t * t : 0.0;
+}
+
+// The same for two squared distances (lane_pair.h).
+inline Lane_pair pss_weight(const Lane_pair& d2)
+{
+  const Lane_pair t = broadcast(1.0) - d2;
+  return where_positive(t, t * t);
 }
 
 inline Local_estimate pss_estimate(const Neighborhood& nb)

@@ -26,6 +26,9 @@
 //    the surface being the graph of h (height_field.h): its normal at u = v = 0 is
 //    n0 - a1 t1 - a2 t2 normalised, its shape operator that of the graph there.
 //
+// The sums over the neighbours (the covariance, the normal equations, the variance factors) add
+// the neighbours of even and of odd rank in two lanes (lane_pair.h), one instruction for both.
+//
 // Scan lines: where the neighbours lie on two lines only (airborne scans whose lines are far
 // apart compared with the spacing along a line), v² is a combination of 1 and v over the
 // samples, and the slope across the lines is undetermined (CGAL's unweighted jets of 30
@@ -82,16 +85,25 @@ struct Weighted_covariance
   // False without weight or eigen-decomposition.
   bool compute(const Neighborhood& nb)
   {
-    double sw = 0, c[3] = {0, 0, 0}, cov[6] = {0, 0, 0, 0, 0, 0};
-    for(std::size_t i = 0; i < nb.size; ++i)
+    // (two lanes, lane_pair.h; the one point of a lane without its pair is padded with a
+    // point outside the kernel)
+    Lane_pair sums[10] = {};  // w, w q, w q qᵀ
+    for(std::size_t i = 0; i < nb.size; i += 2)
     {
-      const double q[3] = {nb.qx[i], nb.qy[i], nb.qz[i]};
-      const double w = pss_weight(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
-      sw += w;
-      c[0] += w * q[0]; c[1] += w * q[1]; c[2] += w * q[2];
-      cov[0] += w * q[0] * q[0]; cov[1] += w * q[0] * q[1]; cov[2] += w * q[0] * q[2];
-      cov[3] += w * q[1] * q[1]; cov[4] += w * q[1] * q[2]; cov[5] += w * q[2] * q[2];
+      const Lane_pair q[3] = {load_pair(nb.qx, i, nb.size, 2.0), load_pair(nb.qy, i, nb.size, 0.0),
+                              load_pair(nb.qz, i, nb.size, 0.0)};
+      const Lane_pair w = pss_weight(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+      sums[0] += w;
+      sums[1] += w * q[0]; sums[2] += w * q[1]; sums[3] += w * q[2];
+      sums[4] += w * q[0] * q[0]; sums[5] += w * q[0] * q[1]; sums[6] += w * q[0] * q[2];
+      sums[7] += w * q[1] * q[1]; sums[8] += w * q[1] * q[2]; sums[9] += w * q[2] * q[2];
     }
+    const double sw = fold(sums[0]);
+    double c[3], cov[6];
+    for(int a = 0; a < 3; ++a)
+      c[a] = fold(sums[1 + a]);
+    for(int k = 0; k < 6; ++k)
+      cov[k] = fold(sums[4 + k]);
     if(!(sw > 0))
       return false;
     // the raw second moments minus the centroid's (the coordinates are scaled to |q| < 1, so
@@ -126,16 +138,17 @@ struct Quadric_fit
   double a[6];                 // the height field's coefficients (scaled frame)
   Quadratic_height_fit equations;  // the weighted normal equations solved, penalty included
 
-  // Neighbour i in the fit's frame: its kernel weight, tangent coordinates and height; false
-  // for a weight of 0 (the neighbourhood's border).
-  bool in_frame(const Neighborhood& nb, std::size_t i, double& w, double& u, double& v, double& h) const
+  // Neighbours i and i + 1 (lane_pair.h; one outside the kernel where i + 1 is past the end) in
+  // the fit's frame: their kernel weights, tangent coordinates and heights, all 0 where the
+  // weight is (the neighbourhood's border).
+  void in_frame(const Neighborhood& nb, std::size_t i, Lane_pair& w, Lane_pair& u, Lane_pair& v, Lane_pair& h) const
   {
-    const double q[3] = {nb.qx[i], nb.qy[i], nb.qz[i]};
+    const Lane_pair q[3] = {load_pair(nb.qx, i, nb.size, 2.0), load_pair(nb.qy, i, nb.size, 0.0),
+                            load_pair(nb.qz, i, nb.size, 0.0)};
     w = pss_weight(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
-    u = t1[0] * q[0] + t1[1] * q[1] + t1[2] * q[2];
-    v = t2[0] * q[0] + t2[1] * q[1] + t2[2] * q[2];
-    h = n0[0] * q[0] + n0[1] * q[1] + n0[2] * q[2];
-    return w > 0;
+    u = where_positive(w, broadcast(t1[0]) * q[0] + broadcast(t1[1]) * q[1] + broadcast(t1[2]) * q[2]);
+    v = where_positive(w, broadcast(t2[0]) * q[0] + broadcast(t2[1]) * q[1] + broadcast(t2[2]) * q[2]);
+    h = where_positive(w, broadcast(n0[0]) * q[0] + broadcast(n0[1]) * q[1] + broadcast(n0[2]) * q[2]);
   }
 
   // The penalty's weight (see the header comment); 0: the plain least-squares quadric.
@@ -145,15 +158,28 @@ struct Quadric_fit
   // the frame then came from the unweighted one where that one does not.
   bool weighted_line = false;
 
+  // Set by compute(): sum w (u² + v²)², which the penalty's weight scales (refit_with_penalty()).
+  double fourth_moment = 0;
+
   // If set, compute() keeps each neighbour's weight, tangent coordinates and height there
-  // (in_frame(), four values a neighbour) and variance_factors() on the same neighbourhood
-  // reads them instead of computing them again.
+  // (in_frame()) and variance_factors() on the same neighbourhood reads them instead of
+  // computing them again: by pairs of neighbours (2 b, 2 b + 1), eight values from 8 b, the
+  // two weights, the two u, the two v, the two heights (a weight of 0 past the last neighbour).
   std::vector<double>* frame_cache = nullptr;
+  static std::size_t frame_cache_size(std::size_t neighbors) { return 8 * ((neighbors + 1) / 2); }
 
   // Fits the neighbourhood; false if its neighbours do not spread in two directions or the
-  // fit has no solution.
+  // fit has no solution. Where the neighbourhood carries the automatic scale's plain quadric of
+  // its points (Neighborhood::plain_quadric) and no frame cache is asked for, that fit with
+  // this one's penalty (refit_with_penalty(): the same result).
   bool compute(const Neighborhood& nb)
   {
+    if(nb.plain_quadric && !frame_cache)
+    {
+      const double penalty = anisotropy_penalty;
+      *this = *nb.plain_quadric;
+      return refit_with_penalty(penalty);
+    }
     weighted_line = false;
     if(nb.size < quadratic_height_coefficients)
       return false;
@@ -182,38 +208,58 @@ struct Quadric_fit
 
     Quadratic_height_fit& fit = equations;
     fit = Quadratic_height_fit();
-    Quadratic_moments moments;
+    Quadratic_sums<Lane_pair> sums;
     double* cache = nullptr;
     if(frame_cache)
     {
-      frame_cache->resize(4 * nb.size);
+      frame_cache->resize(frame_cache_size(nb.size));
       cache = frame_cache->data();
     }
-    for(std::size_t i = 0; i < nb.size; ++i)
+    for(std::size_t i = 0; i < nb.size; i += 2)
     {
-      double w, u, v, h;
-      const bool inside = in_frame(nb, i, w, u, v, h);
+      Lane_pair w, u, v, h;
+      in_frame(nb, i, w, u, v, h);
       if(cache)
       {
-        cache[4 * i] = inside ? w : 0.0;
-        cache[4 * i + 1] = u;
-        cache[4 * i + 2] = v;
-        cache[4 * i + 3] = h;
+        double* block = cache + 4 * i;
+        store_lanes(block, w);
+        store_lanes(block + 2, u);
+        store_lanes(block + 4, v);
+        store_lanes(block + 6, h);
       }
-      if(!inside)
-        continue;
-      moments.add(u, v, h, w);
+      sums.add(u, v, h, w);
     }
+    const Quadratic_moments moments(sums);
     moments.fill(fit.ata, fit.atb);
-    // the penalty lambda ((a3 - a5)² + a4²) / 2 in the normal equations (upper triangle)
-    const double lambda = anisotropy_penalty * moments.fourth();
-    fit.ata[3][3] += lambda;
-    fit.ata[3][5] -= lambda;
-    fit.ata[5][5] += lambda;
-    fit.ata[4][4] += lambda;
+    fourth_moment = moments.fourth();
+    add_penalty(anisotropy_penalty);
     return fit.solve(a);
   }
 
+  // After compute() with anisotropy_penalty 0 (the automatic scale's rungs): the fit that
+  // compute() with `penalty` gives on the same neighbourhood (the same frame and sums, bit for
+  // bit), without a pass over its points. False where that fit has no solution.
+  bool refit_with_penalty(double penalty)
+  {
+    CGAL_precondition(anisotropy_penalty == 0);
+    anisotropy_penalty = penalty;
+    add_penalty(penalty);
+    return equations.solve(a);
+  }
+
+private:
+  // the penalty lambda ((a3 - a5)² + a4²) / 2 in the normal equations (upper triangle)
+  void add_penalty(double penalty)
+  {
+    const double lambda = penalty * fourth_moment;
+    double(*ata)[6] = equations.ata;
+    ata[3][3] += lambda;
+    ata[3][5] -= lambda;
+    ata[5][5] += lambda;
+    ata[4][4] += lambda;
+  }
+
+public:
   // After compute() on the same neighbourhood: what the variances of linear combinations g[i] . a of the coefficients
   // are made of under independent position noise of variance sigma²: the sandwich covariance
   // of weighted least squares gives sigma² times factor[i] = g[i]ᵀ M⁻¹ (sum w² m mᵀ) M⁻¹ g[i],
@@ -222,28 +268,34 @@ struct Quadric_fit
   // these have no value.
   bool variance_factors(const Neighborhood& nb, const double (*g)[6], int count, double* factor, double& sigma2) const
   {
-    double b[6][6] = {}, sw = 0, ssr = 0;
-    Quadratic_moments squared;  // the moments with weights w²
-    const double* cache = frame_cache && frame_cache->size() == 4 * nb.size ? frame_cache->data() : nullptr;
-    for(std::size_t i = 0; i < nb.size; ++i)
+    double b[6][6] = {};
+    Lane_pair sums[2] = {};  // sum w, sum w e²
+    Quadratic_sums<Lane_pair> squared_sums;  // the moments with weights w²
+    const double* cache =
+      frame_cache && frame_cache->size() == frame_cache_size(nb.size) ? frame_cache->data() : nullptr;
+    Lane_pair A[6];
+    for(int j = 0; j < 6; ++j)
+      A[j] = broadcast(a[j]);
+    for(std::size_t i = 0; i < nb.size; i += 2)
     {
-      double w, u, v, e;
+      Lane_pair w, u, v, e;
       if(cache)
       {
-        w = cache[4 * i];
-        u = cache[4 * i + 1];
-        v = cache[4 * i + 2];
-        e = cache[4 * i + 3];
-        if(!(w > 0))
-          continue;
+        const double* block = cache + 4 * i;
+        w = load_lanes(block);
+        u = load_lanes(block + 2);
+        v = load_lanes(block + 4);
+        e = load_lanes(block + 6);
       }
-      else if(!in_frame(nb, i, w, u, v, e))
-        continue;
-      e -= a[0] + a[1] * u + a[2] * v + a[3] * (u * u) + a[4] * (u * v) + a[5] * (v * v);
-      sw += w;
-      ssr += w * e * e;
-      squared.add(u, v, w * w);
+      else
+        in_frame(nb, i, w, u, v, e);
+      e = e - (A[0] + A[1] * u + A[2] * v + A[3] * (u * u) + A[4] * (u * v) + A[5] * (v * v));
+      sums[0] += w;
+      sums[1] += w * e * e;
+      squared_sums.add(u, v, w * w);
     }
+    const double sw = fold(sums[0]), ssr = fold(sums[1]);
+    const Quadratic_moments squared(squared_sums);
     squared.fill(b);
     const double sw2 = squared.s[0];
     const double n_eff = sw2 > 0 ? sw * sw / sw2 : 0.0;
