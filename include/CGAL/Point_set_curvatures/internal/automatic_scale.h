@@ -476,10 +476,10 @@ struct Scale_ladder
   static double cubic_residual(const std::vector<double>& frame, double radius)
   {
     Cubic_height_fit cubic;
-    for(std::size_t b = 0; b + 7 < frame.size(); b += 8)  // (pairs of neighbours)
-      for(std::size_t l = 0; l < 2; ++l)
-        if(frame[b + l] > 0)
-          cubic.add(frame[b + 2 + l], frame[b + 4 + l], frame[b + 6 + l], frame[b + l]);
+    // (by pairs of neighbours; outside the kernel the weight and the values are 0: nothing added)
+    for(std::size_t b = 0; b + 7 < frame.size(); b += 8)
+      cubic.add(load_lanes(&frame[b + 2]), load_lanes(&frame[b + 4]), load_lanes(&frame[b + 6]),
+                load_lanes(&frame[b]));
     double sigma2;
     if(!cubic.residual_variance(gate_cubic_least_pivot, sigma2))
       return std::numeric_limits<double>::quiet_NaN();
@@ -597,8 +597,14 @@ struct Scale_ladder
     {
       // the second test, as the mean curvature's (cubic_residual()), unweighted as these fits
       Cubic_height_fit cubic;
-      for(std::size_t i = 0; i < n; ++i)
-        cubic.add(frame[4 * i], frame[4 * i + 1], frame[4 * i + 2], 1.0);
+      for(std::size_t i = 0; i < n; i += 2)
+      {
+        // (by pairs; a weight of 0 for the one past the last)
+        const double* f = &frame[4 * i];
+        const bool pair = i + 1 < n;
+        cubic.add(lanes(f[0], pair ? f[4] : 0.0), lanes(f[1], pair ? f[5] : 0.0), lanes(f[2], pair ? f[6] : 0.0),
+                  lanes(1.0, pair ? 1.0 : 0.0));
+      }
       double sigma2;
       kept = cubic.residual_variance(gate_cubic_least_pivot, sigma2) &&
              sigma2 * r * r < automatic_scale_gate_cubic_share * residual;
@@ -637,6 +643,7 @@ struct Scale_ladder
     // (a lone noisy line, whose longer neighbourhoods are thinner)
     Rung_fit passed;
     std::size_t passed_rank = 0;
+    bool fitted = false;  // scratch.chosen_fit is the chosen rung's
     // (a cloud of fewer points than the smallest count: every point, as with neighbor_count)
     std::size_t k = std::min(smallest, whole.size);
     for(std::size_t j = 0; k > 0 && k <= whole.size && j < rungs(); ++j, k *= 2)
@@ -751,6 +758,7 @@ struct Scale_ladder
       c.count = chosen.nb.size;  // (after the swap: target is the rung given up)
       scratch.chosen_fit = fit;
       scratch.chosen_fit.frame_cache = nullptr;  // (a cache of `trial`'s or `chosen`'s)
+      fitted = true;
       std::copy(fit.n0, fit.n0 + 3, reference);  // one side for every rung
       if(fallback)
         break;  // (the rung above it could not be fitted)
@@ -786,7 +794,7 @@ struct Scale_ladder
     if((c.found || c.as_first_rung) && !climbs(c))
     {
       chosen.take_attributes(whole);
-      chosen.nb.plain_quadric = c.found ? &scratch.chosen_fit : nullptr;
+      chosen.nb.plain_quadric = fitted && !c.climb ? &scratch.chosen_fit : nullptr;
     }
     return c;
   }

@@ -202,25 +202,38 @@ struct Quadratic_moments : Quadratic_sums<double>
 // scale's first pass, automatic_scale.h).
 struct Cubic_height_fit
 {
-  double ata[10][10] = {};  // sum w m mᵀ (upper triangle)
-  double atb[10] = {};      // sum w m h
-  double shh = 0, sw = 0, sw2 = 0;  // sum w h², sum w, sum w²
+  // Two lanes (lane_pair.h; add() takes two neighbours, a weight of 0 for none): w u^a v^b for
+  // a + b <= 6 (degree d from d (d + 1) / 2, by the power of v: the 55 entries of sum w m mᵀ
+  // hold 28 distinct monomials), sum w m h, sum w h², sum w².
+  Lane_pair s[28] = {};
+  Lane_pair sh[10] = {};
+  Lane_pair shh = {}, sw2 = {};
 
-  void add(double u, double v, double h, double w)
+  void add(Lane_pair u, Lane_pair v, Lane_pair h, Lane_pair w)
   {
-    const double uu = u * u, vv = v * v;
-    const double m[10] = {1.0, u, v, uu, u * v, vv, uu * u, uu * v, u * vv, vv * v};
-    for(int i = 0; i < 10; ++i)
+    Lane_pair wu[7], vp[7];  // w u^a, v^b
+    wu[0] = w;
+    vp[0] = broadcast(1.0);
+    for(int a = 1; a < 7; ++a)
     {
-      const double wm = w * m[i];
-      atb[i] += wm * h;
-      for(int j = i; j < 10; ++j)
-        ata[i][j] += wm * m[j];
+      wu[a] = wu[a - 1] * u;
+      vp[a] = vp[a - 1] * v;
     }
-    shh += w * h * h;
-    sw += w;
+    for(int d = 0, k = 0; d < 7; ++d)
+      for(int b = 0; b <= d; ++b, ++k)
+        s[k] += b == 0 ? wu[d] : wu[d - b] * vp[b];
+    // sum w m h: w u^a v^b h for a + b <= 3, as s's first 10
+    const Lane_pair wh = w * h;
+    const Lane_pair uu = u * u;
+    const Lane_pair m[10] = {broadcast(1.0), u, v, uu, u * v, vp[2], uu * u, uu * v, u * vp[2], vp[3]};
+    for(int i = 0; i < 10; ++i)
+      sh[i] += wh * m[i];
+    shh += wh * h;
     sw2 += w * w;
   }
+
+  // One neighbour.
+  void add(double u, double v, double h, double w) { add(lanes(u, 0), lanes(v, 0), lanes(h, 0), lanes(w, 0)); }
 
   // The weighted mean squared residual times n_eff / (n_eff - 10), n_eff = (sum w)² / sum w²
   // (as Quadric_fit::variance_factors() gives the quadric's with 6); the residuals' sum of squares
@@ -229,7 +242,20 @@ struct Cubic_height_fit
   // monomial's relative pivot (cholesky_factor()) is below `least_pivot`.
   bool residual_variance(double least_pivot, double& sigma2) const
   {
-    const double n_eff = sw2 > 0 ? sw * sw / sw2 : 0.0;
+    const double sw = fold(s[0]), sum_w2 = fold(sw2);
+    const double n_eff = sum_w2 > 0 ? sw * sw / sum_w2 : 0.0;
+    // the normal equations: entry (i, j) is the monomial of the summed powers
+    static constexpr int pu[10] = {0, 1, 0, 2, 1, 0, 3, 2, 1, 0}, pv[10] = {0, 0, 1, 0, 1, 2, 0, 1, 2, 3};
+    double ata[10][10] = {}, atb[10];
+    for(int i = 0; i < 10; ++i)
+    {
+      for(int j = i; j < 10; ++j)
+      {
+        const int d = pu[i] + pu[j] + pv[i] + pv[j];
+        ata[i][j] = fold(s[d * (d + 1) / 2 + pv[i] + pv[j]]);
+      }
+      atb[i] = fold(sh[i]);
+    }
     double L[10][10] = {};
     if(!(n_eff > 10.5) || !cholesky_factor(ata, L, least_pivot))
       return false;
@@ -238,7 +264,7 @@ struct Cubic_height_fit
     double fitted = 0;
     for(double x : y)
       fitted += x * x;
-    sigma2 = std::max(0.0, shh - fitted) / sw * n_eff / (n_eff - 10.0);
+    sigma2 = std::max(0.0, fold(shh) - fitted) / sw * n_eff / (n_eff - 10.0);
     return std::isfinite(sigma2);
   }
 };

@@ -5,9 +5,11 @@
 // points of even rank in one lane and those of odd rank in the other, and add the two lanes at
 // the end. With GCC and Clang the pair is a vector of two doubles (one SSE2 or NEON register,
 // one instruction for both lanes); elsewhere a struct of two doubles. Both do the same IEEE
-// operations in the same order, so the results are the same, bit for bit, on every platform and
-// compiler that rounds doubles the same way (no fused multiply-add: the package's sums are
-// written as separate products and sums).
+// operations in the same order, so they give the same bits where the compiler does not fuse a
+// product and a sum into one multiply-add: on x86-64 without -march flags (SSE2 has none), or
+// with -ffp-contract=off (GCC contracts by default where the target has FMA: aarch64, or x86-64
+// with -march=haswell). Either way the order of the sums is fixed by the neighbourhood's, so
+// sequential and parallel runs, tiles and whole runs agree.
 
 #ifndef CGAL_POINT_SET_CURVATURES_INTERNAL_LANE_PAIR_H
 #define CGAL_POINT_SET_CURVATURES_INTERNAL_LANE_PAIR_H

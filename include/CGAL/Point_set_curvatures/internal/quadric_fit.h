@@ -44,6 +44,7 @@
 #define CGAL_POINT_SET_CURVATURES_INTERNAL_QUADRIC_FIT_H
 
 #include <CGAL/Point_set_curvatures/internal/height_field.h>
+#include <CGAL/Point_set_curvatures/internal/lane_pair.h>
 #include <CGAL/Point_set_curvatures/internal/local_estimate.h>
 #include <CGAL/Point_set_curvatures/internal/pca_plane.h>
 #include <CGAL/Point_set_curvatures/internal/pss.h>
