@@ -3826,7 +3826,7 @@ TEST_CASE("tool: a run killed while computing leaves no temporary file, and the 
   // kept: a run still going (this process), other names
   const std::string running = ".killed.ply.tmp-" + std::to_string(::getpid()) + "-kEePmE";
   for(const std::string& name : {running, std::string(".killed.ply.tmp-notes.txt"), std::string(".other.ply.tmp-AbC123"),
-                                std::string("killed.ply.tmp-AbC123")})
+                                 std::string("killed.ply.tmp-AbC123")})
     write_text(file(name), "keep");
   const Run next = run_tool(q(file("killed.xyz")) + " " + q(file("killed.ply")) + " --radius 0.3");
   INFO(next.err);
@@ -3844,7 +3844,7 @@ TEST_CASE("tool: a run killed while computing leaves no temporary file, and the 
   CHECK(again.status == 0);
   CHECK(again.err.find("note:") == std::string::npos);
   for(const std::string& name : {running, std::string(".killed.ply.tmp-notes.txt"), std::string(".other.ply.tmp-AbC123"),
-                                std::string("killed.ply.tmp-AbC123")})
+                                 std::string("killed.ply.tmp-AbC123")})
     fs::remove(file(name));
 }
 

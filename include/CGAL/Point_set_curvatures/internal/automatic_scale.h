@@ -206,22 +206,26 @@ struct Sub_neighborhood
   // The positions of the points of `whole` closer than `radius` (in whole's scaled units), in
   // whole's order, scaled by `radius`; nb's other per-point fields are null until
   // take_attributes(). `d2`: whole's squared distances to the query (squared_distances()). The
-  // copy is written without branches: every point is written, at the place of the next one
-  // inside, which overwrites it where it lies outside.
+  // points inside are listed without branches (every index written at the place of the next one
+  // inside, which overwrites it where it lies outside), then only they are copied.
   void take(const Neighborhood& whole, double radius, const std::vector<double>& d2)
   {
     const double r2 = radius * radius, inverse = 1.0 / radius;
-    for(auto* v : {&qx, &qy, &qz})
-      v->resize(whole.size);
     taken.resize(whole.size);
     std::size_t n = 0;  // (at most i: the writes stay within whole.size)
     for(std::size_t i = 0; i < whole.size; ++i)
     {
-      qx[n] = whole.qx[i] * inverse;
-      qy[n] = whole.qy[i] * inverse;
-      qz[n] = whole.qz[i] * inverse;
       taken[n] = static_cast<std::uint32_t>(i);
       n += d2[i] < r2 ? 1 : 0;
+    }
+    for(auto* v : {&qx, &qy, &qz})
+      v->resize(n);
+    for(std::size_t j = 0; j < n; ++j)
+    {
+      const std::uint32_t i = taken[j];
+      qx[j] = whole.qx[i] * inverse;
+      qy[j] = whole.qy[i] * inverse;
+      qz[j] = whole.qz[i] * inverse;
     }
     taken.resize(n);
     nb = whole;
