@@ -110,14 +110,7 @@ int main(int argc, char** argv)
   const double write_seconds = best_of_3([&]() {
     std::FILE* f = std::fopen(out.c_str(), "wb");
     psc_tool::write_point_cloud(f, layout, n, [&](std::size_t i, psc_tool::Output_row& r) {
-      const auto& e = estimates[i];
-      const double v[psc_tool::output_value_count] = {pts[i].first.x(), pts[i].first.y(), pts[i].first.z(), e.normal.x(), e.normal.y(),
-                            e.normal.z(), e.min_curvature, e.max_curvature, e.mean_curvature, e.gaussian_curvature,
-                            e.min_direction.x(), e.min_direction.y(), e.min_direction.z(), e.max_direction.x(),
-                            e.max_direction.y(), e.max_direction.z(), e.normal_coherence};
-      std::copy(v, v + psc_tool::output_value_count, r.value);
-      r.neighbors = std::int32_t(e.neighbor_count);
-      r.valid = e.is_valid() ? 1 : 0;
+      psc_tool::fill_row(pts[i].first.x(), pts[i].first.y(), pts[i].first.z(), estimates[i], r);
     }, psc_tool::Progress());
     std::fclose(f);
   });

@@ -13,6 +13,7 @@
 #include "../tools/progress_line.h"
 
 #include <CGAL/Point_set_curvatures/estimators.h>
+#include <CGAL/Point_set_curvatures/field_descriptions.h>
 #include <CGAL/Point_set_curvatures/internal/knn_neighborhoods.h>
 #include <CGAL/estimate_apss_curvatures.h>
 #include <CGAL/estimate_aso_curvatures.h>
@@ -3219,6 +3220,62 @@ TEST_CASE("tool: input attributes carried in their types, renamed on a clash, --
   const std::string out = read_text(file("attr_txt.csv"));
   CHECK(out.substr(0, out.find('\n')) == "x,y,z,mean,reflectance");
   CHECK(out.find(",199.75\n") != std::string::npos);  // the last point's reflectance
+}
+
+// The columns come from the package's table of fields (field_descriptions.h), by name: the CSV
+// header is x y z and the table's names in its order (mean_error with the automatic scale
+// only), each value under its own name (the unit sphere: mean 1), a --fields group is its
+// components, --color the table's summarised curvatures, a LAS extra bytes' description its row's.
+TEST_CASE("tool: the output's columns are the package's table of fields, in its order, by name")
+{
+  namespace PSC = CGAL::Point_set_curvatures;
+  write_xyz(file("table.xyz"), sphere(1000, 1.0));
+  for(const bool automatic : {false, true})
+  {
+    INFO("automatic scale " << automatic);
+    REQUIRE(run_tool(q(file("table.xyz")) + " " + q(file("table.csv")) + (automatic ? "" : " --neighbors 40") +
+                     " --quiet")
+              .status == 0);
+    std::string expected = "x,y,z";
+    for(const PSC::Field_description& f : PSC::field_descriptions)
+      if(f.name && (automatic || !f.automatic_scale_only))
+        expected += std::string(",") + f.name;
+    std::istringstream csv(read_text(file("table.csv")));
+    std::string header, row;
+    REQUIRE(std::getline(csv, header));
+    REQUIRE(std::getline(csv, row));
+    CHECK(header == expected);
+    std::map<std::string, double> value;
+    std::istringstream names(header), values(row);
+    for(std::string name, v; std::getline(names, name, ',') && std::getline(values, v, ',');)
+      value[name] = std::stod(v);
+    CHECK(std::abs(value.at("mean") - 1) < 0.05);
+    CHECK(std::abs(value.at("gaussian") - 1) < 0.1);
+    CHECK(std::abs(std::hypot(value.at("nx"), value.at("ny"), value.at("nz")) - 1) < 1e-9);
+    CHECK(value.at("valid") == 1);
+    CHECK(value.at("neighbors") >= 40);
+    CHECK(value.count("mean_error") == (automatic ? 1u : 0u));
+  }
+  REQUIRE(run_tool(q(file("table.xyz")) + " " + q(file("group.csv")) + " --neighbors 40 --fields dmax,normal --quiet")
+            .status == 0);
+  const std::string group = read_text(file("group.csv"));
+  CHECK(group.substr(0, group.find('\n')) == "x,y,z,nx,ny,nz,dmax_x,dmax_y,dmax_z");
+  // --color: the summarised fields, named in the message of an unknown one
+  std::string summarised;
+  for(const PSC::Field_description& f : PSC::field_descriptions)
+    if(f.name && f.summarised)
+      summarised += (summarised.empty() ? "" : "|") + std::string(f.name);
+  const Run color = run_tool(q(file("table.xyz")) + " " + q(file("c.ply")) + " --neighbors 40 --color curvedness");
+  CHECK(color.status == 2);
+  CHECK(color.err.find("(available: " + summarised + ")") != std::string::npos);
+  REQUIRE(run_tool(q(file("table.xyz")) + " " + q(file("table.las")) + " --neighbors 40 --quiet").status == 0);
+  const std::string las = read_text(file("table.las"));
+  for(const PSC::Field_description& f : PSC::field_descriptions)
+    if(f.name && !f.automatic_scale_only)
+    {
+      INFO(f.name);
+      CHECK(las.find(std::string(f.description)) != std::string::npos);
+    }
 }
 
 // ---------------------------------------------------------------------------------------

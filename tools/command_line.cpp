@@ -6,6 +6,7 @@
 #include "command_line.h"
 
 #include "read_point_cloud.h"
+#include "run_summary.h"
 #include "write_point_cloud.h"
 
 #include <algorithm>
@@ -14,6 +15,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <iterator>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -21,7 +23,13 @@ namespace psc_tool {
 
 const std::map<std::string, int>& color_quantities()
 {
-  static const std::map<std::string, int> q = {{"k_min", 0}, {"k_max", 1}, {"mean", 2}, {"gaussian", 3}};
+  static const std::map<std::string, int> q = [] {
+    std::map<std::string, int> m;
+    for(const CGAL::Point_set_curvatures::Field_description& f : CGAL::Point_set_curvatures::field_descriptions)
+      if(f.name && f.summarised)
+        m.emplace(f.name, summary_quantities::of(f.name));
+    return m;
+  }();
   return q;
 }
 
@@ -74,6 +82,42 @@ std::string least_neighbor_counts()
   return s;
 }
 
+// `text` broken at spaces into lines of at most 90 characters: the first after `used`
+// characters of its line, the others after `indent` spaces; no line break at the end.
+std::string wrapped(const std::string& text, std::size_t used, std::size_t indent)
+{
+  std::string out, word;
+  std::size_t column = used;
+  std::istringstream words(text);
+  while(words >> word)
+  {
+    const bool first = column == used && out.empty();
+    if(!first && column + 1 + word.size() > 90)
+    {
+      out += "\n" + std::string(indent, ' ');
+      column = indent;
+    }
+    else if(!first)
+    {
+      out += ' ';
+      ++column;
+    }
+    out += word;
+    column += word.size();
+  }
+  return out;
+}
+
+// "k_min|k_max|mean|gaussian": what --color can show, in the fields' order.
+std::string color_choices()
+{
+  std::string s;
+  for(const CGAL::Point_set_curvatures::Field_description& f : CGAL::Point_set_curvatures::field_descriptions)
+    if(f.name && f.summarised)
+      s += (s.empty() ? "" : "|") + std::string(f.name);
+  return s;
+}
+
 } // namespace
 
 void print_usage(std::ostream& os)
@@ -90,18 +134,18 @@ void print_usage(std::ostream& os)
      << quadric_normal_neighbors() << " to " << automatic_largest << " with the\n"
      << "          automatic scale; see --normal-fit and --orient) with a warning.\n"
      << "  OUTPUT  .ply (binary unless --ascii) or .csv (with a header line): every input point\n"
-     << "          in input order with x y z, the corrected normal nx ny nz, k_min k_max mean\n"
-     << "          gaussian, the principal directions dmin_x dmin_y dmin_z dmax_x dmax_y dmax_z,\n"
-     << "          normal_coherence (a quality value in [0, 1]: 1 where the neighbours' normals\n"
-     << "          agree, low in foliage; aso and apss), with the automatic scale mean_error (the\n"
-     << "          standard error of mean at the chosen scale) (doubles; NaN where the estimate\n"
-     << "          is invalid or the method does not provide the quantity), neighbors (int) and\n"
-     << "          valid (0 or 1); then the input's other values in their own types (PLY\n"
-     << "          properties, named text columns, LAS fields such as intensity,\n"
-     << "          classification, gps_time, red green blue, and the extra bytes an extra-bytes\n"
-     << "          VLR describes), renamed input_NAME where NAME is one of the above; 16-bit\n"
-     << "          red green blue are written to PLY as 8 bits, as viewers read them (the high\n"
-     << "          byte; the value where none in the file exceeds 255).\n"
+     << "          in input order with x y z and the fields of --fields: the corrected normal,\n"
+     << "          the curvatures, the principal directions, normal_coherence (a quality value\n"
+     << "          in [0, 1]: 1 where the neighbours' normals agree, low in foliage; aso and\n"
+     << "          apss), with the automatic scale mean_error (the standard error of mean at the\n"
+     << "          chosen scale) (doubles; NaN where the estimate is invalid or the method does\n"
+     << "          not provide the quantity), neighbors (int) and valid (0 or 1); then the\n"
+     << "          input's other values in their own types (PLY properties, named text columns,\n"
+     << "          LAS fields such as intensity, classification, gps_time, red green blue, and\n"
+     << "          the extra bytes an extra-bytes VLR describes), renamed input_NAME where NAME\n"
+     << "          is one of the tool's fields; 16-bit red green blue are written to PLY as 8\n"
+     << "          bits, as viewers read them (the high byte; the value where none in the file\n"
+     << "          exceeds 255).\n"
      << "          Or .las: LAS 1.4 with the estimates as extra-bytes fields (double, float\n"
      << "          with --float; no_data NaN where invalid), from a LAS input in its point\n"
      << "          format with its fields, scale, offset, VLRs, extended VLRs and CRS kept;\n"
@@ -160,9 +204,11 @@ void print_usage(std::ostream& os)
      << "                     when the normals are estimated: within 1.35x of the error with\n"
      << "                     exact normals on simulated scans; otherwise 0)\n"
      << "\noptions: the output\n"
-     << "  --fields LIST      estimator fields to write, comma-separated (x y z always): nx ny nz\n"
-     << "                     or normal, k_min, k_max, mean, gaussian, dmin, dmax (or dmin_x...),\n"
-     << "                     normal_coherence, mean_error, neighbors, valid (default: all)\n"
+     << "  --fields LIST      "
+     << wrapped(cat("estimator fields to write, comma-separated (x y z always; default: all, in this order): ",
+                    selectable_fields()),
+                21, 21)
+     << "\n"
      << "  --float            write the estimator fields as float32 (x y z stay double)\n"
      << "  --ascii            ASCII PLY output (NaN written as nan)\n"
      << "  --ply-names N      names of the PLY properties: plain (default: mean, k_min, ...) or\n"
@@ -170,7 +216,7 @@ void print_usage(std::ostream& os)
      << "                     nx ny nz and red green blue, input attributes too). CloudCompare\n"
      << "                     loads a property scalar_NAME as the scalar field NAME and leaves\n"
      << "                     out mean, k_min, ...: use scalar for CloudCompare\n"
-     << "  --color Q          add red green blue (uchar) showing Q = mean|gaussian|k_min|k_max:\n"
+     << "  --color Q          add red green blue (uchar) showing Q = " << color_choices() << ":\n"
      << "                     blue < 0 < red, white at 0, saturated beyond the 2nd/98th\n"
      << "                     percentiles; grey where invalid\n"
      << "  --drop-attributes  do not carry the input's other values to the output (a .las\n"
@@ -428,7 +474,7 @@ Options parse_command_line(int argc, char** argv)
       o.color = take_value();
       if(!color_quantities().count(o.color))
         throw Error(cat(name, ": unknown quantity ", in_quotes(o.color),
-                        " (available: mean|gaussian|k_min|k_max)"));
+                        " (available: ", color_choices(), ")"));
     }
     else if(name == "--memory-limit")
     {

@@ -21,7 +21,7 @@ namespace psc_tool {
 
 inline constexpr const char* program = "point_set_curvatures";
 
-// Quantities that --color can show: their index in Row_summary (Output_row::value[6 + q]).
+// Quantities that --color can show: their index q in Row_summary (summary_quantities).
 const std::map<std::string, int>& color_quantities();
 
 // The settings of one run, from the command line (see print_usage()).

@@ -97,16 +97,7 @@ std::string output_description(const Output_layout& layout, std::size_t n)
 void estimate_row(const Point_set& ps, const Estimates& estimates, std::size_t i, Output_row& r)
 {
   const Point& p = ps.point(*(ps.begin() + i));
-  const Estimate& e = estimates[i];
-  const double v[output_value_count] = {p.x(), p.y(), p.z(), e.normal.x(), e.normal.y(), e.normal.z(),
-                                        e.min_curvature, e.max_curvature, e.mean_curvature, e.gaussian_curvature,
-                                        e.min_direction.x(), e.min_direction.y(), e.min_direction.z(),
-                                        e.max_direction.x(), e.max_direction.y(), e.max_direction.z(),
-                                        e.normal_coherence, e.mean_curvature_error};
-  std::copy(v, v + output_value_count, r.value);
-  r.neighbors = static_cast<std::int32_t>(std::min<std::size_t>(e.neighbor_count, INT32_MAX));
-  r.valid = e.is_valid() ? 1 : 0;
-  r.status = static_cast<int>(e.status);
+  fill_row(p.x(), p.y(), p.z(), estimates[i], r);
 }
 
 void reserve_output(const Options& o, Temporary_output& output, const std::vector<Attribute>& attributes,
@@ -162,7 +153,8 @@ void write_output(const Run_context& c, Temporary_output& output, const Estimati
     if(color_quantity >= 0)
     {
       const std::array<unsigned char, 3> rgb =
-        diverging_color(r.valid ? r.value[6 + color_quantity] : std::nan(""), color_range);
+        diverging_color(r.valid() ? r.value[summary_quantities::value_index(color_quantity)] : std::nan(""),
+                        color_range);
       std::copy(rgb.begin(), rgb.end(), r.color);
     }
   }, c.progress.phase("writing"));

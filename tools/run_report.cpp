@@ -183,8 +183,8 @@ void print_summary(const Run_context& c, const Estimation_settings& scale, std::
   std::printf("  neighbours  %.2f on average (valid estimates)\n",
               valid ? double(summary.neighbors()) / double(valid) : 0.0);
   std::printf("  time        %s s: %s\n", s3(seconds_since(c.start)).c_str(), times.c_str());
-  std::printf("  H (mean)    %s\n", min_median_max(summary, 2).c_str());
-  std::printf("  K (Gauss)   %s\n", min_median_max(summary, 3).c_str());
+  std::printf("  H (mean)    %s\n", min_median_max(summary, summary_quantities::of("mean")).c_str());
+  std::printf("  K (Gauss)   %s\n", min_median_max(summary, summary_quantities::of("gaussian")).c_str());
 }
 
 } // namespace

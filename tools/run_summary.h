@@ -32,11 +32,43 @@ inline double percentile(std::vector<double> values, double q)
   return values[i];
 }
 
+// The quantities summarised, those of the table marked `summarised` (k_min, k_max, mean,
+// gaussian), numbered q in the table's order: their number, quantity q's index in
+// Output_row::value, and the q of the field named `name` (-1 if it is not summarised).
+namespace summary_quantities {
+constexpr int count()
+{
+  int n = 0;
+  for(const CGAL::Point_set_curvatures::Field_description& f : CGAL::Point_set_curvatures::field_descriptions)
+    n += f.name && f.summarised ? 1 : 0;
+  return n;
+}
+constexpr int of(const char* name)
+{
+  int q = 0;
+  for(const CGAL::Point_set_curvatures::Field_description& f : CGAL::Point_set_curvatures::field_descriptions)
+    if(f.name && f.summarised)
+    {
+      if(output_value_index(f.name) == output_value_index(name))
+        return q;
+      ++q;
+    }
+  return -1;
+}
+constexpr int value_index(int q)
+{
+  for(const CGAL::Point_set_curvatures::Field_description& f : CGAL::Point_set_curvatures::field_descriptions)
+    if(f.name && f.summarised && q-- == 0)
+      return output_value_index(f.name);
+  return -1;
+}
+} // namespace summary_quantities
+
 class Row_summary
 {
 public:
-  // The estimated quantities summarised: k_min, k_max, mean, gaussian (Output_row::value[6 + q]).
-  static constexpr int quantities = 4;
+  // The estimated quantities summarised (summary_quantities).
+  static constexpr int quantities = summary_quantities::count();
 
   // `points`: the rows to come; `too_few_status`: the status whose rows still count in the
   // neighbour counts (too few neighbours).
@@ -54,19 +86,20 @@ public:
   void add(std::size_t index, const Output_row& r)
   {
     const bool sampled = index % m_step == 0;
-    if(r.valid)
+    if(r.valid())
     {
       ++m_valid;
-      const double nz = r.value[5];
-      if(CGAL::Point_set_curvatures::is_near_vertical(r.value[3], r.value[4], nz))
+      const double nx = r.value[output_value_index("nx")], ny = r.value[output_value_index("ny")],
+                   nz = r.value[output_value_index("nz")];
+      if(CGAL::Point_set_curvatures::is_near_vertical(nx, ny, nz))
       {
         ++m_near_vertical;
         m_near_vertical_up += nz > 0 ? 1 : 0;
       }
-      m_neighbors += std::uint64_t(std::max(0, r.neighbors));
+      m_neighbors += std::uint64_t(std::max(0, r.neighbors()));
       for(int q = 0; q < quantities; ++q)
       {
-        const double v = r.value[6 + q];
+        const double v = r.value[summary_quantities::value_index(q)];
         if(!std::isfinite(v))
           continue;
         ++m_count[q];
@@ -78,11 +111,11 @@ public:
     }
     else
       ++m_invalid[r.status];
-    if(r.valid || r.status == m_too_few_status)
+    if(r.valid() || r.status == m_too_few_status)
     {
-      m_too_few += !r.valid;
+      m_too_few += !r.valid();
       if(sampled)
-        m_neighbor_sample.push_back(double(r.neighbors));
+        m_neighbor_sample.push_back(double(r.neighbors()));
     }
   }
 

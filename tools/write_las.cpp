@@ -87,31 +87,12 @@ int data_type_of(Scalar_type t)
   }
 }
 
-// What the descriptor of an estimate says of it (at most 31 characters).
+// What the descriptor of an estimate says of it (at most 31 characters: the table's).
 const char* description_of(const std::string& name)
 {
-  static const char* const d[][2] = {
-    {"nx", "unit normal, x"},
-    {"ny", "unit normal, y"},
-    {"nz", "unit normal, z"},
-    {"k_min", "minimum principal curvature"},
-    {"k_max", "maximum principal curvature"},
-    {"mean", "mean curvature (k_min+k_max)/2"},
-    {"gaussian", "Gaussian curvature k_min*k_max"},
-    {"dmin_x", "direction of k_min, x"},
-    {"dmin_y", "direction of k_min, y"},
-    {"dmin_z", "direction of k_min, z"},
-    {"dmax_x", "direction of k_max, x"},
-    {"dmax_y", "direction of k_max, y"},
-    {"dmax_z", "direction of k_max, z"},
-    {"normal_coherence", "agreement of the normals, 0-1"},
-    {"mean_error", "standard error of mean"},
-    {"neighbors", "neighbours of the estimate"},
-    {"valid", "1 valid estimate, 0 invalid"}};
-  for(const auto& e : d)
-    if(name == e[0])
-      return e[1];
-  return "input attribute";
+  const std::size_t row = CGAL::Point_set_curvatures::field_index(name.c_str());
+  return row < CGAL::Point_set_curvatures::field_count ? CGAL::Point_set_curvatures::field_descriptions[row].description
+                                                       : "input attribute";
 }
 
 // An extra-bytes field of the output.
@@ -232,9 +213,8 @@ Las_layout las_layout(const Las_output_options& options, const std::vector<Outpu
     }
     else
     {
-      // an estimate: double or float with no_data NaN; neighbors int32; valid uchar
-      x.data_type = s == Output_field::NEIGHBORS ? 6 : s == Output_field::VALID ? 1
-                    : field.type == Scalar_type::FLOAT32 ? 9 : 10;
+      // an estimate: double or float with no_data NaN; counts int32; flags uchar
+      x.data_type = data_type_of(field.type);
       if(x.data_type >= 9)
       {
         d[3] = 1;  // no_data_bit
@@ -473,10 +453,7 @@ std::vector<std::string> write_las(std::FILE* f, const Las_output_options& optio
     for(const Extra& x : extras)
     {
       const int s = fields[x.field].source;
-      const double v = s < output_value_count         ? r.value[s]
-                       : s == Output_field::NEIGHBORS ? double(r.neighbors)
-                       : s == Output_field::VALID     ? double(r.valid)
-                                                      : attribute(std::size_t(s - Output_field::ATTRIBUTE));
+      const double v = s < output_value_count ? r.value[s] : attribute(std::size_t(s - Output_field::ATTRIBUTE));
       put_extra(p + x.offset, x.data_type, (v - x.shift) / x.scale);
     }
     chunk.insert(chunk.end(), record.begin(), record.end());

@@ -14,14 +14,36 @@
 
 namespace psc_tool {
 
-const char* const output_field_names[output_value_count] = {
-  "x",      "y",      "z",      "nx",     "ny",     "nz",     "k_min", "k_max",  "mean",
-  "gaussian", "dmin_x", "dmin_y", "dmin_z", "dmax_x", "dmax_y", "dmax_z", "normal_coherence", "mean_error"};
+namespace {
+
+namespace PSC = CGAL::Point_set_curvatures;
+
+// The fields of the table that the tool writes.
+template <class F>
+void for_each_tool_field(const F& f)
+{
+  for(const PSC::Field_description& d : PSC::field_descriptions)
+    if(d.name)
+      f(d);
+}
+
+} // namespace
 
 const char* selectable_fields()
 {
-  return "nx, ny, nz (or normal), k_min, k_max, mean, gaussian, dmin_x, dmin_y, dmin_z (or dmin), dmax_x, "
-         "dmax_y, dmax_z (or dmax), normal_coherence, mean_error (with --neighbors auto), neighbors, valid";
+  static const std::string text = [] {
+    std::string t;
+    for_each_tool_field([&t](const PSC::Field_description& d) {
+      t += t.empty() ? "" : ", ";
+      t += d.name;
+      if(d.component == 2 && *d.group)
+        t += cat(" (or ", d.group, ")");
+      if(d.automatic_scale_only)
+        t += " (with --neighbors auto)";
+    });
+    return t;
+  }();
+  return text.c_str();
 }
 
 std::vector<std::string> parse_fields(const std::string& text)
@@ -34,15 +56,15 @@ std::vector<std::string> parse_fields(const std::string& text)
     std::string name = text.substr(b, comma == std::string::npos ? std::string::npos : comma - b);
     name.erase(0, name.find_first_not_of(' '));
     name.erase(name.find_last_not_of(' ') + 1);
-    const std::string group = name == "normal" ? "n" : name == "dmin" ? "dmin_" : name == "dmax" ? "dmax_" : "";
-    if(!group.empty())
-      for(const char* axis : {"x", "y", "z"})
-        names.push_back(group + axis);
-    else if(name == "neighbors" || name == "valid" ||
-            std::find_if(output_field_names + 3, output_field_names + output_value_count,
-                         [&](const char* f) { return name == f; }) != output_field_names + output_value_count)
-      names.push_back(name);
-    else
+    bool known = false;
+    for_each_tool_field([&](const PSC::Field_description& d) {
+      if(name == d.name || name == d.group)
+      {
+        names.push_back(d.name);
+        known = true;
+      }
+    });
+    if(!known)
       throw Error(cat("--fields: unknown field ", in_quotes(name), " (x y z are always written; choose among ",
                       selectable_fields(), ")"));
     if(comma == std::string::npos)
@@ -59,24 +81,25 @@ std::vector<Output_field> output_fields(const std::vector<std::string>& selected
     return selected.empty() || std::find(selected.begin(), selected.end(), name) != selected.end();
   };
   std::vector<Output_field> fields;
-  for(int i = 0; i < output_value_count; ++i)
-    if(i < 3 || (chosen(output_field_names[i]) && (i != mean_error_value || automatic_scale)))
-      fields.push_back(Output_field{output_field_names[i],
-                                    float32 && i >= 3 ? Scalar_type::FLOAT32 : Scalar_type::FLOAT64,
-                                    Output_field::VALUE + i});
-  if(chosen("neighbors"))
-    fields.push_back(Output_field{"neighbors", Scalar_type::INT32, Output_field::NEIGHBORS});
-  if(chosen("valid"))
-    fields.push_back(Output_field{"valid", Scalar_type::UINT8, Output_field::VALID});
+  for(const char* xyz : {"x", "y", "z"})
+    fields.push_back(Output_field{xyz, Scalar_type::FLOAT64, Output_field::VALUE + output_value_index(xyz)});
+  // the tool's names, selected or not, are never an input's: no file where k_min could be
+  // an older run's value
+  std::set<std::string> taken = {"x", "y", "z"};
+  for_each_tool_field([&](const PSC::Field_description& d) {
+    taken.insert(d.name);
+    if(!chosen(d.name) || (d.automatic_scale_only && !automatic_scale))
+      return;
+    const Scalar_type type = d.type == PSC::Field_type::COUNT  ? Scalar_type::INT32
+                             : d.type == PSC::Field_type::FLAG ? Scalar_type::UINT8
+                             : float32                         ? Scalar_type::FLOAT32
+                                                               : Scalar_type::FLOAT64;
+    fields.push_back(Output_field{d.name, type, Output_field::VALUE + output_value_index(d.name)});
+  });
   if(color)
     for(int c = 0; c < 3; ++c)
       fields.push_back(Output_field{c == 0 ? "red" : c == 1 ? "green" : "blue", Scalar_type::UINT8,
                                     Output_field::COLOR + c});
-  // the tool's names, selected or not, are never an input's: no file where k_min could be
-  // an older run's value
-  std::set<std::string> taken(output_field_names, output_field_names + output_value_count);
-  taken.insert("neighbors");
-  taken.insert("valid");
   for(const Output_field& f : fields)
     taken.insert(f.name);
   for(std::size_t j = 0; j < attributes.size(); ++j)
@@ -270,8 +293,6 @@ void write_point_cloud(std::FILE* f, const Output_layout& layout, std::size_t n,
       const Output_field& field = layout.fields[c];
       const int s = field.source;
       double v = s < output_value_count               ? r.value[s]
-                 : s == Output_field::NEIGHBORS       ? double(r.neighbors)
-                 : s == Output_field::VALID           ? double(r.valid)
                  : s < Output_field::ATTRIBUTE        ? double(r.color[s - Output_field::COLOR])
                  : r.attributes                       ? r.attributes[s - Output_field::ATTRIBUTE]
                                                       : (*layout.attributes)[s - Output_field::ATTRIBUTE].values[i];

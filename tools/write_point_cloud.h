@@ -3,13 +3,15 @@
 //
 // The tool's writers: binary or ASCII PLY, or CSV with a header line, one row per input
 // point in input order, with the columns chosen by output_fields(). The rows come from a
-// callback, so this file knows nothing of the estimators.
+// callback; their fields are those of the package's table (field_descriptions.h).
 
 #ifndef POINT_SET_CURVATURES_TOOL_WRITE_POINT_CLOUD_H
 #define POINT_SET_CURVATURES_TOOL_WRITE_POINT_CLOUD_H
 
 #include "read_point_cloud.h"
 #include "tool_support.h"
+
+#include <CGAL/Point_set_curvatures/field_descriptions.h>
 
 #include <cmath>
 #include <cstddef>
@@ -36,29 +38,71 @@ T to_integer(double v)
   return static_cast<T>(v);
 }
 
-// The doubles of a row, in order: x y z nx ny nz k_min k_max mean gaussian dmin_x dmin_y
-// dmin_z dmax_x dmax_y dmax_z normal_coherence mean_error (written with the automatic scale
-// only); then neighbors (int), valid (uchar) and, with colours, red green blue (uchar).
-constexpr int output_value_count = 18;
-constexpr int mean_error_value = 17;
-extern const char* const output_field_names[output_value_count];
+// The values of a row, in order: x y z, then every field of the package's table that the tool
+// writes (CGAL::Point_set_curvatures::field_descriptions, those with a name), as doubles
+// (counts and flags too: exact), whatever the columns chosen; then, with colours, red green
+// blue (uchar). A value is found by its field's name (output_value_index()), never by position.
+namespace output_values {
+constexpr int count_fields()
+{
+  int n = 0;
+  for(const CGAL::Point_set_curvatures::Field_description& f : CGAL::Point_set_curvatures::field_descriptions)
+    n += f.name ? 1 : 0;
+  return n;
+}
+} // namespace output_values
+constexpr int output_value_count = 3 + output_values::count_fields();
+
+// The index in Output_row::value of the field named `name` ("x", "y", "z" 0 to 2), or -1.
+constexpr int output_value_index(const char* name)
+{
+  const std::size_t row = CGAL::Point_set_curvatures::field_index(name);
+  if(row == CGAL::Point_set_curvatures::field_count)
+  {
+    const char* const xyz[] = {"x", "y", "z"};
+    for(int a = 0; a < 3; ++a)
+      if(name[0] == xyz[a][0] && name[1] == 0)
+        return a;
+    return -1;
+  }
+  int index = 3;
+  for(std::size_t i = 0; i < row; ++i)
+    index += CGAL::Point_set_curvatures::field_descriptions[i].name ? 1 : 0;
+  return index;
+}
 
 struct Output_row
 {
   double value[output_value_count];
-  std::int32_t neighbors = 0;
-  unsigned char valid = 0;
   unsigned char color[3] = {0, 0, 0};
   int status = 0;  // the estimate's status (CGAL::Curvature_estimate_status), for the summary
   // The row's attribute values in the order of Output_layout::attributes, or null: then
   // value i of each attribute is row i's (the tool's tiled runs give each row its own).
   const double* attributes = nullptr;
+
+  bool valid() const { return value[output_value_index("valid")] != 0; }
+  std::int32_t neighbors() const { return to_integer<std::int32_t>(value[output_value_index("neighbors")]); }
 };
+
+// Fills the values of row `r` with the point (x, y, z) and its estimate `e` (a
+// CGAL::Curvature_estimate), every field of the table, and its status.
+template <class Estimate>
+void fill_row(double x, double y, double z, const Estimate& e, Output_row& r)
+{
+  r.value[0] = x;
+  r.value[1] = y;
+  r.value[2] = z;
+  int v = 3;  // (the table's order: output_value_index())
+  for(const CGAL::Point_set_curvatures::Field_description& f : CGAL::Point_set_curvatures::field_descriptions)
+    if(f.name)
+      r.value[v++] = CGAL::Point_set_curvatures::field_value(e, f);
+  r.status = static_cast<int>(e.status);
+}
 
 // One column of the output: its name, its type, and where its value comes from.
 struct Output_field
 {
-  enum Source { VALUE = 0, NEIGHBORS = output_value_count, VALID, COLOR, ATTRIBUTE = 100 };
+  enum Source { VALUE = 0, COLOR = output_value_count, ATTRIBUTE = 100 };
   std::string name;
   Scalar_type type = Scalar_type::FLOAT64;
   int source = 0;  // VALUE + i: Output_row::value[i]; COLOR + c; ATTRIBUTE + j: attribute j
@@ -86,16 +130,16 @@ std::vector<std::string> ply_property_names(const Output_layout& layout);
 // The names --fields accepts, for messages.
 const char* selectable_fields();
 
-// Parses a --fields value ("k_min,k_max,mean"): the estimator fields to write, each a name of
-// output_field_names, "neighbors", "valid", or a group: "normal" (nx ny nz), "dmin", "dmax"
-// (the three components). Throws Error for an unknown name.
+// Parses a --fields value ("k_min,k_max,mean"): the estimator fields to write, each the name
+// of a field or the group of a vector's components ("normal": nx ny nz, "dmin", "dmax").
+// Throws Error for an unknown name.
 std::vector<std::string> parse_fields(const std::string& text);
 
 // The columns of the output: x y z (always, in double: coordinates near 1e6 need it), then the
-// selected estimator fields (all if `selected` is empty) in the order of output_field_names,
-// as float32 if `float32` (mean_error only with `automatic_scale`), neighbors and valid if
-// selected, red green blue with `color`, then the input's attributes in their own types
-// (renamed input_NAME when NAME is one of the tool's fields, selected or not, or red green
+// selected fields (all if `selected` is empty) in the order of the table, real ones as float32
+// if `float32`, counts as int32 and flags as uchar (those of the automatic scale only with
+// `automatic_scale`), red green blue with `color`, then the input's attributes in their own
+// types (renamed input_NAME when NAME is one of the tool's fields, selected or not, or red green
 // blue with `color`).
 std::vector<Output_field> output_fields(const std::vector<std::string>& selected, bool float32, bool color,
                                         const std::vector<Attribute>& attributes, bool automatic_scale);

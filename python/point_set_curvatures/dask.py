@@ -54,8 +54,11 @@ __all__ = ["estimate_curvatures", "estimate_curvatures_file", "read_result", "es
 
 _log = logging.getLogger(__name__)
 
-_FIELDS3 = ("normal", "min_direction", "max_direction")
-_FIELDS1 = ("k_min", "k_max", "mean", "gaussian", "normal_coherence")
+#: The fields of a result, from the package's table (field_descriptions.h): key, numpy type,
+#: shape per point, whether the automatic scale alone gives it; and the real ones (NaN where a
+#: point has no estimate).
+_FIELDS = _core.fields()
+_REAL_FIELDS = tuple(f["key"] for f in _FIELDS if f["dtype"] == "<f8")
 
 
 
@@ -188,12 +191,8 @@ def estimate_curvatures(client, points, normals, *, method="aso", radius=None, n
         raise ValueError(f"points and normals must have the same shape (N, 3), got {points.shape} and {normals.shape}")
     n = len(points)
     # output arrays, the single-process values of non-finite points
-    out = {k: np.full((n, 3), np.nan) for k in _FIELDS3}
-    out.update({k: np.full(n, np.nan) for k in _FIELDS1})
-    out["neighbors"] = np.zeros(n, dtype=np.int64)
-    out["status"] = np.full(n, Status.NON_FINITE_POINT, dtype=np.uint8)
-    if neighbors == "auto":
-        out["mean_error"] = np.full(n, np.nan)
+    out = _default_rows(n, AUTOMATIC_RESULT_DTYPE if neighbors == "auto" else RESULT_DTYPE)
+    out = {k: np.ascontiguousarray(out[k]) for k in out.dtype.names}
     finite = np.isfinite(points).all(axis=1)
     if not finite.any():
         # nothing to distribute: validate the arguments as the single-process run does
@@ -301,23 +300,13 @@ def estimate_curvatures(client, points, normals, *, method="aso", radius=None, n
 BLOCK_ROWS = 1 << 17
 
 #: The record of the output file (a .npy structured array, one row per input point, in input
-#: order): the fields of :func:`point_set_curvatures.estimate_curvatures`, little-endian, packed.
-RESULT_DTYPE = np.dtype([
-    ("normal", "<f8", (3,)),
-    ("k_min", "<f8"),
-    ("k_max", "<f8"),
-    ("mean", "<f8"),
-    ("gaussian", "<f8"),
-    ("normal_coherence", "<f8"),
-    ("min_direction", "<f8", (3,)),
-    ("max_direction", "<f8", (3,)),
-    ("neighbors", "<i8"),
-    ("status", "u1"),
-])
+#: order): the fields of :func:`point_set_curvatures.estimate_curvatures`, in their order,
+#: little-endian, packed.
+RESULT_DTYPE = np.dtype([(f["key"], f["dtype"], f["shape"]) for f in _FIELDS if not f["automatic_scale_only"]])
 
 #: The record under the automatic scale (``neighbors="auto"``, the default of the robust ASO):
-#: :data:`RESULT_DTYPE` and ``mean_error``, the standard error of ``mean`` at the chosen scale.
-AUTOMATIC_RESULT_DTYPE = np.dtype(RESULT_DTYPE.descr + [("mean_error", "<f8")])
+#: :data:`RESULT_DTYPE` with ``mean_error``, the standard error of ``mean`` at the chosen scale.
+AUTOMATIC_RESULT_DTYPE = np.dtype([(f["key"], f["dtype"], f["shape"]) for f in _FIELDS])
 
 def _scan_task(sources, blocks):
     """Pass 1, on a worker: per block, the bounding box of its finite points and their count."""
@@ -336,8 +325,9 @@ def _default_rows(rows, dtype, status=Status.NON_FINITE_POINT):
     """Output records of `dtype` of points no tile estimates (the single-process values for
     non-finite points): NaN, no neighbours, the given status."""
     rec = np.zeros(rows, dtype=dtype)
-    for k in _FIELDS3 + _FIELDS1 + (("mean_error",) if "mean_error" in dtype.names else ()):
-        rec[k] = np.nan
+    for k in _REAL_FIELDS:
+        if k in dtype.names:
+            rec[k] = np.nan
     rec["status"] = status
     return rec
 

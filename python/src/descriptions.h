@@ -8,6 +8,7 @@
 #define PSC_PYTHON_DESCRIPTIONS_H
 
 #include <CGAL/Point_set_curvatures/estimators.h>
+#include <CGAL/Point_set_curvatures/field_descriptions.h>
 
 #include <pybind11/pybind11.h>
 
@@ -68,15 +69,11 @@ inline void export_enums(py::module_& m)
 // supports_tiles, supports_automatic_scale, options (dicts: name, values, default, choices).
 inline py::dict estimator_to_dict(const CGAL::Point_set_curvatures::Estimator_description& e)
 {
-  namespace F = CGAL::Point_set_curvatures::estimate_fields;
-  const std::pair<unsigned, const char*> keys[] = {
-    {F::normal, "normal"}, {F::principal_curvatures, "k_min"}, {F::principal_curvatures, "k_max"},
-    {F::mean_curvature, "mean"}, {F::gaussian_curvature, "gaussian"}, {F::normal_coherence, "normal_coherence"},
-    {F::principal_directions, "min_direction"}, {F::principal_directions, "max_direction"}};
   py::list fields, options;
-  for(const auto& k : keys)
-    if(e.fields & k.first)
-      fields.append(k.second);
+  // the keys of the fields' table that the estimator fills (a vector once)
+  for(const CGAL::Point_set_curvatures::Field_description& f : CGAL::Point_set_curvatures::field_descriptions)
+    if(f.python_key && f.component <= 0 && (e.fields & f.filled_by))
+      fields.append(f.python_key);
   for(const CGAL::Point_set_curvatures::Estimator_option& o : e)
   {
     py::dict d;

@@ -272,6 +272,9 @@ PYBIND11_MODULE(_core, m)
     [](int variant, bool normals_estimated) { return defaults::position_fit_blend(CGAL::Aso_variant(variant), normals_estimated); },
     py::arg("aso_variant"), py::arg("normals_estimated"));
 
+  // The per-point fields of the results (field_descriptions.h), for the Dask layouts.
+  m.def("fields", &fields_to_tuple);
+
   // Status names and values, checked against the Python enums at import.
   py::dict status;
   for(int s = 0; s <= int(CGAL::Curvature_estimate_status::TWO_SHEETS); ++s)

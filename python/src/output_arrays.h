@@ -12,7 +12,10 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <CGAL/Point_set_curvatures/field_descriptions.h>
+
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 namespace psc_py {
@@ -38,55 +41,75 @@ void put3(double* out, std::size_t i, const V& v)
   out[3 * i + 2] = CGAL::to_double(v.z());
 }
 
+// The estimates as the arrays of the fields' table (CGAL::Point_set_curvatures::field_descriptions,
+// the rows with a Python key, in its order): (N, 3) doubles for a vector's components, N doubles,
+// int64 counts or uint8 flags otherwise; mean_error only `with_mean_error`.
 inline py::dict estimates_to_dict(const std::vector<Estimate>& e, bool with_mean_error)
 {
+  namespace PSC = CGAL::Point_set_curvatures;
   const std::size_t n = e.size();
-  auto normal = array_n3(n), dmin = array_n3(n), dmax = array_n3(n);
-  auto kmin = array_1<double>(n), kmax = array_1<double>(n), mean = array_1<double>(n), gauss = array_1<double>(n);
-  auto count = array_1<std::int64_t>(n);
-  auto status = array_1<std::uint8_t>(n);
-  double *pn = normal.mutable_data(), *pdmin = dmin.mutable_data(), *pdmax = dmax.mutable_data();
-  auto coherence = array_1<double>(n);
-  double *pkmin = kmin.mutable_data(), *pkmax = kmax.mutable_data(), *pmean = mean.mutable_data(),
-         *pgauss = gauss.mutable_data(), *pcoherence = coherence.mutable_data();
-  std::int64_t* pc = count.mutable_data();
-  std::uint8_t* ps = status.mutable_data();
+  py::dict d;
+  for(const PSC::Field_description& f : PSC::field_descriptions)
   {
-    py::gil_scoped_release release;
-    for(std::size_t i = 0; i < n; ++i)
+    if(!f.python_key || f.component > 0 || (f.automatic_scale_only && !with_mean_error))
+      continue;  // (a vector's array is filled at its first component)
+    const auto fill = [&](auto* out, std::size_t stride) {
+      py::gil_scoped_release release;
+      for(std::size_t c = 0; c < stride; ++c)
+      {
+        PSC::Field_description g = f;
+        g.component = f.component < 0 ? -1 : int(c);
+        for(std::size_t i = 0; i < n; ++i)
+          out[stride * i + c] = static_cast<std::remove_pointer_t<decltype(out)>>(PSC::field_value(e[i], g));
+      }
+    };
+    if(f.component == 0)
     {
-      put3(pn, i, e[i].normal);
-      put3(pdmin, i, e[i].min_direction);
-      put3(pdmax, i, e[i].max_direction);
-      pkmin[i] = e[i].min_curvature;
-      pkmax[i] = e[i].max_curvature;
-      pmean[i] = e[i].mean_curvature;
-      pgauss[i] = e[i].gaussian_curvature;
-      pcoherence[i] = e[i].normal_coherence;
-      pc[i] = static_cast<std::int64_t>(e[i].neighbor_count);
-      ps[i] = static_cast<std::uint8_t>(e[i].status);
+      auto a = array_n3(n);
+      fill(a.mutable_data(), 3);
+      d[f.python_key] = a;
+    }
+    else if(f.type == PSC::Field_type::COUNT)
+    {
+      auto a = array_1<std::int64_t>(n);
+      fill(a.mutable_data(), 1);
+      d[f.python_key] = a;
+    }
+    else if(f.type == PSC::Field_type::FLAG)
+    {
+      auto a = array_1<std::uint8_t>(n);
+      fill(a.mutable_data(), 1);
+      d[f.python_key] = a;
+    }
+    else
+    {
+      auto a = array_1<double>(n);
+      fill(a.mutable_data(), 1);
+      d[f.python_key] = a;
     }
   }
-  py::dict d;
-  d["normal"] = normal;
-  d["k_min"] = kmin;
-  d["k_max"] = kmax;
-  d["mean"] = mean;
-  d["gaussian"] = gauss;
-  d["normal_coherence"] = coherence;
-  d["min_direction"] = dmin;
-  d["max_direction"] = dmax;
-  d["neighbors"] = count;
-  d["status"] = status;
-  if(with_mean_error)
-  {
-    auto error = array_1<double>(n);
-    double* pe = error.mutable_data();
-    for(std::size_t i = 0; i < n; ++i)
-      pe[i] = e[i].mean_curvature_error;
-    d["mean_error"] = error;
-  }
   return d;
+}
+
+// The fields' table as the Python module gives it (fields()): per Python key, in the table's
+// order, a dict with its numpy type ("<f8", "<i8", "u1"), its shape per point ((3,) for a
+// vector, () otherwise) and whether it comes with the automatic scale only.
+inline py::tuple fields_to_tuple()
+{
+  namespace PSC = CGAL::Point_set_curvatures;
+  py::list fields;
+  for(const PSC::Field_description& f : PSC::field_descriptions)
+  {
+    if(!f.python_key || f.component > 0)
+      continue;
+    py::dict d;
+    d["key"] = f.python_key;
+    d["dtype"] = f.type == PSC::Field_type::COUNT ? "<i8" : f.type == PSC::Field_type::FLAG ? "u1" : "<f8";
+    d["shape"] = f.component == 0 ? py::make_tuple(3) : py::make_tuple();
+    d["automatic_scale_only"] = f.automatic_scale_only;
+    fields.append(d);
+  }
+  return py::tuple(fields);
 }
 
 // Features of `scales` x `n` points: arrays of shape (n, ...) if `flat`, else (scales, n, ...).

@@ -190,6 +190,24 @@ def test_results_fill_the_declared_fields():
             assert (filled, empty) == ((True, False) if key in e["fields"] else (False, True)), (name, key)
 
 
+def test_results_are_the_table_of_fields():
+    """The result's arrays, and Dask's records, are the package's table of fields
+    (CGAL/Point_set_curvatures/field_descriptions.h), in its order, with its types."""
+    import point_set_curvatures.dask as pdask
+    fields = psc._core.fields()
+    points, normals = fibonacci_sphere(500, radius=2.0)
+    for neighbors in (30, "auto"):
+        r = psc.estimate_curvatures(points, normals, method="aso", neighbors=neighbors)
+        expected = [f for f in fields if neighbors == "auto" or not f["automatic_scale_only"]]
+        assert list(r) == [f["key"] for f in expected], neighbors
+        for f in expected:
+            assert r[f["key"]].dtype == np.dtype(f["dtype"]), f["key"]
+            assert r[f["key"]].shape == (len(points),) + tuple(f["shape"]), f["key"]
+        dtype = pdask.AUTOMATIC_RESULT_DTYPE if neighbors == "auto" else pdask.RESULT_DTYPE
+        assert list(dtype.names) == list(r), neighbors
+    assert np.allclose(r["mean"], 0.5, atol=0.02)  # (a sphere of radius 2, outward normals)
+
+
 def test_manual_table_of_neighbour_counts_is_the_description():
     path = os.path.join(os.path.dirname(__file__), "..", "..", "doc", "user_manual.md")
     with open(path, encoding="utf-8") as f:
