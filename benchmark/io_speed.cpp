@@ -5,7 +5,8 @@
 // sphere with normals written as .xyz (x y z nx ny nz, 9 significant digits, as scanners
 // export), binary PLY (6 doubles) and LAS 1.2 point format 3 (34 bytes, no normals); each file
 // read with read_point_cloud() (best of 3, one thread: the readers are sequential) and the
-// default output (binary PLY, 17 doubles, neighbors, valid) written with write_point_cloud().
+// default output (binary PLY: x y z and the fields of the table, field_descriptions.h)
+// written with write_point_cloud().
 // Then the share of reading and writing in a whole run as the tool does it on the binary PLY:
 // read + write against the default ASO by count (--neighbors 40, Parallel_tag), measured in
 // this process. Prints MB/s and the ratios; asserts nothing.

@@ -3260,6 +3260,13 @@ TEST_CASE("tool: the output's columns are the package's table of fields, in its 
             .status == 0);
   const std::string group = read_text(file("group.csv"));
   CHECK(group.substr(0, group.find('\n')) == "x,y,z,nx,ny,nz,dmax_x,dmax_y,dmax_z");
+  for(const char* bad : {"k_min,", "' '"})
+  {
+    INFO("--fields " << bad);
+    const Run r = run_tool(q(file("table.xyz")) + " " + q(file("bad.csv")) + " --neighbors 40 --fields " + bad);
+    CHECK(r.status == 2);
+    CHECK(r.err.find("--fields: unknown field ''") != std::string::npos);
+  }
   // --color: the summarised fields, named in the message of an unknown one
   std::string summarised;
   for(const PSC::Field_description& f : PSC::field_descriptions)
@@ -4284,5 +4291,6 @@ TEST_CASE("tool: --neighbors auto on real tiles: ground smoother than jets, coun
   CHECK(refused.err.find("--neighbors auto chooses the scale of --method aso only") != std::string::npos);
   const Run no_error = run_tool(in + " " + q(file("x.ply")) + " --neighbors 40 --fields mean,mean_error");
   CHECK(no_error.status == 2);
-  CHECK(no_error.err.find("mean_error is the error of the automatic scale: add --neighbors auto") != std::string::npos);
+  CHECK(no_error.err.find("--fields: mean_error comes with the automatic scale only: add --neighbors auto") !=
+        std::string::npos);
 }

@@ -526,8 +526,11 @@ Options parse_command_line(int argc, char** argv)
   if(o.scale.automatic_largest > 0 && !o.method->supports_automatic_scale)
     throw Error(cat("--neighbors auto chooses the scale of --method aso only; give --method ", o.method->name,
                     " a count (--neighbors K)"));
-  if(o.scale.automatic_largest == 0 && std::find(o.fields.begin(), o.fields.end(), "mean_error") != o.fields.end())
-    throw Error("--fields: mean_error is the error of the automatic scale: add --neighbors auto, or leave it out");
+  if(o.scale.automatic_largest == 0)
+    for(const CGAL::Point_set_curvatures::Field_description& f : CGAL::Point_set_curvatures::field_descriptions)
+      if(f.name && f.automatic_scale_only && std::find(o.fields.begin(), o.fields.end(), f.name) != o.fields.end())
+        throw Error(cat("--fields: ", f.name, " comes with the automatic scale only: add --neighbors auto, or leave it "
+                        "out"));
   if(o.normal_fit == CGAL::Normal_fit::QUADRIC && o.normal_neighbors != 0 && o.normal_neighbors < 6)
     throw Error(cat("--normal-neighbors ", o.normal_neighbors, " is below the 6 points a quadric needs: use "
                     "--normal-neighbors 6 or more, or --normal-fit plane"));

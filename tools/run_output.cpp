@@ -148,13 +148,13 @@ void write_output(const Run_context& c, Temporary_output& output, const Estimati
   const Output_layout layout = output_layout(o, scale, attributes, color_quantity, color_range);
   // the temporary file is created now, when writing starts
   std::FILE* file = output.open(output_size_bound(layout, n), output_description(layout, n));
+  const int color_value = color_quantity >= 0 ? summary_quantities::value_index[std::size_t(color_quantity)] : -1;
   write_point_cloud(file, layout, n, [&](std::size_t i, Output_row& r) {
     rows(i, r);
-    if(color_quantity >= 0)
+    if(color_value >= 0)
     {
       const std::array<unsigned char, 3> rgb =
-        diverging_color(r.valid() ? r.value[summary_quantities::value_index(color_quantity)] : std::nan(""),
-                        color_range);
+        diverging_color(r.valid() ? r.value[color_value] : std::nan(""), color_range);
       std::copy(rgb.begin(), rgb.end(), r.color);
     }
   }, c.progress.phase("writing"));

@@ -16,6 +16,7 @@
 #include <CGAL/Point_set_curvatures/vertical_normals.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -33,8 +34,8 @@ inline double percentile(std::vector<double> values, double q)
 }
 
 // The quantities summarised, those of the table marked `summarised` (k_min, k_max, mean,
-// gaussian), numbered q in the table's order: their number, quantity q's index in
-// Output_row::value, and the q of the field named `name` (-1 if it is not summarised).
+// gaussian), numbered q in the table's order: their number, the q of the field named `name` (-1
+// if it is not summarised), and quantity q's index in Output_row::value (value_index[q]).
 namespace summary_quantities {
 constexpr int count()
 {
@@ -43,7 +44,7 @@ constexpr int count()
     n += f.name && f.summarised ? 1 : 0;
   return n;
 }
-constexpr int of(const char* name)
+constexpr int of(std::string_view name)
 {
   int q = 0;
   for(const CGAL::Point_set_curvatures::Field_description& f : CGAL::Point_set_curvatures::field_descriptions)
@@ -55,13 +56,16 @@ constexpr int of(const char* name)
     }
   return -1;
 }
-constexpr int value_index(int q)
+constexpr std::array<int, count()> value_indices()
 {
+  std::array<int, count()> at{};
+  int q = 0;
   for(const CGAL::Point_set_curvatures::Field_description& f : CGAL::Point_set_curvatures::field_descriptions)
-    if(f.name && f.summarised && q-- == 0)
-      return output_value_index(f.name);
-  return -1;
+    if(f.name && f.summarised)
+      at[q++] = output_value_index(f.name);
+  return at;
 }
+inline constexpr std::array<int, count()> value_index = value_indices();
 } // namespace summary_quantities
 
 class Row_summary
@@ -89,8 +93,8 @@ public:
     if(r.valid())
     {
       ++m_valid;
-      const double nx = r.value[output_value_index("nx")], ny = r.value[output_value_index("ny")],
-                   nz = r.value[output_value_index("nz")];
+      static constexpr int x = output_value_index("nx"), y = output_value_index("ny"), z = output_value_index("nz");
+      const double nx = r.value[x], ny = r.value[y], nz = r.value[z];
       if(CGAL::Point_set_curvatures::is_near_vertical(nx, ny, nz))
       {
         ++m_near_vertical;
@@ -99,7 +103,7 @@ public:
       m_neighbors += std::uint64_t(std::max(0, r.neighbors()));
       for(int q = 0; q < quantities; ++q)
       {
-        const double v = r.value[summary_quantities::value_index(q)];
+        const double v = r.value[summary_quantities::value_index[q]];
         if(!std::isfinite(v))
           continue;
         ++m_count[q];

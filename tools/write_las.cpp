@@ -90,7 +90,7 @@ int data_type_of(Scalar_type t)
 // What the descriptor of an estimate says of it (at most 31 characters: the table's).
 const char* description_of(const std::string& name)
 {
-  const std::size_t row = CGAL::Point_set_curvatures::field_index(name.c_str());
+  const std::size_t row = CGAL::Point_set_curvatures::field_index(name);
   return row < CGAL::Point_set_curvatures::field_count ? CGAL::Point_set_curvatures::field_descriptions[row].description
                                                        : "input attribute";
 }

@@ -58,7 +58,7 @@ std::vector<std::string> parse_fields(const std::string& text)
     name.erase(name.find_last_not_of(' ') + 1);
     bool known = false;
     for_each_tool_field([&](const PSC::Field_description& d) {
-      if(name == d.name || name == d.group)
+      if(!name.empty() && (name == d.name || (*d.group && name == d.group)))
       {
         names.push_back(d.name);
         known = true;

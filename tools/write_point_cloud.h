@@ -20,6 +20,7 @@
 #include <functional>
 #include <limits>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace psc_tool {
@@ -54,14 +55,14 @@ constexpr int count_fields()
 constexpr int output_value_count = 3 + output_values::count_fields();
 
 // The index in Output_row::value of the field named `name` ("x", "y", "z" 0 to 2), or -1.
-constexpr int output_value_index(const char* name)
+constexpr int output_value_index(std::string_view name)
 {
   const std::size_t row = CGAL::Point_set_curvatures::field_index(name);
   if(row == CGAL::Point_set_curvatures::field_count)
   {
-    const char* const xyz[] = {"x", "y", "z"};
+    const std::string_view xyz[] = {"x", "y", "z"};
     for(int a = 0; a < 3; ++a)
-      if(name[0] == xyz[a][0] && name[1] == 0)
+      if(name == xyz[a])
         return a;
     return -1;
   }
@@ -80,8 +81,16 @@ struct Output_row
   // value i of each attribute is row i's (the tool's tiled runs give each row its own).
   const double* attributes = nullptr;
 
-  bool valid() const { return value[output_value_index("valid")] != 0; }
-  std::int32_t neighbors() const { return to_integer<std::int32_t>(value[output_value_index("neighbors")]); }
+  bool valid() const
+  {
+    static constexpr int at = output_value_index("valid");
+    return value[at] != 0;
+  }
+  std::int32_t neighbors() const
+  {
+    static constexpr int at = output_value_index("neighbors");
+    return to_integer<std::int32_t>(value[at]);
+  }
 };
 
 // Fills the values of row `r` with the point (x, y, z) and its estimate `e` (a
@@ -103,6 +112,7 @@ void fill_row(double x, double y, double z, const Estimate& e, Output_row& r)
 struct Output_field
 {
   enum Source { VALUE = 0, COLOR = output_value_count, ATTRIBUTE = 100 };
+  static_assert(COLOR + 3 <= ATTRIBUTE, "the values and colours of a row must stay below ATTRIBUTE");
   std::string name;
   Scalar_type type = Scalar_type::FLOAT64;
   int source = 0;  // VALUE + i: Output_row::value[i]; COLOR + c; ATTRIBUTE + j: attribute j

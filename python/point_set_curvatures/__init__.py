@@ -527,15 +527,15 @@ def estimate_curvatures(
     Returns
     -------
     dict of numpy arrays
-        ``normal`` (N, 3), ``k_min``, ``k_max``, ``mean``, ``gaussian``,
+        In this order (the package's table of fields): ``normal`` (N, 3), ``k_min``,
+        ``k_max``, ``mean``, ``gaussian``, ``min_direction``, ``max_direction`` (N, 3),
         ``normal_coherence`` (N,; a quality value in [0, 1], the length of the weighted mean of
         the neighbours' unit normals: 1 on smooth surfaces, low in foliage; ``"aso"`` and
-        ``"apss"`` only, NaN otherwise),
-        ``min_direction``, ``max_direction`` (N, 3), ``neighbors`` (N,) int64 (with
-        ``"auto"``: the chosen count) and ``status`` (N,) uint8 (values of :class:`Status`);
-        with ``neighbors="auto"`` also ``mean_error`` (N,; the standard error of ``mean`` at
-        the chosen scale, from the noise the fits measure). NaN where a point is invalid or
-        the estimator does not provide a quantity.
+        ``"apss"`` only, NaN otherwise), with ``neighbors="auto"`` ``mean_error`` (N,; the
+        standard error of ``mean`` at the chosen scale, from the noise the fits measure),
+        ``neighbors`` (N,) int64 (with ``"auto"``: the chosen count) and ``status`` (N,) uint8
+        (values of :class:`Status`). NaN where a point is invalid or the estimator does not
+        provide a quantity.
     """
     method = _method(method)
     allowed = set(_COMMON_OPTIONS) | set(_METHOD_OPTIONS[method])

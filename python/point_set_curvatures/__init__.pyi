@@ -114,8 +114,8 @@ def estimate_curvatures(
     vcm_offset_radius: Optional[float] = None,
 ) -> Result:
     """Curvatures at every point: dict with normal (N,3), k_min, k_max, mean, gaussian,
-    normal_coherence, min_direction (N,3), max_direction (N,3), neighbors (int64), status
-    (uint8, Status); with neighbors="auto" (method "aso") also mean_error."""
+    min_direction (N,3), max_direction (N,3), normal_coherence, with neighbors="auto" (method
+    "aso") mean_error, neighbors (int64), status (uint8, Status), in this order."""
 
 def estimate_sphere_features(
     points: ArrayN3,

@@ -191,8 +191,12 @@ def estimate_curvatures(client, points, normals, *, method="aso", radius=None, n
         raise ValueError(f"points and normals must have the same shape (N, 3), got {points.shape} and {normals.shape}")
     n = len(points)
     # output arrays, the single-process values of non-finite points
-    out = _default_rows(n, AUTOMATIC_RESULT_DTYPE if neighbors == "auto" else RESULT_DTYPE)
-    out = {k: np.ascontiguousarray(out[k]) for k in out.dtype.names}
+    out = {}
+    for f in _FIELDS:
+        if neighbors == "auto" or not f["automatic_scale_only"]:
+            shape = (n,) + tuple(f["shape"])
+            out[f["key"]] = np.full(shape, np.nan) if f["dtype"] == "<f8" else np.zeros(shape, dtype=f["dtype"])
+    out["status"][:] = Status.NON_FINITE_POINT
     finite = np.isfinite(points).all(axis=1)
     if not finite.any():
         # nothing to distribute: validate the arguments as the single-process run does

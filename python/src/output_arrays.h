@@ -15,7 +15,6 @@
 #include <CGAL/Point_set_curvatures/field_descriptions.h>
 
 #include <cstdint>
-#include <type_traits>
 #include <vector>
 
 namespace psc_py {
@@ -43,50 +42,73 @@ void put3(double* out, std::size_t i, const V& v)
 
 // The estimates as the arrays of the fields' table (CGAL::Point_set_curvatures::field_descriptions,
 // the rows with a Python key, in its order): (N, 3) doubles for a vector's components, N doubles,
-// int64 counts or uint8 flags otherwise; mean_error only `with_mean_error`.
+// int64 counts or uint8 flags otherwise; mean_error only `with_mean_error`. One pass over the
+// estimates.
 inline py::dict estimates_to_dict(const std::vector<Estimate>& e, bool with_mean_error)
 {
   namespace PSC = CGAL::Point_set_curvatures;
   const std::size_t n = e.size();
+  // each field's column: where its values go (one of the three) and their stride
+  struct Column
+  {
+    const PSC::Field_description* field;
+    double* real = nullptr;
+    std::int64_t* count = nullptr;
+    std::uint8_t* flag = nullptr;
+    std::size_t stride = 1;
+  };
+  std::vector<Column> columns;
   py::dict d;
+  double* vector = nullptr;  // the array of the vector being filled
   for(const PSC::Field_description& f : PSC::field_descriptions)
   {
-    if(!f.python_key || f.component > 0 || (f.automatic_scale_only && !with_mean_error))
-      continue;  // (a vector's array is filled at its first component)
-    const auto fill = [&](auto* out, std::size_t stride) {
-      py::gil_scoped_release release;
-      for(std::size_t c = 0; c < stride; ++c)
-      {
-        PSC::Field_description g = f;
-        g.component = f.component < 0 ? -1 : int(c);
-        for(std::size_t i = 0; i < n; ++i)
-          out[stride * i + c] = static_cast<std::remove_pointer_t<decltype(out)>>(PSC::field_value(e[i], g));
-      }
-    };
-    if(f.component == 0)
+    if(!f.python_key || (f.automatic_scale_only && !with_mean_error))
+      continue;
+    Column c{&f};
+    if(f.component >= 0)
     {
-      auto a = array_n3(n);
-      fill(a.mutable_data(), 3);
-      d[f.python_key] = a;
+      if(f.component == 0)
+      {
+        auto a = array_n3(n);
+        vector = a.mutable_data();
+        d[f.python_key] = a;
+      }
+      c.real = vector + f.component;
+      c.stride = 3;
     }
     else if(f.type == PSC::Field_type::COUNT)
     {
       auto a = array_1<std::int64_t>(n);
-      fill(a.mutable_data(), 1);
+      c.count = a.mutable_data();
       d[f.python_key] = a;
     }
     else if(f.type == PSC::Field_type::FLAG)
     {
       auto a = array_1<std::uint8_t>(n);
-      fill(a.mutable_data(), 1);
+      c.flag = a.mutable_data();
       d[f.python_key] = a;
     }
     else
     {
       auto a = array_1<double>(n);
-      fill(a.mutable_data(), 1);
+      c.real = a.mutable_data();
       d[f.python_key] = a;
     }
+    columns.push_back(c);
+  }
+  {
+    py::gil_scoped_release release;
+    for(std::size_t i = 0; i < n; ++i)
+      for(const Column& c : columns)
+      {
+        const double v = PSC::field_value(e[i], *c.field);
+        if(c.real)
+          c.real[c.stride * i] = v;
+        else if(c.count)
+          c.count[i] = static_cast<std::int64_t>(v);
+        else
+          c.flag[i] = static_cast<std::uint8_t>(v);
+      }
   }
   return d;
 }

@@ -10,12 +10,13 @@
 
 #include <CGAL/Curvature_estimate.h>
 #include <CGAL/Point_set_curvatures/estimators.h>
+#include <CGAL/assertions.h>
 #include <CGAL/number_utils.h>
 
 #include <cstddef>
-#include <cstring>
 #include <iterator>
 #include <limits>
+#include <string_view>
 
 namespace CGAL {
 namespace Point_set_curvatures {
@@ -24,35 +25,35 @@ namespace Point_set_curvatures {
 /// Where a field's value comes from in a `CGAL::Curvature_estimate` (`field_value()`).
 enum class Field_source
 {
-  NORMAL,                //!< `normal` (a component)
-  MIN_CURVATURE,         //!< `min_curvature`
-  MAX_CURVATURE,         //!< `max_curvature`
-  MEAN_CURVATURE,        //!< `mean_curvature`
-  GAUSSIAN_CURVATURE,    //!< `gaussian_curvature`
-  MIN_DIRECTION,         //!< `min_direction` (a component)
-  MAX_DIRECTION,         //!< `max_direction` (a component)
-  NORMAL_COHERENCE,      //!< `normal_coherence`
-  MEAN_CURVATURE_ERROR,  //!< `mean_curvature_error`
-  NEIGHBOR_COUNT,        //!< `neighbor_count`
-  VALID,                 //!< 1 for a valid estimate, 0 otherwise
-  STATUS                 //!< `status`, as its integer value
+  NORMAL,                ///< `normal` (a component)
+  MIN_CURVATURE,         ///< `min_curvature`
+  MAX_CURVATURE,         ///< `max_curvature`
+  MEAN_CURVATURE,        ///< `mean_curvature`
+  GAUSSIAN_CURVATURE,    ///< `gaussian_curvature`
+  MIN_DIRECTION,         ///< `min_direction` (a component)
+  MAX_DIRECTION,         ///< `max_direction` (a component)
+  NORMAL_COHERENCE,      ///< `normal_coherence`
+  MEAN_CURVATURE_ERROR,  ///< `mean_curvature_error`
+  NEIGHBOR_COUNT,        ///< `neighbor_count`
+  VALID,                 ///< 1 for a valid estimate, 0 otherwise
+  STATUS                 ///< `status`, as its integer value
 };
 
 /// \ingroup PkgPointSetCurvaturesRef
 /// How a field is stored.
 enum class Field_type
 {
-  REAL,   //!< a double (a float with the tool's `--float32`)
-  COUNT,  //!< a count: a 32-bit integer in files, 64-bit in Python
-  FLAG    //!< a small unsigned integer (8 bits)
+  REAL,   ///< a double (a float with the tool's `--float`)
+  COUNT,  ///< a count: a 32-bit integer in files, 64-bit in Python
+  FLAG    ///< a small unsigned integer (8 bits)
 };
 
 /// \ingroup PkgPointSetCurvaturesRef
 /// One per-point field of the front ends (`field_descriptions`).
 struct Field_description
 {
-  /// The tool's name: `--fields`, the PLY property (`--ply-names plain`; `scalar_` prepended with
-  /// `scalar`), the CSV column, the LAS extra bytes; null where the tool does not write it.
+  /// The tool's name: `--fields`, the PLY property (with `--ply-names scalar`, `scalar_` prepended
+  /// but to `nx ny nz`), the CSV column, the LAS extra bytes; null where the tool does not write it.
   const char* name;
   /// The `--fields` group of a vector's component (`normal`, `dmin`, `dmax`), or "".
   const char* group;
@@ -118,30 +119,59 @@ inline constexpr std::size_t field_count = std::size(field_descriptions);
 
 /// \ingroup PkgPointSetCurvaturesRef
 /// The row of `field_descriptions` whose tool name is `name`, or `field_count`.
-inline constexpr std::size_t field_index(const char* name)
+inline constexpr std::size_t field_index(std::string_view name)
 {
   for(std::size_t i = 0; i < field_count; ++i)
-  {
-    const char* a = field_descriptions[i].name;
-    if(!a)
-      continue;
-    const char* b = name;
-    while(*a && *a == *b)
-    {
-      ++a;
-      ++b;
-    }
-    if(*a == *b)
+    if(field_descriptions[i].name && name == field_descriptions[i].name)
       return i;
-  }
   return field_count;
 }
 
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+// The table's rules, checked at compile time: descriptions fit a LAS extra bytes' 32 characters
+// (with the terminating zero), names a LAS extra bytes' 32 and are unique and not x y z, a
+// vector's components follow one another, numbered 0 1 2, with one key and one source.
+constexpr bool field_descriptions_hold()
+{
+  for(std::size_t i = 0; i < field_count; ++i)
+  {
+    const Field_description& f = field_descriptions[i];
+    if(std::string_view(f.description).size() > 31)
+      return false;
+    if(f.name)
+    {
+      const std::string_view name(f.name);
+      if(name.empty() || name.size() > 32 || name == "x" || name == "y" || name == "z" || field_index(name) != i)
+        return false;
+    }
+    if(f.component > 0)
+    {
+      const Field_description& p = field_descriptions[i - 1];
+      if(p.component != f.component - 1 || std::string_view(p.python_key ? p.python_key : "") !=
+                                              std::string_view(f.python_key ? f.python_key : "") ||
+         p.source != f.source)
+        return false;
+    }
+    if(f.component == 0 && (i + 2 >= field_count || field_descriptions[i + 2].component != 2))
+      return false;
+  }
+  return true;
+}
+static_assert(field_descriptions_hold(), "field_descriptions: a description longer than 31 characters, a name "
+                                         "repeated, empty, longer than 32 or x y z, or a vector's components apart");
+} // namespace internal
+/// \endcond
+
 /// \ingroup PkgPointSetCurvaturesRef
 /// The value of field `f` of the estimate `e`, as a double.
+/// \tparam Kernel the kernel of the estimate
 template <class Kernel>
 double field_value(const Curvature_estimate<Kernel>& e, const Field_description& f)
 {
+  CGAL_precondition((f.source != Field_source::NORMAL && f.source != Field_source::MIN_DIRECTION &&
+                     f.source != Field_source::MAX_DIRECTION) ||
+                    (f.component >= 0 && f.component < 3));
   const auto component = [&f](const typename Kernel::Vector_3& v) { return CGAL::to_double(v[f.component]); };
   switch(f.source)
   {
