@@ -7,7 +7,7 @@
 #ifndef PSC_BENCH_SUPPORT_H
 #define PSC_BENCH_SUPPORT_H
 
-#include "../test/test_support.h"
+#include "test_support.h"
 
 #include <chrono>
 #include <cmath>

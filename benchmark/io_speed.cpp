@@ -15,8 +15,8 @@
 
 #include "bench_support.h"
 
-#include "../tools/read_point_cloud.h"
-#include "../tools/write_point_cloud.h"
+#include "psc_io/read_point_cloud.h"
+#include "psc_io/write_point_cloud.h"
 
 #include <CGAL/estimate_aso_curvatures.h>
 

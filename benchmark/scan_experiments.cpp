@@ -19,7 +19,7 @@
 //                    [--rows exact,default,auto640,...]  (the normal sources to run)
 
 #include "bench_support.h"
-#include "../test/scan_simulator.h"
+#include "scan_simulator.h"
 
 #include <CGAL/estimate_apss_curvatures.h>
 #include <CGAL/estimate_aso_curvatures.h>

@@ -3,7 +3,7 @@
 //
 // An independent LAS 1.4 reader for the tests of the tool's LAS output (test_tool.cpp),
 // written from the ASPRS LAS 1.4 R15 specification with its byte offsets, sharing no code
-// with the tool (tools/read_las.cpp, tools/write_las.cpp): the public header block, the
+// with the tool (io/src/read_las.cpp, io/src/write_las.cpp): the public header block, the
 // variable length records (54-byte headers), the extended ones (60-byte headers), the
 // extra-bytes descriptors (LASF_Spec record 4, 192 bytes each) and the point records as
 // bytes. Also what the tests need to write LAS inputs with VLRs, extra bytes and EVLRs.

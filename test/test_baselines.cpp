@@ -12,7 +12,7 @@
 // (std::cout) by every accuracy test.
 
 #include "test_support.h"
-#include "../benchmark/goursat_sampler.h"  // area-uniform i.i.d. samples of the Goursat surface
+#include "goursat_sampler.h"  // area-uniform i.i.d. samples of the Goursat surface
 
 #include <CGAL/Algebraic_shape_operator_fit.h>
 #include <CGAL/estimate_algebraic_sphere_features.h>

@@ -10,7 +10,7 @@
 #include "scan_simulator.h"
 #include "test_support.h"
 
-#include "../tools/progress_line.h"
+#include "progress_line.h"
 
 #include <CGAL/Point_set_curvatures/estimators.h>
 #include <CGAL/Point_set_curvatures/field_descriptions.h>

@@ -5,9 +5,9 @@
 
 #include "command_line.h"
 
-#include "read_point_cloud.h"
+#include "psc_io/read_point_cloud.h"
 #include "run_summary.h"
-#include "write_point_cloud.h"
+#include "psc_io/write_point_cloud.h"
 
 #include <algorithm>
 #include <cctype>

@@ -10,8 +10,8 @@
 
 #include "command_line.h"
 #include "methods.h"
-#include "read_point_cloud.h"
-#include "tool_support.h"
+#include "psc_io/read_point_cloud.h"
+#include "psc_io/support.h"
 
 #include <CGAL/Point_set_curvatures/Tile.h>
 #include <CGAL/estimate_oriented_normals.h>

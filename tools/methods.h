@@ -9,7 +9,7 @@
 #ifndef POINT_SET_CURVATURES_TOOL_METHODS_H
 #define POINT_SET_CURVATURES_TOOL_METHODS_H
 
-#include "tool_support.h"
+#include "psc_io/support.h"
 
 #include <CGAL/Curvature_estimate.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

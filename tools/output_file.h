@@ -8,7 +8,7 @@
 #ifndef POINT_SET_CURVATURES_TOOL_OUTPUT_FILE_H
 #define POINT_SET_CURVATURES_TOOL_OUTPUT_FILE_H
 
-#include "tool_support.h"
+#include "psc_io/support.h"
 
 #include <cstddef>
 #include <cstdint>

@@ -33,13 +33,13 @@
 #include "range_estimator.h"
 #include "run_output.h"
 #include "run_report.h"
-#include "read_point_cloud.h"
+#include "psc_io/read_point_cloud.h"
 #include "run_summary.h"
 #include "tiled_normals.h"
 #include "tiled_run.h"
-#include "tool_support.h"
-#include "write_las.h"
-#include "write_point_cloud.h"
+#include "psc_io/support.h"
+#include "psc_io/write_las.h"
+#include "psc_io/write_point_cloud.h"
 
 #include <sys/stat.h>
 #include <unistd.h>

@@ -9,7 +9,7 @@
 
 #include "interruption.h"
 #include "progress_line.h"
-#include "tool_support.h"
+#include "psc_io/support.h"
 
 #include <algorithm>
 #include <atomic>

@@ -16,7 +16,7 @@
 #include "estimated_normals.h"
 #include "methods.h"
 #include "run_summary.h"
-#include "tool_support.h"
+#include "psc_io/support.h"
 
 #include <CGAL/Point_set_curvatures/Tile.h>
 

@@ -12,12 +12,12 @@
 #include "command_line.h"
 #include "methods.h"
 #include "output_file.h"
-#include "read_point_cloud.h"
+#include "psc_io/read_point_cloud.h"
 #include "run_report.h"
 #include "run_summary.h"
 #include "tiled_run.h"
-#include "write_las.h"
-#include "write_point_cloud.h"
+#include "psc_io/write_las.h"
+#include "psc_io/write_point_cloud.h"
 
 #include <cstddef>
 #include <vector>

@@ -13,7 +13,7 @@
 #include "methods.h"
 #include "progress_bar.h"
 #include "run_summary.h"
-#include "tool_support.h"
+#include "psc_io/support.h"
 
 #include <chrono>
 #include <cstddef>

@@ -11,7 +11,7 @@
 #ifndef POINT_SET_CURVATURES_TOOL_RUN_SUMMARY_H
 #define POINT_SET_CURVATURES_TOOL_RUN_SUMMARY_H
 
-#include "write_point_cloud.h"
+#include "psc_io/write_point_cloud.h"
 
 #include <CGAL/Point_set_curvatures/vertical_normals.h>
 

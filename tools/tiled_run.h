@@ -18,9 +18,9 @@
 #ifndef POINT_SET_CURVATURES_TOOL_TILED_RUN_H
 #define POINT_SET_CURVATURES_TOOL_TILED_RUN_H
 
-#include "read_point_cloud.h"
-#include "tool_support.h"
-#include "write_point_cloud.h"
+#include "psc_io/read_point_cloud.h"
+#include "psc_io/support.h"
+#include "psc_io/write_point_cloud.h"
 
 #include <CGAL/Point_set_curvatures/Tile.h>
 

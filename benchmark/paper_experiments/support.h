@@ -8,9 +8,9 @@
 #ifndef PSC_BENCHMARK_PAPER_EXPERIMENTS_SUPPORT_H
 #define PSC_BENCHMARK_PAPER_EXPERIMENTS_SUPPORT_H
 
-#include "../bench_support.h"
-#include "../goursat_sampler.h"
-#include "../render_points.h"
+#include "bench_support.h"
+#include "goursat_sampler.h"
+#include "render_points.h"
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/estimate_apss_curvatures.h>

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The Point_set_curvatures authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// Python bindings: the package's file readers (tools/read_point_cloud.h, the tool's), for
+// Python bindings: the package's file readers (io/: psc_io/read_point_cloud.h, the tool's), for
 // point_set_curvatures.read_point_cloud() and the Dask driver's blocks of binary PLY and LAS files.
 // Their errors (a malformed or unreadable file) are ValueErrors with the readers' message.
 
@@ -9,7 +9,7 @@
 #define POINT_SET_CURVATURES_PYTHON_FILE_READERS_H
 
 #include "output_arrays.h"
-#include "read_point_cloud.h"
+#include "psc_io/read_point_cloud.h"
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>

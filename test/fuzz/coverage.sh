@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Line coverage of the tool's readers by a fuzzing corpus (not run by CI): builds the fuzz
+# Line coverage of the readers (io/) by a fuzzing corpus (not run by CI): builds the fuzz
 # target with clang's source-based coverage, runs it once over every file of CORPUS (for
 # example the corpus grown by run_fuzzers.sh in OUT/corpus) and prints llvm-cov's report for
-# tools/read_*.cpp and tools/input_bytes.h.
+# io/src/read_*.cpp and io/src/input_bytes.h.
 #
 #   test/fuzz/coverage.sh [CORPUS=build-fuzz/corpus] [OUT=build-fuzz-coverage]
 set -euo pipefail
@@ -13,11 +13,11 @@ out="${2:-$repo/build-fuzz-coverage}"
 mkdir -p "$out"
 out="$(cd "$out" && pwd)"
 clang++ -std=c++17 -O1 -fsanitize=fuzzer -fprofile-instr-generate -fcoverage-mapping \
-  "$here/fuzz_readers.cpp" "$repo/tools/read_point_cloud.cpp" "$repo/tools/read_ply.cpp" "$repo/tools/read_las.cpp" \
-  -o "$out/fuzz_readers_coverage"
+  "$here/fuzz_readers.cpp" "$repo/io/src/read_point_cloud.cpp" "$repo/io/src/read_ply.cpp" "$repo/io/src/read_las.cpp" \
+  -I "$repo/io/include" -o "$out/fuzz_readers_coverage"
 cd "$out"
 rm -f ./*.profraw
 LLVM_PROFILE_FILE="$out/readers.profraw" ./fuzz_readers_coverage -runs=0 "$corpus" 2> coverage_run.log
 llvm-profdata merge -sparse readers.profraw -o readers.profdata
 llvm-cov report ./fuzz_readers_coverage -instr-profile=readers.profdata \
-  "$repo/tools/read_point_cloud.cpp" "$repo/tools/read_ply.cpp" "$repo/tools/read_las.cpp" "$repo/tools/input_bytes.h"
+  "$repo/io/src/read_point_cloud.cpp" "$repo/io/src/read_ply.cpp" "$repo/io/src/read_las.cpp" "$repo/io/src/input_bytes.h"

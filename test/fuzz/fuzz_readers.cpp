@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The Point_set_curvatures authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// libFuzzer target of the tool's readers (tools/read_point_cloud.cpp, read_ply.cpp,
+// libFuzzer target of the readers (io/src/read_point_cloud.cpp, read_ply.cpp,
 // read_las.cpp).
 // The first byte of an input chooses the format (.las with bit 3, else .xyz, .ply, .off, .csv
 // by its value mod 4) and, with bit 2, --columns x,y,z,_,nx,ny,nz; the rest is the file. A reader may refuse a
@@ -10,7 +10,7 @@
 // tool's tiled runs), it must give the same points, normals and attributes, or the same
 // refusal. Built and run by run_fuzzers.sh (clang, -fsanitize=fuzzer,address,undefined).
 
-#include "../../tools/read_point_cloud.h"
+#include "psc_io/read_point_cloud.h"
 
 #include <unistd.h>
 

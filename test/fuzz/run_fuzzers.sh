@@ -31,8 +31,8 @@ if [ ! -x "$tool" ]; then
 fi
 tool="$(cd "$(dirname "$tool")" && pwd)/$(basename "$tool")"  # (the script changes folder below)
 clang++ -std=c++17 -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
-  "$here/fuzz_readers.cpp" "$repo/tools/read_point_cloud.cpp" "$repo/tools/read_ply.cpp" "$repo/tools/read_las.cpp" \
-  -o "$out/fuzz_readers"
+  "$here/fuzz_readers.cpp" "$repo/io/src/read_point_cloud.cpp" "$repo/io/src/read_ply.cpp" "$repo/io/src/read_las.cpp" \
+  -I "$repo/io/include" -o "$out/fuzz_readers"
 rm -rf "$out/corpus"
 cp -r "$here/corpus" "$out/corpus"
 cd "$out"

@@ -1,15 +1,16 @@
 // Copyright (c) 2026 The Point_set_curvatures authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// The tool's writers: binary or ASCII PLY, or CSV with a header line, one row per input
-// point in input order, with the columns chosen by output_fields(). The rows come from a
-// callback; their fields are those of the package's table (field_descriptions.h).
+// The writers (io/; the tool's PLY and CSV output): binary or ASCII PLY, or CSV with a
+// header line, one row per input point in input order, with the columns chosen by
+// output_fields(). The rows come from a callback; their fields are those of the package's
+// table (field_descriptions.h).
 
-#ifndef POINT_SET_CURVATURES_TOOL_WRITE_POINT_CLOUD_H
-#define POINT_SET_CURVATURES_TOOL_WRITE_POINT_CLOUD_H
+#ifndef PSC_IO_WRITE_POINT_CLOUD_H
+#define PSC_IO_WRITE_POINT_CLOUD_H
 
-#include "read_point_cloud.h"
-#include "tool_support.h"
+#include "psc_io/read_point_cloud.h"
+#include "psc_io/support.h"
 
 #include <CGAL/Point_set_curvatures/field_descriptions.h>
 

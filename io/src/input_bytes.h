@@ -1,14 +1,14 @@
 // Copyright (c) 2026 The Point_set_curvatures authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// What the tool's readers share: the file read in blocks with progress (Byte_source), text
+// What the readers share: the file read in blocks with progress (Byte_source), text
 // lines on it (Line_source), and the parsing of words, numbers and counts. Internal to the
 // readers (read_point_cloud.cpp, read_ply.cpp).
 
-#ifndef POINT_SET_CURVATURES_TOOL_INPUT_BYTES_H
-#define POINT_SET_CURVATURES_TOOL_INPUT_BYTES_H
+#ifndef PSC_IO_INPUT_BYTES_H
+#define PSC_IO_INPUT_BYTES_H
 
-#include "read_point_cloud.h"
+#include "psc_io/read_point_cloud.h"
 
 #include <algorithm>
 #include <cerrno>

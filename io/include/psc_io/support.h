@@ -1,13 +1,14 @@
 // Copyright (c) 2026 The Point_set_curvatures authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// What every part of the point_set_curvatures tool shares: the error a user can fix (exit
-// status 2, one line on stderr), a run without any valid estimate (exit status 3), the
-// cancellation of a long phase (exit status 130 for SIGINT, 143 for SIGTERM), string helpers
-// and the progress callback type.
+// What the readers and writers (io/) and the point_set_curvatures tool share: the error a
+// user can fix (exit status 2, one line on stderr), a run without any valid estimate (exit
+// status 3), the cancellation of a long phase (exit status 130 for SIGINT, 143 for SIGTERM),
+// string helpers and the progress callback type. (io/ keeps the tool's namespace psc_tool:
+// its readers and writers were the tool's, and the tool names them unqualified.)
 
-#ifndef POINT_SET_CURVATURES_TOOL_SUPPORT_H
-#define POINT_SET_CURVATURES_TOOL_SUPPORT_H
+#ifndef PSC_IO_SUPPORT_H
+#define PSC_IO_SUPPORT_H
 
 #include <algorithm>
 #include <cctype>

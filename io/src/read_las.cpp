@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The Point_set_curvatures authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// The tool's LAS reader: LAS 1.0-1.4, uncompressed, point data record formats 0-10, written
+// The LAS reader: LAS 1.0-1.4, uncompressed, point data record formats 0-10, written
 // from the ASPRS LAS specification (public). Little-endian throughout.
 //
 // The public header block gives the version, the offset of the point records, the record

@@ -1,10 +1,10 @@
 // Copyright (c) 2026 The Point_set_curvatures authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// The tool's readers (see read_point_cloud.h): the text formats (.xyz family, .off) and the
+// The readers (see read_point_cloud.h): the text formats (.xyz family, .off) and the
 // dispatch by extension. Bytes, lines and number parsing: input_bytes.h; PLY: read_ply.cpp.
 
-#include "read_point_cloud.h"
+#include "psc_io/read_point_cloud.h"
 #include "input_bytes.h"
 
 #include <sys/stat.h>

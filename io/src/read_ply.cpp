@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The Point_set_curvatures authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// The tool's PLY reader: ASCII and binary (both byte orders), any property order and scalar
+// The PLY reader: ASCII and binary (both byte orders), any property order and scalar
 // type, normals named nx ny nz or normal_x normal_y normal_z, other elements and properties
 // skipped. Header counts are never trusted: what is reserved is bounded by the file's size,
 // and a count beyond the data ends in a "truncated" error when the data runs out.

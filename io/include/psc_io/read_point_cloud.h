@@ -1,10 +1,11 @@
 // Copyright (c) 2026 The Point_set_curvatures authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// The tool's readers: one validating pass over the file, no third-party reader. A file is
-// either read completely and exactly as its header or columns say, or refused with an Error
-// whose message names the file, the line or element, and what is wrong; nothing is read
-// from a count in a header before it is checked against the bytes the file holds.
+// The package's readers (io/: the tool, Python, the benchmarks): one validating pass over
+// the file, no third-party reader. A file is either read completely and exactly as its
+// header or columns say, or refused with an Error whose message names the file, the line or
+// element, and what is wrong; nothing is read from a count in a header before it is checked
+// against the bytes the file holds.
 //
 //   .xyz .pwn .txt .csv   one point per line, values separated by white space or by commas
 //   .asc                  (.asc: CloudCompare's ASCII export, read alike);
@@ -25,10 +26,10 @@
 // are kept as attributes: PLY vertex properties (lists skipped), text columns named by a
 // header line or by --columns (except "_"), the LAS point fields.
 
-#ifndef POINT_SET_CURVATURES_TOOL_READ_POINT_CLOUD_H
-#define POINT_SET_CURVATURES_TOOL_READ_POINT_CLOUD_H
+#ifndef PSC_IO_READ_POINT_CLOUD_H
+#define PSC_IO_READ_POINT_CLOUD_H
 
-#include "tool_support.h"
+#include "psc_io/support.h"
 
 #include <cstddef>
 #include <cstdint>

@@ -1,7 +1,8 @@
 // Copyright (c) 2026 The Point_set_curvatures authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// The tool's LAS writer: LAS 1.4 (ASPRS LAS 1.4 R15), the estimates as extra-bytes fields.
+// The LAS writer (io/; the tool's LAS output): LAS 1.4 (ASPRS LAS 1.4 R15), the estimates
+// as extra-bytes fields.
 //
 // The header is 375 bytes. For a LAS input, the point data record format is the input's
 // (every standard field written back from the attributes that read_las.cpp read, whose
@@ -25,10 +26,10 @@
 // The counts of points (64-bit, by return) and the bounds come from the points written; the
 // legacy 32-bit counts are set for formats 0-5 when they fit, 0 otherwise.
 
-#ifndef POINT_SET_CURVATURES_TOOL_WRITE_LAS_H
-#define POINT_SET_CURVATURES_TOOL_WRITE_LAS_H
+#ifndef PSC_IO_WRITE_LAS_H
+#define PSC_IO_WRITE_LAS_H
 
-#include "write_point_cloud.h"
+#include "psc_io/write_point_cloud.h"
 
 #include <cstdint>
 #include <cstdio>

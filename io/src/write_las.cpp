@@ -1,10 +1,10 @@
 // Copyright (c) 2026 The Point_set_curvatures authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// The tool's LAS writer (see write_las.h), written from the ASPRS LAS 1.4 R15
+// The LAS writer (see write_las.h), written from the ASPRS LAS 1.4 R15
 // specification. Little-endian throughout.
 
-#include "write_las.h"
+#include "psc_io/write_las.h"
 
 #include "las_format.h"
 

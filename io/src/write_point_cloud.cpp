@@ -1,9 +1,9 @@
 // Copyright (c) 2026 The Point_set_curvatures authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// The tool's writers (see write_point_cloud.h).
+// The writers (see write_point_cloud.h).
 
-#include "write_point_cloud.h"
+#include "psc_io/write_point_cloud.h"
 
 #include <algorithm>
 #include <cmath>

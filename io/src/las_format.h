@@ -1,11 +1,11 @@
 // Copyright (c) 2026 The Point_set_curvatures authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// Facts of the LAS point data record formats 0-10 (ASPRS LAS 1.4 R15) that the tool's LAS
+// Facts of the LAS point data record formats 0-10 (ASPRS LAS 1.4 R15) that the LAS
 // reader (read_las.cpp) and writer (write_las.cpp) share.
 
-#ifndef POINT_SET_CURVATURES_TOOL_LAS_FORMAT_H
-#define POINT_SET_CURVATURES_TOOL_LAS_FORMAT_H
+#ifndef PSC_IO_LAS_FORMAT_H
+#define PSC_IO_LAS_FORMAT_H
 
 #include <cstddef>
 
