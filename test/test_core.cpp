@@ -1830,6 +1830,48 @@ TEST_CASE("Tiles: bitwise with a far outlier, Halo_too_small below k points, pro
   CHECK(progress.back() == 1.0);
 }
 
+TEST_CASE("Tiles: the drivers' rules: the tiles' box ignores outliers, the sample is every 2^j-th finite point, NaN is in no range, a range of every finite point is the whole cloud", "[tile]")
+{
+  // 1000 points on [0, 999] along x (y = -x, z = 7), and two outliers far away
+  PSC::Tile_box_sample sample;
+  sample.add(1e9, 0, 0);
+  for(int i = 0; i < 1000; ++i)
+  {
+    sample.add(i, -i, 7);
+    if(i == 500)
+      sample.add(nan_value, 0, 0);  // skipped, not counted
+  }
+  sample.add(-1e9, 5, 5);
+  REQUIRE(sample.size() == 1002);
+  CHECK(sample.stride() == 1);
+  const CGAL::Bbox_3 box = sample.box();
+  // ranks floor(0.001 * 1001) = 1 and ceil(0.999 * 1001) = 1000 of the 1002 values on each axis
+  CHECK(box.xmin() == 0);
+  CHECK(box.xmax() == 999);
+  CHECK(box.ymin() == -998);  // (the values -999 ... 0 and the outliers' 0 and 5)
+  CHECK(box.ymax() == 0);
+  CHECK(box.zmin() == 5);  // (the outliers' 0 and 5 below the 7s: rank 1 is 5)
+  CHECK(box.zmax() == 7);
+  CHECK(PSC::tile_grid_box({}) == CGAL::Bbox_3(0, 0, 0, 0, 0, 0));
+
+  // at most 4 of 10 finite points: every 4th (0, 4, 8), the least power of two that keeps 4 or fewer
+  PSC::Tile_box_sample small(4);
+  for(int i = 0; i < 10; ++i)
+  {
+    small.add(i, 0, 0);
+    small.add(HUGE_VAL, 0, 0);  // skipped, not counted
+  }
+  CHECK(small.stride() == 4);
+  CHECK(small.coordinates() == std::vector<double>{0, 0, 0, 4, 0, 0, 8, 0, 0});
+
+  // a point with a NaN coordinate is at no distance from a core: never in a range
+  const PSC::Tile unit(CGAL::Bbox_3(0, 0, 0, 1, 1, 1), 1);
+  CHECK(std::isnan(unit.distance_to_core(nan_value, 0.5, 0.5)));
+  CHECK(unit.distance_to_core(-2, 0.5, 0.5) == 2);
+  CHECK(std::isinf(PSC::halo_of_range(0.5, 10, 10)));
+  CHECK(PSC::halo_of_range(0.5, 9, 10) == 0.5);
+}
+
 TEST_CASE("Tiles: the halo rule (halo_for_radius, halo_guess_for_count, next_halo) gives the whole run by count", "[aso][tile]")
 {
   CHECK(PSC::halo_for_radius(0.25) == 0.5);

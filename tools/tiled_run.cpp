@@ -283,22 +283,15 @@ private:
   std::uint64_t m_records = 0;
 };
 
-// The box of the tiles: the 0.1% and 99.9% quantiles of the sample on each axis, so that a
-// few outliers do not stretch the tiles (the outer tiles reach to infinity: they own them).
+// The box of the tiles: the library's rule (PSC::tile_grid_box(), the 0.1% and 99.9% quantiles
+// of the sample on each axis), as Dask's.
 void tile_box(const Scanned_input& input, double lo[3], double hi[3])
 {
+  const CGAL::Bbox_3 b = input.sample.box();
   for(int a = 0; a < 3; ++a)
   {
-    lo[a] = hi[a] = 0;
-    if(input.sample.empty())
-      continue;
-    std::vector<double> v;
-    v.reserve(input.sample.size() / 3);
-    for(std::size_t i = a; i < input.sample.size(); i += 3)
-      v.push_back(input.sample[i]);
-    std::sort(v.begin(), v.end());
-    lo[a] = v[std::size_t(0.001 * double(v.size() - 1))];
-    hi[a] = v[std::size_t(std::ceil(0.999 * double(v.size() - 1)))];
+    lo[a] = b.min(a);
+    hi[a] = b.max(a);
   }
 }
 
@@ -321,7 +314,6 @@ Scanned_input read_or_scan(const std::string& path, const Read_options& options,
     s.hi[a] = -HUGE_VAL;
   }
   bool keeping = true;
-  std::size_t stride = 1, seen = 0;  // every stride-th finite point is sampled
   std::vector<double> xyz, normals;
   std::vector<std::vector<double>> attributes;
   std::vector<double> largest;  // per attribute, over every point
@@ -366,18 +358,7 @@ Scanned_input read_or_scan(const std::string& path, const Read_options& options,
         s.lo[a] = std::min(s.lo[a], p[a]);
         s.hi[a] = std::max(s.hi[a], p[a]);
       }
-      if(seen++ % stride != 0)
-        continue;
-      s.sample.insert(s.sample.end(), p, p + 3);
-      if(s.sample.size() > 3 * (std::size_t(1) << 20))
-      {
-        // keep every other sampled point
-        std::size_t m = 0;
-        for(std::size_t i = 0; 3 * i < s.sample.size(); i += 2, ++m)
-          std::copy(&s.sample[3 * i], &s.sample[3 * i] + 3, &s.sample[3 * m]);
-        s.sample.resize(3 * m);
-        stride *= 2;
-      }
+      s.sample.add(p[0], p[1], p[2]);
     }
     s.points += c.size();
     if(!keeping)
@@ -584,11 +565,9 @@ Tiled_report visit_tiles(const std::string& path, const Read_options& options, c
       const auto estimate_start = std::chrono::steady_clock::now();
       const std::size_t range = points.size();
       // A range holding every finite point is the whole cloud, whatever the halo's value: an
-      // infinite halo says so to the estimator (which then never needs more, even for
-      // neighbourhoods by count larger than the cloud).
+      // infinite halo says so to the estimator (the library's rule, as Dask's).
       const bool whole_cloud = finite_count == input.finite;
-      if(whole_cloud)
-        halo = HUGE_VAL;
+      halo = PSC::halo_of_range(halo, finite_count, input.finite);
       try
       {
         visit(points, own, grid.tile(t, halo), tiling.phase(name + " " + tiling.estimate_phase));
@@ -597,9 +576,10 @@ Tiled_report visit_tiles(const std::string& path, const Read_options& options, c
       {
         if(whole_cloud)
           throw;  // (the estimator broke its promise: an internal error)
-        // At least to the nearest point left out, so that the range grows at every retry
-        // (a required halo may not change the range: twice the halo when it holds fewer
-        // points than a neighbourhood, or a sum of halos rounded down to this one).
+        // At least to the nearest point left out (the library's rule, as Dask's), so that the
+        // range grows at every retry (a required halo may not change the range: twice the halo
+        // when it holds fewer points than a neighbourhood, or a sum of halos rounded down to
+        // this one).
         halo = PSC::next_halo(e.required_halo(), next_distance);
         ++report.halo_growths;
         report.estimate_seconds += seconds_since(estimate_start);

@@ -49,9 +49,9 @@ struct Scanned_input
   std::uint64_t points = 0;    // every point of the file
   std::uint64_t finite = 0;    // those with finite coordinates
   double lo[3], hi[3];         // the bounds of the finite points
-  // a sample of the finite points (x y z, at most 2^20 of them, evenly spaced in input
-  // order), for bounds that ignore outliers
-  std::vector<double> sample;
+  // a sample of the finite points (at most 2^20 of them, evenly spaced in input order), for
+  // the tiles' box, which ignores outliers
+  CGAL::Point_set_curvatures::Tile_box_sample sample;
 };
 
 // The memory an in-memory run takes per point with `attributes` input attributes, with the

@@ -967,6 +967,17 @@ class TileGrid:
             hi = np.asarray(self.core_max) + self.halo
             return np.all((p >= lo) & (p <= hi), axis=1)
 
+        def distances(self, points):
+            """The distance of each row of ``points`` to the core (0 inside; NaN for a row with
+            a NaN coordinate), as the library computes it (``Tile::distance_to_core``): the
+            points of the tile's range are those at distance ``<= halo``."""
+            return _core.tile_distances(self.core_min, self.core_max, _array(points, "points"))
+
+        def owns(self, points):
+            """Boolean mask of the rows of ``points`` that are the tile's own points (inside the
+            half-open core, ``Tile::owns``)."""
+            return _core.tile_owns(self.core_min, self.core_max, _array(points, "points"))
+
     def __init__(self, box_min, box_max, tile_side=None, *, counts=None):
         self._grid = _core._TileGrid(
             [_real("box_min", v) for v in box_min],

@@ -89,14 +89,26 @@ def _check_tile(radius):
     return ((0.0,) * 3, (1.0,) * 3, halo)
 
 
-def _next_halo(index, halo, required, lo, hi):
-    """The halo of tile `index` resubmitted after HaloTooSmall (the library's next_halo, at
-    least twice the last one); RuntimeError if the last one already held the whole cloud (whose
-    finite points span the box [lo, hi]): a larger halo would change nothing."""
-    if halo > float(np.linalg.norm(np.asarray(hi, dtype=float) - np.asarray(lo, dtype=float))):
-        raise RuntimeError(f"point_set_curvatures.dask: tile {index} asks for a halo of {required:g} although its "
-                           f"halo {halo:g} holds the whole cloud")
-    return _core.next_halo(float(required), 2.0 * halo)
+def _next_halo(halo, required, nearest):
+    """The halo of a tile resubmitted after HaloTooSmall, by the library's rule (next_halo, as
+    the tool's): the halo it asks for, at least the distance of the nearest finite point its
+    range left out (``nearest``), or twice the last halo where the task saw no such point (a
+    tile read from files sees only the blocks near it). A range that left no point out held
+    the whole cloud, and was estimated with an infinite halo (:func:`_range`): never retried."""
+    return _core.next_halo(float(required), nearest if math.isfinite(nearest) else 2.0 * halo)
+
+
+def _range(points, core_min, core_max, halo, finite_in_cloud):
+    """A tile's range among ``points`` by the library's rules (Tile.h, as the tool's): the
+    indices of the rows at distance ``<= halo`` from the core, the halo to estimate them with
+    (infinite when they are every finite point of the cloud: halo_of_range), and the distance
+    of the nearest finite row left out (infinite if none)."""
+    d = TileGrid.Tile(-1, core_min, core_max, halo).distances(points)
+    inside = d <= halo
+    beyond = d[d > halo]  # (NaN rows in neither)
+    sel = np.nonzero(inside)[0]
+    return (sel, _core.halo_of_range(float(halo), len(sel), int(finite_in_cloud)),
+            float(beyond.min()) if len(beyond) else math.inf)
 
 
 def _first_halo(radius, neighbors, initial_halo, lo, hi, finite_count):
@@ -125,14 +137,8 @@ def estimate_tile(points, normals, core_min, core_max, halo, *, method="aso", ra
                                  threads=threads, tile=tile, **options)
     except HaloTooSmall as e:
         return ("halo", float(e.required_halo))
-    own = _owns(points, core_min, core_max)
+    own = tile.owns(points)
     return own, {k: v[own] for k, v in r.items()}
-
-
-def _owns(points, core_min, core_max):
-    """The mask of the rows of ``points`` that the tile of that core owns (Tile::owns, half-open)."""
-    p = np.asarray(points)
-    return np.all((p >= np.asarray(core_min)) & (p < np.asarray(core_max)), axis=1)
 
 
 def _tile_side(lo, hi, count):
@@ -209,14 +215,16 @@ def estimate_curvatures(client, points, normals, *, method="aso", radius=None, n
                          **{k: v for k, v in options.items() if k != "sample_weights" or _weight_array(options) is None})
     if points.dtype.kind == "f":
         radius, neighbors = _whole_cloud_scale(points, radius, neighbors)
-    lo, hi = points[finite].min(axis=0), points[finite].max(axis=0)
+    # the tiles' box: the library's (tile_grid_box: quantiles that ignore outliers), the tool's
+    lo, hi = _core.tile_grid_box(points)
+    finite_count = int(finite.sum())
     if tile_size is None:
         workers = max(1, sum(client.nthreads().values()))
         tile_size = _tile_side(lo, hi, max(4 * workers, math.ceil(n / 500_000)))
     grid = TileGrid(lo, hi, float(tile_size))
     owner = grid.tile_of(points)
     counts = np.bincount(owner, minlength=len(grid) + 1)
-    halo = _first_halo(radius, neighbors, initial_halo, lo, hi, max(int(finite.sum()), 1))
+    halo = _first_halo(radius, neighbors, initial_halo, lo, hi, finite_count)
 
     # sample weights given per point travel with their tile's rows (the whole cloud's weights)
     weights = _weight_array(options)
@@ -249,16 +257,16 @@ def estimate_curvatures(client, points, normals, *, method="aso", radius=None, n
 
     def submit(index, h, attempt=0):
         tile = grid.tile(index, h)
-        sel = np.nonzero(tile.halo_mask(points))[0]
+        sel, tile_halo, nearest = _range(points, tile.core_min, tile.core_max, h, finite_count)
         data = [np.ascontiguousarray(points[sel]), np.ascontiguousarray(normals[sel])]
         if weights is not None:
             data.append(np.ascontiguousarray(weights[sel]))
         data = scatter(data)
         extra = {} if weights is None else {"sample_weights": data[2]}
-        future = client.submit(estimate_tile, data[0], data[1], tile.core_min, tile.core_max, h,
+        future = client.submit(estimate_tile, data[0], data[1], tile.core_min, tile.core_max, tile_halo,
                                key=f"psc-tile-{token}-{index}-{h!r}-{attempt}", retries=retries, **kwargs,
                                **extra)
-        pending[future] = (index, sel, h, attempt)
+        pending[future] = (index, sel, h, attempt, nearest)
         done.add(future)
 
     from distributed import as_completed
@@ -270,7 +278,7 @@ def estimate_curvatures(client, points, normals, *, method="aso", radius=None, n
             if counts[i]:
                 submit(i, halo)
         for future in done:
-            i, sel, h, attempt = pending.pop(future)
+            i, sel, h, attempt, nearest = pending.pop(future)
             try:
                 if future.status in ("cancelled", "lost"):
                     raise CancelledError(future.key)
@@ -287,7 +295,7 @@ def estimate_curvatures(client, points, normals, *, method="aso", radius=None, n
                 continue
             future.release()
             if isinstance(result, tuple) and len(result) == 2 and isinstance(result[0], str):
-                submit(i, _next_halo(i, h, result[1], lo, hi), attempt)
+                submit(i, _next_halo(h, result[1], nearest), attempt)
                 continue
             own, r = result
             rows = sel[own]
@@ -312,17 +320,21 @@ RESULT_DTYPE = np.dtype([(f["key"], f["dtype"], f["shape"]) for f in _FIELDS if 
 #: :data:`RESULT_DTYPE` with ``mean_error``, the standard error of ``mean`` at the chosen scale.
 AUTOMATIC_RESULT_DTYPE = np.dtype([(f["key"], f["dtype"], f["shape"]) for f in _FIELDS])
 
-def _scan_task(sources, blocks):
-    """Pass 1, on a worker: per block, the bounding box of its finite points and their count."""
+def _scan_task(sources, blocks, sample_points):
+    """Pass 1, on a worker: per block, the bounding box of its finite points and their count,
+    and the library's sample of them (Tile_box_sample, at most ``sample_points`` per block) for
+    the tiles' box."""
     lo = np.full((len(blocks), 3), np.inf)
     hi = np.full((len(blocks), 3), -np.inf)
     finite = np.zeros(len(blocks), dtype=np.int64)
+    samples = []
     for b, block in enumerate(blocks):
         p = _files.read(sources, block, _files.XYZ)
         p = p[np.isfinite(p).all(axis=1)]
         if len(p):
             lo[b], hi[b], finite[b] = p.min(axis=0), p.max(axis=0), len(p)
-    return lo, hi, finite
+            samples.append(_core.tile_box_sample(p, sample_points))
+    return lo, hi, finite, np.concatenate(samples) if samples else np.zeros((0, 3))
 
 
 def _default_rows(rows, dtype, status=Status.NON_FINITE_POINT):
@@ -388,16 +400,21 @@ def _peak_rss():
         return 0
 
 
-def _halo_points(sources, blocks, core_min, core_max, halo, normals):
-    """The points of `blocks` within the halo box of a tile, in input order: (their indices in
-    the cloud, points, normals); the normals read from the files (``normals`` "files"), from
-    the (N, 3) .npy array of estimated normals at the path ``normals``, or not (None: None)."""
-    box_lo = np.asarray(core_min, dtype=float) - halo
-    box_hi = np.asarray(core_max, dtype=float) + halo
+def _halo_points(sources, blocks, core_min, core_max, halo, finite, normals):
+    """The range of a tile among the points of `blocks` (the library's rules, :func:`_range`;
+    ``finite`` the cloud's finite points), in input order: (their indices in the cloud, points,
+    normals, the halo to estimate them with, the distance of the nearest finite point of the
+    blocks left out); the normals read from the files (``normals`` "files"), from the (N, 3)
+    .npy array of estimated normals at the path ``normals``, or not (None: None)."""
     index, points, given = [], [], []
+    nearest = math.inf
     for block in blocks:
         p = _files.read(sources, block, _files.XYZ)
-        sel = np.nonzero(np.all((p >= box_lo) & (p <= box_hi), axis=1))[0]
+        d = TileGrid.Tile(-1, core_min, core_max, halo).distances(p)
+        sel = np.nonzero(d <= halo)[0]
+        beyond = d[d > halo]
+        if len(beyond):
+            nearest = min(nearest, float(beyond.min()))
         if len(sel):
             index.append(sel + int(block[3]))
             points.append(p[sel])
@@ -405,13 +422,14 @@ def _halo_points(sources, blocks, core_min, core_max, halo, normals):
                 given.append(_files.read(sources, block, _files.NORMALS)[sel])
     index = np.concatenate(index) if index else np.zeros(0, dtype=np.int64)
     points = np.concatenate(points) if points else np.zeros((0, 3))
+    tile_halo = _core.halo_of_range(float(halo), len(index), int(finite))
     if normals is None:
-        return index, points, None
+        return index, points, None, tile_halo, nearest
     if normals == "files":
-        return index, points, np.concatenate(given) if given else np.zeros((0, 3))
+        return index, points, np.concatenate(given) if given else np.zeros((0, 3)), tile_halo, nearest
     estimated = np.load(normals, mmap_mode="r")
     try:
-        return index, points, np.array(estimated[index], dtype=np.float64)
+        return index, points, np.array(estimated[index], dtype=np.float64), tile_halo, nearest
     finally:
         del estimated
 
@@ -435,18 +453,20 @@ def _tile_summary(rows, index, t0, t1, t2, t3):
     }
 
 
-def _file_tile_task(sources, blocks, core_min, core_max, halo, output, kwargs, normals="files"):
-    """A tile, on a worker: reads from the files the points of `blocks` within the halo box
-    (input order kept), and their normals (``normals``: as :func:`_halo_points`), estimates
+def _file_tile_task(sources, blocks, core_min, core_max, halo, finite, output, kwargs, normals="files"):
+    """A tile, on a worker: reads from the files its range among the points of `blocks` (input
+    order kept; :func:`_halo_points`), and their normals (``normals``: as there), estimates
     the tile and writes its own points' rows into the output. Idempotent (a retried task
-    rewrites the same bytes). Returns a summary, or ``("halo", required_halo)``."""
+    rewrites the same bytes). Returns a summary, or ``("halo", required_halo, nearest)``
+    (the nearest finite point left out, for :func:`_next_halo`)."""
     t0 = time.perf_counter()
-    index, points, normals = _halo_points(sources, blocks, core_min, core_max, halo, normals)
+    index, points, normals, tile_halo, nearest = _halo_points(sources, blocks, core_min, core_max, halo, finite,
+                                                              normals)
     t1 = time.perf_counter()
-    result = estimate_tile(points, normals, core_min, core_max, halo, **kwargs)
+    result = estimate_tile(points, normals, core_min, core_max, tile_halo, **kwargs)
     t2 = time.perf_counter()
     if isinstance(result[0], str):
-        return result
+        return result + (nearest,)
     own, r = result
     rows = index[own]
     records = np.empty(len(rows), dtype=output[3])
@@ -464,21 +484,23 @@ def _record_dtype():
                      ("degree", "u1"), ("status", "u1")])
 
 
-def _file_normal_tile_task(sources, blocks, core_min, core_max, halo, output, neighbors, orientation, threads):
+def _file_normal_tile_task(sources, blocks, core_min, core_max, halo, finite, output, neighbors, orientation,
+                           threads):
     """A tile of the normals' pass, on a worker: the normals of its own points, oriented
     (``orientation`` (kind, target) of a per-point orientation) or, for a spanning tree
     (``orientation`` None), their records (:func:`_record_dtype`), written into their rows of
-    ``output``. Returns a summary as :func:`_file_tile_task`, or ``("halo", required_halo)``."""
+    ``output``. Returns a summary as :func:`_file_tile_task`, or ``("halo", required_halo,
+    nearest)``."""
     t0 = time.perf_counter()
-    index, points, _ = _halo_points(sources, blocks, core_min, core_max, halo, None)
+    index, points, _, tile_halo, nearest = _halo_points(sources, blocks, core_min, core_max, halo, finite, None)
     t1 = time.perf_counter()
-    tile = (tuple(core_min), tuple(core_max), float(halo))
+    tile = (tuple(core_min), tuple(core_max), tile_halo)
     try:
         normal, neighbor, degree, status = _core.normal_records(points, None, neighbors, 1, tile, _threads(threads),
                                                                 None)
     except HaloTooSmall as e:
-        return ("halo", float(e.required_halo))
-    own = _owns(points, core_min, core_max)
+        return ("halo", float(e.required_halo), nearest)
+    own = TileGrid.Tile(-1, core_min, core_max, halo).owns(points)
     rows = index[own]
     if orientation is None:
         records = np.zeros(len(rows), dtype=output[3])
@@ -660,8 +682,10 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
     groups = np.array_split(np.arange(len(blocks)), max(1, min(len(blocks), 4 * nthreads))) if len(blocks) else []
 
     # pass 1: bounding boxes of the blocks
-    futures = [client.submit(_scan_task, sources, blocks[g], key=f"psc-scan-{token}-{j}", retries=retries)
-               for j, g in enumerate(groups)]
+    # (the blocks' samples together about the tool's 2**20 points)
+    sample_points = max(1, (1 << 20) // max(1, len(blocks)))
+    futures = [client.submit(_scan_task, sources, blocks[g], sample_points, key=f"psc-scan-{token}-{j}",
+                             retries=retries) for j, g in enumerate(groups)]
     scans = client.gather(futures)
     _release(futures)
     block_lo = np.concatenate([s[0] for s in scans]) if scans else np.zeros((0, 3))
@@ -682,6 +706,9 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
     if not with_normals:  # estimate_curvatures' own estimate of the normals
         _, normal_neighbors = _whole_cloud_box(finite, lo, hi, None, _estimated_normal_neighbors(neighbors == "auto"),
                                                "normals: ")
+    # the tiles' box: the library's (tile_grid_box: quantiles that ignore outliers), the tool's,
+    # on the blocks' samples
+    lo, hi = _core.tile_grid_box(np.concatenate([s[3] for s in scans]))
     if tile_size is None:
         tile_size = _tile_side(lo, hi, max(4 * nthreads, math.ceil(finite / 500_000)))
     grid_args = (tuple(lo), tuple(hi), float(tile_size))
@@ -718,11 +745,11 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
 
         def submit(i, h):
             tile, tile_blocks = near(i, h)
-            return client.submit(_file_tile_task, sources, tile_blocks, tile.core_min, tile.core_max, h, output,
-                                 kwargs, normals, key=f"psc-tile-{token}-{i}-{h!r}", retries=retries)
+            return client.submit(_file_tile_task, sources, tile_blocks, tile.core_min, tile.core_max, h, finite,
+                                 output, kwargs, normals, key=f"psc-tile-{token}-{i}-{h!r}", retries=retries)
 
         report["tile_reports"], report["resubmitted"] = _tile_pass(
-            client, submit, counts, _first_halo(radius, neighbors, initial_halo, lo, hi, finite), lo, hi, n, nonfinite)
+            client, submit, counts, _first_halo(radius, neighbors, initial_halo, lo, hi, finite), n, nonfinite)
     finally:
         for path in temporary:
             with contextlib.suppress(OSError):
@@ -734,7 +761,7 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
     return report
 
 
-def _tile_pass(client, submit, counts, halo, lo, hi, n, nonfinite):
+def _tile_pass(client, submit, counts, halo, n, nonfinite):
     """Runs ``submit(i, halo)`` (a future of a tile task) for every tile i with own points
     (``counts``), resubmits with a larger halo the tiles that ask for one, and checks that
     the tiles wrote every finite point of the n exactly once (own counts per tile, and sums of
@@ -753,7 +780,7 @@ def _tile_pass(client, submit, counts, halo, lo, hi, n, nonfinite):
             result = future.result()
             future.release()
             if isinstance(result, tuple):
-                h = _next_halo(i, h, result[1], lo, hi)
+                h = _next_halo(h, result[1], result[2])
                 new = submit(i, h)
                 pending[new] = (i, h)
                 done.add(new)
@@ -805,12 +832,12 @@ def _estimate_file_normals(client, sources, blocks, near, counts, nonfinite, lo,
 
     def submit(i, h):
         tile, tile_blocks = near(i, h)
-        return client.submit(_file_normal_tile_task, sources, tile_blocks, tile.core_min, tile.core_max, h,
+        return client.submit(_file_normal_tile_task, sources, tile_blocks, tile.core_min, tile.core_max, h, finite,
                              tile_output, neighbors, None if spanning_tree else (kind, target), threads,
                              key=f"psc-normals-{token}-{i}-{h!r}", retries=retries)
 
     tiles, resubmitted = _tile_pass(client, submit, counts, _first_halo(None, neighbors, initial_halo, lo, hi, finite),
-                                    lo, hi, n, nonfinite)
+                                    n, nonfinite)
     t1 = time.perf_counter()
     orientation_report = None
     if spanning_tree:

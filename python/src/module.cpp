@@ -285,7 +285,7 @@ PYBIND11_MODULE(_core, m)
     projection_status[py::str(CGAL::to_string(CGAL::Apss_projection_status(s)))] = s;
   m.attr("PROJECTION_STATUS_VALUES") = projection_status;
 
-  // The halo rule of tiles (Tile.h), for the Dask driver.
+  // The rules of tiles (Tile.h: the halo, the box, a tile's range and own points), for the Dask driver.
   m.def("halo_for_radius", &CGAL::Point_set_curvatures::halo_for_radius, py::arg("radius"));
   m.def(
     "halo_guess_for_count",
@@ -295,6 +295,12 @@ PYBIND11_MODULE(_core, m)
     },
     py::arg("box_min"), py::arg("box_max"), py::arg("points"), py::arg("neighbors"));
   m.def("next_halo", &CGAL::Point_set_curvatures::next_halo, py::arg("required"), py::arg("at_least"));
+  m.def("halo_of_range", &CGAL::Point_set_curvatures::halo_of_range, py::arg("halo"), py::arg("finite_in_range"),
+        py::arg("finite_in_cloud"));
+  m.def("tile_box_sample", &tile_box_sample_py, py::arg("points"), py::arg("max_points"));
+  m.def("tile_grid_box", &tile_grid_box_py, py::arg("points"));
+  m.def("tile_distances", &tile_distances_py, py::arg("core_min"), py::arg("core_max"), py::arg("points"));
+  m.def("tile_owns", &tile_owns_py, py::arg("core_min"), py::arg("core_max"), py::arg("points"));
   m.def("estimate_curvatures", &estimate_curvatures, py::arg("method"), py::arg("points"), py::arg("normals"),
         py::arg("radius"), py::arg("neighbors"), py::arg("threads"), py::arg("progress"), py::arg("options"),
         py::arg("tile"), py::arg("weights"));

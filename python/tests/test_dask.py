@@ -142,6 +142,26 @@ def test_dask_shared_sample_weights(client, cloud):
         psc_dask.estimate_curvatures(client, points, normals, method="pss", radius=0.03, sample_weights=w)
 
 
+def test_dask_far_outlier_and_the_tiling_rules(client, cloud):
+    """The tiles' rules are the library's (Tile.h), as the tool's: the box ignores a far
+    outlier (quantiles), a tile's range is the points within the halo's distance, its own
+    points those of the half-open core; with the outlier the tiles still give the single run."""
+    points, normals = cloud[0][:20_000].copy(), cloud[1][:20_000].copy()
+    points[123] = (1e6, 0, 0)
+    lo, hi = psc._core.tile_grid_box(points)
+    finite = points[np.isfinite(points).all(axis=1)]
+    assert np.all(np.asarray(hi) <= np.sort(finite, axis=0)[-2]) and hi[0] < 10
+    assert np.all(np.asarray(lo) >= np.sort(finite, axis=0)[0])
+    t = psc.TileGrid.Tile(0, (0, 0, 0), (1, 1, 1), 0.5)
+    q = np.array([[0.5, 0.5, 0.5], [1, 0.5, 0.5], [0, 0, 0], [1.5, 0.5, 0.5], [np.nan, 0, 0], [-2, 0, 0]])
+    assert t.owns(q).tolist() == [True, False, True, False, False, False]
+    d = t.distances(q)
+    assert d[:4].tolist() == [0, 0, 0, 0.5] and np.isnan(d[4]) and d[5] == 2
+    single = psc.estimate_curvatures(points, normals, neighbors=30, aso_variant="paper")
+    assert_same(single, psc_dask.estimate_curvatures(client, points, normals, neighbors=30, aso_variant="paper",
+                                                     tile_size=0.5, initial_halo=1e-3))
+
+
 def test_estimate_tile_halo_too_small(cloud):
     points, normals = cloud
     grid = psc.TileGrid((2, -3, 0), (4, -1, 2), counts=(2, 2, 2))

@@ -77,9 +77,12 @@ struct Tile
   }
 
   /// Euclidean distance from `(x, y, z)` to the core (0 inside; infinite only when the
-  /// distance itself exceeds the largest double: no overflow of the squares)
+  /// distance itself exceeds the largest double: no overflow of the squares; NaN for a NaN
+  /// coordinate, so that such a point is never within a halo)
   double distance_to_core(double x, double y, double z) const
   {
+    if(std::isnan(x) || std::isnan(y) || std::isnan(z))
+      return std::numeric_limits<double>::quiet_NaN();
     const double d[3] = {std::max({0.0, core.xmin() - x, x - core.xmax()}),
                          std::max({0.0, core.ymin() - y, y - core.ymax()}),
                          std::max({0.0, core.zmin() - z, z - core.zmax()})};
@@ -90,7 +93,7 @@ struct Tile
     // component
     const double m = std::max({d[0], d[1], d[2]});
     if(!(m <= (std::numeric_limits<double>::max)()))
-      return m;  // infinite (or NaN for a NaN coordinate)
+      return m;  // infinite
     const double u = d[0] / m, v = d[1] / m, w = d[2] / m;
     return m * std::sqrt(u * u + v * v + w * w);
   }
@@ -177,13 +180,105 @@ inline double halo_guess_for_count(const Bbox_3& box, std::size_t n, std::size_t
 /// \ingroup PkgPointSetCurvaturesRef
 /// The halo to run a tile again with after its estimation threw `Halo_too_small`:
 /// `required_halo` (its `required_halo()`), at least `at_least`, so that the tile's range
-/// grows at every retry when `at_least` exceeds the last halo (the distance to the nearest
-/// point the range left out where the driver knows it, else twice the last halo). A NaN
-/// `required_halo` gives `at_least`.
+/// grows at every retry when `at_least` exceeds the last halo. The drivers (the tool's
+/// `--memory-limit`, Dask) pass the distance to the core of the nearest finite point the
+/// range left out (the least growth that adds a point; a range that left none out is the
+/// whole cloud, see `halo_of_range()`, and is never retried), or twice the last halo where
+/// they do not know that point (Dask's tiles read from files know only the blocks they read).
+/// A NaN `required_halo` gives `at_least`.
 inline double next_halo(double required_halo, double at_least)
 {
   return required_halo > at_least ? required_halo : at_least;
 }
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// The halo to estimate a tile's range with, given the halo `halo` it was gathered with: an
+/// infinite halo when the range holds every finite point of the cloud (`finite_in_range ==
+/// finite_in_cloud`, whatever `halo`'s value): the estimation then never throws
+/// `Halo_too_small`, even for neighbourhoods by count larger than the cloud, which get every
+/// point as in the whole-cloud run; otherwise `halo`. Every driver of tiles applies this rule,
+/// so that a tile that already holds the whole cloud is never retried.
+inline double halo_of_range(double halo, std::size_t finite_in_range, std::size_t finite_in_cloud)
+{
+  return finite_in_range == finite_in_cloud ? std::numeric_limits<double>::infinity() : halo;
+}
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// The box of a `Tile_grid` over the points `xyz` (x y z of each point in turn, every
+/// coordinate finite): on each axis the 0.1% and 99.9% quantiles of the values (the values of
+/// ranks `floor(0.001 (m - 1))` and `ceil(0.999 (m - 1))` of the `m` points), so that a few
+/// outliers (a bird over an airborne scan, a stray return) do not stretch the tiles; the outer
+/// tiles reach to infinity and own them. No point gives the box reduced to the origin. The
+/// drivers take it on a `Tile_box_sample` of the cloud.
+inline Bbox_3 tile_grid_box(const std::vector<double>& xyz)
+{
+  double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+  const std::size_t m = xyz.size() / 3;
+  if(m > 0)
+  {
+    std::vector<double> v(m);
+    for(int a = 0; a < 3; ++a)
+    {
+      for(std::size_t i = 0; i < m; ++i)
+        v[i] = xyz[3 * i + a];
+      std::sort(v.begin(), v.end());
+      lo[a] = v[std::size_t(0.001 * double(m - 1))];
+      hi[a] = v[std::size_t(std::ceil(0.999 * double(m - 1)))];
+    }
+  }
+  return Bbox_3(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
+}
+
+/// \ingroup PkgPointSetCurvaturesRef
+///
+/// An evenly spaced sample of a cloud's finite points, read once in input order without
+/// knowing their number, for the box of its tiles (`box()`, `tile_grid_box()`): every
+/// `stride()`-th finite point, the stride the least power of two that keeps at most
+/// `max_points` of them (when the sample grows past it, the stride doubles and every other
+/// sampled point is dropped).
+class Tile_box_sample
+{
+public:
+  /// the sample's size by default: 2^20 points (24 MiB)
+  static constexpr std::size_t default_max_points = std::size_t(1) << 20;
+
+  /// \pre `max_points >= 1`
+  explicit Tile_box_sample(std::size_t max_points = default_max_points) : m_max((std::max)(max_points, std::size_t(1)))
+  {}
+
+  /// Takes the next point of the cloud in input order (points with a non-finite coordinate
+  /// are skipped: they are not counted).
+  void add(double x, double y, double z)
+  {
+    if(!(std::isfinite(x) && std::isfinite(y) && std::isfinite(z)))
+      return;
+    if(m_seen++ % m_stride != 0)
+      return;
+    m_xyz.insert(m_xyz.end(), {x, y, z});
+    if(m_xyz.size() > 3 * m_max)
+    {
+      std::size_t m = 0;
+      for(std::size_t i = 0; 3 * i < m_xyz.size(); i += 2, ++m)
+        std::copy(&m_xyz[3 * i], &m_xyz[3 * i] + 3, &m_xyz[3 * m]);
+      m_xyz.resize(3 * m);
+      m_stride *= 2;
+    }
+  }
+
+  /// the sampled points' coordinates, x y z of each in turn
+  const std::vector<double>& coordinates() const { return m_xyz; }
+  /// the number of sampled points
+  std::size_t size() const { return m_xyz.size() / 3; }
+  /// every `stride()`-th finite point is sampled
+  std::size_t stride() const { return m_stride; }
+  /// `tile_grid_box(coordinates())`
+  Bbox_3 box() const { return tile_grid_box(m_xyz); }
+
+private:
+  std::size_t m_max;
+  std::size_t m_stride = 1, m_seen = 0;
+  std::vector<double> m_xyz;
+};
 
 /// \ingroup PkgPointSetCurvaturesRef
 ///
