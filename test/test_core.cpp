@@ -1830,7 +1830,7 @@ TEST_CASE("Tiles: bitwise with a far outlier, Halo_too_small below k points, pro
   CHECK(progress.back() == 1.0);
 }
 
-TEST_CASE("Tiles: the drivers' rules: the tiles' box ignores outliers, the sample is every 2^j-th finite point, NaN is in no range, a range of every finite point is the whole cloud", "[tile]")
+TEST_CASE("Tiles: the drivers' rules: the tiles' box ignores outliers, the sample is every 2^j-th finite point, non-finite points are in no range, a range of every finite point is the whole cloud", "[tile]")
 {
   // 1000 points on [0, 999] along x (y = -x, z = 7), and two outliers far away
   PSC::Tile_box_sample sample;
@@ -1864,12 +1864,36 @@ TEST_CASE("Tiles: the drivers' rules: the tiles' box ignores outliers, the sampl
   CHECK(small.stride() == 4);
   CHECK(small.coordinates() == std::vector<double>{0, 0, 0, 4, 0, 0, 8, 0, 0});
 
-  // a point with a NaN coordinate is at no distance from a core: never in a range
+  // a point with a non-finite coordinate is at no distance from a core, nobody's own point, in
+  // no range (an outer tile's infinite side included)
   const PSC::Tile unit(CGAL::Bbox_3(0, 0, 0, 1, 1, 1), 1);
   CHECK(std::isnan(unit.distance_to_core(nan_value, 0.5, 0.5)));
   CHECK(unit.distance_to_core(-2, 0.5, 0.5) == 2);
+  const PSC::Tile outer(CGAL::Bbox_3(-HUGE_VAL, -HUGE_VAL, -HUGE_VAL, 0, 0, 0), 1);
+  CHECK(std::isnan(outer.distance_to_core(-HUGE_VAL, -1, -1)));
+  CHECK(std::isnan(outer.distance_to_core(HUGE_VAL, -1, -1)));
+  CHECK_FALSE(outer.owns(-HUGE_VAL, -1, -1));
+  CHECK(outer.owns(-1e308, -1, -1));
   CHECK(std::isinf(PSC::halo_of_range(0.5, 10, 10)));
   CHECK(PSC::halo_of_range(0.5, 9, 10) == 0.5);
+
+  // a range: the finite points within the halo, the nearest left out, the halo to estimate with
+  // and to retry with
+  PSC::Tile_range range(outer);
+  CHECK(range.take(-5, -5, -5));
+  CHECK_FALSE(range.take(-HUGE_VAL, -1, -1));
+  CHECK(range.take(0.5, -1, -1));
+  CHECK_FALSE(range.take(nan_value, -1, -1));
+  CHECK_FALSE(range.take(3, -1, -1));
+  CHECK_FALSE(range.take(1.5, -1, -1));
+  CHECK(range.finite_taken() == 2);
+  CHECK(range.nearest_left_out() == 1.5);
+  CHECK(range.halo(3) == 1);
+  CHECK(std::isinf(range.halo(2)));
+  CHECK(range.retry_halo(PSC::Halo_too_small(1.2, 1)) == 1.5);
+  CHECK(range.retry_halo(PSC::Halo_too_small(4, 1)) == 4);
+  range.skip_beyond(1.25);  // (points of a block not read)
+  CHECK(range.retry_halo(PSC::Halo_too_small(1.2, 1)) == 1.25);
 }
 
 TEST_CASE("Tiles: the halo rule (halo_for_radius, halo_guess_for_count, next_halo) gives the whole run by count", "[aso][tile]")

@@ -25,9 +25,8 @@ const std::map<std::string, int>& color_quantities()
 {
   static const std::map<std::string, int> q = [] {
     std::map<std::string, int> m;
-    for(const CGAL::Point_set_curvatures::Field_description& f : CGAL::Point_set_curvatures::field_descriptions)
-      if(f.name && f.summarised)
-        m.emplace(f.name, summary_quantities::of(f.name));
+    for(int q = 0; q < summary_quantities::count(); ++q)
+      m.emplace(summary_quantities::name[q], q);
     return m;
   }();
   return q;
@@ -112,9 +111,8 @@ std::string wrapped(const std::string& text, std::size_t used, std::size_t inden
 std::string color_choices()
 {
   std::string s;
-  for(const CGAL::Point_set_curvatures::Field_description& f : CGAL::Point_set_curvatures::field_descriptions)
-    if(f.name && f.summarised)
-      s += (s.empty() ? "" : "|") + std::string(f.name);
+  for(const std::string_view name : summary_quantities::name)
+    s += (s.empty() ? "" : "|") + std::string(name);
   return s;
 }
 
@@ -527,10 +525,11 @@ Options parse_command_line(int argc, char** argv)
     throw Error(cat("--neighbors auto chooses the scale of --method aso only; give --method ", o.method->name,
                     " a count (--neighbors K)"));
   if(o.scale.automatic_largest == 0)
-    for(const CGAL::Point_set_curvatures::Field_description& f : CGAL::Point_set_curvatures::field_descriptions)
-      if(f.name && f.automatic_scale_only && std::find(o.fields.begin(), o.fields.end(), f.name) != o.fields.end())
+    for_each_tool_field([&o](const CGAL::Point_set_curvatures::Field_description& f) {
+      if(f.automatic_scale_only && std::find(o.fields.begin(), o.fields.end(), f.name) != o.fields.end())
         throw Error(cat("--fields: ", f.name, " comes with the automatic scale only: add --neighbors auto, or leave it "
                         "out"));
+    });
   if(o.normal_fit == CGAL::Normal_fit::QUADRIC && o.normal_neighbors != 0 && o.normal_neighbors < 6)
     throw Error(cat("--normal-neighbors ", o.normal_neighbors, " is below the 6 points a quadric needs: use "
                     "--normal-neighbors 6 or more, or --normal-fit plane"));

@@ -34,8 +34,9 @@ inline double percentile(std::vector<double> values, double q)
 }
 
 // The quantities summarised, those of the table marked `summarised` (k_min, k_max, mean,
-// gaussian), numbered q in the table's order: their number, the q of the field named `name` (-1
-// if it is not summarised), and quantity q's index in Output_row::value (value_index[q]).
+// gaussian), numbered q in the table's order: their number, their names (name[q]; also what
+// --color shows), the q of the field named `name` (-1 if it is not summarised), and quantity
+// q's index in Output_row::value (value_index[q]).
 namespace summary_quantities {
 constexpr int count()
 {
@@ -44,25 +45,28 @@ constexpr int count()
     n += f.name && f.summarised ? 1 : 0;
   return n;
 }
-constexpr int of(std::string_view name)
+constexpr std::array<std::string_view, count()> names()
 {
+  std::array<std::string_view, count()> at{};
   int q = 0;
   for(const CGAL::Point_set_curvatures::Field_description& f : CGAL::Point_set_curvatures::field_descriptions)
     if(f.name && f.summarised)
-    {
-      if(output_value_index(f.name) == output_value_index(name))
-        return q;
-      ++q;
-    }
+      at[q++] = f.name;
+  return at;
+}
+inline constexpr std::array<std::string_view, count()> name = names();
+constexpr int of(std::string_view field)
+{
+  for(int q = 0; q < count(); ++q)
+    if(name[q] == field)
+      return q;
   return -1;
 }
 constexpr std::array<int, count()> value_indices()
 {
   std::array<int, count()> at{};
-  int q = 0;
-  for(const CGAL::Point_set_curvatures::Field_description& f : CGAL::Point_set_curvatures::field_descriptions)
-    if(f.name && f.summarised)
-      at[q++] = output_value_index(f.name);
+  for(int q = 0; q < count(); ++q)
+    at[q] = output_value_index(name[q]);
   return at;
 }
 inline constexpr std::array<int, count()> value_index = value_indices();

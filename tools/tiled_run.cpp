@@ -507,8 +507,8 @@ Tiled_report visit_tiles(const std::string& path, const Read_options& options, c
       const PSC::Tile tile = grid.tile(t, halo);
       Tile_points points;
       std::vector<char> own;
-      std::size_t own_count = 0, finite_count = 0;
-      double next_distance = HUGE_VAL;  // of the nearest finite point left out
+      std::size_t own_count = 0;
+      PSC::Tile_range gathered(tile);  // the range's rules (the library's, as Dask's)
       const auto read_start = std::chrono::steady_clock::now();
       {
         // reserved from the density (an upper bound), the chunks small: the tile's points
@@ -533,23 +533,13 @@ Tiled_report visit_tiles(const std::string& path, const Read_options& options, c
           {
             const double* p = &c.xyz[3 * k];
             const bool finite = finite_point(p);
-            if(finite)
-            {
-              const double d = tile.distance_to_core(p[0], p[1], p[2]);
-              if(!(d <= halo))
-              {
-                next_distance = std::min(next_distance, d);
-                continue;
-              }
-            }
-            else if(t != 0)
-              continue;
+            if(!gathered.take(p[0], p[1], p[2]) && (finite || t != 0))
+              continue;  // (the first tile takes the non-finite points, as its own)
             append_point(c, k, points.xyz, points.normals, points.attributes);
             if(tiling.normals)
               points.normals.insert(points.normals.end(), &(*tiling.normals)[3 * (c.first + k)],
                                     &(*tiling.normals)[3 * (c.first + k)] + 3);
             points.index.push_back(c.first + k);
-            finite_count += finite;
             const bool is_own = finite ? tile.owns(p[0], p[1], p[2]) : true;
             own.push_back(is_own ? 1 : 0);
             own_count += is_own;
@@ -565,9 +555,9 @@ Tiled_report visit_tiles(const std::string& path, const Read_options& options, c
       const auto estimate_start = std::chrono::steady_clock::now();
       const std::size_t range = points.size();
       // A range holding every finite point is the whole cloud, whatever the halo's value: an
-      // infinite halo says so to the estimator (the library's rule, as Dask's).
-      const bool whole_cloud = finite_count == input.finite;
-      halo = PSC::halo_of_range(halo, finite_count, input.finite);
+      // infinite halo says so to the estimator.
+      halo = gathered.halo(input.finite);
+      const bool whole_cloud = std::isinf(halo);
       try
       {
         visit(points, own, grid.tile(t, halo), tiling.phase(name + " " + tiling.estimate_phase));
@@ -576,11 +566,10 @@ Tiled_report visit_tiles(const std::string& path, const Read_options& options, c
       {
         if(whole_cloud)
           throw;  // (the estimator broke its promise: an internal error)
-        // At least to the nearest point left out (the library's rule, as Dask's), so that the
-        // range grows at every retry (a required halo may not change the range: twice the halo
-        // when it holds fewer points than a neighbourhood, or a sum of halos rounded down to
-        // this one).
-        halo = PSC::next_halo(e.required_halo(), next_distance);
+        // At least to the nearest point left out, so that the range grows at every retry (a
+        // required halo may not change the range: twice the halo when it holds fewer points
+        // than a neighbourhood, or a sum of halos rounded down to this one).
+        halo = gathered.retry_halo(e);
         ++report.halo_growths;
         report.estimate_seconds += seconds_since(estimate_start);
         if(tiling.interrupted && tiling.interrupted())

@@ -18,15 +18,6 @@ namespace {
 
 namespace PSC = CGAL::Point_set_curvatures;
 
-// The fields of the table that the tool writes.
-template <class F>
-void for_each_tool_field(const F& f)
-{
-  for(const PSC::Field_description& d : PSC::field_descriptions)
-    if(d.name)
-      f(d);
-}
-
 } // namespace
 
 const char* selectable_fields()

@@ -89,26 +89,35 @@ def _check_tile(radius):
     return ((0.0,) * 3, (1.0,) * 3, halo)
 
 
-def _next_halo(halo, required, nearest):
-    """The halo of a tile resubmitted after HaloTooSmall, by the library's rule (next_halo, as
-    the tool's): the halo it asks for, at least the distance of the nearest finite point its
-    range left out (``nearest``), or twice the last halo where the task saw no such point (a
-    tile read from files sees only the blocks near it). A range that left no point out held
-    the whole cloud, and was estimated with an infinite halo (:func:`_range`): never retried."""
-    return _core.next_halo(float(required), nearest if math.isfinite(nearest) else 2.0 * halo)
+def _next_halo(required, nearest):
+    """The halo of a tile resubmitted after HaloTooSmall, by the library's rule (Tile_range,
+    next_halo; the tool's): the halo it asks for, at least the distance to the core of the
+    nearest finite point its range left out (``nearest``; for a tile read from files, at most
+    the nearest distance of the blocks it did not read, which the next range then reads). A
+    range that left no point out held the whole cloud and was estimated with an infinite halo:
+    asking for more is an internal error (RuntimeError), never a loop."""
+    if not math.isfinite(nearest):
+        raise RuntimeError("point_set_curvatures.dask: a tile holding the whole cloud asked for a larger halo")
+    return _core.next_halo(float(required), float(nearest))
 
 
 def _range(points, core_min, core_max, halo, finite_in_cloud):
-    """A tile's range among ``points`` by the library's rules (Tile.h, as the tool's): the
-    indices of the rows at distance ``<= halo`` from the core, the halo to estimate them with
-    (infinite when they are every finite point of the cloud: halo_of_range), and the distance
-    of the nearest finite row left out (infinite if none)."""
-    d = TileGrid.Tile(-1, core_min, core_max, halo).distances(points)
-    inside = d <= halo
-    beyond = d[d > halo]  # (NaN rows in neither)
-    sel = np.nonzero(inside)[0]
-    return (sel, _core.halo_of_range(float(halo), len(sel), int(finite_in_cloud)),
-            float(beyond.min()) if len(beyond) else math.inf)
+    """A tile's range among ``points`` by the library's rules (Tile_range, the tool's): the
+    indices of the finite rows at distance ``<= halo`` from the core, the halo to estimate
+    them with (infinite when they are every finite point of the cloud: halo_of_range), and the
+    distance of the nearest finite row left out (infinite if none)."""
+    mask, taken, nearest = _core.tile_range(core_min, core_max, float(halo), points)
+    return np.nonzero(mask)[0], _core.halo_of_range(float(halo), int(taken), int(finite_in_cloud)), float(nearest)
+
+
+def _initial_halo(value):
+    """The argument initial_halo: None, or a positive number (infinite: the whole cloud)."""
+    if value is None:
+        return None
+    halo = _real("initial_halo", value)
+    if not halo > 0:
+        raise ValueError(f"initial_halo must be positive, got {value!r}")
+    return halo
 
 
 def _first_halo(radius, neighbors, initial_halo, lo, hi, finite_count):
@@ -190,7 +199,7 @@ def estimate_curvatures(client, points, normals, *, method="aso", radius=None, n
     radius, neighbors = _scale_of_run(method, radius, neighbors, options)
     retries = _int("retries", retries, 0)
     tile_size = None if tile_size is None else _real("tile_size", tile_size)
-    initial_halo = None if initial_halo is None else _real("initial_halo", initial_halo)
+    initial_halo = _initial_halo(initial_halo)
     points = np.asarray(points)
     normals = np.asarray(normals)
     if points.ndim != 2 or points.shape[1:] != (3,) or normals.shape != points.shape:
@@ -295,7 +304,7 @@ def estimate_curvatures(client, points, normals, *, method="aso", radius=None, n
                 continue
             future.release()
             if isinstance(result, tuple) and len(result) == 2 and isinstance(result[0], str):
-                submit(i, _next_halo(h, result[1], nearest), attempt)
+                submit(i, _next_halo(result[1], nearest), attempt)
                 continue
             own, r = result
             rows = sel[own]
@@ -320,21 +329,32 @@ RESULT_DTYPE = np.dtype([(f["key"], f["dtype"], f["shape"]) for f in _FIELDS if 
 #: :data:`RESULT_DTYPE` with ``mean_error``, the standard error of ``mean`` at the chosen scale.
 AUTOMATIC_RESULT_DTYPE = np.dtype([(f["key"], f["dtype"], f["shape"]) for f in _FIELDS])
 
-def _scan_task(sources, blocks, sample_points):
-    """Pass 1, on a worker: per block, the bounding box of its finite points and their count,
-    and the library's sample of them (Tile_box_sample, at most ``sample_points`` per block) for
-    the tiles' box."""
+def _scan_task(sources, blocks, stride):
+    """Pass 1, on a worker: per block, the bounding box of its finite points and their count;
+    and the finite points of the rows whose index is a multiple of ``stride``, the sample of
+    the tiles' box (:func:`_sample_stride`)."""
     lo = np.full((len(blocks), 3), np.inf)
     hi = np.full((len(blocks), 3), -np.inf)
     finite = np.zeros(len(blocks), dtype=np.int64)
     samples = []
     for b, block in enumerate(blocks):
         p = _files.read(sources, block, _files.XYZ)
+        sampled = p[(-int(block[3])) % stride::stride]
+        samples.append(sampled[np.isfinite(sampled).all(axis=1)])
         p = p[np.isfinite(p).all(axis=1)]
         if len(p):
             lo[b], hi[b], finite[b] = p.min(axis=0), p.max(axis=0), len(p)
-            samples.append(_core.tile_box_sample(p, sample_points))
     return lo, hi, finite, np.concatenate(samples) if samples else np.zeros((0, 3))
+
+
+def _sample_stride(rows):
+    """The stride of the tiles' box sample over ``rows`` points: the least power of two that
+    keeps at most 2**20 of them, as the library's Tile_box_sample keeps of the finite points
+    (the same sample, hence the tool's box, when every point is finite)."""
+    stride = 1
+    while -(-rows // stride) > (1 << 20):
+        stride *= 2
+    return stride
 
 
 def _default_rows(rows, dtype, status=Status.NON_FINITE_POINT):
@@ -400,21 +420,20 @@ def _peak_rss():
         return 0
 
 
-def _halo_points(sources, blocks, core_min, core_max, halo, finite, normals):
+def _halo_points(sources, blocks, core_min, core_max, halo, unread, finite, normals):
     """The range of a tile among the points of `blocks` (the library's rules, :func:`_range`;
-    ``finite`` the cloud's finite points), in input order: (their indices in the cloud, points,
-    normals, the halo to estimate them with, the distance of the nearest finite point of the
-    blocks left out); the normals read from the files (``normals`` "files"), from the (N, 3)
-    .npy array of estimated normals at the path ``normals``, or not (None: None)."""
+    ``finite`` the cloud's finite points; ``unread`` a distance from the core below which lie
+    none of the points of the blocks not read), in input order: (their indices in the cloud,
+    points, normals, the halo to estimate them with, the distance of the nearest finite point
+    left out, at most ``unread``); the normals read from the files (``normals`` "files"), from
+    the (N, 3) .npy array of estimated normals at the path ``normals``, or not (None: None)."""
     index, points, given = [], [], []
-    nearest = math.inf
+    taken, nearest = 0, float(unread)
     for block in blocks:
         p = _files.read(sources, block, _files.XYZ)
-        d = TileGrid.Tile(-1, core_min, core_max, halo).distances(p)
-        sel = np.nonzero(d <= halo)[0]
-        beyond = d[d > halo]
-        if len(beyond):
-            nearest = min(nearest, float(beyond.min()))
+        mask, count, left_out = _core.tile_range(core_min, core_max, float(halo), p)
+        sel = np.nonzero(mask)[0]
+        taken, nearest = taken + int(count), min(nearest, float(left_out))
         if len(sel):
             index.append(sel + int(block[3]))
             points.append(p[sel])
@@ -422,7 +441,7 @@ def _halo_points(sources, blocks, core_min, core_max, halo, finite, normals):
                 given.append(_files.read(sources, block, _files.NORMALS)[sel])
     index = np.concatenate(index) if index else np.zeros(0, dtype=np.int64)
     points = np.concatenate(points) if points else np.zeros((0, 3))
-    tile_halo = _core.halo_of_range(float(halo), len(index), int(finite))
+    tile_halo = _core.halo_of_range(float(halo), taken, int(finite))
     if normals is None:
         return index, points, None, tile_halo, nearest
     if normals == "files":
@@ -453,15 +472,15 @@ def _tile_summary(rows, index, t0, t1, t2, t3):
     }
 
 
-def _file_tile_task(sources, blocks, core_min, core_max, halo, finite, output, kwargs, normals="files"):
+def _file_tile_task(sources, blocks, core_min, core_max, halo, unread, finite, output, kwargs, normals="files"):
     """A tile, on a worker: reads from the files its range among the points of `blocks` (input
     order kept; :func:`_halo_points`), and their normals (``normals``: as there), estimates
     the tile and writes its own points' rows into the output. Idempotent (a retried task
     rewrites the same bytes). Returns a summary, or ``("halo", required_halo, nearest)``
     (the nearest finite point left out, for :func:`_next_halo`)."""
     t0 = time.perf_counter()
-    index, points, normals, tile_halo, nearest = _halo_points(sources, blocks, core_min, core_max, halo, finite,
-                                                              normals)
+    index, points, normals, tile_halo, nearest = _halo_points(sources, blocks, core_min, core_max, halo, unread,
+                                                              finite, normals)
     t1 = time.perf_counter()
     result = estimate_tile(points, normals, core_min, core_max, tile_halo, **kwargs)
     t2 = time.perf_counter()
@@ -484,7 +503,7 @@ def _record_dtype():
                      ("degree", "u1"), ("status", "u1")])
 
 
-def _file_normal_tile_task(sources, blocks, core_min, core_max, halo, finite, output, neighbors, orientation,
+def _file_normal_tile_task(sources, blocks, core_min, core_max, halo, unread, finite, output, neighbors, orientation,
                            threads):
     """A tile of the normals' pass, on a worker: the normals of its own points, oriented
     (``orientation`` (kind, target) of a per-point orientation) or, for a spanning tree
@@ -492,7 +511,8 @@ def _file_normal_tile_task(sources, blocks, core_min, core_max, halo, finite, ou
     ``output``. Returns a summary as :func:`_file_tile_task`, or ``("halo", required_halo,
     nearest)``."""
     t0 = time.perf_counter()
-    index, points, _, tile_halo, nearest = _halo_points(sources, blocks, core_min, core_max, halo, finite, None)
+    index, points, _, tile_halo, nearest = _halo_points(sources, blocks, core_min, core_max, halo, unread, finite,
+                                                        None)
     t1 = time.perf_counter()
     tile = (tuple(core_min), tuple(core_max), tile_halo)
     try:
@@ -628,8 +648,9 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
         ``compute_seconds``, ``write_seconds``, ``peak_rss`` of the worker process, ``pid``,
         ``start``, ``stop``).
 
-    How it runs: pass 1 (tasks over groups of blocks) finds each block's bounding box; pass 2
-    counts the own points of every tile of the grid (and writes the rows of non-finite points);
+    How it runs: pass 1 (tasks over groups of blocks) finds each block's bounding box and
+    samples the points for the tiles' box; pass 2 counts the own points of every tile of the
+    grid (and writes the rows of non-finite points);
     without normals, the normals' pass (above) on the same tiles; then one task per non-empty
     tile reads only the blocks whose box meets the tile's halo box, estimates and writes. Only paths, boxes and block numbers travel in the tasks, and only
     summaries come back. The workers write disjoint rows of a preallocated memory-mapped
@@ -651,7 +672,7 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
     retries = _int("retries", retries, 0)
     block_rows = _int("block_rows", block_rows, 1)
     tile_size = None if tile_size is None else _real("tile_size", tile_size)
-    initial_halo = None if initial_halo is None else _real("initial_halo", initial_halo)
+    initial_halo = _initial_halo(initial_halo)
     t_start = time.perf_counter()
     kwargs = dict(method=method, radius=radius, neighbors=neighbors, threads=threads, **options)
     # the arguments checked here, not by every task (dask would retry a failing task)
@@ -681,10 +702,8 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
     token = uuid.uuid4().hex[:8]
     groups = np.array_split(np.arange(len(blocks)), max(1, min(len(blocks), 4 * nthreads))) if len(blocks) else []
 
-    # pass 1: bounding boxes of the blocks
-    # (the blocks' samples together about the tool's 2**20 points)
-    sample_points = max(1, (1 << 20) // max(1, len(blocks)))
-    futures = [client.submit(_scan_task, sources, blocks[g], sample_points, key=f"psc-scan-{token}-{j}",
+    # pass 1: bounding boxes of the blocks, and the sample of the tiles' box
+    futures = [client.submit(_scan_task, sources, blocks[g], _sample_stride(n), key=f"psc-scan-{token}-{j}",
                              retries=retries) for j, g in enumerate(groups)]
     scans = client.gather(futures)
     _release(futures)
@@ -707,7 +726,7 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
         _, normal_neighbors = _whole_cloud_box(finite, lo, hi, None, _estimated_normal_neighbors(neighbors == "auto"),
                                                "normals: ")
     # the tiles' box: the library's (tile_grid_box: quantiles that ignore outliers), the tool's,
-    # on the blocks' samples
+    # on the blocks' samples (at most 2**20 points: Tile_box_sample keeps them all)
     lo, hi = _core.tile_grid_box(np.concatenate([s[3] for s in scans]))
     if tile_size is None:
         tile_size = _tile_side(lo, hi, max(4 * nthreads, math.ceil(finite / 500_000)))
@@ -728,11 +747,15 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
         raise RuntimeError("point_set_curvatures.dask: the passes over the files disagree (files modified?)")
 
     def near(i, h):
-        """The blocks whose box meets tile i's halo box."""
+        """The blocks whose box meets tile i's halo box, and a distance from the core below which
+        lie none of the other blocks' points (the largest gap between the core and a block's box
+        along an axis, the least over those blocks; infinite without any)."""
         tile = grid.tile(i, h)
-        box_lo = np.asarray(tile.core_min) - h
-        box_hi = np.asarray(tile.core_max) + h
-        return tile, blocks[np.all((block_hi >= box_lo) & (block_lo <= box_hi), axis=1)]
+        core_lo, core_hi = np.asarray(tile.core_min), np.asarray(tile.core_max)
+        meets = np.all((block_hi >= core_lo - h) & (block_lo <= core_hi + h), axis=1)
+        # (fmax: an empty block's box, inf to -inf, against an infinite side gives NaN terms)
+        gap = np.fmax(np.fmax(block_lo[~meets] - core_hi, core_lo - block_hi[~meets]), 0.0).max(axis=1, initial=0.0)
+        return tile, blocks[meets], float(gap.min()) if len(gap) else math.inf
 
     temporary = []  # files of the normals' pass, removed whatever happens
     try:
@@ -744,8 +767,8 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
         t_normals = time.perf_counter()
 
         def submit(i, h):
-            tile, tile_blocks = near(i, h)
-            return client.submit(_file_tile_task, sources, tile_blocks, tile.core_min, tile.core_max, h, finite,
+            tile, tile_blocks, unread = near(i, h)
+            return client.submit(_file_tile_task, sources, tile_blocks, tile.core_min, tile.core_max, h, unread, finite,
                                  output, kwargs, normals, key=f"psc-tile-{token}-{i}-{h!r}", retries=retries)
 
         report["tile_reports"], report["resubmitted"] = _tile_pass(
@@ -780,7 +803,7 @@ def _tile_pass(client, submit, counts, halo, n, nonfinite):
             result = future.result()
             future.release()
             if isinstance(result, tuple):
-                h = _next_halo(h, result[1], result[2])
+                h = _next_halo(result[1], result[2])
                 new = submit(i, h)
                 pending[new] = (i, h)
                 done.add(new)
@@ -831,9 +854,9 @@ def _estimate_file_normals(client, sources, blocks, near, counts, nonfinite, lo,
         tile_output = normals_output
 
     def submit(i, h):
-        tile, tile_blocks = near(i, h)
-        return client.submit(_file_normal_tile_task, sources, tile_blocks, tile.core_min, tile.core_max, h, finite,
-                             tile_output, neighbors, None if spanning_tree else (kind, target), threads,
+        tile, tile_blocks, unread = near(i, h)
+        return client.submit(_file_normal_tile_task, sources, tile_blocks, tile.core_min, tile.core_max, h, unread,
+                             finite, tile_output, neighbors, None if spanning_tree else (kind, target), threads,
                              key=f"psc-normals-{token}-{i}-{h!r}", retries=retries)
 
     tiles, resubmitted = _tile_pass(client, submit, counts, _first_halo(None, neighbors, initial_halo, lo, hi, finite),

@@ -299,6 +299,7 @@ PYBIND11_MODULE(_core, m)
         py::arg("finite_in_cloud"));
   m.def("tile_box_sample", &tile_box_sample_py, py::arg("points"), py::arg("max_points"));
   m.def("tile_grid_box", &tile_grid_box_py, py::arg("points"));
+  m.def("tile_range", &tile_range_py, py::arg("core_min"), py::arg("core_max"), py::arg("halo"), py::arg("points"));
   m.def("tile_distances", &tile_distances_py, py::arg("core_min"), py::arg("core_max"), py::arg("points"));
   m.def("tile_owns", &tile_owns_py, py::arg("core_min"), py::arg("core_max"), py::arg("points"));
   m.def("estimate_curvatures", &estimate_curvatures, py::arg("method"), py::arg("points"), py::arg("normals"),

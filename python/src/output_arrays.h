@@ -40,10 +40,16 @@ void put3(double* out, std::size_t i, const V& v)
   out[3 * i + 2] = CGAL::to_double(v.z());
 }
 
+// The numpy type of a field's values: doubles, int64 counts, uint8 flags.
+inline const char* numpy_type(CGAL::Point_set_curvatures::Field_type type)
+{
+  using CGAL::Point_set_curvatures::Field_type;
+  return type == Field_type::COUNT ? "<i8" : type == Field_type::FLAG ? "u1" : "<f8";
+}
+
 // The estimates as the arrays of the fields' table (CGAL::Point_set_curvatures::field_descriptions,
-// the rows with a Python key, in its order): (N, 3) doubles for a vector's components, N doubles,
-// int64 counts or uint8 flags otherwise; mean_error only `with_mean_error`. One pass over the
-// estimates.
+// the rows with a Python key, in its order, of numpy_type()): (N, 3) for a vector's components,
+// N otherwise; mean_error only `with_mean_error`. One pass over the estimates.
 inline py::dict estimates_to_dict(const std::vector<Estimate>& e, bool with_mean_error)
 {
   namespace PSC = CGAL::Point_set_curvatures;
@@ -59,40 +65,29 @@ inline py::dict estimates_to_dict(const std::vector<Estimate>& e, bool with_mean
   };
   std::vector<Column> columns;
   py::dict d;
-  double* vector = nullptr;  // the array of the vector being filled
+  char* data = nullptr;  // the array of the field (a vector's: of its first component)
   for(const PSC::Field_description& f : PSC::field_descriptions)
   {
     if(!f.python_key || (f.automatic_scale_only && !with_mean_error))
       continue;
-    Column c{&f};
-    if(f.component >= 0)
+    if(f.component <= 0)
     {
+      std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(n)};
       if(f.component == 0)
-      {
-        auto a = array_n3(n);
-        vector = a.mutable_data();
-        d[f.python_key] = a;
-      }
-      c.real = vector + f.component;
-      c.stride = 3;
-    }
-    else if(f.type == PSC::Field_type::COUNT)
-    {
-      auto a = array_1<std::int64_t>(n);
-      c.count = a.mutable_data();
+        shape.push_back(3);
+      py::array a(py::dtype(numpy_type(f.type)), shape);
+      data = static_cast<char*>(a.mutable_data());
       d[f.python_key] = a;
     }
+    Column c{&f};
+    if(f.type == PSC::Field_type::COUNT)
+      c.count = reinterpret_cast<std::int64_t*>(data);
     else if(f.type == PSC::Field_type::FLAG)
-    {
-      auto a = array_1<std::uint8_t>(n);
-      c.flag = a.mutable_data();
-      d[f.python_key] = a;
-    }
+      c.flag = reinterpret_cast<std::uint8_t*>(data);
     else
     {
-      auto a = array_1<double>(n);
-      c.real = a.mutable_data();
-      d[f.python_key] = a;
+      c.real = reinterpret_cast<double*>(data) + (f.component > 0 ? f.component : 0);
+      c.stride = f.component >= 0 ? 3 : 1;
     }
     columns.push_back(c);
   }
@@ -114,8 +109,8 @@ inline py::dict estimates_to_dict(const std::vector<Estimate>& e, bool with_mean
 }
 
 // The fields' table as the Python module gives it (fields()): per Python key, in the table's
-// order, a dict with its numpy type ("<f8", "<i8", "u1"), its shape per point ((3,) for a
-// vector, () otherwise) and whether it comes with the automatic scale only.
+// order, a dict with its numpy type (numpy_type()), its shape per point ((3,) for a vector, ()
+// otherwise) and whether it comes with the automatic scale only.
 inline py::tuple fields_to_tuple()
 {
   namespace PSC = CGAL::Point_set_curvatures;
@@ -126,7 +121,7 @@ inline py::tuple fields_to_tuple()
       continue;
     py::dict d;
     d["key"] = f.python_key;
-    d["dtype"] = f.type == PSC::Field_type::COUNT ? "<i8" : f.type == PSC::Field_type::FLAG ? "u1" : "<f8";
+    d["dtype"] = numpy_type(f.type);
     d["shape"] = f.component == 0 ? py::make_tuple(3) : py::make_tuple();
     d["automatic_scale_only"] = f.automatic_scale_only;
     fields.append(d);

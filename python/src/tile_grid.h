@@ -142,7 +142,24 @@ py::array_t<T> for_rows_of_tile(const std::vector<double>& lo, const std::vector
   return out;
 }
 
-// Tile::distance_to_core of each row of `points` (NaN for a row with a NaN coordinate).
+// The Tile_range of the tile of core [lo, hi) and `halo` over the rows of `points`: (the mask
+// of the rows taken, their number, the distance to the core of the nearest finite row left out).
+inline py::tuple tile_range_py(const std::vector<double>& lo, const std::vector<double>& hi, double halo,
+                               const py::handle& points)
+{
+  if(lo.size() != 3 || hi.size() != 3)
+    throw py::value_error("tile: core_min and core_max must have 3 coordinates");
+  CGAL::Point_set_curvatures::Tile_range range(
+    CGAL::Point_set_curvatures::Tile(CGAL::Bbox_3(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]), halo));
+  checked_rows(points, "points");
+  const py::array a = py::reinterpret_borrow<py::array>(points);
+  auto mask = array_1<bool>(static_cast<std::size_t>(a.shape(0)));
+  bool* m = mask.mutable_data();
+  for_each_row(a, [&](py::ssize_t i, const double* x) { m[i] = range.take(x[0], x[1], x[2]); });
+  return py::make_tuple(mask, range.finite_taken(), range.nearest_left_out());
+}
+
+// Tile::distance_to_core of each row of `points` (NaN for a row with a non-finite coordinate).
 inline py::array_t<double> tile_distances_py(const std::vector<double>& lo, const std::vector<double>& hi,
                                              const py::handle& points)
 {

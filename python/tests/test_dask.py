@@ -142,24 +142,48 @@ def test_dask_shared_sample_weights(client, cloud):
         psc_dask.estimate_curvatures(client, points, normals, method="pss", radius=0.03, sample_weights=w)
 
 
-def test_dask_far_outlier_and_the_tiling_rules(client, cloud):
+def test_dask_far_outlier_and_the_tiling_rules(client, cloud, monkeypatch):
     """The tiles' rules are the library's (Tile.h), as the tool's: the box ignores a far
-    outlier (quantiles), a tile's range is the points within the halo's distance, its own
-    points those of the half-open core; with the outlier the tiles still give the single run."""
+    outlier (quantiles), a tile's range is the finite points within the halo's distance, its
+    own points those of the half-open core; with an outlier and infinite coordinates the tiles
+    still give the single run."""
     points, normals = cloud[0][:20_000].copy(), cloud[1][:20_000].copy()
     points[123] = (1e6, 0, 0)
-    lo, hi = psc._core.tile_grid_box(points)
+    points[124] = (-np.inf, -2, 1)
+    points[125] = (np.inf, -2, 1)
     finite = points[np.isfinite(points).all(axis=1)]
-    assert np.all(np.asarray(hi) <= np.sort(finite, axis=0)[-2]) and hi[0] < 10
-    assert np.all(np.asarray(lo) >= np.sort(finite, axis=0)[0])
+    lo, hi = psc._core.tile_grid_box(points)
+    # ranks floor(0.001 (m - 1)) and ceil(0.999 (m - 1)) of the m finite points on each axis
+    m = len(finite)
+    ranked = np.sort(finite, axis=0)
+    assert lo == tuple(ranked[int(0.001 * (m - 1))]) and hi == tuple(ranked[int(np.ceil(0.999 * (m - 1)))])
+    assert hi[0] < 10
+    # the box the run takes
+    boxes = []
+
+    class Grid(psc.TileGrid):
+        def __init__(self, box_min, box_max, *args, **kwargs):
+            boxes.append((tuple(box_min), tuple(box_max)))
+            super().__init__(box_min, box_max, *args, **kwargs)
+
+    monkeypatch.setattr(psc_dask, "TileGrid", Grid)
+    single = psc.estimate_curvatures(points, normals, neighbors=30, aso_variant="paper")
+    assert_same(single, psc_dask.estimate_curvatures(client, points, normals, neighbors=30, aso_variant="paper",
+                                                     tile_size=0.5, initial_halo=1e-3))
+    assert boxes == [(lo, hi)]
+    # a tile's own points and range: non-finite points are nobody's and in no range
     t = psc.TileGrid.Tile(0, (0, 0, 0), (1, 1, 1), 0.5)
     q = np.array([[0.5, 0.5, 0.5], [1, 0.5, 0.5], [0, 0, 0], [1.5, 0.5, 0.5], [np.nan, 0, 0], [-2, 0, 0]])
     assert t.owns(q).tolist() == [True, False, True, False, False, False]
     d = t.distances(q)
     assert d[:4].tolist() == [0, 0, 0, 0.5] and np.isnan(d[4]) and d[5] == 2
-    single = psc.estimate_curvatures(points, normals, neighbors=30, aso_variant="paper")
-    assert_same(single, psc_dask.estimate_curvatures(client, points, normals, neighbors=30, aso_variant="paper",
-                                                     tile_size=0.5, initial_halo=1e-3))
+    outer = psc.TileGrid.Tile(0, (-np.inf,) * 3, (0, 0, 0), 1.0)
+    q = np.array([[-np.inf, -1, -1], [-1, -1, -1], [np.inf, -1, -1], [0.5, -1, -1], [3, -1, -1]])
+    assert outer.owns(q).tolist() == [False, True, False, False, False]
+    mask, taken, nearest = psc._core.tile_range(outer.core_min, outer.core_max, outer.halo, q)
+    assert mask.tolist() == [False, True, False, True, False] and taken == 2 and nearest == 3
+    with pytest.raises(ValueError, match="initial_halo must be positive"):
+        psc_dask.estimate_curvatures(client, points, normals, neighbors=30, initial_halo=float("nan"))
 
 
 def test_estimate_tile_halo_too_small(cloud):

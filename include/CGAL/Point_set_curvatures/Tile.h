@@ -69,19 +69,20 @@ struct Tile
            core.ymax() == inf && core.zmax() == inf;
   }
 
-  /// `true` if the point `(x, y, z)` is one of the tile's own points (never for NaN)
+  /// `true` if the point `(x, y, z)` is one of the tile's own points (never for a point with
+  /// a non-finite coordinate: such points are nobody's own, as for `Tile_grid::tile_of()`)
   bool owns(double x, double y, double z) const
   {
     return x >= core.xmin() && x < core.xmax() && y >= core.ymin() && y < core.ymax() &&
-           z >= core.zmin() && z < core.zmax();
+           z >= core.zmin() && z < core.zmax() && std::isfinite(x) && std::isfinite(y) && std::isfinite(z);
   }
 
   /// Euclidean distance from `(x, y, z)` to the core (0 inside; infinite only when the
-  /// distance itself exceeds the largest double: no overflow of the squares; NaN for a NaN
-  /// coordinate, so that such a point is never within a halo)
+  /// distance itself exceeds the largest double: no overflow of the squares; NaN for a point
+  /// with a non-finite coordinate, so that such a point is never within a halo)
   double distance_to_core(double x, double y, double z) const
   {
-    if(std::isnan(x) || std::isnan(y) || std::isnan(z))
+    if(!(std::isfinite(x) && std::isfinite(y) && std::isfinite(z)))
       return std::numeric_limits<double>::quiet_NaN();
     const double d[3] = {std::max({0.0, core.xmin() - x, x - core.xmax()}),
                          std::max({0.0, core.ymin() - y, y - core.ymax()}),
@@ -183,9 +184,8 @@ inline double halo_guess_for_count(const Bbox_3& box, std::size_t n, std::size_t
 /// grows at every retry when `at_least` exceeds the last halo. The drivers (the tool's
 /// `--memory-limit`, Dask) pass the distance to the core of the nearest finite point the
 /// range left out (the least growth that adds a point; a range that left none out is the
-/// whole cloud, see `halo_of_range()`, and is never retried), or twice the last halo where
-/// they do not know that point (Dask's tiles read from files know only the blocks they read).
-/// A NaN `required_halo` gives `at_least`.
+/// whole cloud, see `halo_of_range()`, and is never retried), or a lower bound of it above the
+/// halo where they skipped points unread (`Tile_range`). A NaN `required_halo` gives `at_least`.
 inline double next_halo(double required_halo, double at_least)
 {
   return required_halo > at_least ? required_halo : at_least;
@@ -202,6 +202,62 @@ inline double halo_of_range(double halo, std::size_t finite_in_range, std::size_
 {
   return finite_in_range == finite_in_cloud ? std::numeric_limits<double>::infinity() : halo;
 }
+
+/// \ingroup PkgPointSetCurvaturesRef
+///
+/// A tile's range as a driver gathers it, reading the cloud in input order: `take()` says
+/// whether a point belongs to the range (a finite point at distance `<= halo` from the core),
+/// and the range's rules follow from what was read: `halo()` the halo to estimate it with
+/// (`halo_of_range()`: infinite once it holds every finite point of the cloud) and, after
+/// `Halo_too_small`, `retry_halo()` the halo to gather it again with (`next_halo()` at the
+/// nearest finite point left out, or at `unread` where the driver did not read every point:
+/// the distance from the core beyond which lie the points it skipped).
+class Tile_range
+{
+public:
+  /// The range of `tile` (its core and halo).
+  explicit Tile_range(const Tile& tile) : m_tile(tile) {}
+
+  /// Whether the next point of the cloud belongs to the range.
+  bool take(double x, double y, double z)
+  {
+    const double d = m_tile.distance_to_core(x, y, z);  // (NaN for a non-finite point)
+    if(d <= m_tile.halo)
+    {
+      ++m_finite;
+      return true;
+    }
+    if(d < m_nearest_left_out)
+      m_nearest_left_out = d;
+    return false;
+  }
+
+  /// Notes that the driver skipped points at distance at least `distance` from the core
+  /// (`distance` above the halo: a block of a file it did not read).
+  void skip_beyond(double distance)
+  {
+    if(distance < m_nearest_left_out)
+      m_nearest_left_out = distance;
+  }
+
+  /// the number of points taken (all finite)
+  std::size_t finite_taken() const { return m_finite; }
+  /// the distance to the core of the nearest finite point left out (infinite if none)
+  double nearest_left_out() const { return m_nearest_left_out; }
+  /// `halo_of_range()` of the range, the cloud holding `finite_in_cloud` finite points
+  double halo(std::size_t finite_in_cloud) const { return halo_of_range(m_tile.halo, m_finite, finite_in_cloud); }
+  /// `next_halo()` at the nearest point left out (or skipped), after the range's estimation
+  /// threw `error`.
+  double retry_halo(const Halo_too_small& error) const
+  {
+    return next_halo(error.required_halo(), m_nearest_left_out);
+  }
+
+private:
+  Tile m_tile;
+  std::size_t m_finite = 0;
+  double m_nearest_left_out = std::numeric_limits<double>::infinity();
+};
 
 /// \ingroup PkgPointSetCurvaturesRef
 /// The box of a `Tile_grid` over the points `xyz` (x y z of each point in turn, every

@@ -40,16 +40,24 @@ T to_integer(double v)
   return static_cast<T>(v);
 }
 
-// The values of a row, in order: x y z, then every field of the package's table that the tool
-// writes (CGAL::Point_set_curvatures::field_descriptions, those with a name), as doubles
+// Calls f(d) for every field d of the package's table that the tool writes
+// (CGAL::Point_set_curvatures::field_descriptions, those with a name), in the table's order.
+template <class F>
+constexpr void for_each_tool_field(const F& f)
+{
+  for(const CGAL::Point_set_curvatures::Field_description& d : CGAL::Point_set_curvatures::field_descriptions)
+    if(d.name)
+      f(d);
+}
+
+// The values of a row, in order: x y z, then every field that the tool writes, as doubles
 // (counts and flags too: exact), whatever the columns chosen; then, with colours, red green
 // blue (uchar). A value is found by its field's name (output_value_index()), never by position.
 namespace output_values {
 constexpr int count_fields()
 {
   int n = 0;
-  for(const CGAL::Point_set_curvatures::Field_description& f : CGAL::Point_set_curvatures::field_descriptions)
-    n += f.name ? 1 : 0;
+  for_each_tool_field([&n](const CGAL::Point_set_curvatures::Field_description&) { ++n; });
   return n;
 }
 } // namespace output_values
@@ -103,9 +111,9 @@ void fill_row(double x, double y, double z, const Estimate& e, Output_row& r)
   r.value[1] = y;
   r.value[2] = z;
   int v = 3;  // (the table's order: output_value_index())
-  for(const CGAL::Point_set_curvatures::Field_description& f : CGAL::Point_set_curvatures::field_descriptions)
-    if(f.name)
-      r.value[v++] = CGAL::Point_set_curvatures::field_value(e, f);
+  for_each_tool_field([&](const CGAL::Point_set_curvatures::Field_description& f) {
+    r.value[v++] = CGAL::Point_set_curvatures::field_value(e, f);
+  });
   r.status = static_cast<int>(e.status);
 }
 
