@@ -210,8 +210,8 @@ inline double halo_of_range(double halo, std::size_t finite_in_range, std::size_
 /// and the range's rules follow from what was read: `halo()` the halo to estimate it with
 /// (`halo_of_range()`: infinite once it holds every finite point of the cloud) and, after
 /// `Halo_too_small`, `retry_halo()` the halo to gather it again with (`next_halo()` at the
-/// nearest finite point left out, or at `unread` where the driver did not read every point:
-/// the distance from the core beyond which lie the points it skipped).
+/// nearest finite point left out, or nearer where the driver did not read every point: the
+/// distance given to `skip_beyond()`, below which lie none of the points it skipped).
 class Tile_range
 {
 public:
