@@ -967,12 +967,6 @@ class TileGrid:
             hi = np.asarray(self.core_max) + self.halo
             return np.all((p >= lo) & (p <= hi), axis=1)
 
-        def distances(self, points):
-            """The distance of each row of ``points`` to the core (0 inside; NaN for a row with
-            a NaN coordinate), as the library computes it (``Tile::distance_to_core``): the
-            points of the tile's range are those at distance ``<= halo``."""
-            return _core.tile_distances(self.core_min, self.core_max, _array(points, "points"))
-
         def owns(self, points):
             """Boolean mask of the rows of ``points`` that are the tile's own points (inside the
             half-open core, ``Tile::owns``)."""

@@ -349,10 +349,11 @@ def _scan_task(sources, blocks, stride):
 
 def _sample_stride(rows):
     """The stride of the tiles' box sample over ``rows`` points: the least power of two that
-    keeps at most 2**20 of them, as the library's Tile_box_sample keeps of the finite points
-    (the same sample, hence the tool's box, when every point is finite)."""
+    keeps at most TILE_BOX_SAMPLE_POINTS (2**20) of them, as the library's Tile_box_sample
+    keeps of the finite points (the same sample, hence the tool's box, when every point is
+    finite)."""
     stride = 1
-    while -(-rows // stride) > (1 << 20):
+    while -(-rows // stride) > _core.TILE_BOX_SAMPLE_POINTS:
         stride *= 2
     return stride
 
@@ -726,7 +727,7 @@ def estimate_curvatures_file(client, input_path, output_path, *, method="aso", r
         _, normal_neighbors = _whole_cloud_box(finite, lo, hi, None, _estimated_normal_neighbors(neighbors == "auto"),
                                                "normals: ")
     # the tiles' box: the library's (tile_grid_box: quantiles that ignore outliers), the tool's,
-    # on the blocks' samples (at most 2**20 points: Tile_box_sample keeps them all)
+    # on the blocks' samples (at most TILE_BOX_SAMPLE_POINTS: Tile_box_sample keeps them all)
     lo, hi = _core.tile_grid_box(np.concatenate([s[3] for s in scans]))
     if tile_size is None:
         tile_size = _tile_side(lo, hi, max(4 * nthreads, math.ceil(finite / 500_000)))

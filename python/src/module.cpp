@@ -297,10 +297,9 @@ PYBIND11_MODULE(_core, m)
   m.def("next_halo", &CGAL::Point_set_curvatures::next_halo, py::arg("required"), py::arg("at_least"));
   m.def("halo_of_range", &CGAL::Point_set_curvatures::halo_of_range, py::arg("halo"), py::arg("finite_in_range"),
         py::arg("finite_in_cloud"));
-  m.def("tile_box_sample", &tile_box_sample_py, py::arg("points"), py::arg("max_points"));
   m.def("tile_grid_box", &tile_grid_box_py, py::arg("points"));
+  m.attr("TILE_BOX_SAMPLE_POINTS") = CGAL::Point_set_curvatures::Tile_box_sample::default_max_points;
   m.def("tile_range", &tile_range_py, py::arg("core_min"), py::arg("core_max"), py::arg("halo"), py::arg("points"));
-  m.def("tile_distances", &tile_distances_py, py::arg("core_min"), py::arg("core_max"), py::arg("points"));
   m.def("tile_owns", &tile_owns_py, py::arg("core_min"), py::arg("core_max"), py::arg("points"));
   m.def("estimate_curvatures", &estimate_curvatures, py::arg("method"), py::arg("points"), py::arg("normals"),
         py::arg("radius"), py::arg("neighbors"), py::arg("threads"), py::arg("progress"), py::arg("options"),

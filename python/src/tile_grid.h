@@ -95,50 +95,38 @@ private:
 };
 
 // The rules every driver of tiles follows (Tile.h), for point_set_curvatures.dask: the tiles'
-// box, a tile's points, and the halo of a range.
-
-// The Tile_box_sample of the rows of `points` (at most `max_points`).
-inline CGAL::Point_set_curvatures::Tile_box_sample sample_of(const py::handle& points, std::size_t max_points)
-{
-  checked_rows(points, "points");
-  CGAL::Point_set_curvatures::Tile_box_sample sample(max_points);
-  for_each_row(py::reinterpret_borrow<py::array>(points),
-               [&](py::ssize_t, const double* x) { sample.add(x[0], x[1], x[2]); });
-  return sample;
-}
-
-// The sample of the finite rows of `points` (Tile_box_sample with at most `max_points`), as
-// an (M, 3) array.
-inline py::array_t<double> tile_box_sample_py(const py::handle& points, std::size_t max_points)
-{
-  const CGAL::Point_set_curvatures::Tile_box_sample sample = sample_of(points, max_points);
-  auto out = array_n3(sample.size());
-  std::copy(sample.coordinates().begin(), sample.coordinates().end(), out.mutable_data());
-  return out;
-}
+// box, a tile's range and own points.
 
 // The box of the tiles over the rows of `points` (tile_grid_box() of their Tile_box_sample,
 // the tool's box for the same cloud): ((xmin, ymin, zmin), (xmax, ymax, zmax)).
 inline py::tuple tile_grid_box_py(const py::handle& points)
 {
-  const CGAL::Bbox_3 b =
-    sample_of(points, CGAL::Point_set_curvatures::Tile_box_sample::default_max_points).box();
+  checked_rows(points, "points");
+  CGAL::Point_set_curvatures::Tile_box_sample sample;
+  for_each_row(py::reinterpret_borrow<py::array>(points),
+               [&](py::ssize_t, const double* x) { sample.add(x[0], x[1], x[2]); });
+  const CGAL::Bbox_3 b = sample.box();
   return py::make_tuple(py::make_tuple(b.xmin(), b.ymin(), b.zmin()), py::make_tuple(b.xmax(), b.ymax(), b.zmax()));
 }
 
-// `f(tile, x)` for each row x of `points`, the tile's core [lo, hi), as an array of T.
-template <class T, class F>
-py::array_t<T> for_rows_of_tile(const std::vector<double>& lo, const std::vector<double>& hi, const py::handle& points,
-                                const F& f)
+// The tile of core [lo, hi) and `halo`.
+inline CGAL::Point_set_curvatures::Tile tile_of_core(const std::vector<double>& lo, const std::vector<double>& hi,
+                                                     double halo)
 {
   if(lo.size() != 3 || hi.size() != 3)
     throw py::value_error("tile: core_min and core_max must have 3 coordinates");
-  const CGAL::Point_set_curvatures::Tile tile(CGAL::Bbox_3(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]), 0);
+  return CGAL::Point_set_curvatures::Tile(CGAL::Bbox_3(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]), halo);
+}
+
+// `f(x)` for each row x of `points`, in order, as an array of T.
+template <class T, class F>
+py::array_t<T> for_each_row_of(const py::handle& points, const F& f)
+{
   checked_rows(points, "points");
   const py::array a = py::reinterpret_borrow<py::array>(points);
   auto out = array_1<T>(static_cast<std::size_t>(a.shape(0)));
   T* o = out.mutable_data();
-  for_each_row(a, [&](py::ssize_t i, const double* x) { o[i] = f(tile, x); });
+  for_each_row(a, [&](py::ssize_t i, const double* x) { o[i] = f(x); });
   return out;
 }
 
@@ -147,34 +135,17 @@ py::array_t<T> for_rows_of_tile(const std::vector<double>& lo, const std::vector
 inline py::tuple tile_range_py(const std::vector<double>& lo, const std::vector<double>& hi, double halo,
                                const py::handle& points)
 {
-  if(lo.size() != 3 || hi.size() != 3)
-    throw py::value_error("tile: core_min and core_max must have 3 coordinates");
-  CGAL::Point_set_curvatures::Tile_range range(
-    CGAL::Point_set_curvatures::Tile(CGAL::Bbox_3(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]), halo));
-  checked_rows(points, "points");
-  const py::array a = py::reinterpret_borrow<py::array>(points);
-  auto mask = array_1<bool>(static_cast<std::size_t>(a.shape(0)));
-  bool* m = mask.mutable_data();
-  for_each_row(a, [&](py::ssize_t i, const double* x) { m[i] = range.take(x[0], x[1], x[2]); });
+  CGAL::Point_set_curvatures::Tile_range range(tile_of_core(lo, hi, halo));
+  const auto mask = for_each_row_of<bool>(points, [&range](const double* x) { return range.take(x[0], x[1], x[2]); });
   return py::make_tuple(mask, range.finite_taken(), range.nearest_left_out());
-}
-
-// Tile::distance_to_core of each row of `points` (NaN for a row with a non-finite coordinate).
-inline py::array_t<double> tile_distances_py(const std::vector<double>& lo, const std::vector<double>& hi,
-                                             const py::handle& points)
-{
-  return for_rows_of_tile<double>(lo, hi, points, [](const CGAL::Point_set_curvatures::Tile& t, const double* x) {
-    return t.distance_to_core(x[0], x[1], x[2]);
-  });
 }
 
 // Tile::owns of each row of `points`.
 inline py::array_t<bool> tile_owns_py(const std::vector<double>& lo, const std::vector<double>& hi,
                                       const py::handle& points)
 {
-  return for_rows_of_tile<bool>(lo, hi, points, [](const CGAL::Point_set_curvatures::Tile& t, const double* x) {
-    return t.owns(x[0], x[1], x[2]);
-  });
+  const CGAL::Point_set_curvatures::Tile tile = tile_of_core(lo, hi, 0);
+  return for_each_row_of<bool>(points, [&tile](const double* x) { return tile.owns(x[0], x[1], x[2]); });
 }
 
 } // namespace psc_py

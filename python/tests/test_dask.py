@@ -175,8 +175,8 @@ def test_dask_far_outlier_and_the_tiling_rules(client, cloud, monkeypatch):
     t = psc.TileGrid.Tile(0, (0, 0, 0), (1, 1, 1), 0.5)
     q = np.array([[0.5, 0.5, 0.5], [1, 0.5, 0.5], [0, 0, 0], [1.5, 0.5, 0.5], [np.nan, 0, 0], [-2, 0, 0]])
     assert t.owns(q).tolist() == [True, False, True, False, False, False]
-    d = t.distances(q)
-    assert d[:4].tolist() == [0, 0, 0, 0.5] and np.isnan(d[4]) and d[5] == 2
+    mask, taken, nearest = psc._core.tile_range(t.core_min, t.core_max, t.halo, q)  # (distances 0 0 0 0.5 NaN 2)
+    assert mask.tolist() == [True, True, True, True, False, False] and taken == 4 and nearest == 2
     outer = psc.TileGrid.Tile(0, (-np.inf,) * 3, (0, 0, 0), 1.0)
     q = np.array([[-np.inf, -1, -1], [-1, -1, -1], [np.inf, -1, -1], [0.5, -1, -1], [3, -1, -1]])
     assert outer.owns(q).tolist() == [False, True, False, False, False]
