@@ -2453,6 +2453,87 @@ TEST_CASE("Automatic scale: exact on a plane and on a sphere, the count and erro
                      .mean_curvature_error));
 }
 
+TEST_CASE("Automatic scale: the passes' progress in proportion to their time", "[automatic_scale][callback]")
+{
+  typedef PSC::internal::Automatic_scale_progress Progress;
+  double now = 0;
+  std::vector<double> seen;
+  const auto record = [&seen](double f) {
+    seen.push_back(f);
+    return true;
+  };
+  const auto clock = [&now]() { return now; };
+  const double c = Progress::climber_cost;
+  // q: the share of the points visited that the pass sent on, from a prior of a few points
+  const auto q = [](double sent, double visited) {
+    return (sent + Progress::prior_sent_on * Progress::prior_points) / (visited + Progress::prior_points);
+  };
+  Progress progress(record, clock);
+  // the first pass (1000 points, another pass after it): its fraction over 1 + q c (its time is
+  // not known yet)
+  const auto first = progress.start_pass(1000, false);
+  REQUIRE(first.points);
+  for(int i = 0; i < 100; ++i)
+    ++progress.sent_on();
+  now = 4;
+  first.points(0.4);
+  CHECK(seen.back() == Approx(0.4 / (1 + q(100, 400) * c)));
+  for(int i = 0; i < 150; ++i)
+    ++progress.sent_on();
+  now = 10;
+  first.points(1.0);
+  const double first_share = 1 / (1 + q(250, 1000) * c);
+  CHECK(seen.back() == Approx(first_share));
+  // the last pass over the 250 points sent on: at its start, its prior (c points of the first
+  // pass each: 250 c 10 / 1000 s)
+  const auto second = progress.start_pass(250, true);
+  second.points(0.0);
+  CHECK(seen.back() == Approx(std::max(first_share, 10 / (10 + 250 * c * 10 / 1000.0))));
+  // from 5% of it on, its own rate: half of it in 20 s, the whole in 40 s
+  now = 30;
+  second.points(0.5);
+  CHECK(seen.back() == Approx(30.0 / 50));
+  // never less than reported: slower than its rate said (half of it in 50 s)
+  now = 60;
+  CHECK(progress.fraction(0.5) == Approx(60.0 / 110));
+  second.points(0.5);
+  CHECK(seen.back() == Approx(30.0 / 50));
+  now = 70;
+  second.points(1.0);
+  CHECK(seen.back() == 1.0);
+  CHECK(std::is_sorted(seen.begin(), seen.end()));
+
+  // an area pass first (2 s): the points' prior is 1 / area_cost of it
+  seen.clear();
+  now = 0;
+  Progress with_areas(record, clock);
+  const auto pass = with_areas.start_pass(1000, false);
+  now = 1;
+  pass.areas(0.5);
+  CHECK(seen.back() == Approx(1.0 / (2 * (1 + (1 + q(0, 0) * c) / Progress::area_cost))));
+  now = 2;
+  pass.areas(1.0);
+  now = 3;  // its first report after 1 s of set-up (no point sent on yet: the prior share)
+  pass.points(0.0);
+  const double points_prior = 2 / Progress::area_cost;
+  CHECK(seen.back() == Approx(3 / (2 + (1 + points_prior) * (1 + q(0, 0) * c))));
+  now = 12;  // a fifth of the points in 9 s more, none sent on: 45 s a whole pass from there
+  pass.points(0.2);
+  CHECK(seen.back() == Approx(12 / (2 + (10 + 0.8 * 45) * (1 + q(0, 200) * c))));
+
+  // a first pass that sends nothing on is the whole; without a callback, nothing to report
+  Progress alone(record);
+  alone.start_pass(10, false).points(0.5);
+  CHECK(seen.back() == Approx(0.5 / (1 + q(0, 5) * c)));
+  CHECK(alone.finish());
+  CHECK(seen.back() == 1.0);
+  Progress silent{std::function<bool(double)>()};
+  const auto none = silent.start_pass(10, false);
+  CHECK_FALSE(none.points);
+  CHECK_FALSE(none.areas);
+  CHECK(silent.finish());
+}
+
 TEST_CASE("Automatic scale: sequential == parallel, tiles == whole, normals too", "[aso][automatic_scale][tile]")
 {
   const auto pts = noisy_height_field(40, 0.3, 2.0, 60, 5);

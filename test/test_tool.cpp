@@ -11,6 +11,7 @@
 #include "test_support.h"
 
 #include "progress_line.h"
+#include "tile_pass_progress.h"
 
 #include <CGAL/Point_set_curvatures/estimators.h>
 #include <CGAL/Point_set_curvatures/field_descriptions.h>
@@ -3822,6 +3823,56 @@ TEST_CASE("tool: SIGTERM during a long tiled run exits 143 and leaves no file")
 // Issue 28, item 12: the progress bar's line (drawn on a terminal only, redrawn twice a second
 // by a timer even when a phase reports no progress): the elapsed time, and an ETA once a
 // fraction of at least 1% is known and a second has passed.
+// Issue 43, item 4: a pass over the tiles is one progress line whose fraction follows the time
+// expected (tile_pass_progress.h), so that its ETA holds from the first tiles on.
+TEST_CASE("tool: the fraction of a pass over the tiles follows the time the tiles take")
+{
+  double now = 0;
+  // three tiles of 100 own points, one of 50; a read of the file took 1 s (the density pass)
+  psc_tool::Tile_pass_progress pass({100, 100, 100, 50}, 1.0, [&now]() { return now; });
+  const double prior = psc_tool::Tile_pass_progress::estimation_prior;
+  pass.begin_read(0);
+  CHECK(pass.at(0.0) == Approx(0.0));
+  now = 0.5;  // half the first read in 0.5 s: nothing measured yet, 4 reads and estimations to go
+  CHECK(pass.at(0.5) == Approx(0.5 / (0.5 + 0.5 * 1 + prior + 3 * 1)));  // (the estimations: `prior` reads in all)
+  now = 1;
+  pass.begin_estimation(0);
+  now = 1.5;  // its first report after 0.5 s of set-up
+  CHECK(pass.at(0.0) >= 0.5 / (1 + prior + 3));  // (never less than reported)
+  now = 5.5;  // a tenth in 4 s: 40 s the whole from its first report, 40.5 s the tile's estimation
+  pass.at(0.1);
+  now = 9.5;
+  CHECK(pass.at(0.2) == Approx(9.5 / (9.5 + 0.8 * 40 + 3 * 1 + (40.5 / 100) * 250)));
+  now = 41.5;
+  CHECK(pass.at(1.0) == Approx(41.5 / (41.5 + 3 * 1 + 0.405 * 250)));
+  pass.end_tile();
+  // from the first tile done on: 1 s a read, 0.405 s a point
+  now = 42;
+  pass.begin_read(1);
+  CHECK(pass.at(0.0) == Approx(42 / (42 + 1 + 40.5 + 2 * 1 + 0.405 * 150)));
+  // a tile read again (its halo grew): its refused try is time the pass took, never a step back;
+  // the reads are those of the tiles done (not the current one's as well)
+  now = 43;
+  pass.begin_estimation(1);
+  const double before = pass.at(0.0);
+  CHECK(before == Approx(43 / (43 + 40.5 + 2 * 1 + 0.405 * 150)));
+  now = 50;
+  pass.begin_read(1);
+  CHECK(pass.at(0.0) >= before);
+  now = 51;
+  pass.begin_estimation(1);
+  pass.at(0.0);
+  now = 91.5;
+  CHECK(pass.at(1.0) < 1.0);  // (the others to come)
+  pass.end_tile();
+  now = 92;
+  pass.begin_read(2);
+  CHECK(pass.at(0.0) < 1.0);
+  // no tile: the whole pass at once
+  psc_tool::Tile_pass_progress empty({}, 1.0, [&now]() { return now; });
+  CHECK(empty.at(1.0) == 1.0);
+}
+
 TEST_CASE("tool: the progress line shows the elapsed time, an ETA once a fraction is known, at one width")
 {
   using psc_tool::progress_line;
@@ -3841,6 +3892,12 @@ TEST_CASE("tool: the progress line shows the elapsed time, an ETA once a fractio
   for(const auto& fs : {std::make_pair(0.0, 0.0), std::make_pair(0.5, 150.0), std::make_pair(0.01, 100.0),
                         std::make_pair(1.0, 20.0), std::make_pair(0.999, 5e4)})
     CHECK(progress_line("curvatures", fs.first, fs.second).size() == frozen.size());
+  // a pass over the tiles: its step after the line, padded to the phase's longest
+  const std::string step = progress_line("curvatures", 0.5, 150.0, "tile 3/12 read", 20);
+  CHECK(step.size() == frozen.size() - 10 + 21);
+  CHECK(step.find("ETA 2 min 30 s") != std::string::npos);
+  CHECK(step.find(" tile 3/12 read      ") == frozen.size() - 10);
+  CHECK(progress_line("curvatures", 0.5, 150.0, "tile 3/9 curvatures", 19).size() <= 88);
 
   // not on a terminal (stderr is a file here): no bar, no '\r', as before
   write_xyz(file("bar.xyz"), sphere(500, 1.0));

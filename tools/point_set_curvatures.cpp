@@ -166,6 +166,7 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
     tiling.halo = PSC::halo_for_radius(scale.radius);
   tiling.temporary_prefix = temporary_prefix(o.output);
   tiling.phase = [&c](const std::string& name) { return c.progress.phase(name); };
+  tiling.step = [&c](const std::string& name) { c.progress.step(name); };
   tiling.interrupted = []() { return interrupted != 0; };
   // a limit making many tiles is said at once on a terminal (the run may be long), else with
   // the other warnings at the end

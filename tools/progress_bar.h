@@ -23,7 +23,9 @@
 
 namespace psc_tool {
 
-// One line per phase on a terminal ("reading     [#######.....]  58%   1.2 s  ETA 1 s"),
+// One line per phase on a terminal ("reading     [#######.....]  58%   1.2 s  ETA 1 s", the
+// time left at the rate since the phase's first report; a
+// pass over the tiles is one phase, its steps named after it: "... ETA 3 min 10 s  tile 2/9 read"),
 // redrawn at every new percent and, from a timer thread, twice a second: the elapsed time and
 // the ETA move on while a phase reports no progress for long (a radius covering the whole
 // cloud). Nothing is drawn when stderr is not a terminal, and then no thread is started.
@@ -62,8 +64,11 @@ public:
       std::lock_guard<std::mutex> lock(m_mutex);
       finish_locked();
       m_name = name;
+      m_label.clear();
+      m_label_width = 0;
       current_phase = name;
       m_start = std::chrono::steady_clock::now();
+      m_first_seconds = -1;
       m_fraction = 0;
       m_last = -1;
       m_active = true;
@@ -75,11 +80,31 @@ public:
       if(m_enabled && percent_of(fraction) != m_last)
       {
         std::lock_guard<std::mutex> lock(m_mutex);
+        if(m_first_seconds < 0)
+        {
+          m_first_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
+          m_first_fraction = std::isfinite(fraction) ? std::max(0.0, std::min(1.0, fraction)) : 0.0;
+        }
         m_fraction = fraction;
         draw_locked(false);
       }
       return !interrupted;
     };
+  }
+
+  // Names a step of the current phase (a tile's read or estimation in a pass over the tiles):
+  // shown after the phase's line, named as the phase an interruption stopped, and a phase
+  // for the test hook (interruption.h).
+  void step(const std::string& label)
+  {
+    {
+      std::lock_guard<std::mutex> lock(m_mutex);
+      m_label = label;
+      m_label_width = std::max(m_label_width, label.size());
+      current_phase = label;
+      draw_locked(true);
+    }
+    test_signal_at_phase_start(label);
   }
 
   // Prints `line` at once above the bar, which goes on below it; false (nothing printed)
@@ -125,7 +150,12 @@ private:
       return;
     m_last = percent;
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
-    std::fprintf(stderr, "\r%s", progress_line(m_name, f, seconds).c_str());
+    // the time left at the rate since the first report (the set-up before it, a reader's or a
+    // search's, tells nothing of what is left)
+    const double eta = m_first_seconds >= 0 && f > m_first_fraction
+                         ? (seconds - m_first_seconds) * (1 - f) / (f - m_first_fraction)
+                         : -1;
+    std::fprintf(stderr, "\r%s", progress_line(m_name, f, seconds, m_label, m_label_width, eta).c_str());
     std::fflush(stderr);
     m_drawn = true;
   }
@@ -153,8 +183,11 @@ private:
   bool m_stop = false;
   bool m_active = false;  // a phase is running (between phase() and finish())
   std::string m_name;
+  std::string m_label;  // the step's (step()), shown after the line
+  std::size_t m_label_width = 0;  // the longest label of the phase
   std::chrono::steady_clock::time_point m_start;
   double m_fraction = 0;
+  double m_first_seconds = -1, m_first_fraction = 0;  // the phase's first report: its time and fraction
   std::atomic<int> m_last{-1};  // the percent drawn last (read without the lock by the callbacks)
   bool m_drawn = false;
 };

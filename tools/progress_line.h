@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <string>
 
@@ -35,20 +36,30 @@ inline std::string eta_text(double seconds)
 // percentage, the elapsed time and, once a fraction of at least 1% is known and a second has
 // passed, the estimated time left (the time so far scaled by what remains). The lines of a
 // phase have the same width, so that a line drawn over an earlier one (after "\r") leaves
-// nothing of it.
-inline std::string progress_line(const std::string& name, double fraction, double seconds)
+// nothing of it: a step's `label` (the tile a pass over the tiles is at) follows, padded to
+// `label_width`, the longest of the phase's so far (the bar then shorter, 20 characters, so
+// that "tile 3/9 curvatures" keeps the line within 88 columns).
+// `eta`, if not negative, is the time left to show in place of that estimate (once a fraction of
+// at least 1% is known and a second has passed).
+inline std::string progress_line(const std::string& name, double fraction, double seconds,
+                                 const std::string& label = std::string(), std::size_t label_width = 0,
+                                 double eta = -1)
 {
   const double f = std::isfinite(fraction) ? std::max(0.0, std::min(1.0, fraction)) : 0.0;
   const int percent = static_cast<int>(100 * f);
-  const int width = 30, filled = percent * width / 100;
-  std::string eta;
+  const int width = label.empty() && label_width == 0 ? 30 : 20;  // (a step: room for it)
+  const int filled = percent * width / 100;
+  std::string eta_shown;
   if(f >= 0.01 && f < 1 && seconds >= 1)
-    eta = "ETA " + eta_text(seconds * (1 - f) / f);
+    eta_shown = "ETA " + eta_text(eta >= 0 ? eta : seconds * (1 - f) / f);
   char text[256];
   std::snprintf(text, sizeof text, "%-12s [%s%s] %3d%% %7.1f s  %-16s", name.c_str(),
                 std::string(filled, '#').c_str(), std::string(width - filled, '.').c_str(), percent,
-                std::max(0.0, seconds), eta.c_str());
-  return text;
+                std::max(0.0, seconds), eta_shown.c_str());
+  std::string line = text;
+  if(label_width > 0 || !label.empty())
+    line += " " + label + std::string(label_width > label.size() ? label_width - label.size() : 0, ' ');
+  return line;
 }
 
 } // namespace psc_tool

@@ -5,6 +5,8 @@
 
 #include "tiled_run.h"
 
+#include "tile_pass_progress.h"
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -478,28 +480,37 @@ Tiled_report visit_tiles(const std::string& path, const Read_options& options, c
       }
   }
 
-  // false for a tile whose core holds no point by the density (the first tile also writes
-  // the rows of the non-finite points)
-  const auto may_own_points = [&](std::size_t t) {
-    double b[3], e[3];
-    tile_box(grid, t, lo, hi, 0, b, e);
-    return t == 0 || density.at_most(b, e) > 0;
-  };
-  if(tiling.grid_chosen)
-  {
-    // the tiles with own points (as counted by the loop below)
-    std::size_t tiles = 0;
-    for(std::size_t t = 0; t < grid.size(); ++t)
-      tiles += may_own_points(t);
-    tiling.grid_chosen(tiles, report.few_tiles_grid, report.few_tiles_points);
-  }
-
-  // 2. The tiles, each read from the file with its halo and visited. Non-finite points are
-  // nobody's own: the first tile takes them as its own.
+  // The tiles visited: those whose core holds a point by the density (and the first tile, which
+  // also writes the rows of the non-finite points), with their own points by the density.
+  std::vector<std::size_t> visited;
+  std::vector<double> own_points;
   for(std::size_t t = 0; t < grid.size(); ++t)
   {
-    if(!may_own_points(t))
-      continue;
+    double b[3], e[3];
+    tile_box(grid, t, lo, hi, 0, b, e);
+    const double own = double(density.at_most(b, e));
+    if(t == 0 || own > 0)
+    {
+      visited.push_back(t);
+      own_points.push_back(own);
+    }
+  }
+  if(tiling.grid_chosen)
+    tiling.grid_chosen(visited.size(), report.few_tiles_grid, report.few_tiles_points);
+
+  // 2. The tiles, each read from the file with its halo and visited. Non-finite points are
+  // nobody's own: the first tile takes them as its own. One progress line for the pass, its
+  // fraction in proportion to the time expected (tile_pass_progress.h).
+  Tile_pass_progress pass_progress(own_points, report.density_seconds);
+  const Progress pass = tiling.phase(tiling.estimate_phase);
+  const auto step = [&](const std::string& name) {
+    if(tiling.step)
+      tiling.step(name);
+  };
+  const Progress step_progress = pass ? Progress([&](double f) { return pass(pass_progress.at(f)); }) : Progress();
+  for(std::size_t v = 0; v < visited.size(); ++v)
+  {
+    const std::size_t t = visited[v];
     const std::string name = cat("tile ", t + 1, "/", grid.size());
     halo = first_halo;  // each tile grows its own (by count: an outlier needs a large one)
     for(;;)
@@ -526,7 +537,9 @@ Tiled_report visit_tiles(const std::string& path, const Read_options& options, c
           a.reserve(expected);
         Read_options o = options;
         o.chunk_points = 1 << 16;
-        o.progress = tiling.phase(name + " read");
+        pass_progress.begin_read(v);
+        step(name + " read");
+        o.progress = step_progress;
         o.chunk = [&](const Point_cloud& c) {
           points.attributes.resize(c.attributes.size());
           for(std::size_t k = 0; k < c.size(); ++k)
@@ -549,7 +562,10 @@ Tiled_report visit_tiles(const std::string& path, const Read_options& options, c
       }
       report.read_seconds += seconds_since(read_start);
       if(own_count == 0)
+      {
+        pass_progress.end_tile(false);
         break;
+      }
       if(with_normals && points.normals.size() != points.xyz.size())
         throw Error(cat(in_quotes(path), ": internal error: normals missing in a tile"));
       const auto estimate_start = std::chrono::steady_clock::now();
@@ -560,7 +576,9 @@ Tiled_report visit_tiles(const std::string& path, const Read_options& options, c
       const bool whole_cloud = std::isinf(halo);
       try
       {
-        visit(points, own, grid.tile(t, halo), tiling.phase(name + " " + tiling.estimate_phase));
+        pass_progress.begin_estimation(v);
+        step(name + " " + tiling.estimate_phase);
+        visit(points, own, grid.tile(t, halo), step_progress);
       }
       catch(const PSC::Halo_too_small& e)
       {
@@ -577,6 +595,7 @@ Tiled_report visit_tiles(const std::string& path, const Read_options& options, c
         continue;  // read the tile again with the larger halo
       }
       report.estimate_seconds += seconds_since(estimate_start);
+      pass_progress.end_tile();
       report.largest_range = std::max(report.largest_range, range);
       report.halo = std::max(report.halo, halo);
       ++report.tiles;

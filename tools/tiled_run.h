@@ -82,8 +82,11 @@ struct Tiling
   std::size_t neighbors = 0;   // by count (halo unused): the tiles start with density_halo()
   // (a tile's halo grows when the estimator throws Halo_too_small)
   std::string temporary_prefix;  // the rows' temporary file is named prefix + "tiles-XXXXXX"
-  // starts a progress phase (the reads, the estimations) and returns its callback
+  // starts a progress phase (the density pass; the pass over the tiles, named estimate_phase)
+  // and returns its callback
   std::function<Progress(const std::string&)> phase;
+  // names a step of the pass over the tiles ("tile 3/8 read", "tile 3/8 curvatures")
+  std::function<void(const std::string&)> step;
   // called after every tile; true to cancel (Cancelled is thrown)
   std::function<bool()> interrupted;
   // The bytes per point of a tile with its halo (0: bytes_per_point() of the attributes read,
@@ -92,7 +95,8 @@ struct Tiling
   // Normals by input index (3 per point), given to the tiles of a file without normals: those
   // estimated in a first pass (tiled_normals.h).
   const std::vector<double>* normals = nullptr;
-  // the name of a tile's estimation phase in the progress line ("tile 3/8 curvatures")
+  // the name of the pass over the tiles in the progress line, and of a tile's estimation step
+  // ("tile 3/8 curvatures")
   std::string estimate_phase = "curvatures";
   // called once the tile grid is chosen, before the tiles: its size, and the finest grid of
   // at most Tiled_report::few_tiles tiles (its size, the most points a tile of it reads)

@@ -64,6 +64,7 @@
 #ifndef CGAL_POINT_SET_CURVATURES_INTERNAL_AUTOMATIC_SCALE_H
 #define CGAL_POINT_SET_CURVATURES_INTERNAL_AUTOMATIC_SCALE_H
 
+#include <CGAL/Point_set_curvatures/internal/automatic_scale_progress.h>
 #include <CGAL/Point_set_curvatures/internal/estimate_at_every_point.h>
 #include <CGAL/Point_set_curvatures/internal/estimation_driver.h>
 #include <CGAL/Point_set_curvatures/internal/knn_neighborhoods.h>
@@ -73,6 +74,7 @@
 #include <CGAL/Point_set_curvatures/internal/quadric_fit.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -397,6 +399,14 @@ struct Scale_ladder
   // gate's points ask for the next rung, the others kept the top rung of their pass.
   std::size_t climb_count() const { return gate ? 2 * largest : largest; }
   bool climbs(const Scale_choice& c) const { return c.found && !final_pass && c.count >= climb_count(); }
+  // Counts the points the pass sends on, as it goes (the passes' progress,
+  // automatic_scale_progress.h); null: not counted. Results do not depend on it.
+  std::atomic<std::size_t>* sent_on = nullptr;
+  void count_sent_on() const
+  {
+    if(sent_on)
+      sent_on->fetch_add(1, std::memory_order_relaxed);
+  }
   // The first pass's test sends the point on to the next pass (its count, 2 smallest, marks it;
   // that pass's neighbourhood is automatic_scale_pass_growth times the smallest).
   void send_on(Scale_choice& c) const
@@ -857,6 +867,7 @@ struct Automatic_scale_estimator : Estimator_base
       return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
     if(ladder.climbs(c))
     {
+      ladder.count_sent_on();
       // to be replaced by the next pass's estimate (or NOT_COMPUTED if it is cancelled)
       Local_estimate provisional;
       provisional.status = Curvature_estimate_status::VALID;
@@ -895,45 +906,51 @@ struct Automatic_scale_estimator : Estimator_base
 // looks at the rungs from the bottom up and stops at the first that disagrees, so a point that
 // stopped below the top rung of its pass has its choice on the whole ladder). Smooth surfaces
 // without noise stop at the first pass. A point's result does not depend on the pass that computed
-// it being shared with other points (the tiles, the concurrency). `run(ladder, visit,
-// progress_start, progress_size, cancelled)` evaluates the points of the mask `visit` (null: all)
-// with neighbourhoods of ladder.largest, reporting progress in that share of [0, 1] (the first pass
-// half of it, each next one half of what is left) and setting `cancelled` if the callback stopped
-// it; `chosen_count(result)` is a valid result's chosen neighbour count (the one asked for where
+// it being shared with other points (the tiles, the concurrency). `run(ladder, visit, progress,
+// cancelled)` evaluates the points of the mask `visit` (null: all) with neighbourhoods of
+// ladder.largest, reporting the fractions of the pass's area pass, if any, and of its points to
+// `progress` (Automatic_scale_progress::Callbacks, empty when there is nothing to report: the
+// fractions of the whole are in proportion to the time), and sets `cancelled` if a callback
+// returned false; the ladder it gets counts in ladder.sent_on the points it sends
+// on; `chosen_count(result)` is a valid result's chosen neighbour count (the one asked for where
 // the gate sends it on), else 0; `callback` is told 1 when the passes end before the last.
+// `points`: the number of points the first pass estimates (points_to_estimate(), for the
+// progress; 0 without a callback).
 // Cancelled, the points without their final estimate are a default Result (NOT_COMPUTED).
 template <class Result, class Run, class Chosen_count>
-std::vector<Result> automatic_scale_passes(const Scale_ladder& ladder, const Run& run,
+std::vector<Result> automatic_scale_passes(std::size_t points, const Scale_ladder& ladder, const Run& run,
                                            const Chosen_count& chosen_count,
                                            const std::function<bool(double)>& callback)
 {
+  Automatic_scale_progress progress(callback);
   Scale_ladder pass = ladder;
   const bool more_passes = ladder.rungs() > 1;
   pass.largest = ladder.smallest;
   pass.gate = more_passes;
   pass.final_pass = !more_passes;
+  if(callback)
+    pass.sent_on = &progress.sent_on();
   bool cancelled = false;
-  std::vector<Result> result = run(pass, nullptr, 0.0, more_passes ? 0.5 : 1.0, cancelled);
+  std::vector<Result> result = run(pass, nullptr, progress.start_pass(points, !more_passes), cancelled);
   std::vector<char> climb(result.size(), 0);
-  for(double start = 0.5; !cancelled && ladder.rungs() > pass.rungs(); start += 0.5 * (1 - start))
+  while(!cancelled && ladder.rungs() > pass.rungs())
   {
-    bool any = false;
+    std::size_t climbing = 0;
     for(std::size_t i = 0; i < result.size(); ++i)
     {
       climb[i] = chosen_count(result[i]) >= pass.climb_count() ? 1 : 0;
-      any = any || climb[i];
+      climbing += climb[i];
     }
-    if(!any)
+    if(climbing == 0)
     {
-      if(callback)
-        callback(1.0);
+      progress.finish();
       break;
     }
     pass.gate = false;
     pass.largest = std::min(ladder.largest, automatic_scale_pass_growth * pass.largest);
     const bool last = ladder.rungs() == pass.rungs();
     pass.final_pass = last;
-    const std::vector<Result> more = run(pass, &climb, start, last ? 1 - start : 0.5 * (1 - start), cancelled);
+    const std::vector<Result> more = run(pass, &climb, progress.start_pass(climbing, last), cancelled);
     for(std::size_t i = 0; i < result.size(); ++i)  // (cancelled: the points not reached are NOT_COMPUTED)
       if(climb[i])
         result[i] = more[i];
@@ -944,6 +961,22 @@ std::vector<Result> automatic_scale_passes(const Scale_ladder& ladder, const Run
       if(chosen_count(r) >= pass.climb_count())
         r = Result();
   return result;
+}
+
+// The points the first of automatic_scale_passes() estimates, for its progress: those of the
+// range that `tile` owns (every point without one).
+template <class PointRange, class PointMap>
+std::size_t points_to_estimate(const PointRange& points, const PointMap& point_map, const Tile& tile)
+{
+  if(tile.is_whole_space())
+    return std::size_t(std::distance(points.begin(), points.end()));
+  std::size_t n = 0;
+  for(auto it = points.begin(); it != points.end(); ++it)
+  {
+    const auto& p = get(point_map, *it);
+    n += tile.owns(to_double(p.x()), to_double(p.y()), to_double(p.z())) ? 1 : 0;
+  }
+  return n;
 }
 
 // The automatic scale of the estimators (automatic_scale_passes() on estimate_at_every_point();
@@ -957,23 +990,31 @@ auto estimate_at_automatic_scale(const PointRange& points, const NamedParameters
                                                            function_name)) Results;
   typedef typename Results::value_type Estimate;
   Area_cache areas;  // (the same in every pass)
-  const auto run = [&](const Scale_ladder& l, const std::vector<char>* visit, double start, double size,
-                       bool& cancelled) {
+  const auto run = [&](const Scale_ladder& l, const std::vector<char>* visit,
+                       const Automatic_scale_progress::Callbacks& progress, bool& cancelled) {
     Pass_options pass;
     pass.areas = &areas;
     pass.visit_k = l.largest;
     pass.visit = visit;
-    pass.progress_start = start;
-    pass.progress_size = size;
+    pass.progress = progress.points;
+    pass.area_progress = progress.areas;
     pass.cancelled = &cancelled;
     return estimate_at_every_point<ConcurrencyTag>(points, false, 0.0, np,
                                                    Automatic_scale_estimator<Estimator, Sphere>(estimators, sphere, l),
                                                    function_name, pass);
   };
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const std::function<bool(double)> callback =
+    choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
+  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
+  const std::size_t first_pass_points =
+    callback ? points_to_estimate(points, NP_helper::get_const_point_map(points, np),
+                                  choose_parameter(get_parameter(np, internal_np::tile), Tile::whole_space()))
+             : 0;
   return automatic_scale_passes<Estimate>(
-    ladder, run, [](const Estimate& e) { return e.is_valid() ? e.neighbor_count : std::size_t(0); },
-    CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::callback),
-                                       std::function<bool(double)>()));
+    first_pass_points, ladder, run,
+    [](const Estimate& e) { return e.is_valid() ? e.neighbor_count : std::size_t(0); }, callback);
 }
 
 // The largest count of the named parameter automatic_scale, 0 without it. Throws

@@ -166,13 +166,15 @@ struct Area_cache
 
 // What a pass of estimate_at_every_point() may change: the neighbour count the estimator
 // receives (0: that of the named parameters, which the sample weights use), the points it
-// visits (null: all), the share of the callback's [0, 1] it reports in, a flag set if the
-// callback cancels it, and a cache of the areas (null: none).
+// visits (null: all), the callback it reports its fraction to in place of the named
+// parameters' (empty: theirs) and, if it computes the areas, the one their pass reports to
+// (empty: that pass is a share of `progress`), a flag set if a callback cancels it, and a cache
+// of the areas (null: none).
 struct Pass_options
 {
   std::size_t visit_k = 0;
   const std::vector<char>* visit = nullptr;
-  double progress_start = 0, progress_size = 1;
+  std::function<bool(double)> progress, area_progress;
   bool* cancelled = nullptr;
   Area_cache* areas = nullptr;
 };
@@ -320,8 +322,9 @@ std::vector<Estimate> estimation_after_refinements(const PointRange& points, boo
 // if given, replace them, whatever estimator.area_weights says); with
 // estimator.normal_refinements = n, n passes of its normal fit (refinement_estimate()) each replace
 // the input normals by their corrected normals before the estimation. The callback sees the
-// passes as consecutive shares of [0, 1]; cancelled before the estimation pass, every point
-// is NOT_COMPUTED (a refinement pass's values are not the estimator's).
+// passes as consecutive shares of [0, 1] (the area pass apart with pass.area_progress);
+// cancelled before the estimation pass, every point is NOT_COMPUTED (a refinement pass's
+// values are not the estimator's).
 template <class ConcurrencyTag, class PointRange, class NamedParameters, class Estimator>
 std::vector<Curvature_estimate<
   typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
@@ -339,11 +342,13 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
   const std::size_t min_neighbors = min_neighbors_parameter(np, estimator.min_neighbors);
   Neighborhood_options options = neighborhood_options(np, function_name, estimator.normalize_normals);
   options.visit = pass.visit;
-  if(options.callback && (pass.progress_start != 0 || pass.progress_size != 1 || pass.cancelled))
-    options.callback = [callback = options.callback, pass](double f) {
-      const bool go_on = callback(pass.progress_start + pass.progress_size * f);
-      if(!go_on && pass.cancelled)
-        *pass.cancelled = true;
+  if(pass.progress)
+    options.callback = pass.progress;
+  if(options.callback && pass.cancelled)
+    options.callback = [callback = options.callback, cancelled = pass.cancelled](double f) {
+      const bool go_on = callback(f);
+      if(!go_on)
+        *cancelled = true;
       return go_on;
     };
   // With a tile, sample weights and neighbourhoods by count: how far from the core the
@@ -374,8 +379,10 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
   Area_cache own_areas;
   Area_cache& cache = pass.areas ? *pass.areas : own_areas;
   const bool compute_areas = area_pass && !cache.filled;
-  const Pass_shares shares =
-    pass_shares(compute_areas, estimator.normal_refinements, Has_refinement_fit<Estimator>::value ? 0.5 : 1.0);
+  // (the area pass on a callback of its own: not a share of this one's)
+  const bool areas_apart = compute_areas && pass.area_progress && options.callback;
+  const Pass_shares shares = pass_shares(compute_areas && !areas_apart, estimator.normal_refinements,
+                                         Has_refinement_fit<Estimator>::value ? 0.5 : 1.0);
   std::size_t pass_index = 0;
   const std::function<bool(double)> callback = options.callback;
   bool cancelled = false;
@@ -403,7 +410,15 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
     // area reaches r/2 beyond it). By count, the estimation records how far from the core
     // the own points' neighbours lie, and the areas of the points that close to the core must
     // reach no farther than the halo (checked after the estimation).
-    Neighborhood_options o = share(pass_index++);
+    Neighborhood_options o = areas_apart ? options : share(pass_index++);
+    if(areas_apart)
+      o.callback = [&pass, &cancelled](double f) {
+        const bool go_on = pass.area_progress(f);
+        cancelled = cancelled || !go_on;
+        if(!go_on && pass.cancelled)
+          *pass.cancelled = true;
+        return go_on;
+      };
     o.has_tile = false;
     o.visit = nullptr;  // every point's area: the visited points' neighbours are weighted
     // the areas use the query's normal direction only: unit normals whatever the estimator

@@ -1,0 +1,161 @@
+// Copyright (c) 2026 The Point_set_curvatures authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The fraction done of a pass over the tiles (visit_tiles(), tiled_run.h), shown on one
+// progress line whatever the number of tiles, in proportion to the time expected, so that the
+// line's estimate of the time left (the time so far scaled by what remains) holds over the
+// whole pass: a line per tile (as before) gave each tile's time left, and within a tile the
+// automatic scale's passes made it up to twice too long. Header-only and free of the rest of
+// the tool, so that test_tool checks it with its own clock.
+//
+// Each tile reads the file (its points and halo) and estimates its points. The time left is the
+// rest of the current step plus, for every tile to come, a read and its points' estimation:
+// - a read: the mean of the tiles done (their reads again with a larger halo included), before
+//   any, the density pass's (one read of the file as well);
+// - an estimation: the seconds per own point of the tiles done (their refused tries included),
+//   times the tile's own points (the density's count); before any, the current tile's own rate,
+//   and before that the tile's share of estimation_prior reads;
+// - the current step: its prior, then, as its fraction grows, its own rate (from its first
+//   report: the reader's or the search's set-up reports nothing).
+// The fractions never decrease.
+
+#ifndef POINT_SET_CURVATURES_TOOL_TILE_PASS_PROGRESS_H
+#define POINT_SET_CURVATURES_TOOL_TILE_PASS_PROGRESS_H
+
+#include <algorithm>
+#include <chrono>
+#include <cstddef>
+#include <functional>
+#include <utility>
+#include <vector>
+
+namespace psc_tool {
+
+class Tile_pass_progress
+{
+public:
+  // The estimation of the whole cloud before any is measured, in reads of the file (the
+  // 100M-point terrain in 9 tiles: 107 with the default scale, 35 with --radius 3.5); a tile's
+  // is its share of the own points.
+  static constexpr double estimation_prior = 60;
+  // The share of a step from which its own rate alone tells its time (below, blended with the
+  // prior in proportion).
+  static constexpr double own_rate_share = 0.05;
+
+  // `own`: the own points of each tile the pass visits, in their order (the density's counts);
+  // `read_seconds`: the time of a read of the file (the density pass's); `now`: seconds from
+  // any origin (empty: the steady clock).
+  Tile_pass_progress(std::vector<double> own, double read_seconds, std::function<double()> now = {})
+    : m_own(std::move(own)), m_read_prior(std::max(0.0, read_seconds)),
+      m_now(now ? std::move(now) : std::function<double()>(&steady_seconds)), m_start(m_now())
+  {
+    for(double o : m_own)
+      m_own_total += std::max(0.0, o);
+  }
+
+  // Tile `v` (an index of `own`) starts reading (again, if its halo grew) / estimating.
+  void begin_read(std::size_t v) { begin(v, READ); }
+  void begin_estimation(std::size_t v) { begin(v, ESTIMATION); }
+  // The current tile is done: its estimation kept, or (`estimated` false) no own point read.
+  void end_tile(bool estimated = true)
+  {
+    end_step(m_now());
+    m_read_seconds += m_tile_read;
+    m_estimation_seconds += m_tile_estimation;
+    if(estimated)
+      m_done_own += std::max(0.0, m_own[m_tile]);
+    ++m_done_tiles;
+    m_tile_read = m_tile_estimation = 0;
+    m_step = NONE;
+  }
+
+  // The fraction of the pass when the current step has done `f` of its work.
+  double at(double f)
+  {
+    f = std::clamp(f, 0.0, 1.0);
+    const double t = m_now();
+    if(m_step != NONE && m_first_report < 0)
+    {
+      m_first_report = t;
+      m_first_fraction = f;
+    }
+    const double elapsed = std::max(0.0, t - m_start);
+    const double read = mean_read();
+    double left = 0;
+    double per_point = estimation_per_point();
+    if(m_step != NONE)
+    {
+      const double own = std::max(0.0, m_own[m_tile]);
+      const double prior = m_step == READ ? read : per_point > 0 ? per_point * own : estimation_prior_of(own, read);
+      const double w = std::min(1.0, (f - m_first_fraction) / own_rate_share);
+      const double rate = f > m_first_fraction ? (t - m_first_report) / (f - m_first_fraction) : prior;
+      const double step_left = (1 - f) * ((1 - w) * prior + w * rate);
+      left += step_left;
+      if(m_step == READ)
+        left += per_point > 0 ? per_point * own : estimation_prior_of(own, read);
+      else if(per_point <= 0 && own > 0)
+        per_point = (t - m_step_start + step_left) / own;  // (the first tile: its own rate)
+    }
+    for(std::size_t v = m_step == NONE ? m_done_tiles : m_tile + 1; v < m_own.size(); ++v)
+    {
+      const double own = std::max(0.0, m_own[v]);
+      left += read + (per_point > 0 ? per_point * own : estimation_prior_of(own, read));
+    }
+    const double total = elapsed + left;
+    m_reported = std::max(m_reported, total > 0 ? std::min(1.0, elapsed / total) : m_own.empty() ? 1.0 : 0.0);
+    return m_reported;
+  }
+
+private:
+  enum Step { NONE, READ, ESTIMATION };
+
+  static double steady_seconds()
+  {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  }
+
+  void begin(std::size_t v, Step step)
+  {
+    const double t = m_now();
+    end_step(t);
+    m_tile = std::min(v, m_own.empty() ? 0 : m_own.size() - 1);
+    m_step = m_own.empty() ? NONE : step;
+    m_step_start = t;
+    m_first_report = -1;
+  }
+
+  // A step ended (a read, or an estimation refused for a short halo): its time is the tile's.
+  void end_step(double t)
+  {
+    if(m_step == READ)
+      m_tile_read += t - m_step_start;
+    else if(m_step == ESTIMATION)
+      m_tile_estimation += t - m_step_start;
+  }
+
+  double estimation_prior_of(double own, double read) const
+  {
+    return m_own_total > 0 ? estimation_prior * read * own / m_own_total : 0.0;
+  }
+  double mean_read() const { return m_done_tiles > 0 ? m_read_seconds / double(m_done_tiles) : m_read_prior; }
+  double estimation_per_point() const { return m_done_own > 0 ? m_estimation_seconds / m_done_own : 0.0; }
+
+  std::vector<double> m_own;
+  double m_read_prior;
+  std::function<double()> m_now;
+  double m_start;
+  double m_own_total = 0;
+  // the tiles done: their number, own points, and the time of their reads and estimations
+  std::size_t m_done_tiles = 0;
+  double m_done_own = 0, m_read_seconds = 0, m_estimation_seconds = 0;
+  // the current tile: its reads and estimations so far (a tile read again), its current step
+  double m_tile_read = 0, m_tile_estimation = 0;
+  std::size_t m_tile = 0;
+  Step m_step = NONE;
+  double m_step_start = 0, m_first_report = -1, m_first_fraction = 0;
+  double m_reported = 0;
+};
+
+} // namespace psc_tool
+
+#endif
