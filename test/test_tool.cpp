@@ -4243,6 +4243,14 @@ TEST_CASE("tool: --help lists the library's methods, and the manual names exactl
     INFO(o << " is in the manual's section on the tool: is it in --help?");
     CHECK(in_help.count(o) == 1);
   }
+  // and the parser knows each (one table for both: a value missing, or the files, not the option)
+  for(const std::string& o : in_help)
+  {
+    const Run r = run_tool(o);
+    INFO(o << ": " << r.err);
+    CHECK(r.err.find("unknown option") == std::string::npos);
+    CHECK((r.status == 2 || (o == "--help" && r.status == 0)));
+  }
 }
 
 // The default scale: automatic for the ASO's robust variant only (with its mean_error

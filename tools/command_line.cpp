@@ -14,6 +14,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <initializer_list>
 #include <iterator>
 #include <sstream>
 #include <string>
@@ -118,137 +119,6 @@ std::string color_choices()
 
 } // namespace
 
-void print_usage(std::ostream& os)
-{
-  os << "usage: " << program << " INPUT OUTPUT [options]\n"
-     << "\n"
-     << "Estimates curvatures at every point of a point cloud.\n"
-     << "  INPUT   .xyz, .pwn, .txt, .csv or .asc (CloudCompare's ASCII export): one point per\n"
-     << "          line, values separated by spaces or commas: x y z, or x y z nx ny nz, or a\n"
-     << "          header line naming the columns, or --columns; .ply (ASCII or binary, normals\n"
-     << "          nx ny nz or normal_x normal_y normal_z), .off, .las (LAS 1.0-1.4 uncompressed,\n"
-     << "          point formats 0-10; .laz: decompress first). Without normals, they are\n"
-     << "          estimated (a quadric fitted to the " << quadric_normal_neighbors() << " nearest neighbours, or "
-     << quadric_normal_neighbors() << " to " << automatic_largest << " with the\n"
-     << "          automatic scale; see --normal-fit and --orient) with a warning.\n"
-     << "  OUTPUT  .ply (binary unless --ascii) or .csv (with a header line): every input point\n"
-     << "          in input order with x y z and the fields of --fields: the corrected normal,\n"
-     << "          the curvatures, the principal directions, normal_coherence (a quality value\n"
-     << "          in [0, 1]: 1 where the neighbours' normals agree, low in foliage; aso and\n"
-     << "          apss), with the automatic scale mean_error (the standard error of mean at the\n"
-     << "          chosen scale) (doubles; NaN where the estimate is invalid or the method does\n"
-     << "          not provide the quantity), neighbors (int) and valid (0 or 1); then the\n"
-     << "          input's other values in their own types (PLY properties, named text columns,\n"
-     << "          LAS fields such as intensity, classification, gps_time, red green blue, and\n"
-     << "          the extra bytes an extra-bytes VLR describes), renamed input_NAME where NAME\n"
-     << "          is one of the tool's fields; 16-bit red green blue are written to PLY as 8\n"
-     << "          bits, as viewers read them (the high byte; the value where none in the file\n"
-     << "          exceeds 255).\n"
-     << "          Or .las: LAS 1.4 with the estimates as extra-bytes fields (double, float\n"
-     << "          with --float; no_data NaN where invalid), from a LAS input in its point\n"
-     << "          format with its fields, scale, offset, VLRs, extended VLRs and CRS kept;\n"
-     << "          otherwise format 6, offset at the floor of the minimum, scale 0.001 (finer\n"
-     << "          for extents below 1000). A LAS input whose CRS is geographic, or whose x y\n"
-     << "          look like degrees, gets a warning: reproject it to metres first.\n"
-     << "\n"
-     << "options: the estimator\n"
-     << "  --method M         estimator: " << method_names() << " (default aso)\n"
-     << "  --variant V        aso: robust (default: kernel (1-d^2/r^2)^3, tangent Voronoi area\n"
-     << "                     weights, neighbours' normals oriented by their majority, a fit of\n"
-     << "                     the normal field blended in at borders) or paper (the estimator\n"
-     << "                     of Lejemble et al. 2021 exactly)\n"
-     << "\noptions: the neighbourhoods (the scale)\n"
-     << "  --neighbors K      neighbourhoods by count: each point's radius is the distance to its\n"
-     << "                     K-th nearest neighbour, itself counted (default: auto for the\n"
-     << "                     aso's robust variant, else "
-     << CGAL::Point_set_curvatures::front_end_defaults::neighbor_count << ")\n"
-     << "  --neighbors auto   aso: each point's count chosen among " << automatic_smallest << ", "
-     << 2 * automatic_smallest << ", ..., " << automatic_largest << " by the noise\n"
-     << "                     its fits measure: 40 on clean surfaces, more on noisy scans (the\n"
-     << "                     neighbors field gives the count); --neighbors 40 is faster: 1.7x on\n"
-     << "                     clean surfaces, 7x on a real airborne tile, where most counts grow\n"
-     << "  --radius R         neighbourhoods of radius R, in the unit of the coordinates; or Nx\n"
-     << "                     (e.g. 3.5x): N times the average spacing (CGAL::compute_average_\n"
-     << "                     spacing, 6 neighbours); on even samplings 3x gives about 27\n"
-     << "                     neighbours, 3.5x about 37, 4x about 47\n"
-     << "  --min-neighbors M  estimates with fewer than M neighbours are invalid\n"
-     << "                     (too_few_neighbors); default: the method's measured minimum\n"
-     << "                     (" << least_neighbor_counts() << ")\n"
-     << "\noptions: the input\n"
-     << "  --columns LIST     names of the values of a text line, comma-separated: x y z, nx ny nz\n"
-     << "                     (or normal_x ...), anything else skipped (e.g. x,y,z,r,g,b or\n"
-     << "                     x,y,z,_,_,_,nx,ny,nz)\n"
-     << "  --allow-truncated  read a LAS file whose last point records are missing up to its\n"
-     << "                     last complete record, with a warning (default: refused)\n"
-     << "  --require-normals  fail if INPUT has no normals instead of estimating them\n"
-     << "\noptions: the normals, where INPUT has none\n"
-     << "  --orient O         orientation of estimated normals: auto (default: LAS files with\n"
-     << "                     pulse directions, scanner; other LAS files, mst with +z on its open\n"
-     << "                     parts if the cloud is 2.5-D (60% of the normals within 60 degrees of\n"
-     << "                     the vertical); other files, mst), mst (propagated along a minimum spanning\n"
-     << "                     tree, each connected part outward if closed, up if open), +z, -z,\n"
-     << "                     +x, -x, +y, -y (airborne scans: +z), viewpoint:X,Y,Z (towards the\n"
-     << "                     scanner at X,Y,Z), or scanner (LAS point formats 4, 5, 9, 10:\n"
-     << "                     towards the origin of each point's pulse, its wave packet's x(t)\n"
-     << "                     y(t) z(t)). The summary says which was used and why\n"
-     << "  --normal-fit F     fit of the normal estimation: quadric (default: a weighted quadric,\n"
-     << "                     smooth from point to point, which the ASO needs) or plane (PCA)\n"
-     << "  --normal-neighbors K  neighbours of the normal estimation (default " << quadric_normal_neighbors()
-     << ", the least with\n"
-     << "                     the automatic scale; plane "
-     << CGAL::Point_set_curvatures::default_normal_neighbors(CGAL::Normal_fit::PLANE) << ")\n"
-     << "  --position-blend W aso: weight in [0, 1] of a quadric fitted to the positions alone,\n"
-     << "                     blended with the ASO's tensor (default 0.5 for the robust variant\n"
-     << "                     when the normals are estimated: within 1.35x of the error with\n"
-     << "                     exact normals on simulated scans; otherwise 0)\n"
-     << "\noptions: the output\n"
-     << "  --fields LIST      "
-     << wrapped(cat("estimator fields to write, comma-separated (x y z always; default: all, in this order): ",
-                    selectable_fields()),
-                21, 21)
-     << "\n"
-     << "  --float            write the estimator fields as float32 (x y z stay double)\n"
-     << "  --ascii            ASCII PLY output (NaN written as nan)\n"
-     << "  --ply-names N      names of the PLY properties: plain (default: mean, k_min, ...) or\n"
-     << "                     scalar (scalar_mean, scalar_k_min, ...: every property but x y z,\n"
-     << "                     nx ny nz and red green blue, input attributes too). CloudCompare\n"
-     << "                     loads a property scalar_NAME as the scalar field NAME and leaves\n"
-     << "                     out mean, k_min, ...: use scalar for CloudCompare\n"
-     << "  --color Q          add red green blue (uchar) showing Q = " << color_choices() << ":\n"
-     << "                     blue < 0 < red, white at 0, saturated beyond the 2nd/98th\n"
-     << "                     percentiles; grey where invalid\n"
-     << "  --drop-attributes  do not carry the input's other values to the output (a .las\n"
-     << "                     output keeps a LAS input's standard fields, drops its extra bytes)\n"
-     << "\noptions: large files, the run\n"
-     << "  --memory-limit M   memory for the points, in bytes or with a unit: 500M, 8G (default:\n"
-     << "                     a quarter of the machine's RAM). A larger input is estimated in\n"
-     << "                     spatial tiles, each read again from INPUT with a halo around it,\n"
-     << "                     the rows written in input order: the same output, bitwise, in\n"
-     << "                     bounded memory (--radius as a length; without normals, they are\n"
-     << "                     estimated in tiles first; a spanning tree (mst, auto but on LAS\n"
-     << "                     files with pulses) orients them over the whole cloud in memory,\n"
-     << "                     about 450 bytes a point; not --method vcm,\n"
-     << "                     which needs every point; the automatic scale's halos\n"
-     << "                     reach " << automatic_largest << " neighbours). A limit that makes more than 500 tiles, or\n"
-     << "                     above the machine's RAM, is warned of\n"
-     << "  --threads N        use at most N threads (default: every core)\n"
-     << "  --quiet            print errors only (no progress bar, warnings, notes or summary;\n"
-     << "                     the progress bar, with the elapsed time and an ETA, is drawn\n"
-     << "                     only when stderr is a terminal)\n"
-
-     << "  --help             print this help\n"
-     << "\n"
-     << "Exit status: 0 on success; 2 on an invalid argument or an unreadable, malformed or\n"
-     << "unwritable file (nothing written; an OUTPUT that is a directory or in a missing or\n"
-     << "read-only folder, and a disk too full for the output, whose size is reserved once INPUT\n"
-     << "is read, fail before the estimation); 3 when no point got a valid estimate (OUTPUT is\n"
-     << "written, every row invalid; stderr says why, such as too few neighbours, and what to\n"
-     << "try, such as a radius); 130 if interrupted by Ctrl-C (SIGINT) and 143 by SIGTERM, in\n"
-     << "any phase (nothing written); 1 on an internal error. A run killed while writing\n"
-     << "leaves a hidden .OUTPUT.tmp-PID-XXXXXX, which the next run writing OUTPUT removes\n"
-     << "(with a note).\n";
-}
-
 namespace {
 
 // --neighbors auto: the ladder of counts from automatic_smallest to automatic_largest.
@@ -350,7 +220,270 @@ CGAL::Normal_orientation parse_orientation(const std::string& text)
                   " (auto, mst, +z, -z, +x, -x, +y, -y, viewpoint:X,Y,Z or scanner)"));
 }
 
+// One option of the command line, declared once: --help prints the table, the parser reads it.
+struct Option_spec
+{
+  // the --help heading this option starts ("the estimator"), or null (the previous option's)
+  const char* heading;
+  // its spellings, the first in --help
+  std::vector<std::string> names;
+  // the name of its value in --help; null: a flag, which takes none
+  const char* value;
+  // its text in --help, from column 21 (lines joined by help_lines())
+  std::string help;
+  // what it does to the options, given the spelling used and its value ("" for a flag); null:
+  // a line of --help only (a value of the option above it, such as --neighbors auto)
+  void (*apply)(Options& o, const std::string& name, const std::string& value);
+};
+
+// The lines of an option's text in --help, each after the first indented to column 21.
+std::string help_lines(std::initializer_list<std::string> lines)
+{
+  std::string text;
+  for(const std::string& line : lines)
+    text += (text.empty() ? "" : "\n" + std::string(21, ' ')) + line;
+  return text;
+}
+
+const std::vector<Option_spec>& option_table()
+{
+  namespace PSC = CGAL::Point_set_curvatures;
+  typedef const std::string& S;
+  static const std::vector<Option_spec> table = {
+    {"the estimator", {"--method"}, "M", cat("estimator: ", method_names(), " (default aso)"),
+     [](Options& o, S, S v) {
+       o.method = find_method(v);
+       if(!o.method)
+         throw Error(cat("--method: unknown method ", in_quotes(v), " (available: ", method_names(), ")"));
+     }},
+    {nullptr, {"--variant"}, "V",
+     help_lines({"aso: robust (default: kernel (1-d^2/r^2)^3, tangent Voronoi area",
+                 "weights, neighbours' normals oriented by their majority, a fit of",
+                 "the normal field blended in at borders) or paper (the estimator",
+                 "of Lejemble et al. 2021 exactly)"}),
+     [](Options& o, S, S v) {
+       const auto& names = PSC::aso_variant_names;
+       const auto found = std::find(std::begin(names), std::end(names), v);
+       if(found == std::end(names))
+         throw Error(cat("--variant: unknown variant ", in_quotes(v), " (robust or paper)"));
+       o.scale.variant = CGAL::Aso_variant(found - std::begin(names));
+     }},
+
+    {"the neighbourhoods (the scale)", {"--neighbors", "--neighbours"}, "K",
+     help_lines({"neighbourhoods by count: each point's radius is the distance to its",
+                 "K-th nearest neighbour, itself counted (default: auto for the",
+                 cat("aso's robust variant, else ", PSC::front_end_defaults::neighbor_count, ")")}),
+     [](Options& o, S name, S v) {
+       std::size_t k = 0;
+       if(v == "auto")
+         use_automatic_scale(o.scale);
+       else if(!parse_positive_integer(v, k) || k < 3)
+         throw Error(cat(name, " must be an integer >= 3 (the fits need 3 points) or auto, got ", in_quotes(v)));
+       else
+       {
+         o.scale.neighbors = k;
+         o.scale.automatic_largest = 0;
+       }
+       o.neighbors_given = true;
+     }},
+    {nullptr, {"--neighbors"}, "auto",
+     help_lines({cat("aso: each point's count chosen among ", automatic_smallest, ", ", 2 * automatic_smallest, ", ..., ",
+                     automatic_largest, " by the noise"),
+                 "its fits measure: 40 on clean surfaces, more on noisy scans (the",
+                 "neighbors field gives the count); --neighbors 40 is faster: 1.7x on",
+                 "clean surfaces, 7x on a real airborne tile, where most counts grow"}),
+     nullptr},
+    {nullptr, {"--radius"}, "R",
+     help_lines({"neighbourhoods of radius R, in the unit of the coordinates; or Nx",
+                 "(e.g. 3.5x): N times the average spacing (CGAL::compute_average_",
+                 "spacing, 6 neighbours); on even samplings 3x gives about 27",
+                 "neighbours, 3.5x about 37, 4x about 47"}),
+     [](Options& o, S, S v) {
+       parse_radius(v, o.scale);
+       o.radius_given = true;
+     }},
+    {nullptr, {"--min-neighbors", "--min-neighbours"}, "M",
+     help_lines({"estimates with fewer than M neighbours are invalid",
+                 "(too_few_neighbors); default: the method's measured minimum",
+                 cat("(", least_neighbor_counts(), ")")}),
+     [](Options& o, S name, S v) {
+       std::size_t m = 0;
+       if(!parse_positive_integer(v, m))
+         throw Error(cat(name, " must be a positive integer, got ", in_quotes(v)));
+       o.scale.min_neighbors = m;
+     }},
+
+    {"the input", {"--columns"}, "LIST",
+     help_lines({"names of the values of a text line, comma-separated: x y z, nx ny nz",
+                 "(or normal_x ...), anything else skipped (e.g. x,y,z,r,g,b or", "x,y,z,_,_,_,nx,ny,nz)"}),
+     [](Options& o, S, S v) { o.columns = parse_columns(v); }},
+    {nullptr, {"--allow-truncated"}, nullptr,
+     help_lines({"read a LAS file whose last point records are missing up to its",
+                 "last complete record, with a warning (default: refused)"}),
+     [](Options& o, S, S) { o.allow_truncated = true; }},
+    {nullptr, {"--require-normals"}, nullptr, "fail if INPUT has no normals instead of estimating them",
+     [](Options& o, S, S) { o.require_normals = true; }},
+
+    {"the normals, where INPUT has none", {"--orient"}, "O",
+     help_lines({"orientation of estimated normals: auto (default: LAS files with",
+                 "pulse directions, scanner; other LAS files, mst with +z on its open",
+                 "parts if the cloud is 2.5-D (60% of the normals within 60 degrees of",
+                 "the vertical); other files, mst), mst (propagated along a minimum spanning",
+                 "tree, each connected part outward if closed, up if open), +z, -z,",
+                 "+x, -x, +y, -y (airborne scans: +z), viewpoint:X,Y,Z (towards the",
+                 "scanner at X,Y,Z), or scanner (LAS point formats 4, 5, 9, 10:",
+                 "towards the origin of each point's pulse, its wave packet's x(t)",
+                 "y(t) z(t)). The summary says which was used and why"}),
+     [](Options& o, S, S v) {
+       o.orientation_text = v;
+       o.orientation = parse_orientation(v);
+       o.orient_scanner = v == "scanner";
+     }},
+    {nullptr, {"--normal-fit"}, "F",
+     help_lines({"fit of the normal estimation: quadric (default: a weighted quadric,",
+                 "smooth from point to point, which the ASO needs) or plane (PCA)"}),
+     [](Options& o, S, S v) {
+       if(v != "quadric" && v != "plane")
+         throw Error(cat("--normal-fit: unknown fit ", in_quotes(v), " (quadric or plane)"));
+       o.normal_fit = v == "plane" ? CGAL::Normal_fit::PLANE : CGAL::Normal_fit::QUADRIC;
+     }},
+    {nullptr, {"--normal-neighbors", "--normal-neighbours"}, "K",
+     help_lines({cat("neighbours of the normal estimation (default ", quadric_normal_neighbors(), ", the least with"),
+                 cat("the automatic scale; plane ", PSC::default_normal_neighbors(CGAL::Normal_fit::PLANE), ")")}),
+     [](Options& o, S name, S v) {
+       if(!parse_positive_integer(v, o.normal_neighbors) || o.normal_neighbors < 3)
+         throw Error(cat(name, " must be an integer >= 3, got ", in_quotes(v)));
+     }},
+    {nullptr, {"--position-blend"}, "W",
+     help_lines({"aso: weight in [0, 1] of a quadric fitted to the positions alone,",
+                 "blended with the ASO's tensor (default 0.5 for the robust variant",
+                 "when the normals are estimated: within 1.35x of the error with",
+                 "exact normals on simulated scans; otherwise 0)"}),
+     [](Options& o, S, S v) {
+       if(!parse_double(v, o.position_blend) || !(o.position_blend >= 0 && o.position_blend <= 1))
+         throw Error(cat("--position-blend must be a number in [0, 1], got ", in_quotes(v)));
+     }},
+
+    {"the output", {"--fields"}, "LIST",
+     wrapped(cat("estimator fields to write, comma-separated (x y z always; default: all, in this order): ",
+                 selectable_fields()),
+             21, 21),
+     [](Options& o, S, S v) { o.fields = parse_fields(v); }},
+    {nullptr, {"--float"}, nullptr, "write the estimator fields as float32 (x y z stay double)",
+     [](Options& o, S, S) { o.float32 = true; }},
+    {nullptr, {"--ascii"}, nullptr, "ASCII PLY output (NaN written as nan)",
+     [](Options& o, S, S) { o.ascii = true; }},
+    {nullptr, {"--ply-names"}, "N",
+     help_lines({"names of the PLY properties: plain (default: mean, k_min, ...) or",
+                 "scalar (scalar_mean, scalar_k_min, ...: every property but x y z,",
+                 "nx ny nz and red green blue, input attributes too). CloudCompare",
+                 "loads a property scalar_NAME as the scalar field NAME and leaves",
+                 "out mean, k_min, ...: use scalar for CloudCompare"}),
+     [](Options& o, S, S v) {
+       if(v != "plain" && v != "scalar")
+         throw Error(cat("--ply-names: unknown naming ", in_quotes(v),
+                         " (plain, or scalar for CloudCompare's scalar_NAME)"));
+       o.ply_scalar_names = v == "scalar";
+     }},
+    {nullptr, {"--color", "--colour"}, "Q",
+     help_lines({cat("add red green blue (uchar) showing Q = ", color_choices(), ":"),
+                 "blue < 0 < red, white at 0, saturated beyond the 2nd/98th", "percentiles; grey where invalid"}),
+     [](Options& o, S name, S v) {
+       o.color = v;
+       if(!color_quantities().count(o.color))
+         throw Error(cat(name, ": unknown quantity ", in_quotes(o.color), " (available: ", color_choices(), ")"));
+     }},
+    {nullptr, {"--drop-attributes"}, nullptr,
+     help_lines({"do not carry the input's other values to the output (a .las",
+                 "output keeps a LAS input's standard fields, drops its extra bytes)"}),
+     [](Options& o, S, S) { o.drop_attributes = true; }},
+
+    {"large files, the run", {"--memory-limit"}, "M",
+     help_lines({"memory for the points, in bytes or with a unit: 500M, 8G (default:",
+                 "a quarter of the machine's RAM). A larger input is estimated in",
+                 "spatial tiles, each read again from INPUT with a halo around it,",
+                 "the rows written in input order: the same output, bitwise, in",
+                 "bounded memory (--radius as a length; without normals, they are",
+                 "estimated in tiles first; a spanning tree (mst, auto but on LAS",
+                 "files with pulses) orients them over the whole cloud in memory,",
+                 "about 450 bytes a point; not --method vcm,", "which needs every point; the automatic scale's halos",
+                 cat("reach ", automatic_largest, " neighbours). A limit that makes more than 500 tiles, or"),
+                 "above the machine's RAM, is warned of"}),
+     [](Options& o, S, S v) {
+       if(!parse_memory_size(v, o.memory_limit))
+         throw Error(cat("--memory-limit expects a positive size in bytes or with a unit (500M, 8G), got ",
+                         in_quotes(v)));
+     }},
+    {nullptr, {"--threads"}, "N", "use at most N threads (default: every core)",
+     [](Options& o, S, S v) {
+       std::size_t n = 0;
+       if(!parse_positive_integer(v, n) || n > 4096)
+         throw Error(cat("--threads must be a positive integer, got ", in_quotes(v)));
+       o.threads = static_cast<int>(n);
+     }},
+    {nullptr, {"--quiet"}, nullptr,
+     help_lines({"print errors only (no progress bar, warnings, notes or summary;",
+                 "the progress bar, with the elapsed time and an ETA, is drawn", "only when stderr is a terminal)"}),
+     [](Options& o, S, S) { o.quiet = true; }},
+    {nullptr, {"--help", "-h"}, nullptr, "print this help", [](Options& o, S, S) { o.help = true; }},
+  };
+  return table;
+}
+
 } // namespace
+
+void print_usage(std::ostream& os)
+{
+  os << "usage: " << program << " INPUT OUTPUT [options]\n"
+     << "\n"
+     << "Estimates curvatures at every point of a point cloud.\n"
+     << "  INPUT   .xyz, .pwn, .txt, .csv or .asc (CloudCompare's ASCII export): one point per\n"
+     << "          line, values separated by spaces or commas: x y z, or x y z nx ny nz, or a\n"
+     << "          header line naming the columns, or --columns; .ply (ASCII or binary, normals\n"
+     << "          nx ny nz or normal_x normal_y normal_z), .off, .las (LAS 1.0-1.4 uncompressed,\n"
+     << "          point formats 0-10; .laz: decompress first). Without normals, they are\n"
+     << "          estimated (a quadric fitted to the " << quadric_normal_neighbors() << " nearest neighbours, or "
+     << quadric_normal_neighbors() << " to " << automatic_largest << " with the\n"
+     << "          automatic scale; see --normal-fit and --orient) with a warning.\n"
+     << "  OUTPUT  .ply (binary unless --ascii) or .csv (with a header line): every input point\n"
+     << "          in input order with x y z and the fields of --fields: the corrected normal,\n"
+     << "          the curvatures, the principal directions, normal_coherence (a quality value\n"
+     << "          in [0, 1]: 1 where the neighbours' normals agree, low in foliage; aso and\n"
+     << "          apss), with the automatic scale mean_error (the standard error of mean at the\n"
+     << "          chosen scale) (doubles; NaN where the estimate is invalid or the method does\n"
+     << "          not provide the quantity), neighbors (int) and valid (0 or 1); then the\n"
+     << "          input's other values in their own types (PLY properties, named text columns,\n"
+     << "          LAS fields such as intensity, classification, gps_time, red green blue, and\n"
+     << "          the extra bytes an extra-bytes VLR describes), renamed input_NAME where NAME\n"
+     << "          is one of the tool's fields; 16-bit red green blue are written to PLY as 8\n"
+     << "          bits, as viewers read them (the high byte; the value where none in the file\n"
+     << "          exceeds 255).\n"
+     << "          Or .las: LAS 1.4 with the estimates as extra-bytes fields (double, float\n"
+     << "          with --float; no_data NaN where invalid), from a LAS input in its point\n"
+     << "          format with its fields, scale, offset, VLRs, extended VLRs and CRS kept;\n"
+     << "          otherwise format 6, offset at the floor of the minimum, scale 0.001 (finer\n"
+     << "          for extents below 1000). A LAS input whose CRS is geographic, or whose x y\n"
+     << "          look like degrees, gets a warning: reproject it to metres first.\n";
+  // the options, from the table: the flag and its value's name, then the text from column 21
+  for(const Option_spec& option : option_table())
+  {
+    if(option.heading)
+      os << "\noptions: " << option.heading << "\n";
+    const std::string left = option.names.front() + (option.value ? cat(" ", option.value) : std::string());
+    os << "  " << left << (left.size() < 19 ? std::string(19 - left.size(), ' ') : std::string("  "))
+       << option.help << "\n";
+  }
+  os << "\n"
+     << "Exit status: 0 on success; 2 on an invalid argument or an unreadable, malformed or\n"
+     << "unwritable file (nothing written; an OUTPUT that is a directory or in a missing or\n"
+     << "read-only folder, and a disk too full for the output, whose size is reserved once INPUT\n"
+     << "is read, fail before the estimation); 3 when no point got a valid estimate (OUTPUT is\n"
+     << "written, every row invalid; stderr says why, such as too few neighbours, and what to\n"
+     << "try, such as a radius); 130 if interrupted by Ctrl-C (SIGINT) and 143 by SIGTERM, in\n"
+     << "any phase (nothing written); 1 on an internal error. A run killed while writing\n"
+     << "leaves a hidden .OUTPUT.tmp-PID-XXXXXX, which the next run writing OUTPUT removes\n"
+     << "(with a note).\n";
+}
 
 Options parse_command_line(int argc, char** argv)
 {
@@ -374,137 +507,24 @@ Options parse_command_line(int argc, char** argv)
       value = arg.substr(eq + 1);
       inline_value = true;
     }
-    auto take_value = [&]() -> std::string {
-      if(inline_value)
-        return value;
-      if(i + 1 >= argc)
-        throw Error(cat("option ", name, " needs a value (see --help)"));
-      return argv[++i];
-    };
-    auto flag = [&](bool& b) {
+    const auto& table = option_table();
+    const auto option = std::find_if(table.begin(), table.end(), [&name](const Option_spec& s) {
+      return s.apply && std::find(s.names.begin(), s.names.end(), name) != s.names.end();
+    });
+    if(option == table.end())
+      throw Error(cat("unknown option ", in_quotes(arg), " (see --help)"));
+    if(!option->value)
+    {
       if(inline_value)
         throw Error(cat("option ", name, " takes no value"));
-      b = true;
-    };
-    if(name == "--help" || name == "-h")
-      flag(o.help);
-    else if(name == "--method")
-    {
-      const std::string m = take_value();
-      o.method = find_method(m);
-      if(!o.method)
-        throw Error(cat("--method: unknown method ", in_quotes(m), " (available: ", method_names(), ")"));
     }
-    else if(name == "--radius")
+    else if(!inline_value)
     {
-      parse_radius(take_value(), o.scale);
-      o.radius_given = true;
+      if(i + 1 >= argc)
+        throw Error(cat("option ", name, " needs a value (see --help)"));
+      value = argv[++i];
     }
-    else if(name == "--neighbors" || name == "--neighbours")
-    {
-      const std::string v = take_value();
-      std::size_t k = 0;
-      if(v == "auto")
-        use_automatic_scale(o.scale);
-      else if(!parse_positive_integer(v, k) || k < 3)
-        throw Error(cat(name, " must be an integer >= 3 (the fits need 3 points) or auto, got ", in_quotes(v)));
-      else
-      {
-        o.scale.neighbors = k;
-        o.scale.automatic_largest = 0;
-      }
-      o.neighbors_given = true;
-    }
-    else if(name == "--min-neighbors" || name == "--min-neighbours")
-    {
-      const std::string v = take_value();
-      std::size_t m = 0;
-      if(!parse_positive_integer(v, m))
-        throw Error(cat(name, " must be a positive integer, got ", in_quotes(v)));
-      o.scale.min_neighbors = m;
-    }
-    else if(name == "--columns")
-      o.columns = parse_columns(take_value());
-    else if(name == "--variant")
-    {
-      const std::string v = take_value();
-      const auto& names = CGAL::Point_set_curvatures::aso_variant_names;
-      const auto found = std::find(std::begin(names), std::end(names), v);
-      if(found == std::end(names))
-        throw Error(cat("--variant: unknown variant ", in_quotes(v), " (robust or paper)"));
-      o.scale.variant = CGAL::Aso_variant(found - std::begin(names));
-    }
-    else if(name == "--orient")
-    {
-      o.orientation_text = take_value();
-      o.orientation = parse_orientation(o.orientation_text);
-      o.orient_scanner = o.orientation_text == "scanner";
-    }
-    else if(name == "--normal-neighbors" || name == "--normal-neighbours")
-    {
-      const std::string v = take_value();
-      if(!parse_positive_integer(v, o.normal_neighbors) || o.normal_neighbors < 3)
-        throw Error(cat(name, " must be an integer >= 3, got ", in_quotes(v)));
-    }
-    else if(name == "--normal-fit")
-    {
-      const std::string v = take_value();
-      if(v != "quadric" && v != "plane")
-        throw Error(cat("--normal-fit: unknown fit ", in_quotes(v), " (quadric or plane)"));
-      o.normal_fit = v == "plane" ? CGAL::Normal_fit::PLANE : CGAL::Normal_fit::QUADRIC;
-    }
-    else if(name == "--position-blend")
-    {
-      const std::string v = take_value();
-      if(!parse_double(v, o.position_blend) || !(o.position_blend >= 0 && o.position_blend <= 1))
-        throw Error(cat("--position-blend must be a number in [0, 1], got ", in_quotes(v)));
-    }
-    else if(name == "--threads")
-    {
-      const std::string v = take_value();
-      std::size_t n = 0;
-      if(!parse_positive_integer(v, n) || n > 4096)
-        throw Error(cat("--threads must be a positive integer, got ", in_quotes(v)));
-      o.threads = static_cast<int>(n);
-    }
-    else if(name == "--color" || name == "--colour")
-    {
-      o.color = take_value();
-      if(!color_quantities().count(o.color))
-        throw Error(cat(name, ": unknown quantity ", in_quotes(o.color),
-                        " (available: ", color_choices(), ")"));
-    }
-    else if(name == "--memory-limit")
-    {
-      const std::string v = take_value();
-      if(!parse_memory_size(v, o.memory_limit))
-        throw Error(cat("--memory-limit expects a positive size in bytes or with a unit (500M, 8G), got ",
-                        in_quotes(v)));
-    }
-    else if(name == "--ascii")
-      flag(o.ascii);
-    else if(name == "--float")
-      flag(o.float32);
-    else if(name == "--drop-attributes")
-      flag(o.drop_attributes);
-    else if(name == "--allow-truncated")
-      flag(o.allow_truncated);
-    else if(name == "--fields")
-      o.fields = parse_fields(take_value());
-    else if(name == "--ply-names")
-    {
-      const std::string v = take_value();
-      if(v != "plain" && v != "scalar")
-        throw Error(cat("--ply-names: unknown naming ", in_quotes(v),
-                        " (plain, or scalar for CloudCompare's scalar_NAME)"));
-      o.ply_scalar_names = v == "scalar";
-    }
-    else if(name == "--quiet")
-      flag(o.quiet);
-    else if(name == "--require-normals")
-      flag(o.require_normals);
-    else
-      throw Error(cat("unknown option ", in_quotes(arg), " (see --help)"));
+    option->apply(o, name, value);
   }
   if(o.help)
     return o;
