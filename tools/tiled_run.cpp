@@ -397,37 +397,33 @@ Scanned_input read_or_scan(const std::string& path, const Read_options& options,
   return s;
 }
 
-Tiled_report visit_tiles(const std::string& path, const Read_options& options, const Scanned_input& input,
-                         const Tiling& tiling, const Tile_visitor& visit)
-{
-  Tiled_report report;
-  const std::size_t attribute_count = options.keep_attributes ? input.cloud.attributes.size() : 0;
-  const bool with_normals = input.cloud.has_normals() || tiling.normals;
-  double lo[3], hi[3];
-  tile_box(input, lo, hi);
-  double first_halo = tiling.neighbors > 0 ? density_halo(input, tiling.neighbors) : tiling.halo;
-  if(std::isnan(first_halo))
-    first_halo = HUGE_VAL;  // (the whole cloud: never wrong)
-  double halo = first_halo;
+namespace {
 
-  // 1. The density, and the tiles: the largest tiles whose points with their halo fit.
+// The density pass: the finite points of the file counted in a grid over the box of the tiles
+// [lo, hi].
+Density_grid read_density(const std::string& path, const Read_options& options, const double lo[3],
+                          const double hi[3], const Tiling& tiling)
+{
   Density_grid density(lo, hi);
-  const auto density_start = std::chrono::steady_clock::now();
-  {
-    Read_options o = options;
-    o.chunk_points = 1 << 16;
-    o.progress = tiling.phase("density");
-    o.chunk = [&](const Point_cloud& c) {
-      for(std::size_t k = 0; k < c.size(); ++k)
-        if(finite_point(&c.xyz[3 * k]))
-          density.add(&c.xyz[3 * k]);
-    };
-    read_point_cloud(path, o);
-  }
+  Read_options o = options;
+  o.chunk_points = 1 << 16;
+  o.progress = tiling.phase("density");
+  o.chunk = [&](const Point_cloud& c) {
+    for(std::size_t k = 0; k < c.size(); ++k)
+      if(finite_point(&c.xyz[3 * k]))
+        density.add(&c.xyz[3 * k]);
+  };
+  read_point_cloud(path, o);
   density.finish();
-  report.density_seconds = seconds_since(density_start);
-  const double budget =
-    tiling.memory_limit / (tiling.point_bytes > 0 ? tiling.point_bytes : bytes_per_point(attribute_count));
+  return density;
+}
+
+// The tiles: the largest whose points with their `halo` fit in `budget` points by the
+// density; where no grid does, the coarsest within 10% of the lowest peak. Records in `report`
+// the finest grid of few tiles.
+PSC::Tile_grid choose_tile_grid(const Density_grid& density, const double lo[3], const double hi[3], double halo,
+                                double budget, const Tiling& tiling, Tiled_report& report)
+{
   const CGAL::Bbox_3 box(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
   // halved extents: the extent of finite bounds may overflow (from -1e308 to 1e308)
   double half[3], longest = 0;
@@ -474,11 +470,91 @@ Tiled_report visit_tiles(const std::string& path, const Read_options& options, c
       least = std::min(least, g.second);
     for(const auto& g : tried)
       if(g.second <= 1.1 * least)
-      {
-        grid = g.first;
-        break;
-      }
+        return g.first;
   }
+  return grid;
+}
+
+// A tile's range read from the file: its points (`own[k]`: point k is the tile's own, of
+// which there are `own_count`).
+struct Tile_read
+{
+  Tile_points points;
+  std::vector<char> own;
+  std::size_t own_count = 0;
+};
+
+// Reads the points of `tile`, tile `t` of `grid` with its halo, reserving from the density;
+// `range` (of `tile`) takes them and learns the range's rules. The first tile also takes the
+// non-finite points, as its own.
+Tile_read read_tile(const std::string& path, const Read_options& options, const Scanned_input& input,
+                    const Tiling& tiling, const PSC::Tile_grid& grid, std::size_t t, const PSC::Tile& tile,
+                    const double lo[3], const double hi[3], const Density_grid& density, PSC::Tile_range& range,
+                    const Progress& progress)
+{
+  const std::size_t attribute_count = options.keep_attributes ? input.cloud.attributes.size() : 0;
+  const bool with_normals = input.cloud.has_normals() || tiling.normals;
+  Tile_read r;
+  // reserved from the density (an upper bound), the chunks small: the tile's points are most
+  // of the memory
+  double b[3], e[3];
+  tile_box(grid, t, lo, hi, tile.halo, b, e);
+  const std::size_t expected = std::size_t(density.at_most(b, e)) + (t == 0 ? input.points - input.finite : 0);
+  r.points.xyz.reserve(3 * expected);
+  if(with_normals)
+    r.points.normals.reserve(3 * expected);
+  r.points.index.reserve(expected);
+  r.own.reserve(expected);
+  r.points.attributes.resize(attribute_count);
+  for(std::vector<double>& a : r.points.attributes)
+    a.reserve(expected);
+  Read_options o = options;
+  o.chunk_points = 1 << 16;
+  o.progress = progress;
+  o.chunk = [&](const Point_cloud& c) {
+    r.points.attributes.resize(c.attributes.size());
+    for(std::size_t k = 0; k < c.size(); ++k)
+    {
+      const double* p = &c.xyz[3 * k];
+      const bool finite = finite_point(p);
+      if(!range.take(p[0], p[1], p[2]) && (finite || t != 0))
+        continue;  // (the first tile takes the non-finite points, as its own)
+      append_point(c, k, r.points.xyz, r.points.normals, r.points.attributes);
+      if(tiling.normals)
+        r.points.normals.insert(r.points.normals.end(), &(*tiling.normals)[3 * (c.first + k)],
+                                &(*tiling.normals)[3 * (c.first + k)] + 3);
+      r.points.index.push_back(c.first + k);
+      const bool is_own = finite ? tile.owns(p[0], p[1], p[2]) : true;
+      r.own.push_back(is_own ? 1 : 0);
+      r.own_count += is_own;
+    }
+  };
+  read_point_cloud(path, o);
+  if(with_normals && r.points.normals.size() != r.points.xyz.size())
+    throw Error(cat(in_quotes(path), ": internal error: normals missing in a tile"));
+  return r;
+}
+
+} // namespace
+
+Tiled_report visit_tiles(const std::string& path, const Read_options& options, const Scanned_input& input,
+                         const Tiling& tiling, const Tile_visitor& visit)
+{
+  Tiled_report report;
+  const std::size_t attribute_count = options.keep_attributes ? input.cloud.attributes.size() : 0;
+  double lo[3], hi[3];
+  tile_box(input, lo, hi);
+  double first_halo = tiling.neighbors > 0 ? density_halo(input, tiling.neighbors) : tiling.halo;
+  if(std::isnan(first_halo))
+    first_halo = HUGE_VAL;  // (the whole cloud: never wrong)
+
+  // 1. The density, and the tiles: the largest tiles whose points with their halo fit.
+  const auto density_start = std::chrono::steady_clock::now();
+  const Density_grid density = read_density(path, options, lo, hi, tiling);
+  report.density_seconds = seconds_since(density_start);
+  const double budget =
+    tiling.memory_limit / (tiling.point_bytes > 0 ? tiling.point_bytes : bytes_per_point(attribute_count));
+  const PSC::Tile_grid grid = choose_tile_grid(density, lo, hi, first_halo, budget, tiling, report);
 
   // The tiles visited: those whose core holds a point by the density (and the first tile, which
   // also writes the rows of the non-finite points), with their own points by the density.
@@ -512,64 +588,24 @@ Tiled_report visit_tiles(const std::string& path, const Read_options& options, c
   {
     const std::size_t t = visited[v];
     const std::string name = cat("tile ", t + 1, "/", grid.size());
-    halo = first_halo;  // each tile grows its own (by count: an outlier needs a large one)
+    double halo = first_halo;  // each tile grows its own (by count: an outlier needs a large one)
     for(;;)
     {
       const PSC::Tile tile = grid.tile(t, halo);
-      Tile_points points;
-      std::vector<char> own;
-      std::size_t own_count = 0;
       PSC::Tile_range gathered(tile);  // the range's rules (the library's, as Dask's)
       const auto read_start = std::chrono::steady_clock::now();
-      {
-        // reserved from the density (an upper bound), the chunks small: the tile's points
-        // are most of the memory
-        double b[3], e[3];
-        tile_box(grid, t, lo, hi, halo, b, e);
-        const std::size_t expected = std::size_t(density.at_most(b, e)) + (t == 0 ? input.points - input.finite : 0);
-        points.xyz.reserve(3 * expected);
-        if(with_normals)
-          points.normals.reserve(3 * expected);
-        points.index.reserve(expected);
-        own.reserve(expected);
-        points.attributes.resize(attribute_count);
-        for(std::vector<double>& a : points.attributes)
-          a.reserve(expected);
-        Read_options o = options;
-        o.chunk_points = 1 << 16;
-        pass_progress.begin_read(v);
-        step(name + " read");
-        o.progress = step_progress;
-        o.chunk = [&](const Point_cloud& c) {
-          points.attributes.resize(c.attributes.size());
-          for(std::size_t k = 0; k < c.size(); ++k)
-          {
-            const double* p = &c.xyz[3 * k];
-            const bool finite = finite_point(p);
-            if(!gathered.take(p[0], p[1], p[2]) && (finite || t != 0))
-              continue;  // (the first tile takes the non-finite points, as its own)
-            append_point(c, k, points.xyz, points.normals, points.attributes);
-            if(tiling.normals)
-              points.normals.insert(points.normals.end(), &(*tiling.normals)[3 * (c.first + k)],
-                                    &(*tiling.normals)[3 * (c.first + k)] + 3);
-            points.index.push_back(c.first + k);
-            const bool is_own = finite ? tile.owns(p[0], p[1], p[2]) : true;
-            own.push_back(is_own ? 1 : 0);
-            own_count += is_own;
-          }
-        };
-        read_point_cloud(path, o);
-      }
+      pass_progress.begin_read(v);
+      step(name + " read");
+      Tile_read read =
+        read_tile(path, options, input, tiling, grid, t, tile, lo, hi, density, gathered, step_progress);
       report.read_seconds += seconds_since(read_start);
-      if(own_count == 0)
+      if(read.own_count == 0)
       {
         pass_progress.end_tile(false);
         break;
       }
-      if(with_normals && points.normals.size() != points.xyz.size())
-        throw Error(cat(in_quotes(path), ": internal error: normals missing in a tile"));
       const auto estimate_start = std::chrono::steady_clock::now();
-      const std::size_t range = points.size();
+      const std::size_t range = read.points.size();
       // A range holding every finite point is the whole cloud, whatever the halo's value: an
       // infinite halo says so to the estimator.
       halo = gathered.halo(input.finite);
@@ -578,7 +614,7 @@ Tiled_report visit_tiles(const std::string& path, const Read_options& options, c
       {
         pass_progress.begin_estimation(v);
         step(name + " " + tiling.estimate_phase);
-        visit(points, own, grid.tile(t, halo), step_progress);
+        visit(read.points, read.own, grid.tile(t, halo), step_progress);
       }
       catch(const PSC::Halo_too_small& e)
       {
