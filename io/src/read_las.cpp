@@ -248,53 +248,15 @@ std::string truncated_text(const std::string& path, const Las_header& l)
              " complete records");
 }
 
-} // namespace
-
-Point_cloud read_las(Byte_source& bytes, const std::string& path, const Read_options& options)
+// Skips the rest of the header and reads the variable length records into `source` (kept
+// unless they are larger than 16 MB: no LAS file has such; they are then skipped).
+void read_vlrs(Byte_source& bytes, const Las_header& l, const std::string& path, Las_source& source,
+               std::vector<std::string>& warnings)
 {
-  const bool keep_attributes = options.keep_attributes;
   auto fail = [&](const std::string& what) { throw Error(cat(in_quotes(path), ": ", what)); };
-  const Las_header l = read_las_header(bytes, path);
-  const std::uint64_t file_size = l.file_size, point_offset = l.point_offset;
-  const std::size_t header_size = l.header_size, record_length = l.record_length;
+  const std::size_t header_size = l.header_size;
+  const std::uint64_t point_offset = l.point_offset;
   const std::uint32_t vlr_count = l.vlr_count;
-  const int minor = l.minor, format = l.format;
-  const double* const scale = l.scale;
-  const double* const offset = l.offset;
-  const double* const min_bound = l.min_bound;
-  const double* const max_bound = l.max_bound;
-  std::uint64_t count = l.count;
-  Point_cloud cloud;
-  if(count > complete_records(l))
-  {
-    const std::uint64_t complete = complete_records(l);
-    if(!options.allow_truncated)
-      throw Error(truncated_text(path, l) + ": --allow-truncated reads them)");
-    cloud.warnings.push_back(cat(in_quotes(path), ": truncated: read the ", complete, " complete points of the ",
-                                 count, " the header declares (--allow-truncated)"));
-    count = complete;
-  }
-
-  // the header as read, for a LAS output
-  auto source = std::make_shared<Las_source>();
-  {
-    const std::size_t kept = std::min<std::size_t>(header_size, 375);
-    bytes.fill(kept);
-    source->header.assign(bytes.data(), kept);
-    source->header.resize(375, '\0');
-  }
-  source->minor = minor;
-  source->format = format;
-  for(int a = 0; a < 3; ++a)
-  {
-    source->scale[a] = scale[a];
-    source->offset[a] = offset[a];
-  }
-  if(minor >= 3)
-    source->waveform_start = little<std::uint64_t>(source->header.data() + 227);
-
-  // skip the rest of the header; the variable length records, kept unless they are larger
-  // than 16 MB (no LAS file has such; they are then skipped)
   for(std::uint64_t left = header_size; left > 0;)
   {
     const std::size_t chunk = std::size_t(std::min<std::uint64_t>(left, 1u << 20));
@@ -316,8 +278,8 @@ Point_cloud read_las(Byte_source& bytes, const std::string& path, const Read_opt
     {
       if(size - at < 54 || size - at - 54 < little<std::uint16_t>(region.data() + at + 20))
       {
-        source->vlrs_complete = false;
-        cloud.warnings.push_back(cat(in_quotes(path), ": the header declares ", vlr_count,
+        source.vlrs_complete = false;
+        warnings.push_back(cat(in_quotes(path), ": the header declares ", vlr_count,
                                      " variable length records, ", k, " fit before the point data: the others are "
                                      "not read"));
         break;
@@ -328,13 +290,13 @@ Point_cloud read_las(Byte_source& bytes, const std::string& path, const Read_opt
       const std::size_t length = little<std::uint16_t>(region.data() + at + 20);
       v.description.assign(region.data() + at + 22, 32);
       v.payload.assign(region.data() + at + 54, length);
-      source->vlrs.push_back(std::move(v));
+      source.vlrs.push_back(std::move(v));
       at += 54 + length;
     }
   }
   else
   {
-    source->vlrs_complete = false;
+    source.vlrs_complete = false;
     for(std::uint64_t left = vlr_bytes; left > 0;)
     {
       const std::size_t chunk = std::size_t(std::min<std::uint64_t>(left, 1u << 20));
@@ -344,59 +306,269 @@ Point_cloud read_las(Byte_source& bytes, const std::string& path, const Read_opt
       left -= chunk;
     }
   }
-  // the extended variable length records: where they are (their bytes are copied by a LAS
-  // output) and those of the CRS
-  std::vector<Las_source::Vlr> crs_records;
-  {
-    std::uint64_t at = 0, number = 0;
-    if(minor >= 4)
-    {
-      at = little<std::uint64_t>(source->header.data() + 235);
-      number = at == 0 ? 0 : little<std::uint32_t>(source->header.data() + 243);
-    }
-    else if(minor == 3 && source->waveform_start != 0)
-    {
-      at = source->waveform_start;
-      number = 1;
-    }
-    std::FILE* f = number == 0 ? nullptr : std::fopen(path.c_str(), "rb");
-    for(std::uint64_t k = 0; f && k < number; ++k)
-    {
-      char e[60];
-      if(at > file_size || file_size - at < 60 || std::fseek(f, long(at), SEEK_SET) != 0 ||
-         std::fread(e, 1, 60, f) != 60 || little<std::uint64_t>(e + 20) > file_size - at - 60)
-      {
-        cloud.warnings.push_back(cat(in_quotes(path), ": the extended variable length record ", k + 1, " of ",
-                                     number, " is not within the file: it and those after it are not read"));
-        break;
-      }
-      const std::uint64_t length = little<std::uint64_t>(e + 20);
-      source->evlrs.emplace_back(at, 60 + length);
-      Las_source::Vlr v;
-      v.user_id.assign(e + 2, 16);
-      v.record_id = little<std::uint16_t>(e + 18);
-      if(user_id_is(v.user_id, "LASF_Projection") && (v.record_id == 2112 || v.record_id == 34735) &&
-         length < (1u << 20))
-      {
-        v.payload.resize(std::size_t(length));
-        if(std::fread(&v.payload[0], 1, v.payload.size(), f) == v.payload.size())
-          crs_records.push_back(std::move(v));
-      }
-      at += 60 + length;
-    }
-    if(f)
-      std::fclose(f);
-  }
-  std::string geographic;
-  for(const Las_source::Vlr& v : source->vlrs)
-    if(geographic.empty())
-      geographic = geographic_crs(v);
-  for(const Las_source::Vlr& v : crs_records)
-    if(geographic.empty())
-      geographic = geographic_crs(v);
+}
 
-  const std::size_t n = std::size_t(count);
-  // the attributes of the format, in the order of Las_field
+// The extended variable length records: where they are in `source` (their bytes are copied by
+// a LAS output); returns those of the CRS.
+std::vector<Las_source::Vlr> read_evlrs(const std::string& path, const Las_header& l, Las_source& source,
+                                        std::vector<std::string>& warnings)
+{
+  const int minor = l.minor;
+  const std::uint64_t file_size = l.file_size;
+  std::vector<Las_source::Vlr> crs_records;
+  std::uint64_t at = 0, number = 0;
+  if(minor >= 4)
+  {
+    at = little<std::uint64_t>(source.header.data() + 235);
+    number = at == 0 ? 0 : little<std::uint32_t>(source.header.data() + 243);
+  }
+  else if(minor == 3 && source.waveform_start != 0)
+  {
+    at = source.waveform_start;
+    number = 1;
+  }
+  std::FILE* f = number == 0 ? nullptr : std::fopen(path.c_str(), "rb");
+  for(std::uint64_t k = 0; f && k < number; ++k)
+  {
+    char e[60];
+    if(at > file_size || file_size - at < 60 || std::fseek(f, long(at), SEEK_SET) != 0 ||
+       std::fread(e, 1, 60, f) != 60 || little<std::uint64_t>(e + 20) > file_size - at - 60)
+    {
+      warnings.push_back(cat(in_quotes(path), ": the extended variable length record ", k + 1, " of ",
+                                   number, " is not within the file: it and those after it are not read"));
+      break;
+    }
+    const std::uint64_t length = little<std::uint64_t>(e + 20);
+    source.evlrs.emplace_back(at, 60 + length);
+    Las_source::Vlr v;
+    v.user_id.assign(e + 2, 16);
+    v.record_id = little<std::uint16_t>(e + 18);
+    if(user_id_is(v.user_id, "LASF_Projection") && (v.record_id == 2112 || v.record_id == 34735) &&
+       length < (1u << 20))
+    {
+      v.payload.resize(std::size_t(length));
+      if(std::fread(&v.payload[0], 1, v.payload.size(), f) == v.payload.size())
+        crs_records.push_back(std::move(v));
+    }
+    at += 60 + length;
+  }
+  if(f)
+    std::fclose(f);
+  return crs_records;
+}
+
+// The extra bytes of the records: the fields the extra-bytes VLR of `source` describes, as
+// attributes of `cloud` where `keep_attributes` (their warnings too), or undocumented.
+std::vector<Extra_field> extra_fields(const Las_source& source, const Las_header& l, const std::string& path,
+                                      bool keep_attributes, Point_cloud& cloud)
+{
+  const int format = l.format;
+  const std::size_t record_length = l.record_length;
+  std::vector<Extra_field> extras;
+  std::size_t at = format_size[format];
+  const Las_source::Vlr* described = nullptr;
+  for(const Las_source::Vlr& v : source.vlrs)
+    if(user_id_is(v.user_id, "LASF_Spec") && v.record_id == 4)
+      described = &v;
+  std::vector<std::string> skipped;
+  for(std::size_t d = 0; described && d + 192 <= described->payload.size(); d += 192)
+  {
+    const char* e = described->payload.data() + d;
+    const int data_type = little<std::uint8_t>(e + 2), options_bits = little<std::uint8_t>(e + 3);
+    std::string name = field_name(e + 4, 32);
+    std::size_t size = 0;
+    if(data_type == 0)
+      size = std::size_t(options_bits);
+    else if(data_type <= 10)
+      size = extra_type_size[data_type];
+    else if(data_type <= 30)
+      size = extra_type_size[(data_type - 11) % 10 + 1] * (data_type <= 20 ? 2 : 3);
+    else
+    {
+      cloud.warnings.push_back(cat(in_quotes(path), ": extra bytes field ", in_quotes(name), " has the reserved "
+                                   "data type ", data_type, ": it and the extra bytes after it are not read"));
+      break;
+    }
+    if(size > record_length - at)
+    {
+      cloud.warnings.push_back(cat(in_quotes(path), ": the extra-bytes VLR describes more bytes than the ",
+                                   record_length - format_size[format], " extra bytes of the records: "
+                                   "from field ", in_quotes(name), " on, they are not read"));
+      break;
+    }
+    if(data_type >= 1 && data_type <= 10 && keep_attributes)
+    {
+      Extra_field x;
+      x.offset = at;
+      x.data_type = data_type;
+      if(options_bits & 8)
+        x.scale = little<double>(e + 112);
+      if(options_bits & 16)
+        x.shift = little<double>(e + 136);
+      if(name.empty())
+        name = cat("extra_", extras.size() + 1);
+      for(bool taken = true; taken;)
+      {
+        taken = false;
+        for(const Attribute& a : cloud.attributes)
+          taken = taken || a.name == name;
+        if(taken)
+          name = "extra_" + name;
+      }
+      static const Scalar_type raw_type[11] = {
+        Scalar_type::FLOAT64, Scalar_type::UINT8,   Scalar_type::INT8,    Scalar_type::UINT16,
+        Scalar_type::INT16,   Scalar_type::UINT32,  Scalar_type::INT32,   Scalar_type::FLOAT64,
+        Scalar_type::FLOAT64, Scalar_type::FLOAT32, Scalar_type::FLOAT64};
+      x.attribute = cloud.attributes.size();
+      cloud.attributes.push_back(
+        Attribute(name, (options_bits & 24) ? Scalar_type::FLOAT64 : raw_type[data_type]));
+      cloud.attributes.back().las_descriptor.assign(e, 192);
+      extras.push_back(x);
+    }
+    else if(data_type != 0 || size > 0)
+      skipped.push_back(cat(in_quotes(name.empty() ? "?" : name), data_type == 0 ? " (undocumented)"
+                                                                                 : " (deprecated array type)"));
+    at += size;
+  }
+  if(!skipped.empty() && keep_attributes)
+  {
+    std::string list;
+    for(const std::string& s : skipped)
+      list += (list.empty() ? "" : ", ") + s;
+    cloud.warnings.push_back(cat(in_quotes(path), ": extra bytes fields not read: ", list));
+  }
+  if(at < record_length && keep_attributes)
+    cloud.warnings.push_back(cat(in_quotes(path), ": ", record_length - at, " extra bytes per point record ",
+                                 described ? "beyond those the extra-bytes VLR describes" : "without an extra-bytes VLR "
+                                 "describing them", " are not read"));
+  return extras;
+}
+
+// Warns where the points' range [lo, hi] leaves the header's bounds, and where the coordinates
+// are in degrees (`geographic`: what the CRS says, if it is geographic; else from the range).
+void warn_of_bounds_and_degrees(const std::string& path, const Las_header& l, std::size_t n, const double lo[3],
+                                const double hi[3], std::string geographic, std::vector<std::string>& warnings)
+{
+  const double* const scale = l.scale;
+  const double* const min_bound = l.min_bound;
+  const double* const max_bound = l.max_bound;
+  // the header's bounds against the data, to half a unit of the scale (rounding)
+  for(int a = 0; a < 3 && n > 0; ++a)
+  {
+    const double slack = 0.5 * std::abs(scale[a]) + 1e-9 * std::max(std::abs(lo[a]), std::abs(hi[a]));
+    if(!(lo[a] >= min_bound[a] - slack && hi[a] <= max_bound[a] + slack))
+      warnings.push_back(cat(in_quotes(path), ": the points' ", "xyz"[a], " range [", exact_number(lo[a]), ", ",
+                                   exact_number(hi[a]), "] is not within the header's bounds [",
+                                   exact_number(min_bound[a]), ", ", exact_number(max_bound[a]),
+                                   "] (a corrupted header, or a writer that did not update it)"));
+  }
+  // coordinates in degrees: from the CRS, or x and y within longitudes and latitudes spanning
+  // less than a degree while z spans 20 times more (metres)
+  if(geographic.empty() && n > 0 && lo[0] >= -180 && hi[0] <= 180 && lo[1] >= -90 && hi[1] <= 90)
+  {
+    const double xy = std::max(hi[0] - lo[0], hi[1] - lo[1]), z = hi[2] - lo[2];
+    if(xy < 1 && z > 20 * xy)
+      geographic = cat("x and y look like longitude and latitude (x in [", lo[0], ", ", hi[0], "], y in [", lo[1],
+                       ", ", hi[1], "], while z spans ", z, ")");
+  }
+  if(!geographic.empty())
+    warnings.push_back(cat(in_quotes(path), ": ", geographic, ": curvatures in 1/degree are meaningless; "
+                                 "reproject to a projected CRS in metres first, for example 'pdal translate IN.las "
+                                 "OUT.las reprojection --filters.reprojection.out_srs=EPSG:326xx' (UTM zone xx "
+                                 "north), or give --radius in degrees"));
+}
+
+// The standard fields of point record `r` (point format `format`) into row `i` of the columns
+// of the fields `present`.
+inline void decode_las_fields(const char* r, int format, const bool present[LAS_FIELD_COUNT],
+                              double* const column[LAS_FIELD_COUNT], std::size_t i)
+{
+  const bool extended = format >= 6;
+  const std::size_t rgb = rgb_offset(format);
+  const unsigned b14 = little<std::uint8_t>(r + 14), b15 = little<std::uint8_t>(r + 15);
+  column[LAS_INTENSITY][i] = little<std::uint16_t>(r + 12);
+  if(!extended)
+  {
+    column[LAS_RETURN_NUMBER][i] = b14 & 7;
+    column[LAS_NUMBER_OF_RETURNS][i] = (b14 >> 3) & 7;
+    column[LAS_SCAN_DIRECTION][i] = (b14 >> 6) & 1;
+    column[LAS_EDGE][i] = (b14 >> 7) & 1;
+    column[LAS_CLASSIFICATION][i] = b15 & 31;
+    column[LAS_SYNTHETIC][i] = (b15 >> 5) & 1;
+    column[LAS_KEY_POINT][i] = (b15 >> 6) & 1;
+    column[LAS_WITHHELD][i] = (b15 >> 7) & 1;
+    column[LAS_SCAN_ANGLE][i] = little<std::int8_t>(r + 16);  // degrees
+    column[LAS_USER_DATA][i] = little<std::uint8_t>(r + 17);
+    column[LAS_POINT_SOURCE][i] = little<std::uint16_t>(r + 18);
+    if(present[LAS_GPS_TIME])
+      column[LAS_GPS_TIME][i] = little<double>(r + 20);
+  }
+  else
+  {
+    column[LAS_RETURN_NUMBER][i] = b14 & 15;
+    column[LAS_NUMBER_OF_RETURNS][i] = (b14 >> 4) & 15;
+    column[LAS_SYNTHETIC][i] = b15 & 1;
+    column[LAS_KEY_POINT][i] = (b15 >> 1) & 1;
+    column[LAS_WITHHELD][i] = (b15 >> 2) & 1;
+    column[LAS_OVERLAP][i] = (b15 >> 3) & 1;
+    column[LAS_SCANNER_CHANNEL][i] = (b15 >> 4) & 3;
+    column[LAS_SCAN_DIRECTION][i] = (b15 >> 6) & 1;
+    column[LAS_EDGE][i] = (b15 >> 7) & 1;
+    column[LAS_CLASSIFICATION][i] = little<std::uint8_t>(r + 16);
+    column[LAS_USER_DATA][i] = little<std::uint8_t>(r + 17);
+    column[LAS_SCAN_ANGLE][i] = float(little<std::int16_t>(r + 18) * 0.006);  // degrees
+    column[LAS_POINT_SOURCE][i] = little<std::uint16_t>(r + 20);
+    column[LAS_GPS_TIME][i] = little<double>(r + 22);
+  }
+  if(present[LAS_RED])
+  {
+    column[LAS_RED][i] = little<std::uint16_t>(r + rgb);
+    column[LAS_GREEN][i] = little<std::uint16_t>(r + rgb + 2);
+    column[LAS_BLUE][i] = little<std::uint16_t>(r + rgb + 4);
+  }
+  if(present[LAS_NIR])
+    column[LAS_NIR][i] = little<std::uint16_t>(r + rgb + 6);
+  if(present[LAS_WAVE_DESCRIPTOR])
+  {
+    const char* w = r + wave_offset(format);
+    column[LAS_WAVE_DESCRIPTOR][i] = little<std::uint8_t>(w);
+    column[LAS_WAVE_OFFSET][i] = double(little<std::uint64_t>(w + 1));
+    column[LAS_WAVE_SIZE][i] = little<std::uint32_t>(w + 9);
+    column[LAS_WAVE_LOCATION][i] = little<float>(w + 13);
+    column[LAS_WAVE_X_T][i] = little<float>(w + 17);
+    column[LAS_WAVE_Y_T][i] = little<float>(w + 21);
+    column[LAS_WAVE_Z_T][i] = little<float>(w + 25);
+  }
+}
+
+// The header as read (its first 375 bytes, zero-padded), for a LAS output.
+std::shared_ptr<Las_source> header_source(Byte_source& bytes, const Las_header& l)
+{
+  auto source = std::make_shared<Las_source>();
+  {
+    const std::size_t kept = std::min<std::size_t>(l.header_size, 375);
+    bytes.fill(kept);
+    source->header.assign(bytes.data(), kept);
+    source->header.resize(375, '\0');
+  }
+  source->minor = l.minor;
+  source->format = l.format;
+  for(int a = 0; a < 3; ++a)
+  {
+    source->scale[a] = l.scale[a];
+    source->offset[a] = l.offset[a];
+  }
+  if(l.minor >= 3)
+    source->waveform_start = little<std::uint64_t>(source->header.data() + 227);
+  return source;
+}
+
+// The standard fields of point format `format` as attributes of `cloud`, in the order of
+// Las_field, where `keep_attributes`: `present[f]` whether field f is read, `column_of[f]` its
+// attribute (-1 if not).
+void add_las_fields(int format, bool keep_attributes, Point_cloud& cloud, bool present[LAS_FIELD_COUNT],
+                    int column_of[LAS_FIELD_COUNT])
+{
   static const char* const names[LAS_FIELD_COUNT] = {
     "intensity", "return_number", "number_of_returns", "scan_direction_flag", "edge_of_flight_line",
     "classification", "synthetic", "key_point", "withheld", "overlap", "scanner_channel", "scan_angle",
@@ -410,7 +582,6 @@ Point_cloud read_las(Byte_source& bytes, const std::string& path, const Read_opt
     Scalar_type::FLOAT64, Scalar_type::UINT32, Scalar_type::FLOAT32, Scalar_type::FLOAT32, Scalar_type::FLOAT32,
     Scalar_type::FLOAT32};
   const bool extended = format >= 6;
-  bool present[LAS_FIELD_COUNT];
   for(int f = 0; f < LAS_FIELD_COUNT; ++f)
     present[f] = keep_attributes;
   if(keep_attributes)
@@ -422,7 +593,6 @@ Point_cloud read_las(Byte_source& bytes, const std::string& path, const Read_opt
     for(int f = LAS_WAVE_DESCRIPTOR; f <= LAS_WAVE_Z_T; ++f)
       present[f] = has_wave_packet(format);
   }
-  int column_of[LAS_FIELD_COUNT];
   for(int f = 0; f < LAS_FIELD_COUNT; ++f)
   {
     column_of[f] = present[f] ? int(cloud.attributes.size()) : -1;
@@ -432,86 +602,50 @@ Point_cloud read_las(Byte_source& bytes, const std::string& path, const Read_opt
       cloud.attributes.back().las_field = f;
     }
   }
-  // the extra bytes: described by the extra-bytes VLR, or undocumented
-  std::vector<Extra_field> extras;
+}
+
+} // namespace
+
+Point_cloud read_las(Byte_source& bytes, const std::string& path, const Read_options& options)
+{
+  const bool keep_attributes = options.keep_attributes;
+  auto fail = [&](const std::string& what) { throw Error(cat(in_quotes(path), ": ", what)); };
+  const Las_header l = read_las_header(bytes, path);
+  const std::size_t record_length = l.record_length;
+  const int format = l.format;
+  const double* const scale = l.scale;
+  const double* const offset = l.offset;
+  std::uint64_t count = l.count;
+  Point_cloud cloud;
+  if(count > complete_records(l))
   {
-    std::size_t at = format_size[format];
-    const Las_source::Vlr* described = nullptr;
-    for(const Las_source::Vlr& v : source->vlrs)
-      if(user_id_is(v.user_id, "LASF_Spec") && v.record_id == 4)
-        described = &v;
-    std::vector<std::string> skipped;
-    for(std::size_t d = 0; described && d + 192 <= described->payload.size(); d += 192)
-    {
-      const char* e = described->payload.data() + d;
-      const int data_type = little<std::uint8_t>(e + 2), options_bits = little<std::uint8_t>(e + 3);
-      std::string name = field_name(e + 4, 32);
-      std::size_t size = 0;
-      if(data_type == 0)
-        size = std::size_t(options_bits);
-      else if(data_type <= 10)
-        size = extra_type_size[data_type];
-      else if(data_type <= 30)
-        size = extra_type_size[(data_type - 11) % 10 + 1] * (data_type <= 20 ? 2 : 3);
-      else
-      {
-        cloud.warnings.push_back(cat(in_quotes(path), ": extra bytes field ", in_quotes(name), " has the reserved "
-                                     "data type ", data_type, ": it and the extra bytes after it are not read"));
-        break;
-      }
-      if(size > record_length - at)
-      {
-        cloud.warnings.push_back(cat(in_quotes(path), ": the extra-bytes VLR describes more bytes than the ",
-                                     record_length - format_size[format], " extra bytes of the records: "
-                                     "from field ", in_quotes(name), " on, they are not read"));
-        break;
-      }
-      if(data_type >= 1 && data_type <= 10 && keep_attributes)
-      {
-        Extra_field x;
-        x.offset = at;
-        x.data_type = data_type;
-        if(options_bits & 8)
-          x.scale = little<double>(e + 112);
-        if(options_bits & 16)
-          x.shift = little<double>(e + 136);
-        if(name.empty())
-          name = cat("extra_", extras.size() + 1);
-        for(bool taken = true; taken;)
-        {
-          taken = false;
-          for(const Attribute& a : cloud.attributes)
-            taken = taken || a.name == name;
-          if(taken)
-            name = "extra_" + name;
-        }
-        static const Scalar_type raw_type[11] = {
-          Scalar_type::FLOAT64, Scalar_type::UINT8,   Scalar_type::INT8,    Scalar_type::UINT16,
-          Scalar_type::INT16,   Scalar_type::UINT32,  Scalar_type::INT32,   Scalar_type::FLOAT64,
-          Scalar_type::FLOAT64, Scalar_type::FLOAT32, Scalar_type::FLOAT64};
-        x.attribute = cloud.attributes.size();
-        cloud.attributes.push_back(
-          Attribute(name, (options_bits & 24) ? Scalar_type::FLOAT64 : raw_type[data_type]));
-        cloud.attributes.back().las_descriptor.assign(e, 192);
-        extras.push_back(x);
-      }
-      else if(data_type != 0 || size > 0)
-        skipped.push_back(cat(in_quotes(name.empty() ? "?" : name), data_type == 0 ? " (undocumented)"
-                                                                                   : " (deprecated array type)"));
-      at += size;
-    }
-    if(!skipped.empty() && keep_attributes)
-    {
-      std::string list;
-      for(const std::string& s : skipped)
-        list += (list.empty() ? "" : ", ") + s;
-      cloud.warnings.push_back(cat(in_quotes(path), ": extra bytes fields not read: ", list));
-    }
-    if(at < record_length && keep_attributes)
-      cloud.warnings.push_back(cat(in_quotes(path), ": ", record_length - at, " extra bytes per point record ",
-                                   described ? "beyond those the extra-bytes VLR describes" : "without an extra-bytes VLR "
-                                   "describing them", " are not read"));
+    const std::uint64_t complete = complete_records(l);
+    if(!options.allow_truncated)
+      throw Error(truncated_text(path, l) + ": --allow-truncated reads them)");
+    cloud.warnings.push_back(cat(in_quotes(path), ": truncated: read the ", complete, " complete points of the ",
+                                 count, " the header declares (--allow-truncated)"));
+    count = complete;
   }
+
+  // the header as read, for a LAS output
+  const std::shared_ptr<Las_source> source = header_source(bytes, l);
+  read_vlrs(bytes, l, path, *source, cloud.warnings);
+  const std::vector<Las_source::Vlr> crs_records = read_evlrs(path, l, *source, cloud.warnings);
+  std::string geographic;
+  for(const Las_source::Vlr& v : source->vlrs)
+    if(geographic.empty())
+      geographic = geographic_crs(v);
+  for(const Las_source::Vlr& v : crs_records)
+    if(geographic.empty())
+      geographic = geographic_crs(v);
+
+  const std::size_t n = std::size_t(count);
+  // the attributes of the format, in the order of Las_field
+  bool present[LAS_FIELD_COUNT];
+  int column_of[LAS_FIELD_COUNT];
+  add_las_fields(format, keep_attributes, cloud, present, column_of);
+  // the extra bytes: described by the extra-bytes VLR, or undocumented
+  const std::vector<Extra_field> extras = extra_fields(*source, l, path, keep_attributes, cloud);
   cloud.las = source;
   // the points held: all of them, or a chunk at a time (Read_options::chunk)
   const std::size_t held = options.chunk ? std::min(n, options.chunk_points) : n;
@@ -521,7 +655,6 @@ Point_cloud read_las(Byte_source& bytes, const std::string& path, const Read_opt
 
   const std::size_t block = std::max<std::size_t>(1, (1u << 20) / record_length);
   double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-  const std::size_t rgb = rgb_offset(format);
   double* column[LAS_FIELD_COUNT] = {};
   std::vector<double*> extra_column(extras.size());
   for(std::size_t first = 0; first < n;)
@@ -551,60 +684,7 @@ Point_cloud read_las(Byte_source& bytes, const std::string& path, const Read_opt
       }
       if(!keep_attributes)
         continue;
-      const unsigned b14 = little<std::uint8_t>(r + 14), b15 = little<std::uint8_t>(r + 15);
-      column[LAS_INTENSITY][i] = little<std::uint16_t>(r + 12);
-      if(!extended)
-      {
-        column[LAS_RETURN_NUMBER][i] = b14 & 7;
-        column[LAS_NUMBER_OF_RETURNS][i] = (b14 >> 3) & 7;
-        column[LAS_SCAN_DIRECTION][i] = (b14 >> 6) & 1;
-        column[LAS_EDGE][i] = (b14 >> 7) & 1;
-        column[LAS_CLASSIFICATION][i] = b15 & 31;
-        column[LAS_SYNTHETIC][i] = (b15 >> 5) & 1;
-        column[LAS_KEY_POINT][i] = (b15 >> 6) & 1;
-        column[LAS_WITHHELD][i] = (b15 >> 7) & 1;
-        column[LAS_SCAN_ANGLE][i] = little<std::int8_t>(r + 16);  // degrees
-        column[LAS_USER_DATA][i] = little<std::uint8_t>(r + 17);
-        column[LAS_POINT_SOURCE][i] = little<std::uint16_t>(r + 18);
-        if(present[LAS_GPS_TIME])
-          column[LAS_GPS_TIME][i] = little<double>(r + 20);
-      }
-      else
-      {
-        column[LAS_RETURN_NUMBER][i] = b14 & 15;
-        column[LAS_NUMBER_OF_RETURNS][i] = (b14 >> 4) & 15;
-        column[LAS_SYNTHETIC][i] = b15 & 1;
-        column[LAS_KEY_POINT][i] = (b15 >> 1) & 1;
-        column[LAS_WITHHELD][i] = (b15 >> 2) & 1;
-        column[LAS_OVERLAP][i] = (b15 >> 3) & 1;
-        column[LAS_SCANNER_CHANNEL][i] = (b15 >> 4) & 3;
-        column[LAS_SCAN_DIRECTION][i] = (b15 >> 6) & 1;
-        column[LAS_EDGE][i] = (b15 >> 7) & 1;
-        column[LAS_CLASSIFICATION][i] = little<std::uint8_t>(r + 16);
-        column[LAS_USER_DATA][i] = little<std::uint8_t>(r + 17);
-        column[LAS_SCAN_ANGLE][i] = float(little<std::int16_t>(r + 18) * 0.006);  // degrees
-        column[LAS_POINT_SOURCE][i] = little<std::uint16_t>(r + 20);
-        column[LAS_GPS_TIME][i] = little<double>(r + 22);
-      }
-      if(present[LAS_RED])
-      {
-        column[LAS_RED][i] = little<std::uint16_t>(r + rgb);
-        column[LAS_GREEN][i] = little<std::uint16_t>(r + rgb + 2);
-        column[LAS_BLUE][i] = little<std::uint16_t>(r + rgb + 4);
-      }
-      if(present[LAS_NIR])
-        column[LAS_NIR][i] = little<std::uint16_t>(r + rgb + 6);
-      if(present[LAS_WAVE_DESCRIPTOR])
-      {
-        const char* w = r + wave_offset(format);
-        column[LAS_WAVE_DESCRIPTOR][i] = little<std::uint8_t>(w);
-        column[LAS_WAVE_OFFSET][i] = double(little<std::uint64_t>(w + 1));
-        column[LAS_WAVE_SIZE][i] = little<std::uint32_t>(w + 9);
-        column[LAS_WAVE_LOCATION][i] = little<float>(w + 13);
-        column[LAS_WAVE_X_T][i] = little<float>(w + 17);
-        column[LAS_WAVE_Y_T][i] = little<float>(w + 21);
-        column[LAS_WAVE_Z_T][i] = little<float>(w + 25);
-      }
+      decode_las_fields(r, format, present, column, i);
       for(std::size_t x = 0; x < extras.size(); ++x)
         extra_column[x][i] = extra_value(r + extras[x].offset, extras[x].data_type) * extras[x].scale + extras[x].shift;
     }
@@ -612,30 +692,7 @@ Point_cloud read_las(Byte_source& bytes, const std::string& path, const Read_opt
     first += m;
     hand_over(cloud, options);
   }
-  // the header's bounds against the data, to half a unit of the scale (rounding)
-  for(int a = 0; a < 3 && n > 0; ++a)
-  {
-    const double slack = 0.5 * std::abs(scale[a]) + 1e-9 * std::max(std::abs(lo[a]), std::abs(hi[a]));
-    if(!(lo[a] >= min_bound[a] - slack && hi[a] <= max_bound[a] + slack))
-      cloud.warnings.push_back(cat(in_quotes(path), ": the points' ", "xyz"[a], " range [", exact_number(lo[a]), ", ",
-                                   exact_number(hi[a]), "] is not within the header's bounds [",
-                                   exact_number(min_bound[a]), ", ", exact_number(max_bound[a]),
-                                   "] (a corrupted header, or a writer that did not update it)"));
-  }
-  // coordinates in degrees: from the CRS, or x and y within longitudes and latitudes spanning
-  // less than a degree while z spans 20 times more (metres)
-  if(geographic.empty() && n > 0 && lo[0] >= -180 && hi[0] <= 180 && lo[1] >= -90 && hi[1] <= 90)
-  {
-    const double xy = std::max(hi[0] - lo[0], hi[1] - lo[1]), z = hi[2] - lo[2];
-    if(xy < 1 && z > 20 * xy)
-      geographic = cat("x and y look like longitude and latitude (x in [", lo[0], ", ", hi[0], "], y in [", lo[1],
-                       ", ", hi[1], "], while z spans ", z, ")");
-  }
-  if(!geographic.empty())
-    cloud.warnings.push_back(cat(in_quotes(path), ": ", geographic, ": curvatures in 1/degree are meaningless; "
-                                 "reproject to a projected CRS in metres first, for example 'pdal translate IN.las "
-                                 "OUT.las reprojection --filters.reprojection.out_srs=EPSG:326xx' (UTM zone xx "
-                                 "north), or give --radius in degrees"));
+  warn_of_bounds_and_degrees(path, l, n, lo, hi, geographic, cloud.warnings);
   hand_over(cloud, options, true);
   return cloud;  // the rest of the file (waveforms, extended records) is not read
 }
