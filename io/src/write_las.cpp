@@ -287,24 +287,13 @@ std::uint64_t las_output_size(const Las_output_options& options, const std::vect
   return l.point_offset + std::uint64_t(n) * l.record_length + evlrs;
 }
 
-std::vector<std::string> write_las(std::FILE* f, const Las_output_options& options,
-                                   const std::vector<Output_field>& fields, const std::vector<Attribute>& attributes,
-                                   std::size_t n, const std::function<void(std::size_t, Output_row&)>& row,
-                                   const Progress& progress)
-{
-  std::vector<std::string> warnings;
-  const Las_source* source = options.source.get();
-  const Las_layout l = las_layout(options, fields, attributes, warnings);
-  const int* standard_source = l.standard_source;
-  const int format = l.format;
-  const std::vector<Extra>& extras = l.extras;
-  const std::size_t record_length = l.record_length;
-  const std::string& vlrs = l.vlrs;
-  const std::uint32_t vlr_count = l.vlr_count;
-  const std::uint64_t point_offset = l.point_offset;
+namespace {
 
-  // scale and offset: the input's, or chosen from the bounds
-  double scale[3], offset[3];
+// The scale and offset of the output's coordinates: the input's, or chosen from the bounds
+// (offset at the floor of the minimum, scale 0.001, finer for extents below 1000).
+void las_scale_offset(const Las_output_options& options, double scale[3], double offset[3])
+{
+  const Las_source* source = options.source.get();
   for(int a = 0; a < 3; ++a)
   {
     if(source)
@@ -324,11 +313,18 @@ std::vector<std::string> write_las(std::FILE* f, const Las_output_options& optio
     while(extent / scale[a] > 2e9)
       scale[a] *= 10;
   }
+}
 
-  // the header (written again at the end with the counts and bounds)
+// The header as first written (the counts, bounds and extended records' place are written at
+// the end, finish_las_header()): the input's identifiers, this program, the layout, the scale
+// and offset; `global_encoding` the input's bits that stay valid (completed at the end).
+std::string las_header_start(const Las_source* source, const Las_layout& l, const double scale[3],
+                             const double offset[3], std::uint16_t& global_encoding)
+{
+  const int format = l.format;
   std::string header(375, '\0');
   std::memcpy(&header[0], "LASF", 4);
-  std::uint16_t global_encoding = 0;
+  global_encoding = 0;
   if(source)
   {
     std::memcpy(&header[4], source->header.data() + 4, 2);    // file source id
@@ -349,131 +345,91 @@ std::vector<std::string> write_las(std::FILE* f, const Las_output_options& optio
   put(&header[90], std::uint16_t(day));
   put(&header[92], std::uint16_t(year));
   put(&header[94], std::uint16_t(375));
-  put(&header[96], std::uint32_t(point_offset));
-  put(&header[100], vlr_count);
+  put(&header[96], std::uint32_t(l.point_offset));
+  put(&header[100], l.vlr_count);
   put(&header[104], std::uint8_t(format));
-  put(&header[105], std::uint16_t(record_length));
+  put(&header[105], std::uint16_t(l.record_length));
   for(int a = 0; a < 3; ++a)
   {
     put(&header[131 + 8 * a], scale[a]);
     put(&header[155 + 8 * a], offset[a]);
   }
-  std::fwrite(header.data(), 1, header.size(), f);
-  std::fwrite(vlrs.data(), 1, vlrs.size(), f);
+  return header;
+}
 
-  // the points
-  std::uint64_t by_return[15] = {};
-  double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-  std::size_t not_finite = 0;
-  const std::size_t step = std::max<std::size_t>(1, n / 100);
-  std::vector<char> chunk;
-  std::vector<char> record(record_length);
-  Output_row r;
+// The standard fields of a point record `p` (point format `format`), each from `field(f,
+// otherwise)`; `finite`: the point's coordinates are (else it is withheld). Counts the point
+// by its return number in `by_return`.
+template <class Field>
+inline void encode_las_fields(char* p, int format, bool finite, const Field& field, std::uint64_t by_return[15])
+{
   const bool extended = format >= 6;
-  for(std::size_t i = 0; i < n; ++i)
+  const double withheld = finite ? field(LAS_WITHHELD, 0) : 1;
+  const unsigned return_number = to_integer<std::uint8_t>(field(LAS_RETURN_NUMBER, 1));
+  put(p + 12, to_integer<std::uint16_t>(field(LAS_INTENSITY, 0)));
+  const unsigned returns = to_integer<std::uint8_t>(field(LAS_NUMBER_OF_RETURNS, 1));
+  const unsigned direction = to_integer<std::uint8_t>(field(LAS_SCAN_DIRECTION, 0)) & 1;
+  const unsigned edge = to_integer<std::uint8_t>(field(LAS_EDGE, 0)) & 1;
+  const unsigned synthetic = to_integer<std::uint8_t>(field(LAS_SYNTHETIC, 0)) & 1;
+  const unsigned key = to_integer<std::uint8_t>(field(LAS_KEY_POINT, 0)) & 1;
+  const unsigned held = to_integer<std::uint8_t>(withheld) & 1;
+  const unsigned classification = to_integer<std::uint8_t>(field(LAS_CLASSIFICATION, 0));
+  if(!extended)
   {
-    row(i, r);
-    auto attribute = [&](std::size_t j) {
-      return r.attributes ? r.attributes[j] : attributes[j].values[i];
-    };
-    auto field = [&](int f, double otherwise) {
-      return standard_source[f] >= 0 ? attribute(std::size_t(standard_source[f])) : otherwise;
-    };
-    std::fill(record.begin(), record.end(), '\0');
-    char* p = record.data();
-    const bool finite = std::isfinite(r.value[0]) && std::isfinite(r.value[1]) && std::isfinite(r.value[2]);
-    if(finite)
-      for(int a = 0; a < 3; ++a)
-      {
-        const std::int32_t X = to_integer<std::int32_t>((r.value[a] - offset[a]) / scale[a]);
-        put(p + 4 * a, X);
-        const double v = double(X) * scale[a] + offset[a];
-        lo[a] = std::min(lo[a], v);
-        hi[a] = std::max(hi[a], v);
-      }
-    else
-      ++not_finite;
-    const double withheld = finite ? field(LAS_WITHHELD, 0) : 1;
-    const unsigned return_number = to_integer<std::uint8_t>(field(LAS_RETURN_NUMBER, 1));
-    put(p + 12, to_integer<std::uint16_t>(field(LAS_INTENSITY, 0)));
-    const unsigned returns = to_integer<std::uint8_t>(field(LAS_NUMBER_OF_RETURNS, 1));
-    const unsigned direction = to_integer<std::uint8_t>(field(LAS_SCAN_DIRECTION, 0)) & 1;
-    const unsigned edge = to_integer<std::uint8_t>(field(LAS_EDGE, 0)) & 1;
-    const unsigned synthetic = to_integer<std::uint8_t>(field(LAS_SYNTHETIC, 0)) & 1;
-    const unsigned key = to_integer<std::uint8_t>(field(LAS_KEY_POINT, 0)) & 1;
-    const unsigned held = to_integer<std::uint8_t>(withheld) & 1;
-    const unsigned classification = to_integer<std::uint8_t>(field(LAS_CLASSIFICATION, 0));
-    if(!extended)
-    {
-      p[14] = char((return_number & 7) | ((returns & 7) << 3) | (direction << 6) | (edge << 7));
-      p[15] = char((classification & 31) | (synthetic << 5) | (key << 6) | (held << 7));
-      put(p + 16, to_integer<std::int8_t>(field(LAS_SCAN_ANGLE, 0)));
-      put(p + 17, to_integer<std::uint8_t>(field(LAS_USER_DATA, 0)));
-      put(p + 18, to_integer<std::uint16_t>(field(LAS_POINT_SOURCE, 0)));
-      if(has_gps_time(format))
-        put(p + 20, field(LAS_GPS_TIME, 0));
-      if(return_number >= 1 && (return_number & 7) <= 5)
-        ++by_return[(return_number & 7) - 1];
-    }
-    else
-    {
-      const unsigned overlap = to_integer<std::uint8_t>(field(LAS_OVERLAP, 0)) & 1;
-      const unsigned channel = to_integer<std::uint8_t>(field(LAS_SCANNER_CHANNEL, 0)) & 3;
-      p[14] = char((return_number & 15) | ((returns & 15) << 4));
-      p[15] = char(synthetic | (key << 1) | (held << 2) | (overlap << 3) | (channel << 4) | (direction << 6) |
-                   (edge << 7));
-      p[16] = char(classification);
-      put(p + 17, to_integer<std::uint8_t>(field(LAS_USER_DATA, 0)));
-      put(p + 18, to_integer<std::int16_t>(field(LAS_SCAN_ANGLE, 0) / 0.006));
-      put(p + 20, to_integer<std::uint16_t>(field(LAS_POINT_SOURCE, 0)));
-      put(p + 22, field(LAS_GPS_TIME, 0));
-      if((return_number & 15) >= 1)
-        ++by_return[(return_number & 15) - 1];
-    }
-    if(has_rgb(format))
-    {
-      const std::size_t c = rgb_offset(format);
-      put(p + c, to_integer<std::uint16_t>(field(LAS_RED, 0)));
-      put(p + c + 2, to_integer<std::uint16_t>(field(LAS_GREEN, 0)));
-      put(p + c + 4, to_integer<std::uint16_t>(field(LAS_BLUE, 0)));
-      if(has_nir(format))
-        put(p + c + 6, to_integer<std::uint16_t>(field(LAS_NIR, 0)));
-    }
-    if(has_wave_packet(format))
-    {
-      char* w = p + wave_offset(format);
-      put(w, to_integer<std::uint8_t>(field(LAS_WAVE_DESCRIPTOR, 0)));
-      put(w + 1, to_integer<std::uint64_t>(field(LAS_WAVE_OFFSET, 0)));
-      put(w + 9, to_integer<std::uint32_t>(field(LAS_WAVE_SIZE, 0)));
-      put(w + 13, static_cast<float>(field(LAS_WAVE_LOCATION, 0)));
-      put(w + 17, static_cast<float>(field(LAS_WAVE_X_T, 0)));
-      put(w + 21, static_cast<float>(field(LAS_WAVE_Y_T, 0)));
-      put(w + 25, static_cast<float>(field(LAS_WAVE_Z_T, 0)));
-    }
-    for(const Extra& x : extras)
-    {
-      const int s = fields[x.field].source;
-      const double v = s < output_value_count ? r.value[s] : attribute(std::size_t(s - Output_field::ATTRIBUTE));
-      put_extra(p + x.offset, x.data_type, (v - x.shift) / x.scale);
-    }
-    chunk.insert(chunk.end(), record.begin(), record.end());
-    if(chunk.size() > (1u << 20))
-    {
-      std::fwrite(chunk.data(), 1, chunk.size(), f);
-      chunk.clear();
-    }
-    if(progress && (i + 1) % step == 0 && !progress(double(i + 1) / double(n)))
-      throw Cancelled();
+    p[14] = char((return_number & 7) | ((returns & 7) << 3) | (direction << 6) | (edge << 7));
+    p[15] = char((classification & 31) | (synthetic << 5) | (key << 6) | (held << 7));
+    put(p + 16, to_integer<std::int8_t>(field(LAS_SCAN_ANGLE, 0)));
+    put(p + 17, to_integer<std::uint8_t>(field(LAS_USER_DATA, 0)));
+    put(p + 18, to_integer<std::uint16_t>(field(LAS_POINT_SOURCE, 0)));
+    if(has_gps_time(format))
+      put(p + 20, field(LAS_GPS_TIME, 0));
+    if(return_number >= 1 && (return_number & 7) <= 5)
+      ++by_return[(return_number & 7) - 1];
   }
-  if(!chunk.empty())
-    std::fwrite(chunk.data(), 1, chunk.size(), f);
-  if(not_finite > 0)
-    warnings.push_back(cat(not_finite, " points with non-finite coordinates are written to the LAS output at its "
-                           "offset, withheld (LAS coordinates are integers)"));
+  else
+  {
+    const unsigned overlap = to_integer<std::uint8_t>(field(LAS_OVERLAP, 0)) & 1;
+    const unsigned channel = to_integer<std::uint8_t>(field(LAS_SCANNER_CHANNEL, 0)) & 3;
+    p[14] = char((return_number & 15) | ((returns & 15) << 4));
+    p[15] = char(synthetic | (key << 1) | (held << 2) | (overlap << 3) | (channel << 4) | (direction << 6) |
+                 (edge << 7));
+    p[16] = char(classification);
+    put(p + 17, to_integer<std::uint8_t>(field(LAS_USER_DATA, 0)));
+    put(p + 18, to_integer<std::int16_t>(field(LAS_SCAN_ANGLE, 0) / 0.006));
+    put(p + 20, to_integer<std::uint16_t>(field(LAS_POINT_SOURCE, 0)));
+    put(p + 22, field(LAS_GPS_TIME, 0));
+    if((return_number & 15) >= 1)
+      ++by_return[(return_number & 15) - 1];
+  }
+  if(has_rgb(format))
+  {
+    const std::size_t c = rgb_offset(format);
+    put(p + c, to_integer<std::uint16_t>(field(LAS_RED, 0)));
+    put(p + c + 2, to_integer<std::uint16_t>(field(LAS_GREEN, 0)));
+    put(p + c + 4, to_integer<std::uint16_t>(field(LAS_BLUE, 0)));
+    if(has_nir(format))
+      put(p + c + 6, to_integer<std::uint16_t>(field(LAS_NIR, 0)));
+  }
+  if(has_wave_packet(format))
+  {
+    char* w = p + wave_offset(format);
+    put(w, to_integer<std::uint8_t>(field(LAS_WAVE_DESCRIPTOR, 0)));
+    put(w + 1, to_integer<std::uint64_t>(field(LAS_WAVE_OFFSET, 0)));
+    put(w + 9, to_integer<std::uint32_t>(field(LAS_WAVE_SIZE, 0)));
+    put(w + 13, static_cast<float>(field(LAS_WAVE_LOCATION, 0)));
+    put(w + 17, static_cast<float>(field(LAS_WAVE_X_T, 0)));
+    put(w + 21, static_cast<float>(field(LAS_WAVE_Y_T, 0)));
+    put(w + 25, static_cast<float>(field(LAS_WAVE_Z_T, 0)));
+  }
+}
 
-  // the extended variable length records, copied from the input
-  std::uint64_t at = point_offset + std::uint64_t(n) * record_length, first_evlr = 0, waveform_start = 0;
-  std::uint32_t evlr_count = 0;
+// The extended variable length records of the input (`source`), copied to `f` from byte `at`
+// on (but the input's extra-bytes description: the output's VLR describes its own): where the
+// first and the waveform records are, and their number. Returns the end of what was written.
+std::uint64_t copy_las_evlrs(std::FILE* f, const Las_output_options& options, const Las_source* source,
+                             std::uint64_t at, std::uint64_t& first_evlr, std::uint64_t& waveform_start,
+                             std::uint32_t& evlr_count)
+{
   if(source && !source->evlrs.empty())
   {
     std::FILE* in = std::fopen(options.input_path.c_str(), "rb");
@@ -516,10 +472,15 @@ std::vector<std::string> write_las(std::FILE* f, const Las_output_options& optio
     }
     std::fclose(in);
   }
-  if(waveform_start == 0)
-    global_encoding &= ~std::uint16_t(2);  // no waveform data packets in the file
+  return at;
+}
 
-  // the header again, complete
+// The header completed: the encoding, the point counts (by return), the bounds [lo, hi] and the
+// extended records' place.
+void finish_las_header(std::string& header, int format, std::size_t n, std::uint16_t global_encoding,
+                       const std::uint64_t by_return[15], const double lo[3], const double hi[3],
+                       std::uint64_t waveform_start, std::uint64_t first_evlr, std::uint32_t evlr_count)
+{
   put(&header[6], global_encoding);
   const bool legacy = format <= 5 && n <= 0xFFFFFFFFu;
   put(&header[107], std::uint32_t(legacy ? n : 0));
@@ -537,6 +498,98 @@ std::vector<std::string> write_las(std::FILE* f, const Las_output_options& optio
   put(&header[247], std::uint64_t(n));
   for(int k = 0; k < 15; ++k)
     put(&header[255 + 8 * k], by_return[k]);
+}
+
+} // namespace
+
+std::vector<std::string> write_las(std::FILE* f, const Las_output_options& options,
+                                   const std::vector<Output_field>& fields, const std::vector<Attribute>& attributes,
+                                   std::size_t n, const std::function<void(std::size_t, Output_row&)>& row,
+                                   const Progress& progress)
+{
+  std::vector<std::string> warnings;
+  const Las_source* source = options.source.get();
+  const Las_layout l = las_layout(options, fields, attributes, warnings);
+  const int* standard_source = l.standard_source;
+  const int format = l.format;
+  const std::vector<Extra>& extras = l.extras;
+  const std::size_t record_length = l.record_length;
+  const std::string& vlrs = l.vlrs;
+  const std::uint64_t point_offset = l.point_offset;
+
+  // scale and offset: the input's, or chosen from the bounds
+  double scale[3], offset[3];
+  las_scale_offset(options, scale, offset);
+
+  // the header (written again at the end with the counts and bounds)
+  std::uint16_t global_encoding = 0;
+  std::string header = las_header_start(source, l, scale, offset, global_encoding);
+  std::fwrite(header.data(), 1, header.size(), f);
+  std::fwrite(vlrs.data(), 1, vlrs.size(), f);
+
+  // the points
+  std::uint64_t by_return[15] = {};
+  double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  std::size_t not_finite = 0;
+  const std::size_t step = std::max<std::size_t>(1, n / 100);
+  std::vector<char> chunk;
+  std::vector<char> record(record_length);
+  Output_row r;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    row(i, r);
+    auto attribute = [&](std::size_t j) {
+      return r.attributes ? r.attributes[j] : attributes[j].values[i];
+    };
+    auto field = [&](int f, double otherwise) {
+      return standard_source[f] >= 0 ? attribute(std::size_t(standard_source[f])) : otherwise;
+    };
+    std::fill(record.begin(), record.end(), '\0');
+    char* p = record.data();
+    const bool finite = std::isfinite(r.value[0]) && std::isfinite(r.value[1]) && std::isfinite(r.value[2]);
+    if(finite)
+      for(int a = 0; a < 3; ++a)
+      {
+        const std::int32_t X = to_integer<std::int32_t>((r.value[a] - offset[a]) / scale[a]);
+        put(p + 4 * a, X);
+        const double v = double(X) * scale[a] + offset[a];
+        lo[a] = std::min(lo[a], v);
+        hi[a] = std::max(hi[a], v);
+      }
+    else
+      ++not_finite;
+    encode_las_fields(p, format, finite, field, by_return);
+    for(const Extra& x : extras)
+    {
+      const int s = fields[x.field].source;
+      const double v = s < output_value_count ? r.value[s] : attribute(std::size_t(s - Output_field::ATTRIBUTE));
+      put_extra(p + x.offset, x.data_type, (v - x.shift) / x.scale);
+    }
+    chunk.insert(chunk.end(), record.begin(), record.end());
+    if(chunk.size() > (1u << 20))
+    {
+      std::fwrite(chunk.data(), 1, chunk.size(), f);
+      chunk.clear();
+    }
+    if(progress && (i + 1) % step == 0 && !progress(double(i + 1) / double(n)))
+      throw Cancelled();
+  }
+  if(!chunk.empty())
+    std::fwrite(chunk.data(), 1, chunk.size(), f);
+  if(not_finite > 0)
+    warnings.push_back(cat(not_finite, " points with non-finite coordinates are written to the LAS output at its "
+                           "offset, withheld (LAS coordinates are integers)"));
+
+  // the extended variable length records, copied from the input
+  std::uint64_t first_evlr = 0, waveform_start = 0;
+  std::uint32_t evlr_count = 0;
+  const std::uint64_t at = copy_las_evlrs(f, options, source, point_offset + std::uint64_t(n) * record_length,
+                                          first_evlr, waveform_start, evlr_count);
+  if(waveform_start == 0)
+    global_encoding &= ~std::uint16_t(2);  // no waveform data packets in the file
+
+  // the header again, complete
+  finish_las_header(header, format, n, global_encoding, by_return, lo, hi, waveform_start, first_evlr, evlr_count);
   if(std::fseek(f, 0, SEEK_SET) != 0)
     throw Error("cannot write the LAS header: the output is not seekable");
   std::fwrite(header.data(), 1, header.size(), f);
