@@ -141,6 +141,141 @@ inline Vcm_neighborhood_record vcm_neighborhood_record(const Neighborhood& nb)
   return r;
 }
 
+// Refuses clouds that CGAL's Delaunay triangulation and the cells cannot take: coordinates
+// beyond 1e150 (their squares overflow and crash CGAL's exact fallback) or an extent below
+// 1e-100 (their squares underflow: the exact fallback then divides by zero, SIGFPE).
+inline void check_vcm_coordinates(const std::vector<CGAL::Epick::Point_3>& vcm_points, const char* function_name)
+{
+  typedef CGAL::Epick::Point_3 Vcm_point;
+  for(const Vcm_point& p : vcm_points)
+    if(std::abs(p.x()) > 1e150 || std::abs(p.y()) > 1e150 || std::abs(p.z()) > 1e150)
+    {
+      std::ostringstream msg;
+      msg << function_name << ": coordinates beyond 1e150 in absolute value (here " << p
+          << ") overflow CGAL's Voronoi covariance measure; translate or scale the cloud";
+      throw std::invalid_argument(msg.str());
+    }
+  {
+    double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    for(const Vcm_point& p : vcm_points)
+      for(int a = 0; a < 3; ++a)
+      {
+        lo[a] = std::min(lo[a], p[a]);
+        hi[a] = std::max(hi[a], p[a]);
+      }
+    const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+    if(extent > 0 && extent < 1e-100)
+    {
+      std::ostringstream msg;
+      msg << function_name << ": a cloud of extent " << extent
+          << " (below 1e-100) underflows CGAL's Voronoi covariance measure; scale the cloud";
+      throw std::invalid_argument(msg.str());
+    }
+  }
+}
+
+// The Voronoi cells' adjacency: each point's Delaunay neighbours (`neighbors` from
+// `neighbor_begin[j]` to `neighbor_begin[j + 1]`, by increasing index) and the point whose
+// vertex holds its cell (`cell_of[j]`: itself, or the point it coincides with).
+struct Vcm_adjacency
+{
+  std::vector<std::uint32_t> neighbor_begin, neighbors, cell_of;
+};
+
+// CGAL's Delaunay triangulation of the points (coincident points share a vertex, hence a
+// cell), each point's neighbours in the order of their index (read sequentially: CGAL's
+// incident_vertices() marks the vertices it visits).
+inline Vcm_adjacency vcm_adjacency(const std::vector<CGAL::Epick::Point_3>& vcm_points)
+{
+  typedef CGAL::Epick::Point_3 Vcm_point;
+  typedef CGAL::Triangulation_vertex_base_with_info_3<std::uint32_t, CGAL::Epick> Vertex_base;
+  typedef CGAL::Triangulation_data_structure_3<Vertex_base> Tds;
+  typedef CGAL::Delaunay_triangulation_3<CGAL::Epick, Tds> Delaunay;
+  const std::size_t m = vcm_points.size();
+  Vcm_adjacency a;
+  a.neighbor_begin.assign(m + 1, 0);
+  a.cell_of.resize(m);
+  std::vector<std::pair<Vcm_point, std::uint32_t> > with_index;
+  with_index.reserve(m);
+  for(std::size_t j = 0; j < m; ++j)
+    with_index.emplace_back(vcm_points[j], static_cast<std::uint32_t>(j));
+  Delaunay dt(with_index.begin(), with_index.end());
+  std::vector<typename Delaunay::Vertex_handle> vertex_of(m);
+  std::vector<char> has_vertex(m, 0);
+  for(typename Delaunay::Vertex_handle v : dt.finite_vertex_handles())
+  {
+    vertex_of[v->info()] = v;
+    has_vertex[v->info()] = 1;
+  }
+  std::vector<typename Delaunay::Vertex_handle> around;
+  std::vector<std::uint32_t> list;
+  for(std::size_t j = 0; j < m; ++j)
+  {
+    if(!has_vertex[j])  // a point coincident with another one's vertex
+      vertex_of[j] = dt.nearest_vertex(vcm_points[j]);
+    a.cell_of[j] = vertex_of[j]->info();
+    list.clear();
+    if(a.cell_of[j] == j)
+    {
+      around.clear();
+      dt.incident_vertices(vertex_of[j], std::back_inserter(around));
+      for(const auto& w : around)
+        if(!dt.is_infinite(w))
+          list.push_back(w->info());
+      std::sort(list.begin(), list.end());
+    }
+    a.neighbors.insert(a.neighbors.end(), list.begin(), list.end());
+    a.neighbor_begin[j + 1] = static_cast<std::uint32_t>(a.neighbors.size());
+  }
+  return a;
+}
+
+// The covariance of each point's Voronoi cell cut by the ball of `offset_radius` (vcm_cells.h:
+// reproducible bit for bit, in parallel with the tag), in batches of at most 1% of the points
+// between reports to `callback` (in [0, 0.5]); false if it cancelled.
+template <class ConcurrencyTag>
+bool vcm_cell_covariances(const std::vector<CGAL::Epick::Point_3>& vcm_points, const Vcm_adjacency& a,
+                          double offset_radius, const std::function<bool(double)>& callback,
+                          std::vector<std::array<double, 6> >& cov)
+{
+  typedef CGAL::Epick::Point_3 Vcm_point;
+  const std::size_t m = vcm_points.size();
+  cov.assign(m, std::array<double, 6>());
+  Vcm_cell_scratch ball_scratch;
+  vcm_ball_polytope(offset_radius, ball_scratch);
+  const Vcm_polytope ball = ball_scratch.cell;
+  Per_thread<std::pair<Vcm_cell_scratch, std::vector<double> > > scratches(is_parallel<ConcurrencyTag>());
+  const std::size_t batch = callback ? std::max<std::size_t>(1, (m + 99) / 100) : std::max<std::size_t>(m, 1);
+  for(std::size_t first = 0; first < m; first += batch)
+  {
+    const std::size_t last = std::min(m, first + batch);
+    process_in_parallel(is_parallel<ConcurrencyTag>(), first, last, [&](std::uint32_t b, std::uint32_t e) {
+      auto& scratch = scratches.local();
+      std::vector<double>& d = scratch.second;
+      for(std::size_t j = b; j < e; ++j)
+      {
+        if(a.cell_of[j] != j)
+          continue;  // (a coincident point's, copied below)
+        const Vcm_point& p = vcm_points[j];
+        d.clear();
+        for(std::uint32_t k = a.neighbor_begin[j]; k < a.neighbor_begin[j + 1]; ++k)
+        {
+          const Vcm_point& q = vcm_points[a.neighbors[k]];
+          d.push_back(q.x() - p.x());
+          d.push_back(q.y() - p.y());
+          d.push_back(q.z() - p.z());
+        }
+        cov[j] = vcm_covariance(ball, d.data(), d.size() / 3, scratch.first);
+      }
+    });
+    if(callback && !callback(0.5 * double(last) / double(m)))
+      return false;
+  }
+  for(std::size_t j = 0; j < m; ++j)
+    cov[j] = cov[a.cell_of[j]];
+  return true;
+}
+
 // The whole estimate_vcm_curvatures(): the neighbourhood driver (statuses, counts, per-point
 // radii), the VCM of the usable points (Delaunay triangulation, cells, convolution), then one
 // diagonalisation per point.
@@ -212,35 +347,7 @@ estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double 
   const std::size_t m = vcm_points.size();
   if(m == 0)
     return results;
-  // CGAL's Delaunay triangulation and the cells square coordinates: beyond
-  // 1e150 they overflow (and crash CGAL's exact fallback), so such clouds are refused.
-  for(const Vcm_point& p : vcm_points)
-    if(std::abs(p.x()) > 1e150 || std::abs(p.y()) > 1e150 || std::abs(p.z()) > 1e150)
-    {
-      std::ostringstream msg;
-      msg << function_name << ": coordinates beyond 1e150 in absolute value (here " << p
-          << ") overflow CGAL's Voronoi covariance measure; translate or scale the cloud";
-      throw std::invalid_argument(msg.str());
-    }
-  // ... and below 1e-100 their squares underflow (CGAL's exact fallback then divides by
-  // zero, SIGFPE): clouds whose extent is that small are refused as well.
-  {
-    double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-    for(const Vcm_point& p : vcm_points)
-      for(int a = 0; a < 3; ++a)
-      {
-        lo[a] = std::min(lo[a], p[a]);
-        hi[a] = std::max(hi[a], p[a]);
-      }
-    const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
-    if(extent > 0 && extent < 1e-100)
-    {
-      std::ostringstream msg;
-      msg << function_name << ": a cloud of extent " << extent
-          << " (below 1e-100) underflows CGAL's Voronoi covariance measure; scale the cloud";
-      throw std::invalid_argument(msg.str());
-    }
-  }
+  check_vcm_coordinates(vcm_points, function_name);
   auto set_all = [&](Curvature_estimate_status s) {
     for(std::size_t j = 0; j < m; ++j)
     {
@@ -279,86 +386,12 @@ estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double 
   if(callback && !callback(0.0))
     return results;
 
-  // 3. The Voronoi cells: CGAL's Delaunay triangulation of the usable points (coincident
-  // points share a vertex, hence a cell), each point's neighbours in the order of their
-  // input index (read sequentially: CGAL's incident_vertices() marks the vertices it
-  // visits), then the cells cut by the offset ball and their covariances (vcm_cells.h:
-  // reproducible bit for bit, in parallel with the tag), in batches of at most 1% of the
-  // points between reports.
-  typedef CGAL::Triangulation_vertex_base_with_info_3<std::uint32_t, CGAL::Epick> Vertex_base;
-  typedef CGAL::Triangulation_data_structure_3<Vertex_base> Tds;
-  typedef CGAL::Delaunay_triangulation_3<CGAL::Epick, Tds> Delaunay;
-  std::vector<std::uint32_t> neighbor_begin(m + 1, 0), neighbors;
-  std::vector<std::uint32_t> cell_of(m);  // the point whose vertex holds each point's cell
-  {
-    std::vector<std::pair<Vcm_point, std::uint32_t> > with_index;
-    with_index.reserve(m);
-    for(std::size_t j = 0; j < m; ++j)
-      with_index.emplace_back(vcm_points[j], static_cast<std::uint32_t>(j));
-    Delaunay dt(with_index.begin(), with_index.end());
-    std::vector<typename Delaunay::Vertex_handle> vertex_of(m);
-    std::vector<char> has_vertex(m, 0);
-    for(typename Delaunay::Vertex_handle v : dt.finite_vertex_handles())
-    {
-      vertex_of[v->info()] = v;
-      has_vertex[v->info()] = 1;
-    }
-    std::vector<typename Delaunay::Vertex_handle> around;
-    std::vector<std::uint32_t> list;
-    for(std::size_t j = 0; j < m; ++j)
-    {
-      if(!has_vertex[j])  // a point coincident with another one's vertex
-        vertex_of[j] = dt.nearest_vertex(vcm_points[j]);
-      cell_of[j] = vertex_of[j]->info();
-      list.clear();
-      if(cell_of[j] == j)
-      {
-        around.clear();
-        dt.incident_vertices(vertex_of[j], std::back_inserter(around));
-        for(const auto& w : around)
-          if(!dt.is_infinite(w))
-            list.push_back(w->info());
-        std::sort(list.begin(), list.end());
-      }
-      neighbors.insert(neighbors.end(), list.begin(), list.end());
-      neighbor_begin[j + 1] = static_cast<std::uint32_t>(neighbors.size());
-    }
-  }
-  std::vector<std::array<double, 6> > cov(m);
-  {
-    Vcm_cell_scratch ball_scratch;
-    vcm_ball_polytope(offset_radius, ball_scratch);
-    const Vcm_polytope ball = ball_scratch.cell;
-    Per_thread<std::pair<Vcm_cell_scratch, std::vector<double> > > scratches(is_parallel<ConcurrencyTag>());
-    const std::size_t batch = callback ? std::max<std::size_t>(1, (m + 99) / 100) : std::max<std::size_t>(m, 1);
-    for(std::size_t first = 0; first < m; first += batch)
-    {
-      const std::size_t last = std::min(m, first + batch);
-      process_in_parallel(is_parallel<ConcurrencyTag>(), first, last, [&](std::uint32_t b, std::uint32_t e) {
-        auto& scratch = scratches.local();
-        std::vector<double>& d = scratch.second;
-        for(std::size_t j = b; j < e; ++j)
-        {
-          if(cell_of[j] != j)
-            continue;  // (a coincident point's, copied below)
-          const Vcm_point& p = vcm_points[j];
-          d.clear();
-          for(std::uint32_t k = neighbor_begin[j]; k < neighbor_begin[j + 1]; ++k)
-          {
-            const Vcm_point& q = vcm_points[neighbors[k]];
-            d.push_back(q.x() - p.x());
-            d.push_back(q.y() - p.y());
-            d.push_back(q.z() - p.z());
-          }
-          cov[j] = vcm_covariance(ball, d.data(), d.size() / 3, scratch.first);
-        }
-      });
-      if(callback && !callback(0.5 * double(last) / double(m)))
-        return results;  // every point NOT_COMPUTED
-    }
-    for(std::size_t j = 0; j < m; ++j)
-      cov[j] = cov[cell_of[j]];
-  }
+  // 3. The Voronoi cells of the usable points (vcm_adjacency()), cut by the offset ball, and
+  // their covariances (vcm_cell_covariances()).
+  const Vcm_adjacency adjacency = vcm_adjacency(vcm_points);
+  std::vector<std::array<double, 6> > cov;
+  if(!vcm_cell_covariances<ConcurrencyTag>(vcm_points, adjacency, offset_radius, callback, cov))
+    return results;  // every point NOT_COMPUTED
 
   // The convolution: each point's matrix is the sum of the cells' over its neighbourhood
   // (by radius, the points at distance at most r, CGAL's convolution; by count, at distance
