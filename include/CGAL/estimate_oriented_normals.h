@@ -782,10 +782,12 @@ std::vector<Normal_record> estimate_normal_records(PointRange& points, bool radi
   else
   {
     const std::function<bool(double)> one_pass_callback = options.callback;  // (sets `cancelled`)
+    Knn_search_cache knn;  // (the search's tree: the same in every pass)
     const auto run = [&](const Scale_ladder& l, const std::vector<char>* visit,
                          const Automatic_scale_progress::Callbacks& progress, bool& pass_cancelled) {
       Neighborhood_options o = options;
       o.visit = visit;
+      o.knn_cache = &knn;
       // (the passes' progress, mapped by automatic_scale_passes(), on to one_pass_callback)
       o.callback = progress.points;
       std::vector<Normal_record> r = evaluate_with_maps<Normal_record, ConcurrencyTag>(

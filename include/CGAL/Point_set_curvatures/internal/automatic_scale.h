@@ -989,11 +989,13 @@ auto estimate_at_automatic_scale(const PointRange& points, const NamedParameters
   typedef decltype(estimate_at_every_point<ConcurrencyTag>(points, false, 0.0, np, estimators.estimator,
                                                            function_name)) Results;
   typedef typename Results::value_type Estimate;
-  Area_cache areas;  // (the same in every pass)
+  Area_cache areas;       // (the same in every pass)
+  Knn_search_cache knn;  // (the search's tree: the same in every pass)
   const auto run = [&](const Scale_ladder& l, const std::vector<char>* visit,
                        const Automatic_scale_progress::Callbacks& progress, bool& cancelled) {
     Pass_options pass;
     pass.areas = &areas;
+    pass.knn = &knn;
     pass.visit_k = l.largest;
     pass.visit = visit;
     pass.progress = progress.points;

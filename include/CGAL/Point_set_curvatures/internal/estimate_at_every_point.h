@@ -168,8 +168,8 @@ struct Area_cache
 // receives (0: that of the named parameters, which the sample weights use), the points it
 // visits (null: all), the callback it reports its fraction to in place of the named
 // parameters' (empty: theirs) and, if it computes the areas, the one their pass reports to
-// (empty: that pass is a share of `progress`), a flag set if a callback cancels it, and a cache
-// of the areas (null: none).
+// (empty: that pass is a share of `progress`), a flag set if a callback cancels it, a cache
+// of the areas (null: none) and one of the search by count (null: one for this call's passes).
 struct Pass_options
 {
   std::size_t visit_k = 0;
@@ -177,6 +177,7 @@ struct Pass_options
   std::function<bool(double)> progress, area_progress;
   bool* cancelled = nullptr;
   Area_cache* areas = nullptr;
+  Knn_search_cache* knn = nullptr;  // the search's tree over the passes (null: this call's own)
 };
 
 // The evaluation of estimate_at_every_point() at one point: TOO_FEW_NEIGHBORS below
@@ -291,7 +292,7 @@ std::vector<Estimate> estimation_after_refinements(const PointRange& points, boo
   for(std::size_t r = 0; r <= refinements; ++r)
   {
     const bool last = r == refinements;
-    const Neighborhood_options o = options_of(r);
+    Neighborhood_options o = options_of(r);
     if(r == 0)
       result = evaluate_with_maps<Estimate, ConcurrencyTag>(points, radius_given, radius, k, point_map, normal_map, o,
                                                             evaluation(!last));
@@ -302,6 +303,7 @@ std::vector<Estimate> estimation_after_refinements(const PointRange& points, boo
       std::size_t i = 0;
       for(auto it = points.begin(); it != points.end(); ++it, ++i)
         refined.emplace_back(get(point_map, *it), result[i].is_valid() ? result[i].normal : get(normal_map, *it));
+      o.knn_cache = nullptr;  // (another range)
       const CGAL::First_of_pair_property_map<Oriented> refined_points;
       const CGAL::Second_of_pair_property_map<Oriented> refined_normals;
       result = evaluate_with_maps<Estimate, ConcurrencyTag>(refined, radius_given, radius, k, refined_points,
@@ -342,6 +344,8 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
   const std::size_t min_neighbors = min_neighbors_parameter(np, estimator.min_neighbors);
   Neighborhood_options options = neighborhood_options(np, function_name, estimator.normalize_normals);
   options.visit = pass.visit;
+  Knn_search_cache own_knn;  // (the area pass's tree for the estimation)
+  options.knn_cache = pass.knn ? pass.knn : &own_knn;
   if(pass.progress)
     options.callback = pass.progress;
   if(options.callback && pass.cancelled)

@@ -173,6 +173,8 @@ Curvature_estimate<GeomTraits> to_curvature_estimate(const Local_estimate& e, st
   return r;
 }
 
+struct Knn_search_cache;
+
 // Options of the driver (for_each_neighborhood(), for_each_neighborhood_knn()).
 struct Neighborhood_options
 {
@@ -195,6 +197,9 @@ struct Neighborhood_options
   // Per input point, whether it is visited (non-zero), or null for every point: the others
   // (of the tile's own points) stay NOT_COMPUTED but are neighbours as usual.
   const std::vector<char>* visit = nullptr;
+  // Neighbourhoods by count: the search's k-d tree, kept for the next pass over the same range
+  // and maps (knn_neighborhoods.h), or null.
+  Knn_search_cache* knn_cache = nullptr;
 };
 
 // `callback` wrapped so that `cancelled` tells whether it stopped the work: it returned false

@@ -359,9 +359,11 @@ inline std::size_t knn_grid_samples(std::size_t m)
 // of the automatic scale to the tree and made it 9% slower on data/real/sample_c.las), so that
 // clouds of varying density (scans) keep their dense parts on the grid and send the sparse ones
 // to the tree. The samples are taken among the m points of `xyz`: the points to visit (the tree
-// holds them all). Returns 0 if the tree alone is cheaper.
-inline double knn_grid_side(const Point_kd_tree& tree, const double* xyz, std::size_t m, std::size_t k,
-                            const double lo[3], const double hi[3])
+// holds them all; `point_at(i, x)` sets x to the coordinates of the i-th). Returns 0 if the tree
+// alone is cheaper.
+template <class Point_at>
+double knn_grid_side(const Point_kd_tree& tree, const Point_at& point_at, std::size_t m, std::size_t k,
+                     const double lo[3], const double hi[3])
 {
   const std::size_t samples = std::min<std::size_t>(m, knn_grid_samples(m));
   const std::size_t count = std::min(k, tree.size());
@@ -370,13 +372,14 @@ inline double knn_grid_side(const Point_kd_tree& tree, const double* xyz, std::s
   r.reserve(samples);
   for(std::size_t s = 0; s < samples; ++s)
   {
-    const std::size_t i = (2 * s + 1) * m / (2 * samples);
-    tree.nearest_unordered(xyz + 3 * i, count, nearest);
+    double x[3];
+    point_at((2 * s + 1) * m / (2 * samples), x);
+    tree.nearest_unordered(x, count, nearest);
     // the k-th distance (the largest of the k nearest), else the nearest that is not 0
     double d2 = std::max_element(nearest.begin(), nearest.end())->first;
     if(d2 == 0)
     {
-      tree.nearest(xyz + 3 * i, std::min(k + 1, tree.size()), nearest);
+      tree.nearest(x, std::min(k + 1, tree.size()), nearest);
       for(std::size_t j = 0; d2 == 0 && j < nearest.size(); ++j)
         d2 = nearest[j].first;
     }
@@ -469,6 +472,20 @@ void visit_cloud_knn(const Sorted_cloud& cloud, const Point_kd_tree& tree, std::
   halo.enforce();
 }
 
+// The k-d tree of for_each_neighborhood_knn() over the usable points of a range, kept from
+// one pass to the next over the same range and maps (Neighborhood_options::knn_cache, random
+// access ranges only): the area pass, the estimation and the automatic scale's passes build it
+// once. Its ids are input positions; `usable` lists the usable points' input positions in input
+// order, `lo` and `hi` bound them.
+struct Knn_search_cache
+{
+  Point_kd_tree tree;
+  std::vector<std::uint32_t> usable;
+  double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+  std::size_t range_size = 0;
+  bool filled = false;
+};
+
 // Same contract as for_each_neighborhood() (validation, statuses, visitor, callback between
 // batches of about 1% of the points, identical results with either concurrency tag), with
 // a per-point radius: nb.radius is (1 + 2^-20) times the distance from the point to its
@@ -494,58 +511,95 @@ for_each_neighborhood_knn(const PointRange& points, PointMap point_map, NormalMa
     return status;
 
   // 1. The usable points (a radius larger than any extent: one cell, input order), the tree
-  //    on them with ids relabelled to input positions, and the grid side (0: the tree
-  //    serves every point; the grid then only groups the points into batches).
-  Point_kd_tree tree;
-  double side = 1.0;
-  bool use_grid = true;
+  //    on them with ids relabelled to input positions (or both from the cache of an earlier
+  //    pass over the same range), and the grid side (0: the tree serves every point; the grid
+  //    then only groups the points into batches).
+  typedef typename PointRange::const_iterator Iterator;
+  constexpr bool random_access = std::is_convertible<typename std::iterator_traits<Iterator>::iterator_category,
+                                                     std::random_access_iterator_tag>::value;
+  Knn_search_cache own_cache;
+  Knn_search_cache& cache = options.knn_cache && random_access ? *options.knn_cache : own_cache;
+  std::vector<double> read_position;  // the usable points' coordinates in input order, if read here
+  if(!cache.filled || cache.range_size != n)
   {
+    cache.filled = false;
     Neighborhood_options read_options = options;
     read_options.normalize_normals = false;
     read_options.has_tile = false;
+    read_options.visit = nullptr;
     Sorted_cloud input;
     read_and_sort<ConcurrencyTag>(points, point_map, normal_map, std::numeric_limits<double>::max(),
                                   read_options, status, input);
-    const std::size_t m = input.input_index.size();
-    if(m == 0)
+    if(input.input_index.empty())
       return status;
-    if(options.has_tile && k > m && options.tile.halo != std::numeric_limits<double>::infinity())
+    cache.tree.build<ConcurrencyTag>(input.position.data(), input.input_index.size());
+    cache.tree.relabel(input.input_index);
+    std::copy(input.lo, input.lo + 3, cache.lo);
+    std::copy(input.hi, input.hi + 3, cache.hi);
+    cache.usable = std::move(input.input_index);
+    read_position = std::move(input.position);
+    cache.range_size = n;
+    cache.filled = true;
+  }
+  Point_kd_tree& tree = cache.tree;
+  const std::size_t m = cache.usable.size();
+  // the coordinates of usable point u (rank in input order)
+  const auto usable_point = [&](std::size_t u, double x[3]) {
+    if(!read_position.empty())
+      std::copy(&read_position[3 * u], &read_position[3 * u] + 3, x);
+    else
     {
-      // The range holds fewer than k points: its points' k nearest lie (partly) outside, at
-      // distances nothing here bounds. Ask for a larger halo. (An infinite halo: the range
-      // is the whole cloud, and every point is every point's neighbour, as in one piece.)
-      double extent = 0;
-      for(int a = 0; a < 3; ++a)
-        extent = std::max(extent, input.hi[a] - input.lo[a]);
-      throw Halo_too_small(std::max({2 * options.tile.halo, extent, std::numeric_limits<double>::min()}),
-                           options.tile.halo);
+      const auto& p = get(point_map, *std::next(points.begin(), cache.usable[u]));
+      x[0] = CGAL::to_double(p.x()); x[1] = CGAL::to_double(p.y()); x[2] = CGAL::to_double(p.z());
     }
-    k = std::min(k, m);  // at least every usable point (and no k + 1 overflow for SIZE_MAX)
-    tree.build<ConcurrencyTag>(input.position.data(), m);
-    // the bounding box read_and_sort() will grid again, so that the cost model sees its cells
-    const double *lo = input.lo, *hi = input.hi;
+  };
+  if(options.has_tile && k > m && options.tile.halo != std::numeric_limits<double>::infinity())
+  {
+    // The range holds fewer than k points: its points' k nearest lie (partly) outside, at
+    // distances nothing here bounds. Ask for a larger halo. (An infinite halo: the range
+    // is the whole cloud, and every point is every point's neighbour, as in one piece.)
+    double extent = 0;
+    for(int a = 0; a < 3; ++a)
+      extent = std::max(extent, cache.hi[a] - cache.lo[a]);
+    throw Halo_too_small(std::max({2 * options.tile.halo, extent, std::numeric_limits<double>::min()}),
+                         options.tile.halo);
+  }
+  k = std::min(k, m);  // at least every usable point (and no k + 1 overflow for SIZE_MAX)
+  // the bounding box read_and_sort() will grid again, so that the cost model sees its cells
+  const double *lo = cache.lo, *hi = cache.hi;
+  double side = 1.0;
+  bool use_grid = true;
+  {
     // the cost model's samples among the points to visit (the automatic scale's later passes
     // visit a few)
-    std::vector<double> visited;
     if(options.visit)
-      for(std::size_t g = 0; g < m; ++g)
-        if((*options.visit)[input.input_index[g]])
-          visited.insert(visited.end(), &input.position[3 * g], &input.position[3 * g] + 3);
-    side = options.visit ? knn_grid_side(tree, visited.data(), visited.size() / 3, k, lo, hi)
-                         : knn_grid_side(tree, input.position.data(), m, k, lo, hi);
+    {
+      std::vector<double> visited;
+      for(std::size_t u = 0; u < m; ++u)
+        if((*options.visit)[cache.usable[u]])
+        {
+          visited.resize(visited.size() + 3);
+          usable_point(u, &visited[visited.size() - 3]);
+        }
+      side = knn_grid_side(
+        tree, [&visited](std::size_t i, double x[3]) { std::copy(&visited[3 * i], &visited[3 * i] + 3, x); },
+        visited.size() / 3, k, lo, hi);
+    }
+    else
+      side = knn_grid_side(tree, usable_point, m, k, lo, hi);
     if(side == 0)
     {
       use_grid = false;
       const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
       side = extent > 0 && std::isfinite(extent) ? extent / std::sqrt(double(m)) : 1.0;
     }
-    tree.relabel(input.input_index);
   }
+  std::vector<double>().swap(read_position);
 
   // 2. The usable points in the grid of that side; tree ids relabelled to grid positions.
   Sorted_cloud cloud;
   read_and_sort<ConcurrencyTag>(points, point_map, normal_map, side, options, status, cloud);
-  const std::size_t m = cloud.input_index.size();
+  CGAL_assertion(cloud.input_index.size() == m);
   {
     std::vector<std::uint32_t> grid_position(n, 0);
     for(std::size_t g = 0; g < m; ++g)
@@ -553,8 +607,12 @@ for_each_neighborhood_knn(const PointRange& points, PointMap point_map, NormalMa
     tree.relabel(grid_position);
   }
 
-  // 3. Batches of points: the grid part, then the tree for the points it deferred.
+  // 3. Batches of points: the grid part, then the tree for the points it deferred; the tree's
+  //    ids back to input positions for the next pass (not if the visit throws: built again).
+  cache.filled = false;
   visit_cloud_knn(cloud, tree, k, use_grid, is_parallel<ConcurrencyTag>(), options, status, visit);
+  tree.relabel(cloud.input_index);
+  cache.filled = true;
   return status;
 }
 
