@@ -49,8 +49,10 @@ public:
     : m_own(std::move(own)), m_read_prior(std::max(0.0, read_seconds)),
       m_now(now ? std::move(now) : std::function<double()>(&steady_seconds)), m_start(m_now())
   {
-    for(double o : m_own)
-      m_own_total += std::max(0.0, o);
+    m_own_from.assign(m_own.size() + 1, 0.0);
+    for(std::size_t v = m_own.size(); v-- > 0;)
+      m_own_from[v] = m_own_from[v + 1] + std::max(0.0, m_own[v]);
+    m_own_total = m_own_from[0];
   }
 
   // Tile `v` (an index of `own`) starts reading (again, if its halo grew) / estimating.
@@ -96,11 +98,11 @@ public:
       else if(per_point <= 0 && own > 0)
         per_point = (t - m_step_start + step_left) / own;  // (the first tile: its own rate)
     }
-    for(std::size_t v = m_step == NONE ? m_done_tiles : m_tile + 1; v < m_own.size(); ++v)
-    {
-      const double own = std::max(0.0, m_own[v]);
-      left += read + (per_point > 0 ? per_point * own : estimation_prior_of(own, read));
-    }
+    // the tiles to come: a read each, and their own points' estimation
+    const std::size_t next = std::min(m_step == NONE ? m_done_tiles : m_tile + 1, m_own.size());
+    const double own_to_come = m_own_from[next];
+    left += double(m_own.size() - next) * read +
+            (per_point > 0 ? per_point * own_to_come : estimation_prior_of(own_to_come, read));
     const double total = elapsed + left;
     m_reported = std::max(m_reported, total > 0 ? std::min(1.0, elapsed / total) : m_own.empty() ? 1.0 : 0.0);
     return m_reported;
@@ -141,6 +143,7 @@ private:
   double estimation_per_point() const { return m_done_own > 0 ? m_estimation_seconds / m_done_own : 0.0; }
 
   std::vector<double> m_own;
+  std::vector<double> m_own_from;  // the own points of the tiles from v on (m_own.size() + 1 sums)
   double m_read_prior;
   std::function<double()> m_now;
   double m_start;
