@@ -11,6 +11,8 @@
 #include "progress_line.h"
 #include "psc_io/support.h"
 
+#include <CGAL/Point_set_curvatures/internal/work_rate.h>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -68,7 +70,7 @@ public:
       m_label_width = 0;
       current_phase = name;
       m_start = std::chrono::steady_clock::now();
-      m_first_seconds = -1;
+      m_rate.restart();
       m_fraction = 0;
       m_last = -1;
       m_active = true;
@@ -80,11 +82,9 @@ public:
       if(m_enabled && percent_of(fraction) != m_last)
       {
         std::lock_guard<std::mutex> lock(m_mutex);
-        if(m_first_seconds < 0)
-        {
-          m_first_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
-          m_first_fraction = std::isfinite(fraction) ? std::max(0.0, std::min(1.0, fraction)) : 0.0;
-        }
+        if(!m_rate.reported())
+          m_rate.report(std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count(),
+                        std::isfinite(fraction) ? std::max(0.0, std::min(1.0, fraction)) : 0.0);
         m_fraction = fraction;
         draw_locked(false);
       }
@@ -152,9 +152,8 @@ private:
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
     // the time left at the rate since the first report (the set-up before it, a reader's or a
     // search's, tells nothing of what is left)
-    const double eta = m_first_seconds >= 0 && f > m_first_fraction
-                         ? (seconds - m_first_seconds) * (1 - f) / (f - m_first_fraction)
-                         : -1;
+    const double rate = m_rate.own(seconds, f, -1);
+    const double eta = rate >= 0 ? rate * (1 - f) : -1;
     std::fprintf(stderr, "\r%s", progress_line(m_name, f, seconds, m_label, m_label_width, eta).c_str());
     std::fflush(stderr);
     m_drawn = true;
@@ -187,7 +186,7 @@ private:
   std::size_t m_label_width = 0;  // the longest label of the phase
   std::chrono::steady_clock::time_point m_start;
   double m_fraction = 0;
-  double m_first_seconds = -1, m_first_fraction = 0;  // the phase's first report: its time and fraction
+  CGAL::Point_set_curvatures::internal::Work_rate m_rate;  // the phase's, from its first report
   std::atomic<int> m_last{-1};  // the percent drawn last (read without the lock by the callbacks)
   bool m_drawn = false;
 };

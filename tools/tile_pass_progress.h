@@ -22,8 +22,9 @@
 #ifndef POINT_SET_CURVATURES_TOOL_TILE_PASS_PROGRESS_H
 #define POINT_SET_CURVATURES_TOOL_TILE_PASS_PROGRESS_H
 
+#include <CGAL/Point_set_curvatures/internal/work_rate.h>
+
 #include <algorithm>
-#include <chrono>
 #include <cstddef>
 #include <functional>
 #include <utility>
@@ -47,7 +48,8 @@ public:
   // any origin (empty: the steady clock).
   Tile_pass_progress(std::vector<double> own, double read_seconds, std::function<double()> now = {})
     : m_own(std::move(own)), m_read_prior(std::max(0.0, read_seconds)),
-      m_now(now ? std::move(now) : std::function<double()>(&steady_seconds)), m_start(m_now())
+      m_now(now ? std::move(now) : std::function<double()>(&CGAL::Point_set_curvatures::internal::steady_seconds)),
+      m_start(m_now())
   {
     m_own_from.assign(m_own.size() + 1, 0.0);
     for(std::size_t v = m_own.size(); v-- > 0;)
@@ -76,11 +78,8 @@ public:
   {
     f = std::clamp(f, 0.0, 1.0);
     const double t = m_now();
-    if(m_step != NONE && m_first_report < 0)
-    {
-      m_first_report = t;
-      m_first_fraction = f;
-    }
+    if(m_step != NONE)
+      m_rate.report(t, f);
     const double elapsed = std::max(0.0, t - m_start);
     const double read = mean_read();
     double left = 0;
@@ -89,9 +88,7 @@ public:
     {
       const double own = std::max(0.0, m_own[m_tile]);
       const double prior = m_step == READ ? read : per_point > 0 ? per_point * own : estimation_prior_of(own, read);
-      const double w = std::min(1.0, (f - m_first_fraction) / own_rate_share);
-      const double rate = f > m_first_fraction ? (t - m_first_report) / (f - m_first_fraction) : prior;
-      const double step_left = (1 - f) * ((1 - w) * prior + w * rate);
+      const double step_left = (1 - f) * m_rate.blended(t, f, prior, own_rate_share);
       left += step_left;
       if(m_step == READ)
         left += per_point > 0 ? per_point * own : estimation_prior_of(own, read);
@@ -111,11 +108,6 @@ public:
 private:
   enum Step { NONE, READ, ESTIMATION };
 
-  static double steady_seconds()
-  {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-  }
-
   void begin(std::size_t v, Step step)
   {
     const double t = m_now();
@@ -123,7 +115,7 @@ private:
     m_tile = std::min(v, m_own.empty() ? 0 : m_own.size() - 1);
     m_step = m_own.empty() ? NONE : step;
     m_step_start = t;
-    m_first_report = -1;
+    m_rate.restart();
   }
 
   // A step ended (a read, or an estimation refused for a short halo): its time is the tile's.
@@ -155,7 +147,8 @@ private:
   double m_tile_read = 0, m_tile_estimation = 0;
   std::size_t m_tile = 0;
   Step m_step = NONE;
-  double m_step_start = 0, m_first_report = -1, m_first_fraction = 0;
+  double m_step_start = 0;
+  CGAL::Point_set_curvatures::internal::Work_rate m_rate;  // the current step's
   double m_reported = 0;
 };
 

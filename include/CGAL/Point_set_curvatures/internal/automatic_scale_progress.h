@@ -27,9 +27,10 @@
 #ifndef CGAL_POINT_SET_CURVATURES_INTERNAL_AUTOMATIC_SCALE_PROGRESS_H
 #define CGAL_POINT_SET_CURVATURES_INTERNAL_AUTOMATIC_SCALE_PROGRESS_H
 
+#include <CGAL/Point_set_curvatures/internal/work_rate.h>
+
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <cstddef>
 #include <functional>
 #include <utility>
@@ -89,7 +90,7 @@ public:
     }
     ++m_passes;
     m_start = t;
-    m_first_report = -1;
+    m_rate.restart();
     m_in_areas = false;
     m_points = points;
     m_last = last;
@@ -138,27 +139,16 @@ public:
     if(m_done <= 0 && m_prior <= 0)
       return f / (1 + r);  // the first pass, no time known: its own
     const double t = m_now(), elapsed = std::max(0.0, t - m_start);
-    if(m_first_report < 0)
-    {
-      // its rate is measured from its first report on (the search's set-up reports nothing)
-      m_first_report = t;
-      m_first_fraction = f;
-    }
     // seconds per unit of the pass's fraction: the prior's, then, as the fraction grows, its own
-    const double w = std::min(1.0, (f - m_first_fraction) / own_rate_share);
-    const double own = f > m_first_fraction ? (t - m_first_report) / (f - m_first_fraction) : 0;
-    const double rate = (1 - w) * m_prior + w * own;
+    // (from its first report on: the search's set-up reports nothing)
+    m_rate.report(t, f);
+    const double rate = m_rate.blended(t, f, m_prior, own_rate_share);
     const double pass_seconds = elapsed + (1 - f) * rate;
     const double total = m_done + pass_seconds * (1 + r);
     return total > 0 ? (m_done + elapsed) / total : f;
   }
 
 private:
-  static double steady_seconds()
-  {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-  }
-
   // The time of the passes after the current one, in units of its time, at its fraction `f`:
   // q climber_cost, q the share of the points visited that it sent on.
   double rest(double f) const
@@ -181,7 +171,7 @@ private:
   std::function<double()> m_now;
   std::size_t m_passes = 0, m_points = 0;
   double m_start = 0, m_done = 0, m_prior = 0, m_reported = 0, m_areas_end = 0;
-  double m_first_report = -1, m_first_fraction = 0;  // the time and fraction of the pass's first report
+  Work_rate m_rate;  // the current pass's (its points')
   bool m_last = true, m_in_areas = false;
   std::atomic<std::size_t> m_sent_on{0};
 };
