@@ -273,13 +273,17 @@ inline Bbox_3 tile_grid_box(const std::vector<double>& xyz)
   if(m > 0)
   {
     std::vector<double> v(m);
+    const std::size_t low_rank = std::size_t(0.001 * double(m - 1));
+    const std::size_t high_rank = std::size_t(std::ceil(0.999 * double(m - 1)));
     for(int a = 0; a < 3; ++a)
     {
       for(std::size_t i = 0; i < m; ++i)
         v[i] = xyz[3 * i + a];
-      std::sort(v.begin(), v.end());
-      lo[a] = v[std::size_t(0.001 * double(m - 1))];
-      hi[a] = v[std::size_t(std::ceil(0.999 * double(m - 1)))];
+      // (two selections: the values a sort would put at those ranks, in linear time)
+      std::nth_element(v.begin(), v.begin() + low_rank, v.end());
+      lo[a] = v[low_rank];
+      std::nth_element(v.begin() + low_rank, v.begin() + high_rank, v.end());
+      hi[a] = v[high_rank];
     }
   }
   return Bbox_3(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
