@@ -54,7 +54,6 @@ public:
     m_own_from.assign(m_own.size() + 1, 0.0);
     for(std::size_t v = m_own.size(); v-- > 0;)
       m_own_from[v] = m_own_from[v + 1] + std::max(0.0, m_own[v]);
-    m_own_total = m_own_from[0];
   }
 
   // Tile `v` (an index of `own`) starts reading (again, if its halo grew) / estimating.
@@ -129,7 +128,8 @@ private:
 
   double estimation_prior_of(double own, double read) const
   {
-    return m_own_total > 0 ? estimation_prior * read * own / m_own_total : 0.0;
+    const double own_total = m_own_from.front();  // (every tile's)
+    return own_total > 0 ? estimation_prior * read * own / own_total : 0.0;
   }
   double mean_read() const { return m_done_tiles > 0 ? m_read_seconds / double(m_done_tiles) : m_read_prior; }
   double estimation_per_point() const { return m_done_own > 0 ? m_estimation_seconds / m_done_own : 0.0; }
@@ -139,7 +139,6 @@ private:
   double m_read_prior;
   std::function<double()> m_now;
   double m_start;
-  double m_own_total = 0;
   // the tiles done: their number, own points, and the time of their reads and estimations
   std::size_t m_done_tiles = 0;
   double m_done_own = 0, m_read_seconds = 0, m_estimation_seconds = 0;
