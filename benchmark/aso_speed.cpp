@@ -54,8 +54,7 @@ namespace PSCi = CGAL::Point_set_curvatures::internal;
 // with `std_sort`, std::sort as before it, for comparison), then every pair within r.
 // Returns the sum of the x coordinates of all neighbours (so nothing is optimised away)
 // and the number of pairs.
-std::pair<double, std::size_t> bare_traversal(const std::vector<Oriented_point>& pts, double r,
-                                              bool std_sort = false)
+std::pair<double, std::size_t> bare_traversal(const std::vector<Oriented_point>& pts, double r, bool std_sort = false)
 {
   double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
   for(const auto& p : pts)
@@ -68,8 +67,7 @@ std::pair<double, std::size_t> bare_traversal(const std::vector<Oriented_point>&
   grid.set_geometry(lo, hi, r);
   std::vector<PSCi::Neighbor_grid::Keyed_index> keyed(pts.size());
   for(std::size_t i = 0; i < pts.size(); ++i)
-    keyed[i] = {grid.key(pts[i].first.x(), pts[i].first.y(), pts[i].first.z()),
-                static_cast<std::uint32_t>(i)};
+    keyed[i] = {grid.key(pts[i].first.x(), pts[i].first.y(), pts[i].first.z()), static_cast<std::uint32_t>(i)};
   if(std_sort)
     std::sort(keyed.begin(), keyed.end());
   else
@@ -173,8 +171,8 @@ int main(int argc, char** argv)
   const auto params = CGAL::parameters::point_map(Point_map()).normal_map(Normal_map());
 
   double t_bare = 1e300, t_bare_std = 1e300, t_kd = 1e300, t_apss_s = 1e300, t_apss_p = 1e300, t_aso_s = 1e300,
-         t_aso_p = 1e300, t_knn_s = 1e300, t_knn_p = 1e300, t_paper_s = 1e300, t_paper_p = 1e300,
-         t_uniform_s = 1e300, t_areas_s = 1e300, t_given_s = 1e300;
+         t_aso_p = 1e300, t_knn_s = 1e300, t_knn_p = 1e300, t_paper_s = 1e300, t_paper_p = 1e300, t_uniform_s = 1e300,
+         t_areas_s = 1e300, t_given_s = 1e300;
   namespace P = CGAL::Point_set_curvatures::parameters;
   const auto paper = P::aso_variant(CGAL::Aso_variant::PAPER, params);
   const auto uniform = P::sample_weights(CGAL::Sample_weights::UNIFORM, params);
@@ -184,10 +182,10 @@ int main(int argc, char** argv)
   weighted.reserve(n);
   for(const auto& p : pts)
     weighted.emplace_back(p.first, p.second, 0.0);
-  const auto weighted_params = P::sample_weight_map(
-    CGAL::Nth_of_tuple_property_map<2, Weighted_point>(),
-    CGAL::parameters::point_map(CGAL::Nth_of_tuple_property_map<0, Weighted_point>())
-      .normal_map(CGAL::Nth_of_tuple_property_map<1, Weighted_point>()));
+  const auto weighted_params =
+    P::sample_weight_map(CGAL::Nth_of_tuple_property_map<2, Weighted_point>(),
+                         CGAL::parameters::point_map(CGAL::Nth_of_tuple_property_map<0, Weighted_point>())
+                           .normal_map(CGAL::Nth_of_tuple_property_map<1, Weighted_point>()));
   std::size_t pairs = 0;
   long long aso_peak_extra = 0;
   double checksum = 0;
@@ -276,8 +274,8 @@ int main(int argc, char** argv)
   }
 
   const double ns_pair = 1e9 / double(pairs);
-  std::printf("points: %zu, radius: %.6g, mean neighbours (query included): %.2f, repetitions: %d (best kept)\n\n",
-              n, r, double(pairs) / double(n), repetitions);
+  std::printf("points: %zu, radius: %.6g, mean neighbours (query included): %.2f, repetitions: %d (best kept)\n\n", n,
+              r, double(pairs) / double(n), repetitions);
   std::printf("| run | seconds | ns per pair | ratio to bare traversal |\n|---|---|---|---|\n");
   auto row = [&](const char* name, double t) {
     std::printf("| %s | %.3f | %.1f | %.2f |\n", name, t, t * ns_pair, t / t_bare);
@@ -299,11 +297,10 @@ int main(int argc, char** argv)
   row("ASO by count (neighbor_count), Parallel_tag", t_knn_p);
   std::printf("\nASO parallel speed-up: %.2fx; APSS parallel speed-up: %.2fx\n", t_aso_s / t_aso_p,
               t_apss_s / t_apss_p);
-  std::printf("ASO by count / ASO by radius: %.2f sequential, %.2f parallel\n", t_knn_s / t_aso_s,
-              t_knn_p / t_aso_p);
+  std::printf("ASO by count / ASO by radius: %.2f sequential, %.2f parallel\n", t_knn_s / t_aso_s, t_knn_p / t_aso_p);
   std::printf("default / paper: %.2f sequential, %.2f parallel; sample-weight pass: %.3f s, %.2f of the "
-              "default's ASO pass\n", t_aso_s / t_paper_s, t_aso_p / t_paper_p, t_aso_s - t_uniform_s,
-              (t_aso_s - t_uniform_s) / t_uniform_s);
+              "default's ASO pass\n",
+              t_aso_s / t_paper_s, t_aso_p / t_paper_p, t_aso_s - t_uniform_s, (t_aso_s - t_uniform_s) / t_uniform_s);
   std::printf("ASO (default) peak heap beyond input and result: %.1f bytes per point\n",
               double(aso_peak_extra) / double(n));
   std::printf("(checksum %.6g)\n", checksum);

@@ -72,6 +72,6 @@ private:
   std::string m_option;
 };
 
-} // namespace psc_bench
+}  // namespace psc_bench
 
 #endif

@@ -66,10 +66,9 @@ std::function<Estimates(const std::vector<Oriented_point>&, double, bool)> both_
   };
 }
 
-#define PSC_ESTIMATOR(function)                                                                \
-  both_tags([](auto tag, const std::vector<Oriented_point>& pts, double r) {                  \
-    return CGAL::function<decltype(tag)>(                                                      \
-      pts, r, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()));              \
+#define PSC_ESTIMATOR(function)                                                                                        \
+  both_tags([](auto tag, const std::vector<Oriented_point>& pts, double r) {                                           \
+    return CGAL::function<decltype(tag)>(pts, r, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()));   \
   })
 
 // The ASO with a variant given explicitly.
@@ -115,8 +114,8 @@ std::string seconds(double s, bool extrapolated)
 }
 
 // Times every estimator on `pts` at radius r, VCM on at most vcm_points points.
-void time_cloud(const std::string& title, const std::vector<Oriented_point>& pts, double r,
-                std::size_t vcm_points, int repetitions)
+void time_cloud(const std::string& title, const std::vector<Oriented_point>& pts, double r, std::size_t vcm_points,
+                int repetitions)
 {
   std::vector<Estimator> list = estimators();
   std::vector<Timing> timings(list.size());
@@ -165,15 +164,14 @@ void time_cloud(const std::string& title, const std::vector<Oriented_point>& pts
           neighbours = sum / double(out.size());
         }
       }
-      std::fprintf(stderr, "  %s %s: %.3f s%s\n", list[e].name, parallel ? "parallel" : "sequential",
-                   t, timings[e].extrapolated ? " (extrapolated)" : "");
+      std::fprintf(stderr, "  %s %s: %.3f s%s\n", list[e].name, parallel ? "parallel" : "sequential", t,
+                   timings[e].extrapolated ? " (extrapolated)" : "");
     }
   }
 
   std::printf("\n### %s\n\n%zu points, radius %.6g, %.1f neighbours on average (query included); "
               "%u hardware threads; best of %d run(s).\n",
-              title.c_str(), pts.size(), r, neighbours, std::thread::hardware_concurrency(),
-              repetitions);
+              title.c_str(), pts.size(), r, neighbours, std::thread::hardware_concurrency(), repetitions);
   if(vcm_n != pts.size())
     std::printf("VCM timed on %zu of the points at radius %.6g (same neighbour count), "
                 "times scaled by %.1f (marked ~).\n",
@@ -194,7 +192,7 @@ void time_cloud(const std::string& title, const std::vector<Oriented_point>& pts
   std::fflush(stdout);
 }
 
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv)
 {
@@ -254,15 +252,14 @@ int main(int argc, char** argv)
       pts = read_xyz(goursat);
     }
     catch(const std::runtime_error&)
-    {
-    }
+    {}
     if(pts.empty())
     {
       std::fprintf(stderr, "cannot read %s\n", goursat.c_str());
       return 1;
     }
-    time_cloud("Goursat (" + goursat.substr(goursat.find_last_of('/') + 1) + ")", pts,
-               goursat_radius, std::max<std::size_t>(vcm_points, pts.size()), repetitions);
+    time_cloud("Goursat (" + goursat.substr(goursat.find_last_of('/') + 1) + ")", pts, goursat_radius,
+               std::max<std::size_t>(vcm_points, pts.size()), repetitions);
   }
   return 0;
 }

@@ -52,7 +52,7 @@ double file_megabytes(const std::string& path)
   return size / 1e6;
 }
 
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv)
 {
@@ -70,8 +70,9 @@ int main(int argc, char** argv)
                    p.second.y(), p.second.z());
     std::fclose(f);
     f = std::fopen(ply.c_str(), "wb");
-    std::fprintf(f, "ply\nformat binary_little_endian 1.0\nelement vertex %zu\nproperty double x\nproperty double y\n"
-                    "property double z\nproperty double nx\nproperty double ny\nproperty double nz\nend_header\n",
+    std::fprintf(f,
+                 "ply\nformat binary_little_endian 1.0\nelement vertex %zu\nproperty double x\nproperty double y\n"
+                 "property double z\nproperty double nx\nproperty double ny\nproperty double nz\nend_header\n",
                  n);
     for(const Oriented_point& p : pts)
     {
@@ -102,17 +103,20 @@ int main(int argc, char** argv)
   cloud = psc_tool::read_point_cloud(ply, psc_tool::Read_options());
   const auto t0 = std::chrono::steady_clock::now();
   const auto estimates = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
-    pts, CGAL::Point_set_curvatures::parameters::neighbor_count(40, CGAL::parameters::point_map(Point_map())
-                                                                   .normal_map(Normal_map())));
+    pts, CGAL::Point_set_curvatures::parameters::neighbor_count(
+           40, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map())));
   const double estimate_seconds = psc_bench::seconds_since(t0);
   psc_tool::Output_layout layout;
   layout.fields = psc_tool::output_fields({}, false, false, cloud.attributes, false);
   layout.attributes = &cloud.attributes;
   const double write_seconds = best_of_3([&]() {
     std::FILE* f = std::fopen(out.c_str(), "wb");
-    psc_tool::write_point_cloud(f, layout, n, [&](std::size_t i, psc_tool::Output_row& r) {
-      psc_tool::fill_row(pts[i].first.x(), pts[i].first.y(), pts[i].first.z(), estimates[i], r);
-    }, psc_tool::Progress());
+    psc_tool::write_point_cloud(
+      f, layout, n,
+      [&](std::size_t i, psc_tool::Output_row& r) {
+        psc_tool::fill_row(pts[i].first.x(), pts[i].first.y(), pts[i].first.z(), estimates[i], r);
+      },
+      psc_tool::Progress());
     std::fclose(f);
   });
   std::printf("| write binary PLY (17 doubles, int, uchar) | %.1f | %.3f | %.0f |\n", file_megabytes(out),

@@ -15,9 +15,21 @@
 
 namespace psc_bench {
 
-inline std::atomic<long long>& current_bytes() { static std::atomic<long long> v{0}; return v; }
-inline std::atomic<long long>& peak_bytes() { static std::atomic<long long> v{0}; return v; }
-inline std::atomic<long long>& allocation_count() { static std::atomic<long long> v{0}; return v; }
+inline std::atomic<long long>& current_bytes()
+{
+  static std::atomic<long long> v{0};
+  return v;
+}
+inline std::atomic<long long>& peak_bytes()
+{
+  static std::atomic<long long> v{0};
+  return v;
+}
+inline std::atomic<long long>& allocation_count()
+{
+  static std::atomic<long long> v{0};
+  return v;
+}
 
 // Starts a new measurement window: the peak restarts from the current level.
 inline void reset_peak() { peak_bytes() = current_bytes().load(); }
@@ -32,7 +44,8 @@ inline void* counted_alloc(std::size_t n)
   const long long now = (current_bytes() += static_cast<long long>(n));
   ++allocation_count();
   long long peak = peak_bytes().load();
-  while(now > peak && !peak_bytes().compare_exchange_weak(peak, now)) {}
+  while(now > peak && !peak_bytes().compare_exchange_weak(peak, now))
+  {}
   return static_cast<char*>(p) + 16;
 }
 
@@ -45,7 +58,7 @@ inline void counted_free(void* q)
   std::free(p);
 }
 
-} // namespace psc_bench
+}  // namespace psc_bench
 
 void* operator new(std::size_t n) { return psc_bench::counted_alloc(n); }
 void* operator new[](std::size_t n) { return psc_bench::counted_alloc(n); }

@@ -32,7 +32,7 @@ class Image
 {
 public:
   Image(int width, int height, Rgb background = Rgb{1, 1, 1})
-    : m_width(width), m_height(height), m_rgb(std::size_t(3) * width * height)
+      : m_width(width), m_height(height), m_rgb(std::size_t(3) * width * height)
   {
     for(int y = 0; y < height; ++y)
       for(int x = 0; x < width; ++x)
@@ -179,8 +179,7 @@ struct View
     normalize(up_hint);
     v.toward_viewer = toward;
     v.up = up_hint;
-    v.right = {{up_hint[1] * toward[2] - up_hint[2] * toward[1],
-                up_hint[2] * toward[0] - up_hint[0] * toward[2],
+    v.right = {{up_hint[1] * toward[2] - up_hint[2] * toward[1], up_hint[2] * toward[0] - up_hint[0] * toward[2],
                 up_hint[0] * toward[1] - up_hint[1] * toward[0]}};
     return v;
   }
@@ -208,8 +207,7 @@ struct Splat
 // normal faces away from the viewer are skipped (back faces). The cloud is scaled to fill
 // the image with a small margin. Shading: 0.35 ambient + 0.65 Lambert, light from the
 // upper left of the viewer.
-inline Image render_splats(const std::vector<Splat>& splats, const View& view, int width,
-                           int height)
+inline Image render_splats(const std::vector<Splat>& splats, const View& view, int width, int height)
 {
   Image image(width, height);
   if(splats.empty())
@@ -276,6 +274,6 @@ inline Image render_splats(const std::vector<Splat>& splats, const View& view, i
   return image;
 }
 
-} // namespace render
+}  // namespace render
 
 #endif

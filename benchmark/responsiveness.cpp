@@ -45,10 +45,10 @@ double cpu_seconds()
 
 struct Measure
 {
-  double latency = 0;    // cancel request -> return (s)
-  double widest_gap = 0; // between consecutive reports (s)
-  double cores = 0;      // CPU time / wall time
-  double fraction = 0;   // done when cancelled
+  double latency = 0;     // cancel request -> return (s)
+  double widest_gap = 0;  // between consecutive reports (s)
+  double cores = 0;       // CPU time / wall time
+  double fraction = 0;    // done when cancelled
   double wall = 0;
 };
 
@@ -81,7 +81,7 @@ Measure measure(Run run, double cancel_after)
   return m;
 }
 
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv)
 {
@@ -116,25 +116,35 @@ int main(int argc, char** argv)
   for(int parallel = 1; parallel >= 0; --parallel)
   {
     const char* tag = parallel ? "Parallel_tag" : "Sequential_tag";
-    row("ASO (default)", tag, measure([&](const std::function<bool(double)>& cb) {
-          if(parallel)
-            CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(cloud, radius, np.callback(cb));
-          else
-            CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(cloud, radius, np.callback(cb));
-        }, cancel_after));
-    row("ASO (paper)", tag, measure([&](const std::function<bool(double)>& cb) {
-          const auto p = CGAL::Point_set_curvatures::parameters::aso_variant(CGAL::Aso_variant::PAPER, np.callback(cb));
-          if(parallel)
-            CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(cloud, radius, p);
-          else
-            CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(cloud, radius, p);
-        }, cancel_after));
-    row("APSS", tag, measure([&](const std::function<bool(double)>& cb) {
-          if(parallel)
-            CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(cloud, radius, np.callback(cb));
-          else
-            CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(cloud, radius, np.callback(cb));
-        }, cancel_after));
+    row("ASO (default)", tag,
+        measure(
+          [&](const std::function<bool(double)>& cb) {
+            if(parallel)
+              CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(cloud, radius, np.callback(cb));
+            else
+              CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(cloud, radius, np.callback(cb));
+          },
+          cancel_after));
+    row("ASO (paper)", tag,
+        measure(
+          [&](const std::function<bool(double)>& cb) {
+            const auto p =
+              CGAL::Point_set_curvatures::parameters::aso_variant(CGAL::Aso_variant::PAPER, np.callback(cb));
+            if(parallel)
+              CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(cloud, radius, p);
+            else
+              CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(cloud, radius, p);
+          },
+          cancel_after));
+    row("APSS", tag,
+        measure(
+          [&](const std::function<bool(double)>& cb) {
+            if(parallel)
+              CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(cloud, radius, np.callback(cb));
+            else
+              CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(cloud, radius, np.callback(cb));
+          },
+          cancel_after));
   }
   return 0;
 }

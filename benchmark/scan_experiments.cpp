@@ -50,11 +50,11 @@ struct Options
   std::size_t k = 40;
   std::set<std::string> only;
   std::set<std::string> rows;  // normal sources to run (empty: all)
-  double noise = 0;    // range noise, in median spacings
-  double quantum = 0;  // coordinate grid
+  double noise = 0;            // range noise, in median spacings
+  double quantum = 0;          // coordinate grid
   std::vector<std::size_t> normal_neighbors = {40};
-  std::string dump;  // prefix of per-point CSV files (x, y, z, true H, estimated H, neighbours,
-                     // standard error of H of the automatic scale)
+  std::string dump;           // prefix of per-point CSV files (x, y, z, true H, estimated H, neighbours,
+                              // standard error of H of the automatic scale)
   double line_spacing = 0.5;  // of the airborne lines (points 0.1 apart along a line)
   std::size_t automatic = 0;  // the automatic scale's largest count (0: not run)
 };
@@ -91,14 +91,19 @@ std::vector<Named_cloud> clouds(const Options& o)
   using scan::Sweep;
   make("airborne2", [&](const scan::Noise& n) { return scan::airborne_lines(terrain, 12, 0.1, 0.2, n); });
   make("airborne10", [&](const scan::Noise& n) { return scan::airborne_lines(terrain, 12, 0.1, 1.0, n); });
-  make("polygon5", [&](const scan::Noise& n) { return scan::airborne_sweeps(terrain, 12, 0.1, 0.5, Sweep::POLYGON, n); });
+  make("polygon5",
+       [&](const scan::Noise& n) { return scan::airborne_sweeps(terrain, 12, 0.1, 0.5, Sweep::POLYGON, n); });
   make("zigzag5", [&](const scan::Noise& n) { return scan::airborne_sweeps(terrain, 12, 0.1, 0.5, Sweep::ZIGZAG, n); });
-  make("zigzag3", [&](const scan::Noise& n) { return scan::airborne_sweeps(terrain, 12, 0.15, 0.45, Sweep::ZIGZAG, n); });
+  make("zigzag3",
+       [&](const scan::Noise& n) { return scan::airborne_sweeps(terrain, 12, 0.15, 0.45, Sweep::ZIGZAG, n); });
   // lines that are not straight (3 cm of attitude wobble) and whose points do not align
-  make("wobbly5", [&](const scan::Noise& n) { return scan::airborne_sweeps(terrain, 12, 0.1, 0.5, Sweep::PARALLEL, n, 0.03); });
-  make("wobbly8", [&](const scan::Noise& n) { return scan::airborne_sweeps(terrain, 12, 0.1, 0.8, Sweep::PARALLEL, n, 0.03); });
+  make("wobbly5",
+       [&](const scan::Noise& n) { return scan::airborne_sweeps(terrain, 12, 0.1, 0.5, Sweep::PARALLEL, n, 0.03); });
+  make("wobbly8",
+       [&](const scan::Noise& n) { return scan::airborne_sweeps(terrain, 12, 0.1, 0.8, Sweep::PARALLEL, n, 0.03); });
   make("mobile", [&](const scan::Noise& n) { return scan::mobile_profiles(terrain, 8, 0.1, 0.0035, n); });
-  make("terrestrial", [&](const scan::Noise& n) { return scan::merged_terrestrial(terrain, 10, 0.006, 10, n, 1.8, 1); });
+  make("terrestrial",
+       [&](const scan::Noise& n) { return scan::merged_terrestrial(terrain, 10, 0.006, 10, n, 1.8, 1); });
   return list;
 }
 
@@ -136,15 +141,19 @@ std::vector<Normal_source> normal_sources(const Options& o)
   for(std::size_t k : o.normal_neighbors)
     list.push_back({"quadric" + std::to_string(k), library(CGAL::Normal_fit::QUADRIC, k)});
   if(o.automatic > 0)
-    list.push_back({"auto" + std::to_string(o.automatic), [&o](Cloud& c) {
-                      CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
-                        c, P::automatic_scale(o.automatic, P::neighbor_count(40, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()))));
-                    }});
+    list.push_back(
+      {"auto" + std::to_string(o.automatic), [&o](Cloud& c) {
+         CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
+           c, P::automatic_scale(
+                o.automatic, P::neighbor_count(40, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()))));
+       }});
   // what a user gets: the library's defaults, orientation included
-  list.push_back({"default", [](Cloud& c) {
+  list.push_back({"default",
+                  [](Cloud& c) {
                     CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
                       c, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()));
-                  }, false});
+                  },
+                  false});
   return list;
 }
 
@@ -157,33 +166,39 @@ struct Curvature_method
 std::vector<Curvature_method> curvature_methods()
 {
   std::vector<Curvature_method> list;
-#define PSC_METHOD(NAME, FUNCTION, ...)                                                                    \
-  list.push_back({NAME, [](const Cloud& c, std::size_t k) {                                               \
-                    return CGAL::FUNCTION<CGAL::Parallel_tag>(                                           \
-                      c, P::neighbor_count(k, __VA_ARGS__ CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()))); \
-                  }})
+#define PSC_METHOD(NAME, FUNCTION, ...)                                                                                \
+  list.push_back(                                                                                                      \
+    {NAME, [](const Cloud& c, std::size_t k) {                                                                         \
+       return CGAL::FUNCTION<CGAL::Parallel_tag>(                                                                      \
+         c, P::neighbor_count(k, __VA_ARGS__ CGAL::parameters::point_map(Point_map()).normal_map(Normal_map())));      \
+     }})
   PSC_METHOD("aso", estimate_aso_curvatures, );
-  list.push_back({"aso+position", [](const Cloud& c, std::size_t k) {
-                    return CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
-                      c, P::neighbor_count(k, P::position_fit_blend(0.5, CGAL::parameters::point_map(Point_map())
-                                                                              .normal_map(Normal_map()))));
-                  }});
-  list.push_back({"aso-paper", [](const Cloud& c, std::size_t k) {
-                    return CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
-                      c, P::neighbor_count(k, P::aso_variant(CGAL::Aso_variant::PAPER,
-                                                             CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()))));
-                  }});
+  list.push_back(
+    {"aso+position", [](const Cloud& c, std::size_t k) {
+       return CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
+         c, P::neighbor_count(
+              k, P::position_fit_blend(0.5, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()))));
+     }});
+  list.push_back(
+    {"aso-paper", [](const Cloud& c, std::size_t k) {
+       return CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
+         c, P::neighbor_count(k, P::aso_variant(CGAL::Aso_variant::PAPER,
+                                                CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()))));
+     }});
   if(automatic_largest > 0)
-    list.push_back({"auto", [](const Cloud& c, std::size_t k) {
-                      return CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
-                        c, P::automatic_scale(std::max(k, automatic_largest),
-                             P::neighbor_count(k, P::position_fit_blend(0.5, CGAL::parameters::point_map(Point_map())
-                                                                              .normal_map(Normal_map())))));
-                    }});
+    list.push_back(
+      {"auto", [](const Cloud& c, std::size_t k) {
+         return CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
+           c, P::automatic_scale(
+                std::max(k, automatic_largest),
+                P::neighbor_count(
+                  k, P::position_fit_blend(0.5, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map())))));
+       }});
   if(automatic_largest > 0)  // the tool's default on a cloud with normals: no position fit
     list.push_back({"auto-given", [](const Cloud& c, std::size_t k) {
                       return CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
-                        c, P::automatic_scale(std::max(k, automatic_largest),
+                        c, P::automatic_scale(
+                             std::max(k, automatic_largest),
                              P::neighbor_count(k, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()))));
                     }});
   PSC_METHOD("apss", estimate_apss_curvatures, );
@@ -238,7 +253,7 @@ std::string g3(double x)
   return s.str();
 }
 
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv)
 {

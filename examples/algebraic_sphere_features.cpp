@@ -73,9 +73,12 @@ int main(int argc, char** argv)
   }
 
   auto value = [&](const Features& f) -> double {
-    if(shown == "anisotropy") return f.anisotropy;
-    if(shown == "u_c") return f.u_c;
-    if(shown == "u_q") return f.u_q;
+    if(shown == "anisotropy")
+      return f.anisotropy;
+    if(shown == "u_c")
+      return f.u_c;
+    if(shown == "u_q")
+      return f.u_q;
     return f.geometric_variation;
   };
   const bool is_signed = shown == "u_c" || shown == "u_q";
@@ -95,8 +98,8 @@ int main(int argc, char** argv)
   const double nan = std::numeric_limits<double>::quiet_NaN();
   auto add = [&](const char* name) { return points.add_property_map<double>(name, nan).first; };
   Point_set::Property_map<double> u_c = add("u_c"), u_q = add("u_q"), p = add("pratt_norm"),
-                                   anisotropy = add("anisotropy"), v = add("geometric_variation"),
-                                   mean = add("mean_curvature");
+                                  anisotropy = add("anisotropy"), v = add("geometric_variation"),
+                                  mean = add("mean_curvature");
   Point_set::Property_map<std::uint8_t> red = points.add_property_map<std::uint8_t>("red", 0).first;
   Point_set::Property_map<std::uint8_t> green = points.add_property_map<std::uint8_t>("green", 0).first;
   Point_set::Property_map<std::uint8_t> blue = points.add_property_map<std::uint8_t>("blue", 0).first;
@@ -126,7 +129,7 @@ int main(int argc, char** argv)
     return EXIT_FAILURE;
   }
   std::cout << points.size() << " points, " << n_valid << " valid; coloured by " << shown
-            << (is_signed ? " (blue < 0 < red)" : " (white 0 to red)") << ", full colour at |"
-            << shown << "| = " << scale << "; wrote " << argv[2] << "\n";
+            << (is_signed ? " (blue < 0 < red)" : " (white 0 to red)") << ", full colour at |" << shown
+            << "| = " << scale << "; wrote " << argv[2] << "\n";
   return EXIT_SUCCESS;
 }

@@ -49,8 +49,7 @@ int main(int argc, char** argv)
       ++it;
   if(args.size() < 3 || args.size() > 5)
   {
-    std::cerr << "usage: " << argv[0]
-              << " INPUT OUTPUT RADIUS [ITERATIONS=10] [NOISE=0] [--update-normals]\n";
+    std::cerr << "usage: " << argv[0] << " INPUT OUTPUT RADIUS [ITERATIONS=10] [NOISE=0] [--update-normals]\n";
     return EXIT_FAILURE;
   }
   const double radius = std::atof(args[2].c_str());
@@ -100,7 +99,7 @@ int main(int argc, char** argv)
   }
   std::cout << points.size() << " points, " << iterations << " iterations at radius " << radius
             << (update_normals ? " (normals updated)" : " (input normals)") << ": " << n_moved
-            << " moved at the last one, mean displacement " << (n_moved ? moved / n_moved : 0.0)
-            << "; wrote " << args[1] << "\n";
+            << " moved at the last one, mean displacement " << (n_moved ? moved / n_moved : 0.0) << "; wrote "
+            << args[1] << "\n";
   return n_moved > 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -46,8 +46,7 @@ int main(int argc, char** argv)
 
   // Positions only: without a normal_map parameter the reader does not read normals.
   std::vector<Point_with_normal> points;
-  if(!CGAL::IO::read_points(argv[1], std::back_inserter(points),
-                            CGAL::parameters::point_map(Point_map())))
+  if(!CGAL::IO::read_points(argv[1], std::back_inserter(points), CGAL::parameters::point_map(Point_map())))
   {
     std::cerr << "error: cannot read " << argv[1] << "\n";
     return EXIT_FAILURE;
@@ -62,20 +61,18 @@ int main(int argc, char** argv)
   // 2. Curvatures, neighbourhoods by count (each point's radius: distance to its K-th nearest),
   //    half of the tensor from a quadric fitted to the positions (the normals are estimated).
   namespace P = CGAL::Point_set_curvatures::parameters;
-  const std::vector<CGAL::Curvature_estimate<Kernel> > estimates =
-    CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
-      points, P::neighbor_count(neighbors, P::position_fit_blend(0.5, np)));
+  const std::vector<CGAL::Curvature_estimate<Kernel> > estimates = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
+    points, P::neighbor_count(neighbors, P::position_fit_blend(0.5, np)));
 
   std::vector<double> mean;
   for(const CGAL::Curvature_estimate<Kernel>& e : estimates)
     if(e.is_valid())
       mean.push_back(e.mean_curvature);
-  std::cout << points.size() << " points, " << without << " without a normal, "
-            << mean.size() << " valid estimates\n";
+  std::cout << points.size() << " points, " << without << " without a normal, " << mean.size() << " valid estimates\n";
   if(mean.empty())
     return EXIT_FAILURE;
   std::sort(mean.begin(), mean.end());
-  std::cout << "mean curvature: 10th percentile " << mean[mean.size() / 10] << ", median "
-            << mean[mean.size() / 2] << ", 90th percentile " << mean[9 * mean.size() / 10] << "\n";
+  std::cout << "mean curvature: 10th percentile " << mean[mean.size() / 10] << ", median " << mean[mean.size() / 2]
+            << ", 90th percentile " << mean[9 * mean.size() / 10] << "\n";
   return mean.size() == points.size() ? EXIT_SUCCESS : EXIT_FAILURE;
 }

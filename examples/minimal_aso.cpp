@@ -35,20 +35,19 @@ int main()
   }
 
   // Neighbourhoods of radius 0.4 (about 50 points each, in the unit of the coordinates).
-  const std::vector<CGAL::Curvature_estimate<Kernel> > estimates =
-    CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
-      points, 0.4,
-      CGAL::parameters::point_map(CGAL::First_of_pair_property_map<Oriented_point>())
-        .normal_map(CGAL::Second_of_pair_property_map<Oriented_point>()));
+  const std::vector<CGAL::Curvature_estimate<Kernel> > estimates = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
+    points, 0.4,
+    CGAL::parameters::point_map(CGAL::First_of_pair_property_map<Oriented_point>())
+      .normal_map(CGAL::Second_of_pair_property_map<Oriented_point>()));
 
   std::cout << "expected on a sphere of radius 2: k_min = k_max = mean = 0.5, gaussian = 0.25\n";
   for(std::size_t i = 0; i < 3; ++i)
   {
     const CGAL::Curvature_estimate<Kernel>& e = estimates[i];
     if(e.is_valid())
-      std::cout << "point " << i << ": k_min " << e.min_curvature << ", k_max " << e.max_curvature
-                << ", mean " << e.mean_curvature << ", gaussian " << e.gaussian_curvature
-                << ", " << e.neighbor_count << " neighbours\n";
+      std::cout << "point " << i << ": k_min " << e.min_curvature << ", k_max " << e.max_curvature << ", mean "
+                << e.mean_curvature << ", gaussian " << e.gaussian_curvature << ", " << e.neighbor_count
+                << " neighbours\n";
     else
       std::cout << "point " << i << ": no estimate (" << e.status << ")\n";
   }

@@ -69,8 +69,8 @@ int main()
     }
   }
   std::cout << "full run: " << valid << " valid estimates of " << points.size() << "\n"
-            << "cancelled run: " << computed << " computed, " << not_computed
-            << " not computed (status " << CGAL::Curvature_estimate_status::NOT_COMPUTED << ")\n";
+            << "cancelled run: " << computed << " computed, " << not_computed << " not computed (status "
+            << CGAL::Curvature_estimate_status::NOT_COMPUTED << ")\n";
   const bool ok = valid == points.size() && not_computed > 0 && computed > 0 && same == computed;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -120,9 +120,9 @@ void for_each_fibonacci_direction(std::size_t m, F f)
 
 struct Surface_constants
 {
-  double area = 0;           // surface area
-  double half_extent = 0;    // the bounding box is [-half_extent, half_extent]^3
-  double diagonal = 0;       // bounding-box diagonal, 2 sqrt(3) half_extent
+  double area = 0;         // surface area
+  double half_extent = 0;  // the bounding box is [-half_extent, half_extent]^3
+  double diagonal = 0;     // bounding-box diagonal, 2 sqrt(3) half_extent
   double max_area_density = 0;
 };
 
@@ -185,9 +185,7 @@ inline const Surface_constants& surface_constants()
 class Random
 {
 public:
-  explicit Random(std::uint64_t seed)
-    : m_engine(seed)
-  {}
+  explicit Random(std::uint64_t seed) : m_engine(seed) {}
   double uniform() { return double(m_engine() >> 11) * (1.0 / 9007199254740992.0); }  // [0, 1)
   double gaussian()
   {
@@ -229,8 +227,7 @@ private:
 class Hash_grid
 {
 public:
-  Hash_grid(const std::vector<double>& xyz, double cell)
-    : m_xyz(xyz), m_cell(cell)
+  Hash_grid(const std::vector<double>& xyz, double cell) : m_xyz(xyz), m_cell(cell)
   {
     const std::size_t n = xyz.size() / 3;
     std::vector<std::pair<std::uint64_t, std::uint32_t> > keyed(n);
@@ -282,8 +279,8 @@ public:
           {
             const std::uint32_t j = m_order[k];
             const double* p = &m_xyz[3 * j];
-            const double d2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
-                              (p[2] - q[2]) * (p[2] - q[2]);
+            const double d2 =
+              (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]);
             if(d2 < r2)
               f(j, d2);
           }
@@ -341,11 +338,10 @@ void parallel_for_each_index(std::size_t n, bool parallel, F f)
 #ifdef CGAL_LINKED_WITH_TBB
   if(parallel)
   {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024),
-                      [&](const tbb::blocked_range<std::size_t>& r) {
-                        for(std::size_t i = r.begin(); i != r.end(); ++i)
-                          f(i);
-                      });
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024), [&](const tbb::blocked_range<std::size_t>& r) {
+      for(std::size_t i = r.begin(); i != r.end(); ++i)
+        f(i);
+    });
     return;
   }
 #endif
@@ -528,8 +524,7 @@ inline double lloyd_step(std::vector<double>& xyz, bool parallel, double search_
                          p[2] + cx * t1[2] + cy * t2[2]};
     project_radially(v, &next[3 * i]);
     const double* q = &next[3 * i];
-    moved[i] = std::sqrt((q[0] - p[0]) * (q[0] - p[0]) + (q[1] - p[1]) * (q[1] - p[1]) +
-                         (q[2] - p[2]) * (q[2] - p[2]));
+    moved[i] = std::sqrt((q[0] - p[0]) * (q[0] - p[0]) + (q[1] - p[1]) * (q[1] - p[1]) + (q[2] - p[2]) * (q[2] - p[2]));
   });
   xyz.swap(next);
   if(incomplete_cells != nullptr)
@@ -600,8 +595,7 @@ inline double max_relative_residual(const std::vector<Oriented_point>& points)
 
 // Nearest-neighbour distance of every point divided by h = sqrt(area / n) (h is the
 // spacing of a square grid of the same density; a hexagonal one has 1.075 h).
-inline std::vector<double> nearest_neighbor_spacing(const std::vector<Oriented_point>& points,
-                                                    bool parallel = true)
+inline std::vector<double> nearest_neighbor_spacing(const std::vector<Oriented_point>& points, bool parallel = true)
 {
   const std::size_t n = points.size();
   std::vector<double> xyz(3 * n);
@@ -626,6 +620,6 @@ inline std::vector<double> nearest_neighbor_spacing(const std::vector<Oriented_p
   return out;
 }
 
-} // namespace goursat
+}  // namespace goursat
 
 #endif

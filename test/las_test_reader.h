@@ -65,7 +65,7 @@ struct Descriptor
   std::string name, description;
   std::string no_data;  // the 8 bytes
   double scale = 0, offset = 0;
-  std::string bytes;    // all 192
+  std::string bytes;  // all 192
 };
 
 struct Las
@@ -250,6 +250,6 @@ inline std::string with_vlrs(std::string las, const std::vector<std::string>& vl
   return las.substr(0, header) + all + las.substr(header);
 }
 
-} // namespace psc_las_test
+}  // namespace psc_las_test
 
 #endif

@@ -91,9 +91,15 @@ struct Torus : Surface
     g[2] = 2 * x[2];
     // d/dx_j (2 c x_i) = 2 c delta_ij + 2 x_i R x_j / rho^3
     const double s = 2 * R / (rho * rho * rho);
-    h[0] = 2 * c + s * x[0] * x[0]; h[1] = s * x[0] * x[1]; h[2] = 0;
-    h[3] = h[1];                    h[4] = 2 * c + s * x[1] * x[1]; h[5] = 0;
-    h[6] = 0;                       h[7] = 0;                       h[8] = 2;
+    h[0] = 2 * c + s * x[0] * x[0];
+    h[1] = s * x[0] * x[1];
+    h[2] = 0;
+    h[3] = h[1];
+    h[4] = 2 * c + s * x[1] * x[1];
+    h[5] = 0;
+    h[6] = 0;
+    h[7] = 0;
+    h[8] = 2;
   }
   double first_hit(const double o[3], const double d[3]) const override
   {
@@ -141,10 +147,18 @@ struct Height_field : Surface
   {
     double d1[2], d2[3];
     derivatives(x[0], x[1], d1, d2);
-    g[0] = -d1[0]; g[1] = -d1[1]; g[2] = 1;
-    h[0] = -d2[0]; h[1] = -d2[1]; h[2] = 0;
-    h[3] = -d2[1]; h[4] = -d2[2]; h[5] = 0;
-    h[6] = 0;      h[7] = 0;      h[8] = 0;
+    g[0] = -d1[0];
+    g[1] = -d1[1];
+    g[2] = 1;
+    h[0] = -d2[0];
+    h[1] = -d2[1];
+    h[2] = 0;
+    h[3] = -d2[1];
+    h[4] = -d2[2];
+    h[5] = 0;
+    h[6] = 0;
+    h[7] = 0;
+    h[8] = 0;
   }
   double first_hit(const double o[3], const double d[3]) const override
   {
@@ -223,7 +237,8 @@ inline Height_field tilted_plane()
   Height_field t;
   t.f = [](double x, double y) { return 0.3 * x - 0.2 * y; };
   t.derivatives = [](double, double, double d1[2], double d2[3]) {
-    d1[0] = 0.3; d1[1] = -0.2;
+    d1[0] = 0.3;
+    d1[1] = -0.2;
     d2[0] = d2[1] = d2[2] = 0;
   };
   return t;
@@ -310,14 +325,14 @@ inline std::vector<Sample> terrestrial_torus(const Noise& noise = Noise(), doubl
     {
       const double phi = phi0 + i * step, theta = theta0 + j * step;
       const double d[3] = {std::cos(theta) * std::cos(phi), std::cos(theta) * std::sin(phi), std::sin(theta)};
-      cast(torus, o, d, noise, rng, [](const double*) { return true; }, out);
+      cast(
+        torus, o, d, noise, rng, [](const double*) { return true; }, out);
     }
   return out;
 }
 
 // How the mirror of an airborne scanner sweeps while the aircraft flies on (along +y).
-enum class Sweep
-{
+enum class Sweep {
   PARALLEL,  // idealised: every line straight across the track, points aligned from line to line
   POLYGON,   // rotating polygon: every sweep in the same direction, so lines oblique and parallel
   ZIGZAG     // oscillating mirror: sweeps alternate, lines zigzag (0 and 2 line spacings apart
@@ -345,9 +360,7 @@ inline std::vector<Sample> airborne_sweeps(const Surface& s, double half_width, 
   std::vector<Sample> out;
   const double angle_step = point_spacing / altitude;
   const int n_angles = int(std::floor(max_angle / angle_step));
-  auto keep = [half_width](const double* x) {
-    return std::abs(x[0]) <= half_width && std::abs(x[1]) <= half_width;
-  };
+  auto keep = [half_width](const double* x) { return std::abs(x[0]) <= half_width && std::abs(x[1]) <= half_width; };
   bool forward = true;
   // (moving sweeps start a line earlier: they end one line spacing farther on)
   const double first = -half_width - (sweep == Sweep::PARALLEL ? 1 : 2) * line_spacing;
@@ -357,8 +370,8 @@ inline std::vector<Sample> airborne_sweeps(const Surface& s, double half_width, 
     for(int i = -n_angles; i <= n_angles; ++i)
     {
       const double f = sweep == Sweep::PARALLEL ? 0.0 : double(i + n_angles) / double(2 * n_angles);
-      const double o[3] = {offset * point_spacing, y + f * line_spacing + (wobble > 0 ? wobble * deviate(attitude) : 0.0),
-                           altitude};
+      const double o[3] = {offset * point_spacing,
+                           y + f * line_spacing + (wobble > 0 ? wobble * deviate(attitude) : 0.0), altitude};
       const double a = ((forward ? i : -i) + start) * angle_step;
       const double d[3] = {std::sin(a), 0, -std::cos(a)};
       cast(s, o, d, noise, rng, keep, out);
@@ -372,8 +385,8 @@ inline std::vector<Sample> airborne_sweeps(const Surface& s, double half_width, 
 // Airborne scan lines over a surface: PARALLEL sweeps, every line straight across the track
 // (along x), points aligned from line to line.
 inline std::vector<Sample> airborne_lines(const Surface& s, double half_width, double point_spacing,
-                                          double line_spacing, const Noise& noise = Noise(),
-                                          double altitude = 300, double max_angle = 0.35)
+                                          double line_spacing, const Noise& noise = Noise(), double altitude = 300,
+                                          double max_angle = 0.35)
 {
   return airborne_sweeps(s, half_width, point_spacing, line_spacing, Sweep::PARALLEL, noise, 0, altitude, max_angle);
 }
@@ -384,15 +397,13 @@ inline std::vector<Sample> airborne_lines(const Surface& s, double half_width, d
 // points dense along a profile near the vehicle and sparser away from it, profiles far apart
 // (at 5 m from the track, 0.1 m between profiles and 0.0175 m along one at the default step).
 // Points with |x| <= half_width, |y| <= half_width are kept.
-inline std::vector<Sample> mobile_profiles(const Height_field& s, double half_width = 8,
-                                           double profile_spacing = 0.1, double angle_step = 0.0035,
-                                           const Noise& noise = Noise(), double height = 2.0)
+inline std::vector<Sample> mobile_profiles(const Height_field& s, double half_width = 8, double profile_spacing = 0.1,
+                                           double angle_step = 0.0035, const Noise& noise = Noise(),
+                                           double height = 2.0)
 {
   std::mt19937_64 rng(noise.seed);
   std::vector<Sample> out;
-  auto keep = [half_width](const double* x) {
-    return std::abs(x[0]) <= half_width && std::abs(x[1]) <= half_width;
-  };
+  auto keep = [half_width](const double* x) { return std::abs(x[0]) <= half_width && std::abs(x[1]) <= half_width; };
   const int n = int(std::floor(2 * M_PI / angle_step));
   for(double y = -half_width - profile_spacing; y <= half_width + profile_spacing; y += profile_spacing)
   {
@@ -487,7 +498,7 @@ inline double median_spacing(const std::vector<Sample>& samples)
   return nearest[nearest.size() / 2];
 }
 
-} // namespace scan
-} // namespace psc_test
+}  // namespace scan
+}  // namespace psc_test
 
 #endif

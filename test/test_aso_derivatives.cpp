@@ -97,7 +97,7 @@ std::vector<Sample> patch(unsigned seed, double r, std::size_t n)
   return s;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("ASO gradient and Hessian equal finite differences of the APSS field")
 {
@@ -115,70 +115,76 @@ TEST_CASE("ASO gradient and Hessian equal finite differences of the APSS field")
                         {{4, false}, CGAL::Apss_weight_kernel::SMOOTH_QUARTIC, true},
                         {{3, true}, CGAL::Apss_weight_kernel::SMOOTH_CUBIC, true}};
   for(const Case& c : cases)
-  for(unsigned seed : {1u, 2u, 3u})
-  {
-    INFO("kernel exponent " << c.v.P << ", weights " << c.weighted << ", orientation " << c.v.orient);
-    std::vector<Sample> samples = patch(seed, r, 80);
-    std::mt19937 rng(seed + 100);
-    std::uniform_real_distribution<double> u(0, 1);
-    for(std::size_t i = 1; i < samples.size(); ++i)
+    for(unsigned seed : {1u, 2u, 3u})
     {
-      if(c.weighted)
-        samples[i].a = 0.5 + u(rng);
-      if(c.v.orient && u(rng) < 0.3)
-        for(double& x : samples[i].n)
-          x = -x;
-    }
-
-    // Central differences, step h = 1e-4 r: truncation O(h^2) ~ 1e-8 relative, rounding
-    // ~ 1e-16 / h^2 ~ 1e-8 for the Hessian.
-    const double h = 1e-4 * r;
-    double grad[3], hess[3][3];
-    for(int i = 0; i < 3; ++i)
-    {
-      double xp[3] = {0, 0, 0}, xm[3] = {0, 0, 0};
-      xp[i] = h;
-      xm[i] = -h;
-      grad[i] = (apss_field(samples, r, xp, c.v) - apss_field(samples, r, xm, c.v)) / (2 * h);
-      for(int j = 0; j < 3; ++j)
+      INFO("kernel exponent " << c.v.P << ", weights " << c.weighted << ", orientation " << c.v.orient);
+      std::vector<Sample> samples = patch(seed, r, 80);
+      std::mt19937 rng(seed + 100);
+      std::uniform_real_distribution<double> u(0, 1);
+      for(std::size_t i = 1; i < samples.size(); ++i)
       {
-        double pp[3] = {0, 0, 0}, pm[3] = {0, 0, 0}, mp[3] = {0, 0, 0}, mm[3] = {0, 0, 0};
-        pp[i] += h; pp[j] += h;
-        pm[i] += h; pm[j] -= h;
-        mp[i] -= h; mp[j] += h;
-        mm[i] -= h; mm[j] -= h;
-        hess[i][j] = (apss_field(samples, r, pp, c.v) - apss_field(samples, r, pm, c.v) -
-                      apss_field(samples, r, mp, c.v) + apss_field(samples, r, mm, c.v)) / (4 * h * h);
+        if(c.weighted)
+          samples[i].a = 0.5 + u(rng);
+        if(c.v.orient && u(rng) < 0.3)
+          for(double& x : samples[i].n)
+            x = -x;
       }
-    }
-    // Truth from the finite differences: shape operator of phi on the plane orthogonal to
-    // its gradient (the package's default projection).
-    const double h9[9] = {hess[0][0], hess[0][1], hess[0][2], hess[1][0], hess[1][1],
-                          hess[1][2], hess[2][0], hess[2][1], hess[2][2]};
-    const Truth fd = truth_from_implicit(grad, h9);
 
-    namespace P = CGAL::Point_set_curvatures::parameters;
-    CGAL::Algebraic_shape_operator_fit<Kernel> fit(Point(0, 0, 0), r,
-                                                   P::weight_kernel(c.kernel, P::robust_orientation(c.v.orient)));
-    for(const Sample& s : samples)
-      fit.add_neighbor(Point(s.p[0], s.p[1], s.p[2]), Vector(s.n[0], s.n[1], s.n[2]), s.a);
-    const auto e = fit.estimate();
-    REQUIRE(e.is_valid());
-    std::printf("P=%d weights %d orientation %d seed %u: |1 - n.n_fd| %.1e, |dk_min| %.1e, |dk_max| %.1e, "
-                "direction %.1e deg\n", c.v.P, int(c.weighted), int(c.v.orient), seed,
-                std::abs(e.normal * fd.normal - 1), std::abs(e.min_curvature - fd.k_min),
-                std::abs(e.max_curvature - fd.k_max), line_angle_degrees(e.max_direction, fd.d_max));
-    INFO("seed " << seed << ": ASO k_min " << e.min_curvature << " k_max " << e.max_curvature
-                 << ", finite differences " << fd.k_min << " " << fd.k_max);
-    // Measured over the seeds and variants: 1 - n.n_fd <= 2.2e-16, curvature differences
-    // <= 8e-8 (curvatures of order 1: the finite-difference error). Bounds: 5e-7; a wrong
-    // term of Equation 29, a wrong kernel derivative or a weight missing from one pass
-    // changes the curvatures by O(1e-2) at least.
-    CHECK(std::abs(e.normal * fd.normal - 1) < 1e-12);
-    CHECK(std::abs(e.min_curvature - fd.k_min) < 5e-7);
-    CHECK(std::abs(e.max_curvature - fd.k_max) < 5e-7);
-    CHECK(line_angle_degrees(e.max_direction, fd.d_max) < 1e-4);
-  }
+      // Central differences, step h = 1e-4 r: truncation O(h^2) ~ 1e-8 relative, rounding
+      // ~ 1e-16 / h^2 ~ 1e-8 for the Hessian.
+      const double h = 1e-4 * r;
+      double grad[3], hess[3][3];
+      for(int i = 0; i < 3; ++i)
+      {
+        double xp[3] = {0, 0, 0}, xm[3] = {0, 0, 0};
+        xp[i] = h;
+        xm[i] = -h;
+        grad[i] = (apss_field(samples, r, xp, c.v) - apss_field(samples, r, xm, c.v)) / (2 * h);
+        for(int j = 0; j < 3; ++j)
+        {
+          double pp[3] = {0, 0, 0}, pm[3] = {0, 0, 0}, mp[3] = {0, 0, 0}, mm[3] = {0, 0, 0};
+          pp[i] += h;
+          pp[j] += h;
+          pm[i] += h;
+          pm[j] -= h;
+          mp[i] -= h;
+          mp[j] += h;
+          mm[i] -= h;
+          mm[j] -= h;
+          hess[i][j] = (apss_field(samples, r, pp, c.v) - apss_field(samples, r, pm, c.v) -
+                        apss_field(samples, r, mp, c.v) + apss_field(samples, r, mm, c.v)) /
+                       (4 * h * h);
+        }
+      }
+      // Truth from the finite differences: shape operator of phi on the plane orthogonal to
+      // its gradient (the package's default projection).
+      const double h9[9] = {hess[0][0], hess[0][1], hess[0][2], hess[1][0], hess[1][1],
+                            hess[1][2], hess[2][0], hess[2][1], hess[2][2]};
+      const Truth fd = truth_from_implicit(grad, h9);
+
+      namespace P = CGAL::Point_set_curvatures::parameters;
+      CGAL::Algebraic_shape_operator_fit<Kernel> fit(Point(0, 0, 0), r,
+                                                     P::weight_kernel(c.kernel, P::robust_orientation(c.v.orient)));
+      for(const Sample& s : samples)
+        fit.add_neighbor(Point(s.p[0], s.p[1], s.p[2]), Vector(s.n[0], s.n[1], s.n[2]), s.a);
+      const auto e = fit.estimate();
+      REQUIRE(e.is_valid());
+      std::printf("P=%d weights %d orientation %d seed %u: |1 - n.n_fd| %.1e, |dk_min| %.1e, |dk_max| %.1e, "
+                  "direction %.1e deg\n",
+                  c.v.P, int(c.weighted), int(c.v.orient), seed, std::abs(e.normal * fd.normal - 1),
+                  std::abs(e.min_curvature - fd.k_min), std::abs(e.max_curvature - fd.k_max),
+                  line_angle_degrees(e.max_direction, fd.d_max));
+      INFO("seed " << seed << ": ASO k_min " << e.min_curvature << " k_max " << e.max_curvature
+                   << ", finite differences " << fd.k_min << " " << fd.k_max);
+      // Measured over the seeds and variants: 1 - n.n_fd <= 2.2e-16, curvature differences
+      // <= 8e-8 (curvatures of order 1: the finite-difference error). Bounds: 5e-7; a wrong
+      // term of Equation 29, a wrong kernel derivative or a weight missing from one pass
+      // changes the curvatures by O(1e-2) at least.
+      CHECK(std::abs(e.normal * fd.normal - 1) < 1e-12);
+      CHECK(std::abs(e.min_curvature - fd.k_min) < 5e-7);
+      CHECK(std::abs(e.max_curvature - fd.k_max) < 5e-7);
+      CHECK(line_angle_degrees(e.max_direction, fd.d_max) < 1e-4);
+    }
 }
 
 // The robust orientation takes its reference from the first pass's sum C and runs the
@@ -212,8 +218,12 @@ TEST_CASE("Robust orientation: the shortcut through the first pass equals orient
       }
       PSCi::Neighborhood nb;
       nb.size = samples.size();
-      nb.qx = col[0].data(); nb.qy = col[1].data(); nb.qz = col[2].data();
-      nb.nx = col[3].data(); nb.ny = col[4].data(); nb.nz = col[5].data();
+      nb.qx = col[0].data();
+      nb.qy = col[1].data();
+      nb.qz = col[2].data();
+      nb.nx = col[3].data();
+      nb.ny = col[4].data();
+      nb.nz = col[5].data();
       nb.sample_weight = col[6].data();
       nb.radius = r;
       for(int a = 0; a < 3; ++a)
@@ -227,8 +237,8 @@ TEST_CASE("Robust orientation: the shortcut through the first pass equals orient
         const PSCi::Local_estimate shortcut = PSCi::algebraic_shape_operator(nb, settings);
         double ref[3];
         REQUIRE(PSCi::majority_orientation<K3>(nb, ref));
-        const PSCi::Local_estimate first = PSCi::aso_from_first_pass<K3, true, true>(
-          nb, PSCi::aso_first_pass<K3, true, true>(nb, ref), ref, settings);
+        const PSCi::Local_estimate first =
+          PSCi::aso_from_first_pass<K3, true, true>(nb, PSCi::aso_first_pass<K3, true, true>(nb, ref), ref, settings);
         REQUIRE(shortcut.status == CGAL::Curvature_estimate_status::VALID);
         CHECK(shortcut.k_min == first.k_min);
         CHECK(shortcut.k_max == first.k_max);
@@ -258,11 +268,18 @@ TEST_CASE("Normal-field fit: exact on a one-sided sphere cap, refused on a line"
       const double n[3] = {p[0] / R, p[1] / R, (p[2] + R) / R};
       auto dot = [](const double* a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
       const double w = 0.5 + std::abs(u(rng));
-      f.w += w; f.u += w * dot(p, t1); f.v += w * dot(p, t2);
-      f.uu += w * dot(p, t1) * dot(p, t1); f.uv += w * dot(p, t1) * dot(p, t2); f.vv += w * dot(p, t2) * dot(p, t2);
-      f.a += w * dot(n, t1); f.b += w * dot(n, t2);
-      f.au += w * dot(n, t1) * dot(p, t1); f.av += w * dot(n, t1) * dot(p, t2);
-      f.bu += w * dot(n, t2) * dot(p, t1); f.bv += w * dot(n, t2) * dot(p, t2);
+      f.w += w;
+      f.u += w * dot(p, t1);
+      f.v += w * dot(p, t2);
+      f.uu += w * dot(p, t1) * dot(p, t1);
+      f.uv += w * dot(p, t1) * dot(p, t2);
+      f.vv += w * dot(p, t2) * dot(p, t2);
+      f.a += w * dot(n, t1);
+      f.b += w * dot(n, t2);
+      f.au += w * dot(n, t1) * dot(p, t1);
+      f.av += w * dot(n, t1) * dot(p, t2);
+      f.bu += w * dot(n, t2) * dot(p, t1);
+      f.bv += w * dot(n, t2) * dot(p, t2);
     }
     double S[3] = {0, 0, 0};
     REQUIRE(f.solve(S));
@@ -278,8 +295,15 @@ TEST_CASE("Normal-field fit: exact on a one-sided sphere cap, refused on a line"
     for(int i = 0; i < 50; ++i)
     {
       const double pu = 0.02 * i, pv = across * (i % 2 ? 1 : -1);
-      f.w += 1; f.u += pu; f.v += pv; f.uu += pu * pu; f.uv += pu * pv; f.vv += pv * pv;
-      f.a += pu; f.au += pu * pu; f.av += pu * pv;
+      f.w += 1;
+      f.u += pu;
+      f.v += pv;
+      f.uu += pu * pu;
+      f.uv += pu * pv;
+      f.vv += pv * pv;
+      f.a += pu;
+      f.au += pu * pu;
+      f.av += pu * pv;
     }
     double S[3] = {0, 0, 0};
     CHECK(f.solve(S) == (across > 1e-3));

@@ -59,9 +59,9 @@ namespace {
 
 enum class Method { ASO, BARYCENTER, PCA_PLANE, PSS, JET, WAVEJET, VCM };
 const Method all_methods[] = {Method::ASO, Method::BARYCENTER, Method::PCA_PLANE, Method::PSS,
-                              Method::JET, Method::WAVEJET, Method::VCM};
+                              Method::JET, Method::WAVEJET,    Method::VCM};
 const Method baselines[] = {Method::BARYCENTER, Method::PCA_PLANE, Method::PSS,
-                            Method::JET, Method::WAVEJET, Method::VCM};
+                            Method::JET,        Method::WAVEJET,   Method::VCM};
 
 const char* name(Method m)
 {
@@ -92,7 +92,9 @@ std::size_t minimum_neighbors(Method m)
 {
   switch(m)
   {
-    case Method::ASO: case Method::JET: case Method::WAVEJET: return 12;
+    case Method::ASO:
+    case Method::JET:
+    case Method::WAVEJET: return 12;
     case Method::PCA_PLANE: return 10;
     case Method::PSS: return 15;
     default: return 20;  // barycenter, VCM
@@ -104,7 +106,10 @@ std::size_t fit_minimum_neighbors(Method m)
 {
   switch(m)
   {
-    case Method::ASO: case Method::BARYCENTER: case Method::PCA_PLANE: case Method::VCM: return 3;
+    case Method::ASO:
+    case Method::BARYCENTER:
+    case Method::PCA_PLANE:
+    case Method::VCM: return 3;
     default: return 6;
   }
 }
@@ -194,10 +199,10 @@ struct Stat
 struct Errors
 {
   std::size_t considered = 0, valid = 0;
-  Stat H;          // signed: |H - H_t|; unsigned: ||H| - |H_t||
+  Stat H;             // signed: |H - H_t|; unsigned: ||H| - |H_t||
   Stat k_min, k_max;  // signed, or magnitudes sorted for VCM
-  Stat normal;     // degrees
-  Stat direction;  // degrees, direction of the larger (|)k(|), away from umbilics
+  Stat normal;        // degrees
+  Stat direction;     // degrees, direction of the larger (|)k(|), away from umbilics
   // the errors of a constant zero at the same points: an error bound at or above them would
   // pass an estimator that returns 0 everywhere (issue 45)
   Stat H_of_zero, k_min_of_zero, k_max_of_zero;
@@ -209,9 +214,9 @@ double angle_degrees(const Vector& a, const Vector& b)
   return std::acos(std::max(-1.0, std::min(1.0, c))) * 180.0 / M_PI;
 }
 
-Errors errors(Kind k, const Estimates& est, const std::vector<Oriented_point>& pts,
-              const std::function<Truth(const Point&)>& truth,
-              const std::function<bool(const Point&)>& keep = [](const Point&) { return true; })
+Errors errors(
+  Kind k, const Estimates& est, const std::vector<Oriented_point>& pts, const std::function<Truth(const Point&)>& truth,
+  const std::function<bool(const Point&)>& keep = [](const Point&) { return true; })
 {
   Errors e;
   for(std::size_t i = 0; i < pts.size(); ++i)
@@ -259,7 +264,8 @@ Errors errors(Kind k, const Estimates& est, const std::vector<Oriented_point>& p
 
 void print_header(const std::string& title)
 {
-  std::cout << "\n" << title << "\n"
+  std::cout << "\n"
+            << title << "\n"
             << "| estimator | valid | mean/max err H | mean/max err k_min | mean/max err k_max "
                "| normal deg mean/max | direction deg mean |\n|---|---|---|---|---|---|---|\n";
 }
@@ -279,9 +285,8 @@ void print_row(const std::string& label, const Errors& e)
     mean_direction << std::setprecision(3) << e.direction.mean();
   else
     mean_direction << "-";
-  std::cout << "| " << label << " | " << e.valid << "/" << e.considered << " | " << pair(e.H)
-            << " | " << pair(e.k_min) << " | " << pair(e.k_max) << " | " << pair(e.normal)
-            << " | " << mean_direction.str() << " |" << std::endl;
+  std::cout << "| " << label << " | " << e.valid << "/" << e.considered << " | " << pair(e.H) << " | " << pair(e.k_min)
+            << " | " << pair(e.k_max) << " | " << pair(e.normal) << " | " << mean_direction.str() << " |" << std::endl;
 }
 
 // An error bound of the tables below, for an error measured as `error` where a constant zero
@@ -389,25 +394,22 @@ template <class E1, class E2>
 bool same_estimate(const E1& a, const E2& b)
 {
   return a.status == b.status && a.neighbor_count == b.neighbor_count &&
-         same_number(a.mean_curvature, b.mean_curvature) &&
-         same_number(a.gaussian_curvature, b.gaussian_curvature) &&
+         same_number(a.mean_curvature, b.mean_curvature) && same_number(a.gaussian_curvature, b.gaussian_curvature) &&
          same_number(a.min_curvature, b.min_curvature) && same_number(a.max_curvature, b.max_curvature) &&
          same_number(a.normal.x(), b.normal.x()) && same_number(a.normal.y(), b.normal.y()) &&
-         same_number(a.normal.z(), b.normal.z()) &&
-         same_number(a.min_direction.x(), b.min_direction.x()) &&
+         same_number(a.normal.z(), b.normal.z()) && same_number(a.min_direction.x(), b.min_direction.x()) &&
          same_number(a.min_direction.y(), b.min_direction.y()) &&
          same_number(a.min_direction.z(), b.min_direction.z()) &&
          same_number(a.max_direction.x(), b.max_direction.x()) &&
-         same_number(a.max_direction.y(), b.max_direction.y()) &&
-         same_number(a.max_direction.z(), b.max_direction.z());
+         same_number(a.max_direction.y(), b.max_direction.y()) && same_number(a.max_direction.z(), b.max_direction.z());
 }
 
 template <class E>
 bool all_nan(const E& e)
 {
-  return std::isnan(e.mean_curvature) && std::isnan(e.gaussian_curvature) &&
-         std::isnan(e.min_curvature) && std::isnan(e.max_curvature) && std::isnan(e.normal.x()) &&
-         std::isnan(e.min_direction.x()) && std::isnan(e.max_direction.x());
+  return std::isnan(e.mean_curvature) && std::isnan(e.gaussian_curvature) && std::isnan(e.min_curvature) &&
+         std::isnan(e.max_curvature) && std::isnan(e.normal.x()) && std::isnan(e.min_direction.x()) &&
+         std::isnan(e.max_direction.x());
 }
 
 // Identical estimates (bitwise, NaN equal to NaN). VCM included: its cells are computed so
@@ -453,7 +455,7 @@ void check_fields(Method m, const CGAL::Curvature_estimate<Kernel>& e)
   }
 }
 
-} // namespace
+}  // namespace
 
 // ---------------------------------------------------------------------------------------
 // Building blocks
@@ -479,7 +481,12 @@ TEST_CASE("Jacobi eigen-decomposition of symmetric 3x3 matrices", "[baselines][e
       for(int j = 0; j < 3; ++j)
         for(int k = 0; k < 3; ++k)
           a[i][j] += scale[k] * q[k][i] * q[k][j];
-    m[0] = a[0][0]; m[1] = a[0][1]; m[2] = a[0][2]; m[3] = a[1][1]; m[4] = a[1][2]; m[5] = a[2][2];
+    m[0] = a[0][0];
+    m[1] = a[0][1];
+    m[2] = a[0][2];
+    m[3] = a[1][1];
+    m[4] = a[1][2];
+    m[5] = a[2][2];
     double values[3], vectors[3][3];
     REQUIRE(PSC::internal::symmetric_eigen_3(m, values, vectors));
     CHECK(values[0] <= values[1]);
@@ -515,7 +522,8 @@ TEST_CASE("Jacobi eigen-decomposition of symmetric 3x3 matrices", "[baselines][e
 //     0.02 to λ_i/λ_n against r²k²/4 = 0.004, so the magnitudes come out 2.3 times too large;
 //     with R = 2 (the feature size, as CGAL recommends) 0.020 to 0.056 / 0.082.
 // Normals (max, degrees): fits 0.0018 (jets), PCA plane 0.50, VCM 1.1.
-TEST_CASE("Sphere: each estimator within its measured bounds, every bound below a constant zero's error", "[baselines][sphere]")
+TEST_CASE("Sphere: each estimator within its measured bounds, every bound below a constant zero's error",
+          "[baselines][sphere]")
 {
   const Point c(1, -2, 3);
   const double R = 2, r = 0.25;
@@ -525,15 +533,18 @@ TEST_CASE("Sphere: each estimator within its measured bounds, every bound below 
   // H = k = 0.5. Regression bounds only where an error exceeds that: the barycenter's largest
   // (0.72) and VCM at its default offset radius r (0.65-0.74 mean: the cells' spread over r, a
   // bias that shrinks as 1/R^2 with the offset radius R, checked at R = 2 below). Measured x1.5.
-  struct Tolerance { Method m; Bound mean_H, max_H, mean_k, max_k; };
-  const Tolerance tolerances[] = {
-    {Method::ASO, 1e-12, 1e-11, 1e-12, 1e-11},
-    {Method::BARYCENTER, 0.2, regression_only(1.1), 0, 0},
-    {Method::PCA_PLANE, 0.021, 0.053, 0, 0},
-    {Method::PSS, 0.002, 0.0021, 0.002, 0.0021},
-    {Method::JET, 0.003, 0.0032, 0.003, 0.0032},
-    {Method::WAVEJET, 0.003, 0.0032, 0.003, 0.0032},
-    {Method::VCM, 0, 0, regression_only(1.1), regression_only(1.26)}};
+  struct Tolerance
+  {
+    Method m;
+    Bound mean_H, max_H, mean_k, max_k;
+  };
+  const Tolerance tolerances[] = {{Method::ASO, 1e-12, 1e-11, 1e-12, 1e-11},
+                                  {Method::BARYCENTER, 0.2, regression_only(1.1), 0, 0},
+                                  {Method::PCA_PLANE, 0.021, 0.053, 0, 0},
+                                  {Method::PSS, 0.002, 0.0021, 0.002, 0.0021},
+                                  {Method::JET, 0.003, 0.0032, 0.003, 0.0032},
+                                  {Method::WAVEJET, 0.003, 0.0032, 0.003, 0.0032},
+                                  {Method::VCM, 0, 0, regression_only(1.1), regression_only(1.26)}};
   for(const Tolerance& t : tolerances)
   {
     const Estimates est = run(t.m, pts, r);
@@ -554,8 +565,8 @@ TEST_CASE("Sphere: each estimator within its measured bounds, every bound below 
       CHECK(e.normal.max < 0.0027);
   }
   // VCM with the offset radius at the feature size: the cell-spread bias shrinks as 1/R²
-  const Estimates vcm = CGAL::estimate_vcm_curvatures<CGAL::Parallel_tag>(
-    pts, r, PSC::parameters::vcm_offset_radius(R, maps()));
+  const Estimates vcm =
+    CGAL::estimate_vcm_curvatures<CGAL::Parallel_tag>(pts, r, PSC::parameters::vcm_offset_radius(R, maps()));
   const Errors e = errors(Kind::MAGNITUDES, vcm, pts, truth);
   print_row("VCM (CGAL), R = 2 (feature size)", e);
   CHECK(e.k_min.mean() < 0.03);
@@ -613,7 +624,8 @@ TEST_CASE("Inward normals flip the signed curvatures and the normals, not the ma
 //   VCM: at R = r no curvature is resolved (magnitude errors 1.28 in mean, 3.5 at most: the
 //      cell spread adds (2/r) sqrt(0.019) = 1.4 to the magnitudes), but its direction of the
 //      larger magnitude is the circumference within 2.7 degrees (mean).
-TEST_CASE("Cylinder: each estimator within its measured bounds, every bound below a constant zero's error", "[baselines][cylinder]")
+TEST_CASE("Cylinder: each estimator within its measured bounds, every bound below a constant zero's error",
+          "[baselines][cylinder]")
 {
   const double R = 1, height = 3, r = 0.2;
   const auto pts = cylinder(100, 60, R, height);
@@ -622,15 +634,19 @@ TEST_CASE("Cylinder: each estimator within its measured bounds, every bound belo
   print_header("Cylinder R = 1, 6000 points, r = 0.2, points farther than r from the rims");
   // H = 0.5, k = 0 and 1. Regression bounds only for the barycenter (mean H error 0.52) and
   // VCM (1.28 on k_min): their errors exceed the curvatures; VCM's direction is bounded.
-  struct Tolerance { Method m; Bound mean_H, max_H, mean_k, max_k; double direction; };
-  const Tolerance tolerances[] = {
-    {Method::ASO, 0.003, 0.026, 0.0043, 0.034, 0.11},
-    {Method::BARYCENTER, regression_only(0.78), regression_only(3.0), 0, 0, 0},
-    {Method::PCA_PLANE, 0.05, 0.21, 0, 0, 0},
-    {Method::PSS, 0.0036, 0.0043, 0.0073, 0.0084, 0.006},
-    {Method::JET, 0.0058, 0.0073, 0.012, 0.014, 0.012},
-    {Method::WAVEJET, 0.0058, 0.0073, 0.012, 0.014, 0.011},
-    {Method::VCM, 0, 0, regression_only(1.9), regression_only(5.2), 4.0}};
+  struct Tolerance
+  {
+    Method m;
+    Bound mean_H, max_H, mean_k, max_k;
+    double direction;
+  };
+  const Tolerance tolerances[] = {{Method::ASO, 0.003, 0.026, 0.0043, 0.034, 0.11},
+                                  {Method::BARYCENTER, regression_only(0.78), regression_only(3.0), 0, 0, 0},
+                                  {Method::PCA_PLANE, 0.05, 0.21, 0, 0, 0},
+                                  {Method::PSS, 0.0036, 0.0043, 0.0073, 0.0084, 0.006},
+                                  {Method::JET, 0.0058, 0.0073, 0.012, 0.014, 0.012},
+                                  {Method::WAVEJET, 0.0058, 0.0073, 0.012, 0.014, 0.011},
+                                  {Method::VCM, 0, 0, regression_only(1.9), regression_only(5.2), 4.0}};
   for(const Tolerance& t : tolerances)
   {
     const Estimates est = run(t.m, pts, r);
@@ -656,21 +672,26 @@ TEST_CASE("Cylinder: each estimator within its measured bounds, every bound belo
 //      regression bound only);
 //   k_min, k_max (worse of the two): ASO 0.0194 / 0.579, PSS 0.015 / 0.11, jets 0.021 / 0.17,
 //      wavejets 0.021 / 0.18; VCM magnitudes 3.3 / 5.6 (above the curvatures, regression only).
-TEST_CASE("Ellipsoid (random sampling): each estimator within its measured bounds, every bound below a constant zero's error", "[baselines][ellipsoid]")
+TEST_CASE(
+  "Ellipsoid (random sampling): each estimator within its measured bounds, every bound below a constant zero's error",
+  "[baselines][ellipsoid]")
 {
   const double a = 1, b = 0.7, c = 0.5, r = 0.09;
   const auto pts = ellipsoid(10000, a, b, c);
   auto truth = [&](const Point& p) { return ellipsoid_truth(p, a, b, c); };
   print_header("Ellipsoid 1 x 0.7 x 0.5, 10000 random points, r = 0.09");
-  struct Tolerance { Method m; Bound mean_H, max_H, mean_k, max_k; };
-  const Tolerance tolerances[] = {
-    {Method::ASO, 0.021, 0.39, 0.029, 0.87},
-    {Method::BARYCENTER, regression_only(5.0), regression_only(26), 0, 0},
-    {Method::PCA_PLANE, 0.22, 1.4, 0, 0},
-    {Method::PSS, 0.014, 0.099, 0.023, 0.165},
-    {Method::JET, 0.02, 0.153, 0.032, 0.25},
-    {Method::WAVEJET, 0.02, 0.168, 0.032, 0.276},
-    {Method::VCM, 0, 0, regression_only(4.9), regression_only(8.3)}};
+  struct Tolerance
+  {
+    Method m;
+    Bound mean_H, max_H, mean_k, max_k;
+  };
+  const Tolerance tolerances[] = {{Method::ASO, 0.021, 0.39, 0.029, 0.87},
+                                  {Method::BARYCENTER, regression_only(5.0), regression_only(26), 0, 0},
+                                  {Method::PCA_PLANE, 0.22, 1.4, 0, 0},
+                                  {Method::PSS, 0.014, 0.099, 0.023, 0.165},
+                                  {Method::JET, 0.02, 0.153, 0.032, 0.25},
+                                  {Method::WAVEJET, 0.02, 0.168, 0.032, 0.276},
+                                  {Method::VCM, 0, 0, regression_only(4.9), regression_only(8.3)}};
   for(const Tolerance& t : tolerances)
   {
     const Estimates est = run(t.m, pts, r);
@@ -729,16 +750,14 @@ TEST_CASE("estimate_jet_curvatures agrees with a direct call of CGAL::Monge_via_
     const double scale = std::max(std::abs(e.min_curvature), std::abs(e.max_curvature));
     worst = std::max({worst, std::abs(e.min_curvature + monge.principal_curvatures(0)) / scale,
                       std::abs(e.max_curvature + monge.principal_curvatures(1)) / scale});
-    worst_not_first = std::max({worst_not_first,
-                                std::abs(e.min_curvature + other.principal_curvatures(0)) / scale,
+    worst_not_first = std::max({worst_not_first, std::abs(e.min_curvature + other.principal_curvatures(0)) / scale,
                                 std::abs(e.max_curvature + other.principal_curvatures(1)) / scale});
     CHECK(angle_degrees(e.normal, monge.normal_direction()) < 1e-5);  // acos resolves 1e-6 degree
-    if(e.max_curvature - e.min_curvature > 1e-3 * scale)  // directions defined away from umbilics
+    if(e.max_curvature - e.min_curvature > 1e-3 * scale)              // directions defined away from umbilics
       CHECK(line_angle_degrees(e.min_direction, monge.maximal_principal_direction()) < 1e-5);
   }
-  std::cout << "\nJets vs direct CGAL call on Goursat 10K, r = 1.5: max relative difference "
-            << worst << " with the query first, " << worst_not_first << " with the query last"
-            << std::endl;
+  std::cout << "\nJets vs direct CGAL call on Goursat 10K, r = 1.5: max relative difference " << worst
+            << " with the query first, " << worst_not_first << " with the query last" << std::endl;
   CHECK(worst < 1e-8);
   CHECK(worst_not_first > 0.1);
 }
@@ -753,8 +772,8 @@ double mean_disagreement(const Estimates& a, const Estimates& b)
   for(std::size_t i = 0; i < a.size(); ++i)
     if(a[i].is_valid() && b[i].is_valid())
     {
-      s += 0.5 * (std::abs(a[i].min_curvature - b[i].min_curvature) +
-                  std::abs(a[i].max_curvature - b[i].max_curvature));
+      s +=
+        0.5 * (std::abs(a[i].min_curvature - b[i].min_curvature) + std::abs(a[i].max_curvature - b[i].max_curvature));
       ++n;
     }
   return n ? s / double(n) : std::numeric_limits<double>::infinity();
@@ -769,7 +788,7 @@ double mean_tensor_error(Kind k, const Estimates& est, const std::vector<Oriente
   return 0.5 * (e.k_min.mean() + e.k_max.mean());
 }
 
-} // namespace
+}  // namespace
 
 // The full-tensor estimators agree with each other and with CGAL's jet fitting: mean of
 // (|Δk_min| + |Δk_max|)/2 between every pair, on Goursat 10K at r = 1.5 (39 neighbours;
@@ -781,16 +800,22 @@ double mean_tensor_error(Kind k, const Estimates& est, const std::vector<Oriente
 TEST_CASE("Full-tensor estimators agree with each other and with CGAL jet fitting", "[baselines][cgal][agreement]")
 {
   const Method tensors[] = {Method::ASO, Method::PSS, Method::JET, Method::WAVEJET};
-  struct Cloud { const char* title; std::vector<Oriented_point> pts; double r; double bound, aso_bound; };
-  const Cloud clouds[] = {
-    {"Goursat 10K, r = 1.5", goursat_10k(), 1.5, 0.0045, 0.01},
-    {"ellipsoid 10K random, r = 0.09", ellipsoid(10000, 1, 0.7, 0.5), 0.09, 0.014, 0.081}};
+  struct Cloud
+  {
+    const char* title;
+    std::vector<Oriented_point> pts;
+    double r;
+    double bound, aso_bound;
+  };
+  const Cloud clouds[] = {{"Goursat 10K, r = 1.5", goursat_10k(), 1.5, 0.0045, 0.01},
+                          {"ellipsoid 10K random, r = 0.09", ellipsoid(10000, 1, 0.7, 0.5), 0.09, 0.014, 0.081}};
   for(const Cloud& cloud : clouds)
   {
     std::vector<Estimates> est;
     for(Method m : tensors)
       est.push_back(run(m, cloud.pts, cloud.r));
-    std::cout << "\nMean disagreement (|dk_min| + |dk_max|)/2, " << cloud.title << "\n|   | ASO | PSS | jet | wavejet |\n|---|---|---|---|---|\n";
+    std::cout << "\nMean disagreement (|dk_min| + |dk_max|)/2, " << cloud.title
+              << "\n|   | ASO | PSS | jet | wavejet |\n|---|---|---|---|---|\n";
     for(std::size_t i = 0; i < 4; ++i)
     {
       std::cout << "| " << name(tensors[i]) << " |";
@@ -828,8 +853,8 @@ TEST_CASE("ASO is at least as accurate as CGAL jets and VCM on Goursat (paper se
   auto truth = [](const Point& p) { return goursat_truth(p); };
   const Estimates aso = run(Method::ASO, pts, r), jet = run(Method::JET, pts, r);
   const Estimates vcm = run(Method::VCM, pts, r);
-  const Estimates vcm_half = CGAL::estimate_vcm_curvatures<CGAL::Parallel_tag>(
-    pts, r, PSC::parameters::vcm_offset_radius(0.5 * r, maps()));
+  const Estimates vcm_half =
+    CGAL::estimate_vcm_curvatures<CGAL::Parallel_tag>(pts, r, PSC::parameters::vcm_offset_radius(0.5 * r, maps()));
   print_header("Goursat 10K, r = 1.673 (5% of the diagonal, the paper's setting)");
   const Errors e_aso = errors(Kind::SIGNED_TENSOR, aso, pts, truth);
   const Errors e_jet = errors(Kind::SIGNED_TENSOR, jet, pts, truth);
@@ -854,13 +879,18 @@ TEST_CASE("ASO is at least as accurate as CGAL jets and VCM on Goursat (paper se
   // Where the claim does not hold: ASO needs a locally regular sampling.
   std::cout << "\nASO vs CGAL jets, mean (|dk_min| + |dk_max|)/2 against the truth, about 40 neighbours:\n"
             << "| cloud | r | ASO | jet | PSS |\n|---|---|---|---|---|\n";
-  struct Case { std::string title; std::vector<Oriented_point> pts; double r; std::function<Truth(const Point&)> truth; };
+  struct Case
+  {
+    std::string title;
+    std::vector<Oriented_point> pts;
+    double r;
+    std::function<Truth(const Point&)> truth;
+  };
   const double a = 1, b = 0.7, c = 0.5;
   auto ell = [=](const Point& p) { return ellipsoid_truth(p, a, b, c); };
-  const Case cases[] = {
-    {"Goursat 10K (Lloyd)", goursat_10k(), 1.5, truth},
-    {"ellipsoid 10K regular (Fibonacci)", regular_ellipsoid(10000, a, b, c), 0.09, ell},
-    {"ellipsoid 10K random", ellipsoid(10000, a, b, c), 0.09, ell}};
+  const Case cases[] = {{"Goursat 10K (Lloyd)", goursat_10k(), 1.5, truth},
+                        {"ellipsoid 10K regular (Fibonacci)", regular_ellipsoid(10000, a, b, c), 0.09, ell},
+                        {"ellipsoid 10K random", ellipsoid(10000, a, b, c), 0.09, ell}};
   for(const Case& k : cases)
   {
     const double e_a = mean_tensor_error(Kind::SIGNED_TENSOR, run(Method::ASO, k.pts, k.r), k.pts, k.truth);
@@ -998,8 +1028,7 @@ TEST_CASE("Coordinates far from the origin change nothing", "[baselines][numeric
 TEST_CASE("Invalid radius, scale or options throw std::invalid_argument naming the parameter", "[baselines][errors]")
 {
   const auto pts = sphere(500, 1.0);
-  const double bad[] = {0.0, -1.0, std::numeric_limits<double>::quiet_NaN(),
-                        std::numeric_limits<double>::infinity()};
+  const double bad[] = {0.0, -1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()};
   for(Method m : baselines)
   {
     INFO(name(m));
@@ -1015,7 +1044,8 @@ TEST_CASE("Invalid radius, scale or options throw std::invalid_argument naming t
   {
     auto jets = [&](int fitting, int monge) {
       return CGAL::estimate_jet_curvatures<CGAL::Sequential_tag>(
-        pts, 0.2, CGAL::parameters::degree_fitting(fitting).degree_monge(monge).point_map(Point_map()).normal_map(Normal_map()));
+        pts, 0.2,
+        CGAL::parameters::degree_fitting(fitting).degree_monge(monge).point_map(Point_map()).normal_map(Normal_map()));
     };
     CHECK_THROWS_WITH(jets(2, 1), Catch::Contains("'degree_monge'"));
     CHECK_THROWS_WITH(jets(4, 5), Catch::Contains("'degree_monge'"));
@@ -1028,9 +1058,9 @@ TEST_CASE("Invalid radius, scale or options throw std::invalid_argument naming t
   SECTION("VCM offset radius")
   {
     for(double R : bad)
-      CHECK_THROWS_WITH(CGAL::estimate_vcm_curvatures<CGAL::Sequential_tag>(
-                          pts, 0.2, PSC::parameters::vcm_offset_radius(R, maps())),
-                        Catch::Contains("'vcm_offset_radius'"));
+      CHECK_THROWS_WITH(
+        CGAL::estimate_vcm_curvatures<CGAL::Sequential_tag>(pts, 0.2, PSC::parameters::vcm_offset_radius(R, maps())),
+        Catch::Contains("'vcm_offset_radius'"));
   }
 }
 
@@ -1057,11 +1087,17 @@ TEST_CASE("Too few neighbours: status, count and NaN at the threshold of each es
     }
     return pts;
   };
-  struct Threshold { Method m; std::size_t minimum; std::function<Estimates(const std::vector<Oriented_point>&)> run; };
+  struct Threshold
+  {
+    Method m;
+    std::size_t minimum;
+    std::function<Estimates(const std::vector<Oriented_point>&)> run;
+  };
   std::vector<Threshold> thresholds;
   for(Method m : all_methods)
   {
-    thresholds.push_back({m, minimum_neighbors(m), [m, r](const std::vector<Oriented_point>& p) { return run(m, p, r); }});
+    thresholds.push_back(
+      {m, minimum_neighbors(m), [m, r](const std::vector<Oriented_point>& p) { return run(m, p, r); }});
     // a threshold below the fit's own minimum is raised to it
     thresholds.push_back({m, fit_minimum_neighbors(m), [m, r](const std::vector<Oriented_point>& p) {
                             return run<CGAL::Parallel_tag>(m, p, r, PSC::parameters::min_neighbors(1, maps()));
@@ -1069,8 +1105,9 @@ TEST_CASE("Too few neighbours: status, count and NaN at the threshold of each es
   }
   thresholds.push_back({Method::JET, 10, [r](const std::vector<Oriented_point>& p) {
                           return CGAL::estimate_jet_curvatures<CGAL::Parallel_tag>(
-                            p, r, PSC::parameters::min_neighbors(1, CGAL::parameters::degree_fitting(3)
-                                                                      .point_map(Point_map()).normal_map(Normal_map())));
+                            p, r,
+                            PSC::parameters::min_neighbors(
+                              1, CGAL::parameters::degree_fitting(3).point_map(Point_map()).normal_map(Normal_map())));
                         }});
   for(const Threshold& t : thresholds)
   {
@@ -1093,7 +1130,8 @@ TEST_CASE("Too few neighbours: status, count and NaN at the threshold of each es
   }
 }
 
-TEST_CASE("Non-finite points and invalid normals get their status and NaN, and are nobody's neighbour", "[baselines][status]")
+TEST_CASE("Non-finite points and invalid normals get their status and NaN, and are nobody's neighbour",
+          "[baselines][status]")
 {
   auto pts = sphere(2000, 1.0);
   const double r = 0.3;
@@ -1140,8 +1178,8 @@ TEST_CASE("VCM: the package's cells give CGAL's compute_vcm() magnitudes to roun
     const auto pts = shape == 0 ? sphere(3000, 2.0) : cylinder(60, 50, 1.0, 4.0);
     const double r = shape == 0 ? 0.4 : 0.5, R = 0.3;
     INFO((shape == 0 ? "sphere" : "cylinder"));
-    const Estimates e = CGAL::estimate_vcm_curvatures<CGAL::Sequential_tag>(
-      pts, r, PSC::parameters::vcm_offset_radius(R, maps()));
+    const Estimates e =
+      CGAL::estimate_vcm_curvatures<CGAL::Sequential_tag>(pts, r, PSC::parameters::vcm_offset_radius(R, maps()));
     std::vector<Epick::Point_3> positions;
     for(const auto& p : pts)
       positions.emplace_back(p.first.x(), p.first.y(), p.first.z());
@@ -1180,9 +1218,13 @@ TEST_CASE("VCM: a collinear cloud is degenerate, the callback can cancel", "[bas
   const auto pts = sphere(2000, 1.0);
   const double r = 0.3;
   std::vector<double> progress;
-  const Estimates all = CGAL::estimate_vcm_curvatures<CGAL::Sequential_tag>(
-    pts, r, CGAL::parameters::callback([&](double f) { progress.push_back(f); return true; })
-              .point_map(Point_map()).normal_map(Normal_map()));
+  const Estimates all = CGAL::estimate_vcm_curvatures<CGAL::Sequential_tag>(pts, r,
+                                                                            CGAL::parameters::callback([&](double f) {
+                                                                              progress.push_back(f);
+                                                                              return true;
+                                                                            })
+                                                                              .point_map(Point_map())
+                                                                              .normal_map(Normal_map()));
   REQUIRE(!progress.empty());
   CHECK(progress.front() == 0.0);
   CHECK(progress.back() == 1.0);
@@ -1241,7 +1283,8 @@ TEST_CASE("Baselines: one scan line is DEGENERATE_FIT, not a valid zero curvatur
   CHECK(e[100].neighbor_count > 30);
 }
 
-TEST_CASE("Jets by count on coincident points are DEGENERATE_FIT (CGAL's fitting is not called)", "[baselines][bad_input]")
+TEST_CASE("Jets by count on coincident points are DEGENERATE_FIT (CGAL's fitting is not called)",
+          "[baselines][bad_input]")
 {
   // CGAL's Monge_via_jet_fitting indexed Eigen blocks with negative sizes on coincident points
   // (an assertion failure; undefined behaviour in Release).
@@ -1340,11 +1383,13 @@ Three_errors default_paper_pss(const std::vector<Oriented_point>& pts, double r,
   return e;
 }
 
-} // namespace
+}  // namespace
 
 // The targets of the issue "an ASO that stays accurate on real sampling and imperfect
 // normals", measured on the same clouds as benchmark/paper_experiments (experiment 7).
-TEST_CASE("Default ASO: at least 4.6x the paper's accuracy on Goursat 50K, within 2% of it with 30% flipped normals, noisy normals refined", "[aso][robust]")
+TEST_CASE("Default ASO: at least 4.6x the paper's accuracy on Goursat 50K, within 2% of it with 30% flipped normals, "
+          "noisy normals refined",
+          "[aso][robust]")
 {
   const auto pts = read_xyz(repo_data("goursat_050000.xyz"));
   const double r = 1.5;
@@ -1362,8 +1407,10 @@ TEST_CASE("Default ASO: at least 4.6x the paper's accuracy on Goursat 50K, withi
   for(auto& p : flipped)
     if(u(rng) < 0.3)
       p.second = -p.second;
-  const double robust_flipped = mean_H_error(CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(flipped, r, maps()), pts);
-  const double paper_flipped = mean_H_error(CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(flipped, r, paper_maps()), pts);
+  const double robust_flipped =
+    mean_H_error(CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(flipped, r, maps()), pts);
+  const double paper_flipped =
+    mean_H_error(CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(flipped, r, paper_maps()), pts);
   measured("Goursat 50K, 30% flipped: default ASO", robust_flipped);
   measured("Goursat 50K, 30% flipped: paper's ASO", paper_flipped);
   // Measured 0.257e-3 (0.8% above the clean value: nearly every flip is undone) and 21.0e-3.
@@ -1398,7 +1445,9 @@ TEST_CASE("Default ASO: at least 4.6x the paper's accuracy on Goursat 50K, withi
   CHECK(tilted_default > 3 * tilted_refined);
 }
 
-TEST_CASE("Default ASO on i.i.d. random Goursat samples: at least as accurate as PSS (the paper's ASO: 2.3 times worse)", "[aso][robust]")
+TEST_CASE(
+  "Default ASO on i.i.d. random Goursat samples: at least as accurate as PSS (the paper's ASO: 2.3 times worse)",
+  "[aso][robust]")
 {
   std::vector<Oriented_point> pts;  // the draw of paper_experiments' experiment 7
   for(const auto& p : goursat::iid_sample(10000, 2021 * 37 + 1))
@@ -1425,14 +1474,14 @@ TEST_CASE("Every ASO variant gives k = 1 on a unit sphere sampled i.i.d. with a 
       for(bool robust : {false, true})
         for(bool blend : {false, true})
         {
-          INFO("kernel " << int(kernel) << ", weights " << int(weights) << ", orientation " << robust
-                         << ", blend " << blend);
+          INFO("kernel " << int(kernel) << ", weights " << int(weights) << ", orientation " << robust << ", blend "
+                         << blend);
           const auto est = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
             pts, 0.3,
             PSC::parameters::weight_kernel(
-              kernel, PSC::parameters::sample_weights(
-                        weights, PSC::parameters::robust_orientation(
-                                   robust, PSC::parameters::normal_field_blend(blend, maps())))));
+              kernel,
+              PSC::parameters::sample_weights(weights, PSC::parameters::robust_orientation(
+                                                         robust, PSC::parameters::normal_field_blend(blend, maps())))));
           double worst = 0;
           std::size_t valid = 0;
           for(const auto& e : est)
@@ -1449,7 +1498,8 @@ TEST_CASE("Every ASO variant gives k = 1 on a unit sphere sampled i.i.d. with a 
   const auto blended = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
     pts, 0.3, PSC::parameters::sample_weights(CGAL::Sample_weights::UNIFORM, maps()));
   const auto unblended = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
-    pts, 0.3, PSC::parameters::sample_weights(CGAL::Sample_weights::UNIFORM, PSC::parameters::normal_field_blend(false, maps())));
+    pts, 0.3,
+    PSC::parameters::sample_weights(CGAL::Sample_weights::UNIFORM, PSC::parameters::normal_field_blend(false, maps())));
   std::size_t changed = 0;
   for(std::size_t i = 0; i < pts.size(); ++i)
     changed += blended[i].max_curvature != unblended[i].max_curvature;
@@ -1468,8 +1518,8 @@ TEST_CASE("The normal-field blend is exact on a sphere cut in half", "[aso][robu
       half.push_back(p);
   const double r = 0.3;
   const auto est = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(half, r, maps());
-  const auto unblended = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
-    half, r, PSC::parameters::normal_field_blend(false, maps()));
+  const auto unblended =
+    CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(half, r, PSC::parameters::normal_field_blend(false, maps()));
   double worst = 0;
   std::size_t at_cut = 0, changed_at_cut = 0;
   for(std::size_t i = 0; i < half.size(); ++i)
@@ -1480,8 +1530,8 @@ TEST_CASE("The normal-field blend is exact on a sphere cut in half", "[aso][robu
     {
       ++at_cut;
       // both are exact here, up to rounding: a different rounding shows the fit was used
-      changed_at_cut += est[i].min_curvature != unblended[i].min_curvature ||
-                        est[i].max_curvature != unblended[i].max_curvature;
+      changed_at_cut +=
+        est[i].min_curvature != unblended[i].min_curvature || est[i].max_curvature != unblended[i].max_curvature;
     }
   }
   measured("half sphere: points at the cut", double(at_cut));
@@ -1494,7 +1544,8 @@ TEST_CASE("The normal-field blend is exact on a sphere cut in half", "[aso][robu
 // The ASO's bias on one-sided neighbourhoods, in the continuum (a fine grid with exact
 // normals): the curvature across a border through the evaluation point comes out about 25%
 // low; the normal-field blend removes it.
-TEST_CASE("One-sided neighbourhoods: the normal-field blend removes the ASO's bias across a border", "[aso][robust][blend]")
+TEST_CASE("One-sided neighbourhoods: the normal-field blend removes the ASO's bias across a border",
+          "[aso][robust][blend]")
 {
   const double k1 = 0.2, k2 = 0.1, h = 0.04, r = 1.4;
   std::vector<Oriented_point> patch;  // z = -(k1 x² + k2 y²) / 2 for x >= 0: a border along x = 0
@@ -1506,8 +1557,8 @@ TEST_CASE("One-sided neighbourhoods: the normal-field blend removes the ASO's bi
       patch.emplace_back(Point(x, y, -(k1 * x * x + k2 * y * y) / 2), n / std::sqrt(n.squared_length()));
     }
   const auto blended = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(patch, r, maps());
-  const auto unblended = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
-    patch, r, PSC::parameters::normal_field_blend(false, maps()));
+  const auto unblended =
+    CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(patch, r, PSC::parameters::normal_field_blend(false, maps()));
   double worst_blended = 0, best_unblended = 1;
   std::size_t border = 0;
   for(std::size_t i = 0; i < patch.size(); ++i)
@@ -1519,8 +1570,8 @@ TEST_CASE("One-sided neighbourhoods: the normal-field blend removes the ASO's bi
     REQUIRE(blended[i].is_valid());
     REQUIRE(unblended[i].is_valid());
     // at (0, y) the principal curvatures are k1 (across the border) and k2 to 2e-4
-    worst_blended = std::max({worst_blended, std::abs(blended[i].max_curvature - k1) / k1,
-                              std::abs(blended[i].min_curvature - k2) / k2});
+    worst_blended = std::max(
+      {worst_blended, std::abs(blended[i].max_curvature - k1) / k1, std::abs(blended[i].min_curvature - k2) / k2});
     best_unblended = std::min(best_unblended, std::abs(unblended[i].max_curvature - k1) / k1);
   }
   measured("paraboloid cut along x = 0: worst relative error with the blend", worst_blended);
@@ -1534,7 +1585,8 @@ TEST_CASE("One-sided neighbourhoods: the normal-field blend removes the ASO's bi
 
 // The issue's target on the simulated LiDAR scan (scan lines, a border all around the part
 // the scanner saw), and the invariance of the blended estimator under a rotation.
-TEST_CASE("Default ASO on the simulated LiDAR scan: below 3.3e-3 and below PSS, rotation invariant", "[aso][robust][blend]")
+TEST_CASE("Default ASO on the simulated LiDAR scan: below 3.3e-3 and below PSS, rotation invariant",
+          "[aso][robust][blend]")
 {
   const auto pts = read_xyz(repo_data("goursat-lidar.xyz"));
   const double r = 1.4;
@@ -1565,7 +1617,8 @@ TEST_CASE("Default ASO on the simulated LiDAR scan: below 3.3e-3 and below PSS, 
   const auto uniform = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
     pts, r, PSC::parameters::sample_weights(CGAL::Sample_weights::UNIFORM, maps()));
   const auto uniform_unblended = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
-    pts, r, PSC::parameters::sample_weights(CGAL::Sample_weights::UNIFORM, PSC::parameters::normal_field_blend(false, maps())));
+    pts, r,
+    PSC::parameters::sample_weights(CGAL::Sample_weights::UNIFORM, PSC::parameters::normal_field_blend(false, maps())));
   std::size_t compared = 0;
   double class_difference = 0;
   for(std::size_t i = 0; i < pts.size() && compared < 40; ++i)
@@ -1573,7 +1626,8 @@ TEST_CASE("Default ASO on the simulated LiDAR scan: below 3.3e-3 and below PSS, 
     if(!uniform[i].is_valid() || uniform[i].max_curvature == uniform_unblended[i].max_curvature)
       continue;
     // the robust variant's options (its sample weights are those of the neighbours, all 1 here)
-    CGAL::Algebraic_shape_operator_fit<Kernel> fit(pts[i].first, r, PSC::parameters::aso_variant(CGAL::Aso_variant::ROBUST));
+    CGAL::Algebraic_shape_operator_fit<Kernel> fit(pts[i].first, r,
+                                                   PSC::parameters::aso_variant(CGAL::Aso_variant::ROBUST));
     for(const auto& p : pts)
       fit.add_neighbor(p.first, p.second);
     const auto e = fit.estimate();
@@ -1605,7 +1659,9 @@ TEST_CASE("Default ASO on the simulated LiDAR scan: below 3.3e-3 and below PSS, 
 // Two parallel sheets closer than r with opposite normals (both sides of a thin plate): the
 // robust orientation would flip one sheet's normals and fit one surface to both. It reports
 // TWO_SHEETS instead; away from the other sheet the estimates are the plane's.
-TEST_CASE("Thin plate: the robust orientation reports TWO_SHEETS where both sides are within r, a cube's edges are left alone", "[aso][robust]")
+TEST_CASE(
+  "Thin plate: the robust orientation reports TWO_SHEETS where both sides are within r, a cube's edges are left alone",
+  "[aso][robust]")
 {
   const double r = 0.2, gap = 0.05;  // sheets 0.25 r apart
   std::vector<Oriented_point> plate;
@@ -1654,8 +1710,8 @@ TEST_CASE("Thin plate: the robust orientation reports TWO_SHEETS where both side
       cube.emplace_back(Point(c[0], c[1], c[2]), n);
     }
   const auto with = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(cube, 0.3, maps());
-  const auto without = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
-    cube, 0.3, PSC::parameters::robust_orientation(false, maps()));
+  const auto without =
+    CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(cube, 0.3, PSC::parameters::robust_orientation(false, maps()));
   std::size_t same = 0;
   for(std::size_t i = 0; i < cube.size(); ++i)
     same += with[i].status == without[i].status &&
@@ -1667,7 +1723,9 @@ TEST_CASE("Thin plate: the robust orientation reports TWO_SHEETS where both side
 // gives in a tree crown, oriented to +z as the tool does for airborne scans) are one noisy
 // surface, not two sheets: the estimate is given, with a low normal_coherence. A plane's
 // coherence is 1, a sphere's close to 1.
-TEST_CASE("Foliage is estimated with a low normal_coherence, not TWO_SHEETS, and smooth surfaces have a coherence near 1", "[aso][robust]")
+TEST_CASE(
+  "Foliage is estimated with a low normal_coherence, not TWO_SHEETS, and smooth surfaces have a coherence near 1",
+  "[aso][robust]")
 {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(-1, 1);
@@ -1687,10 +1745,10 @@ TEST_CASE("Foliage is estimated with a low normal_coherence, not TWO_SHEETS, and
   for(std::size_t i = 0; i < either.size(); i += 2)
     either[i].second = -either[i].second;
   const auto k40 = PSC::parameters::neighbor_count(40, maps());
-  for(const auto& est : {CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(crown, k40),
-                         CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(
-                           crown, PSC::parameters::robust_orientation(true, k40)),
-                         CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(either, k40)})
+  for(const auto& est :
+      {CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(crown, k40),
+       CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(crown, PSC::parameters::robust_orientation(true, k40)),
+       CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(either, k40)})
   {
     std::size_t valid = 0;
     std::vector<double> coherence;
@@ -1703,7 +1761,7 @@ TEST_CASE("Foliage is estimated with a low normal_coherence, not TWO_SHEETS, and
     std::sort(coherence.begin(), coherence.end());
     measured("foliage: valid (of 6000)", double(valid));
     measured("foliage: median normal_coherence", coherence[coherence.size() / 2]);
-    CHECK(valid > 0.95 * double(crown.size()));  // measured 6000 of 6000 (each case)
+    CHECK(valid > 0.95 * double(crown.size()));    // measured 6000 of 6000 (each case)
     CHECK(coherence[coherence.size() / 2] < 0.8);  // measured 0.61 (ASO), 0.57 (APSS), 0.61 (either sign)
   }
   // a bent thin shell stays two sheets: both sides of a tube wall of radius 1, 0.05 thick
@@ -1770,11 +1828,13 @@ std::size_t count_different(const Range& a, const Range& b)
   return d;
 }
 
-} // namespace
+}  // namespace
 
 // The area pass shared by several estimators of one run (issue 11's speed target: "the areas
 // pass can be shared by every estimator of one run").
-TEST_CASE("estimate_tangent_voronoi_areas + sample_weight_map: one area pass gives every estimator's area-weighted result bitwise", "[aso][robust][weights]")
+TEST_CASE("estimate_tangent_voronoi_areas + sample_weight_map: one area pass gives every estimator's area-weighted "
+          "result bitwise",
+          "[aso][robust][weights]")
 {
   // a unit sphere sampled i.i.d. with a 1:10 density ramp, a point with a zero normal
   typedef std::tuple<Point, Vector, double> Item;
@@ -1827,11 +1887,13 @@ TEST_CASE("estimate_tangent_voronoi_areas + sample_weight_map: one area pass giv
   const auto area = CGAL::Sample_weights::TANGENT_VORONOI_AREA;
   CHECK(count_different(CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, r, maps()),
                         CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(items, r, wnp)) == 0);
+  CHECK(count_different(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
+                          pts, r, PSC::parameters::sample_weights(area, paper_maps())),
+                        CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
+                          items, r, PSC::parameters::aso_variant(CGAL::Aso_variant::PAPER, wnp))) == 0);
   CHECK(count_different(
-          CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, r, PSC::parameters::sample_weights(area, paper_maps())),
-          CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(items, r, PSC::parameters::aso_variant(CGAL::Aso_variant::PAPER, wnp))) == 0);
-  CHECK(count_different(CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(pts, r, PSC::parameters::sample_weights(area, maps())),
-                        CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(items, r, wnp)) == 0);
+          CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(pts, r, PSC::parameters::sample_weights(area, maps())),
+          CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(items, r, wnp)) == 0);
   {
     const auto own = CGAL::estimate_algebraic_sphere_features<CGAL::Parallel_tag>(
       pts, r, PSC::parameters::sample_weights(area, maps()));
@@ -1853,8 +1915,10 @@ TEST_CASE("estimate_tangent_voronoi_areas + sample_weight_map: one area pass giv
     }
     REQUIRE(CGAL::estimate_tangent_voronoi_areas<CGAL::Sequential_tag>(long_items, r, wnp));
     const auto authors = CGAL::Aso_projection::AUTHORS_IMPLEMENTATION;
-    CHECK(count_different(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(long_pts, r, PSC::parameters::aso_projection(authors, maps())),
-                          CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(long_items, r, PSC::parameters::aso_projection(authors, wnp))) == 0);
+    CHECK(count_different(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
+                            long_pts, r, PSC::parameters::aso_projection(authors, maps())),
+                          CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
+                            long_items, r, PSC::parameters::aso_projection(authors, wnp))) == 0);
   }
   // the weights change the estimates (the test would pass trivially otherwise)
   CHECK(count_different(CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(pts, r, maps()),
@@ -1864,8 +1928,9 @@ TEST_CASE("estimate_tangent_voronoi_areas + sample_weight_map: one area pass giv
   const std::size_t k = 40;
   std::vector<Item> by_count = items;
   REQUIRE(CGAL::estimate_tangent_voronoi_areas<CGAL::Parallel_tag>(by_count, PSC::parameters::neighbor_count(k, wnp)));
-  CHECK(count_different(CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, PSC::parameters::neighbor_count(k, maps())),
-                        CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(by_count, PSC::parameters::neighbor_count(k, wnp))) == 0);
+  CHECK(count_different(
+          CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, PSC::parameters::neighbor_count(k, maps())),
+          CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(by_count, PSC::parameters::neighbor_count(k, wnp))) == 0);
 
   // CGAL::Point_set_3 with a property of its own
   CGAL::Point_set_3<Point, Vector> ps;
@@ -1873,9 +1938,11 @@ TEST_CASE("estimate_tangent_voronoi_areas + sample_weight_map: one area pass giv
   for(const auto& p : pts)
     ps.insert(p.first, p.second);
   auto ps_area = ps.add_property_map<double>("area", -1.0).first;
-  REQUIRE(CGAL::estimate_tangent_voronoi_areas<CGAL::Sequential_tag>(ps, r, PSC::parameters::sample_weight_map(ps_area, ps.parameters())));
+  REQUIRE(CGAL::estimate_tangent_voronoi_areas<CGAL::Sequential_tag>(
+    ps, r, PSC::parameters::sample_weight_map(ps_area, ps.parameters())));
   CHECK(count_different(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(ps, r, ps.parameters()),
-                        CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(ps, r, PSC::parameters::sample_weight_map(ps_area, ps.parameters()))) == 0);
+                        CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
+                          ps, r, PSC::parameters::sample_weight_map(ps_area, ps.parameters()))) == 0);
 
   // The map is read, not recomputed: weights of 1 give the unweighted estimator bitwise (w
   // times 1.0 is exact), by radius, by count and through a refinement pass; sequential and
@@ -1887,10 +1954,13 @@ TEST_CASE("estimate_tangent_voronoi_areas + sample_weight_map: one area pass giv
     const auto uniform = PSC::parameters::sample_weights(CGAL::Sample_weights::UNIFORM, maps());
     CHECK(count_different(CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, r, uniform),
                           CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(ones, r, wnp)) == 0);
-    CHECK(count_different(CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, PSC::parameters::neighbor_count(k, uniform)),
-                          CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(ones, PSC::parameters::neighbor_count(k, wnp))) == 0);
-    CHECK(count_different(CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, r, PSC::parameters::normal_refinement(1, uniform)),
-                          CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(ones, r, PSC::parameters::normal_refinement(1, wnp))) == 0);
+    CHECK(count_different(
+            CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, PSC::parameters::neighbor_count(k, uniform)),
+            CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(ones, PSC::parameters::neighbor_count(k, wnp))) == 0);
+    CHECK(count_different(
+            CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, r, PSC::parameters::normal_refinement(1, uniform)),
+            CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(ones, r, PSC::parameters::normal_refinement(1, wnp))) ==
+          0);
     CHECK(count_different(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(items, r, wnp),
                           CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(items, r, wnp)) == 0);
   }
@@ -1914,16 +1984,18 @@ TEST_CASE("estimate_tangent_voronoi_areas + sample_weight_map: one area pass giv
     for(bool by_radius : {true, false})
     {
       INFO("by radius " << by_radius);
-      const auto whole = by_radius ? CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(items, r, wnp)
-                                   : CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(by_count, PSC::parameters::neighbor_count(k, wnp));
+      const auto whole =
+        by_radius
+          ? CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(items, r, wnp)
+          : CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(by_count, PSC::parameters::neighbor_count(k, wnp));
       std::vector<Item> tile_range = range;
       if(!by_radius)
         for(std::size_t j = 0; j < range.size(); ++j)
           std::get<2>(tile_range[j]) = std::get<2>(by_count[from[j]]);
-      const auto part = by_radius
-                          ? CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(tile_range, r, PSC::parameters::tile(tile, wnp))
-                          : CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
-                              tile_range, PSC::parameters::neighbor_count(k, PSC::parameters::tile(tile, wnp)));
+      const auto part =
+        by_radius ? CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(tile_range, r, PSC::parameters::tile(tile, wnp))
+                  : CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
+                      tile_range, PSC::parameters::neighbor_count(k, PSC::parameters::tile(tile, wnp)));
       std::size_t own = 0, different = 0;
       for(std::size_t j = 0; j < range.size(); ++j)
       {
@@ -1979,15 +2051,20 @@ TEST_CASE("estimate_tangent_voronoi_areas + sample_weight_map: one area pass giv
                   std::invalid_argument);
 }
 
-TEST_CASE("Every estimator fills the fields its description declares (estimators.h), and only those", "[baselines][api]")
+TEST_CASE("Every estimator fills the fields its description declares (estimators.h), and only those",
+          "[baselines][api]")
 {
   namespace F = PSC::estimate_fields;
   const double R = 2, r = 0.5;
   const auto pts = sphere(2000, R);
   // the test's Method of each described estimator but the APSS (not a baseline)
-  const std::pair<const char*, Method> named[] = {{"aso", Method::ASO}, {"barycenter", Method::BARYCENTER},
-    {"pca_plane", Method::PCA_PLANE}, {"pss", Method::PSS}, {"jet", Method::JET}, {"wavejet", Method::WAVEJET},
-    {"vcm", Method::VCM}};
+  const std::pair<const char*, Method> named[] = {{"aso", Method::ASO},
+                                                  {"barycenter", Method::BARYCENTER},
+                                                  {"pca_plane", Method::PCA_PLANE},
+                                                  {"pss", Method::PSS},
+                                                  {"jet", Method::JET},
+                                                  {"wavejet", Method::WAVEJET},
+                                                  {"vcm", Method::VCM}};
   // the estimator `name`: `apss()` for the APSS, `f(method)` for the others
   auto by_name = [&](const std::string& name, const auto& f, const auto& apss) -> Estimates {
     if(name == "apss")
@@ -2004,16 +2081,19 @@ TEST_CASE("Every estimator fills the fields its description declares (estimators
   const auto tiled = PSC::parameters::tile(half, maps());
   const auto automatic = PSC::parameters::neighbor_count(40, PSC::parameters::automatic_scale(640, maps()));
   auto run_whole = [&](const std::string& name) {
-    return by_name(name, [&](Method m) { return run(m, pts, r); },
-                   [&] { return CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(pts, r, maps()); });
+    return by_name(
+      name, [&](Method m) { return run(m, pts, r); },
+      [&] { return CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(pts, r, maps()); });
   };
   auto run_tiled = [&](const std::string& name) {
-    return by_name(name, [&](Method m) { return run<CGAL::Parallel_tag>(m, pts, r, tiled); },
-                   [&] { return CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(pts, r, tiled); });
+    return by_name(
+      name, [&](Method m) { return run<CGAL::Parallel_tag>(m, pts, r, tiled); },
+      [&] { return CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(pts, r, tiled); });
   };
   auto run_automatic = [&](const std::string& name) {
-    return by_name(name, [&](Method m) { return run_without_radius<CGAL::Parallel_tag>(m, pts, automatic); },
-                   [&] { return CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(pts, automatic); });
+    return by_name(
+      name, [&](Method m) { return run_without_radius<CGAL::Parallel_tag>(m, pts, automatic); },
+      [&] { return CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(pts, automatic); });
   };
   auto finite = [](const Vector& v) { return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z()); };
   std::size_t described = 0;

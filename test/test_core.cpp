@@ -27,7 +27,6 @@
 #include <tbb/task_arena.h>
 #endif
 
-
 #include <array>
 #include <atomic>
 #include <functional>
@@ -115,7 +114,7 @@ std::string printed(double x)
   return s.str();
 }
 
-} // namespace
+}  // namespace
 
 // ---------------------------------------------------------------------------------------
 // Analytic surfaces
@@ -127,10 +126,17 @@ std::string printed(double x)
 // exactly I/R, and only rounding is left.
 TEST_CASE("ASO on a sphere with outward normals: k_min = k_max = H = 1/R and K = 1/R^2", "[aso][sphere]")
 {
-  struct Case { double R; Point c; };
+  struct Case
+  {
+    double R;
+    Point c;
+  };
   // small, unit and large radii; centres at the origin and far off it
-  const Case cases[] = {{2, Point(0, 0, 0)}, {0.01, Point(0, 0, 0)}, {500, Point(0, 0, 0)},
-                        {2, Point(3, -7, 11)}, {0.5, Point(-1000, 250, 40)}};
+  const Case cases[] = {{2, Point(0, 0, 0)},
+                        {0.01, Point(0, 0, 0)},
+                        {500, Point(0, 0, 0)},
+                        {2, Point(3, -7, 11)},
+                        {0.5, Point(-1000, 250, 40)}};
   for(const Case& c : cases)
   {
     const auto pts = sphere(20000, c.R, c.c);
@@ -236,7 +242,10 @@ TEST_CASE("ASO on a cylinder: k_min ~ 0 along the axis, k_max ~ 1/R", "[aso][cyl
 {
   const double R = 1, height = 2;
   const auto pts = cylinder(200, 64, R, height);
-  struct Bounds { double r, k_min, k_max, degrees, normal; };
+  struct Bounds
+  {
+    double r, k_min, k_max, degrees, normal;
+  };
   // Measured maxima, r = 0.15 (about 70 neighbours): |k_min| R 1.04e-2, |k_max - 1/R| R
   // 1.01e-2, angle(d_min, axis) 0.16 degrees, |n - n*| 1.0e-4; r = 0.3 (about 290
   // neighbours): 8.1e-4, 7.4e-4, 0.024 degrees, 1.0e-5. Bounds: 1.5 times those.
@@ -421,7 +430,7 @@ void check_reference(const std::vector<Oriented_point>& pts, double r, const std
   CHECK(skipped_directions < rows.size() / 100);
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("ASO agrees with the authors' values on the bunny at r = 0.005", "[aso][reference]")
 {
@@ -457,10 +466,10 @@ TEST_CASE("Default ASO projection differs slightly from the authors' and keeps d
     k_diff.add(scaled_difference(def[i].max_curvature, aut[i].max_curvature, scale));
     k_diff.add(scaled_difference(def[i].mean_curvature, aut[i].mean_curvature, scale));
     n_diff.add(length(def[i].normal - aut[i].normal));
-    def_tangent.add(std::max(std::abs(def[i].min_direction * def[i].normal),
-                             std::abs(def[i].max_direction * def[i].normal)));
-    aut_tangent.add(std::max(std::abs(aut[i].min_direction * aut[i].normal),
-                             std::abs(aut[i].max_direction * aut[i].normal)));
+    def_tangent.add(
+      std::max(std::abs(def[i].min_direction * def[i].normal), std::abs(def[i].max_direction * def[i].normal)));
+    aut_tangent.add(
+      std::max(std::abs(aut[i].min_direction * aut[i].normal), std::abs(aut[i].max_direction * aut[i].normal)));
   }
   measured("Goursat 10K r=1.5 default vs authors: max scaled curvature difference", k_diff.max);
   measured("Goursat 10K r=1.5 default vs authors: mean scaled curvature difference", k_diff.mean());
@@ -491,7 +500,7 @@ namespace {
 struct Goursat_errors
 {
   Stat H, k_min, k_max, normal_degrees, apss_H, apss_normal_degrees;
-  Stat consistency;  // of H, K and the frame with k_min, k_max and the normal
+  Stat consistency;           // of H, K and the frame with k_min, k_max and the normal
   std::size_t unordered = 0;  // estimates with k_min > k_max
 };
 
@@ -541,7 +550,7 @@ void print(const std::string& name, const Goursat_errors& e)
   measured(name + ": max defect of H = (k1+k2)/2, K = k1 k2, unit orthogonal frame", e.consistency.max);
 }
 
-} // namespace
+}  // namespace
 
 // Bounds on the mean absolute errors (curvatures of the Goursat surface range over about
 // [-0.4, 0.5]); each is about 1.5 times the value measured, quoted beside it: they catch
@@ -570,7 +579,7 @@ void check_goursat(const Goursat_errors& e, const Goursat_bounds& b)
   CHECK(e.consistency.max < 1e-12);
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("ASO and APSS on Goursat 10K at r = 1.5: mean errors of H, k_min, k_max, normals", "[aso][apss][goursat]")
 {
@@ -651,7 +660,8 @@ TEST_CASE("Sequential and Parallel runs give bitwise identical results", "[aso][
 // and the result does not depend on the number of threads, here 8 in a task arena (more than
 // the cores of CI's machines; global_control lets TBB start that many workers anywhere).
 // The default ASO (three passes: sample weights, fit, estimation) by count and APSS by radius.
-TEST_CASE("Parallel_tag: the callback comes from the calling thread only, and 8 threads give the sequential bytes", "[aso][apss][parallel][callback]")
+TEST_CASE("Parallel_tag: the callback comes from the calling thread only, and 8 threads give the sequential bytes",
+          "[aso][apss][parallel][callback]")
 {
   const auto pts = sphere(20000, 1);
   const double r = 0.08;  // about 32 neighbours
@@ -788,13 +798,11 @@ TEST_CASE("A radius that is zero, negative, NaN or infinite throws std::invalid_
     CHECK_THAT(invalid_argument_message([&] { apss(pts, r); }), Contains("radius") && Contains(value));
     CHECK_THAT(invalid_argument_message([&] { apss<CGAL::Parallel_tag>(pts, r); }),
                Contains("radius") && Contains(value));
-    CHECK_THAT(invalid_argument_message([&] {
-                 CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, Point_map(), Normal_map(), r);
-               }),
+    CHECK_THAT(invalid_argument_message(
+                 [&] { CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, Point_map(), Normal_map(), r); }),
                Contains("radius") && Contains(value));
-    CHECK_THAT(invalid_argument_message([&] {
-                 CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(pts, Point_map(), Normal_map(), r);
-               }),
+    CHECK_THAT(invalid_argument_message(
+                 [&] { CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(pts, Point_map(), Normal_map(), r); }),
                Contains("radius") && Contains(value));
     // the argument is checked whatever the data, an empty range included
     CHECK_THAT(invalid_argument_message([&] { aso(none, r); }), Contains("radius"));
@@ -812,18 +820,15 @@ TEST_CASE("Without a radius neighbor_count is required, and a radius with neighb
              Contains("neighbor_count"));
   CHECK_THAT(invalid_argument_message([&] { CGAL::estimate_apss_curvatures<Seq>(pts, maps()); }),
              Contains("neighbor_count"));
-  CHECK_THAT(invalid_argument_message([&] {
-               CGAL::estimate_aso_curvatures<Seq>(pts, PSC::parameters::neighbor_count(0, maps()));
-             }),
+  CHECK_THAT(invalid_argument_message(
+               [&] { CGAL::estimate_aso_curvatures<Seq>(pts, PSC::parameters::neighbor_count(0, maps())); }),
              Contains("neighbor_count"));
   // the overloads with a radius refuse neighbor_count too (which scale would apply?)
-  CHECK_THAT(invalid_argument_message([&] {
-               CGAL::estimate_aso_curvatures<Seq>(pts, 0.3, PSC::parameters::neighbor_count(10, maps()));
-             }),
+  CHECK_THAT(invalid_argument_message(
+               [&] { CGAL::estimate_aso_curvatures<Seq>(pts, 0.3, PSC::parameters::neighbor_count(10, maps())); }),
              Contains("neighbor_count") && Contains("radius"));
-  CHECK_THAT(invalid_argument_message([&] {
-               CGAL::estimate_apss_curvatures<Seq>(pts, 0.3, PSC::parameters::neighbor_count(10, maps()));
-             }),
+  CHECK_THAT(invalid_argument_message(
+               [&] { CGAL::estimate_apss_curvatures<Seq>(pts, 0.3, PSC::parameters::neighbor_count(10, maps())); }),
              Contains("neighbor_count") && Contains("radius"));
 }
 
@@ -844,8 +849,7 @@ namespace {
 // estimate is bitwise the one it has in the clean cloud: the bad points are nobody's
 // neighbour (same neighbour counts, same sums).
 void check_unusable_points(const std::vector<Oriented_point>& clean, double r,
-                           const std::vector<std::pair<std::size_t, Oriented_point> >& bad,
-                           Status expected)
+                           const std::vector<std::pair<std::size_t, Oriented_point>>& bad, Status expected)
 {
   std::vector<Oriented_point> dirty;
   std::vector<int> origin;  // index in `clean`, or -1 for a bad point
@@ -865,7 +869,7 @@ void check_unusable_points(const std::vector<Oriented_point>& clean, double r,
   }
   REQUIRE(dirty.size() == clean.size() + bad.size());
   typedef std::function<std::vector<Estimate>(const std::vector<Oriented_point>&)> Run;
-  const std::vector<std::pair<std::string, Run> > runs = {
+  const std::vector<std::pair<std::string, Run>> runs = {
     {"ASO", [r](const std::vector<Oriented_point>& p) { return aso(p, r); }},
     {"ASO parallel", [r](const std::vector<Oriented_point>& p) { return aso<CGAL::Parallel_tag>(p, r); }},
     {"ASO authors", [r](const std::vector<Oriented_point>& p) { return aso_authors(p, r); }},
@@ -880,8 +884,10 @@ void check_unusable_points(const std::vector<Oriented_point>& clean, double r,
     for(std::size_t i = 0; i < dirty.size(); ++i)
     {
       if(origin[i] < 0)
-        wrong_bad += (est[i].status == expected && est[i].neighbor_count == 0 &&
-                      every_numeric_field_nan(est[i]) && !est[i].is_valid()) ? 0 : 1;
+        wrong_bad += (est[i].status == expected && est[i].neighbor_count == 0 && every_numeric_field_nan(est[i]) &&
+                      !est[i].is_valid())
+                       ? 0
+                       : 1;
       else
         changed += same_estimate(est[i], ref[std::size_t(origin[i])]) ? 0 : 1;
     }
@@ -890,7 +896,7 @@ void check_unusable_points(const std::vector<Oriented_point>& clean, double r,
   }
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("A point with a NaN or infinite coordinate is NON_FINITE_POINT and nobody's neighbour", "[bad_input]")
 {
@@ -941,19 +947,20 @@ TEST_CASE("Fewer neighbours than the minimum is TOO_FEW_NEIGHBORS with the right
   auto pts = sphere(3000, 1);
   const double r = 0.15;
   const std::size_t lonely = pts.size();
-  pts.emplace_back(Point(10, 0, 0), Vector(1, 0, 0));             // alone: 1 neighbour
-  pts.emplace_back(Point(0, 10, 0), Vector(0, 1, 0));             // a pair: 2 neighbours each
+  pts.emplace_back(Point(10, 0, 0), Vector(1, 0, 0));  // alone: 1 neighbour
+  pts.emplace_back(Point(0, 10, 0), Vector(0, 1, 0));  // a pair: 2 neighbours each
   pts.emplace_back(Point(0, 10 + 0.5 * r, 0), Vector(0, 1, 0));
-  pts.emplace_back(Point(0, 0, 10), Vector(0, 0, 1));             // three: the fits' minimum
+  pts.emplace_back(Point(0, 0, 10), Vector(0, 0, 1));  // three: the fits' minimum
   pts.emplace_back(Point(0.05, 0, 10), Vector(0, 0, 1));
   pts.emplace_back(Point(0, 0.05, 10), Vector(0, 0, 1));
   const auto three = PSC::parameters::min_neighbors(3, maps());
   const auto three_authors = PSC::parameters::min_neighbors(3, authors_maps());
   // the default minimum (never below 6) and the fits' own minimum, 3 (min_neighbors(3))
   for(bool defaults : {true, false})
-    for(const auto& est : {defaults ? aso(pts, r) : CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, r, three),
-                           defaults ? apss(pts, r) : CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(pts, r, three),
-                           defaults ? aso_authors(pts, r) : CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, r, three_authors)})
+    for(const auto& est :
+        {defaults ? aso(pts, r) : CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, r, three),
+         defaults ? apss(pts, r) : CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(pts, r, three),
+         defaults ? aso_authors(pts, r) : CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, r, three_authors)})
     {
       REQUIRE(est.size() == pts.size());
       CHECK(est[lonely].status == Status::TOO_FEW_NEIGHBORS);
@@ -975,7 +982,8 @@ TEST_CASE("Fewer neighbours than the minimum is TOO_FEW_NEIGHBORS with the right
       CHECK(est[0].is_valid());
     }
   // a smaller minimum than the fits need is raised to it: 2 neighbours stay too few
-  const auto est = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, r, PSC::parameters::min_neighbors(1, maps()));
+  const auto est =
+    CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, r, PSC::parameters::min_neighbors(1, maps()));
   CHECK(est[lonely + 1].status == Status::TOO_FEW_NEIGHBORS);
 }
 
@@ -983,9 +991,8 @@ TEST_CASE("Fewer neighbours than the minimum is TOO_FEW_NEIGHBORS with the right
 // can solve (reached with min_neighbors(3); by default 3 neighbours are too few).
 TEST_CASE("Three neighbours on a plane are enough for the fits, not for the default minimum", "[aso][apss][plane]")
 {
-  const std::vector<Oriented_point> pts = {{Point(0, 0, 1), Vector(0, 0, 2)},
-                                           {Point(0.3, 0, 1), Vector(0, 0, 2)},
-                                           {Point(0, 0.4, 1), Vector(0, 0, 2)}};
+  const std::vector<Oriented_point> pts = {
+    {Point(0, 0, 1), Vector(0, 0, 2)}, {Point(0.3, 0, 1), Vector(0, 0, 2)}, {Point(0, 0.4, 1), Vector(0, 0, 2)}};
   const auto three = PSC::parameters::min_neighbors(3, maps());
   for(const auto& est : {CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, 1.0, three),
                          CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(pts, 1.0, three)})
@@ -1044,9 +1051,9 @@ TEST_CASE("ASO and APSS: neighbours on a line or on a planar curve are DEGENERAT
     for(int i = -20; i <= 20; ++i)
     {
       const double x = 0.01 * i;
-      const Vector n = variant == 0 ? Vector(0, 0, 1)
-                     : variant == 1 ? Vector(0, std::sin(x), std::cos(x))
-                                    : Vector(-x, 0, 1);
+      const Vector n = variant == 0   ? Vector(0, 0, 1)
+                       : variant == 1 ? Vector(0, std::sin(x), std::cos(x))
+                                      : Vector(-x, 0, 1);
       pts.emplace_back(Point(x, 0, variant == 2 ? 0.5 * x * x : 0), n);
     }
     const auto e = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, 0.1, np);
@@ -1076,16 +1083,15 @@ TEST_CASE("ASO refuses the constant kernel, which has no usable derivative", "[b
 {
   const auto pts = sphere(2000, 1.0);
   namespace PSC = CGAL::Point_set_curvatures;
-  const auto np = PSC::parameters::weight_kernel(
-    CGAL::Apss_weight_kernel::CONSTANT, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()));
+  const auto np = PSC::parameters::weight_kernel(CGAL::Apss_weight_kernel::CONSTANT,
+                                                 CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()));
   CHECK_THROWS_WITH(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, 0.2, np),
                     Catch::Contains("weight_kernel"));
-  CHECK_THROWS_AS(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
-                    pts, PSC::parameters::neighbor_count(20, np)),
+  CHECK_THROWS_AS(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, PSC::parameters::neighbor_count(20, np)),
                   std::invalid_argument);
   // The smooth kernel, given explicitly, is the default.
-  const auto smooth = PSC::parameters::weight_kernel(
-    CGAL::Apss_weight_kernel::SMOOTH, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()));
+  const auto smooth = PSC::parameters::weight_kernel(CGAL::Apss_weight_kernel::SMOOTH,
+                                                     CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()));
   CHECK(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, 0.2, smooth)[0].is_valid());
 }
 
@@ -1106,15 +1112,14 @@ TEST_CASE("Pairs, tuples, Point_set_3, Simple_cartesian and Epick give identical
 
   SECTION("explicit maps overload")
   {
-    CHECK(all_identical(
-      ref, CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, Point_map(), Normal_map(), r)));
-    CHECK(all_identical(
-      ref_apss, CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(pts, Point_map(), Normal_map(), r)));
+    CHECK(all_identical(ref, CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, Point_map(), Normal_map(), r)));
+    CHECK(
+      all_identical(ref_apss, CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(pts, Point_map(), Normal_map(), r)));
   }
   SECTION("geom_traits named parameter")
   {
-    CHECK(all_identical(ref, CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
-                               pts, r, maps().geom_traits(Kernel()))));
+    CHECK(
+      all_identical(ref, CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, r, maps().geom_traits(Kernel()))));
   }
   SECTION("std::tuple with Nth_of_tuple_property_map")
   {
@@ -1153,7 +1158,7 @@ TEST_CASE("Pairs, tuples, Point_set_3, Simple_cartesian and Epick give identical
       epts.emplace_back(q, n);
       eps.insert(q, n);
     }
-    const std::vector<CGAL::Curvature_estimate<Epick> > e = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
+    const std::vector<CGAL::Curvature_estimate<Epick>> e = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
       epts, r,
       CGAL::parameters::point_map(CGAL::First_of_pair_property_map<Epick_point>())
         .normal_map(CGAL::Second_of_pair_property_map<Epick_point>()));
@@ -1187,7 +1192,8 @@ TEST_CASE("A std::list (not random access) gives the same results as a std::vect
   }
 }
 
-TEST_CASE("callback reports non-decreasing progress in [0,1] ending at 1, and returning false cancels", "[aso][apss][callback]")
+TEST_CASE("callback reports non-decreasing progress in [0,1] ending at 1, and returning false cancels",
+          "[aso][apss][callback]")
 {
   const auto pts = sphere(200000, 1);
   const double r = 0.025;  // about 30 neighbours
@@ -1235,11 +1241,10 @@ TEST_CASE("callback reports non-decreasing progress in [0,1] ending at 1, and re
       };
       const auto np = maps().callback(cb);
       const auto paper = PSC::parameters::aso_variant(CGAL::Aso_variant::PAPER, np);
-      const std::vector<Estimate> est =
-        run == 0 ? CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, r, paper)
-        : run == 1 ? CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, r, paper)
-        : run == 2 ? CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(pts, r, np)
-                   : CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(pts, r, np);
+      const std::vector<Estimate> est = run == 0   ? CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, r, paper)
+                                        : run == 1 ? CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, r, paper)
+                                        : run == 2 ? CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(pts, r, np)
+                                                   : CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(pts, r, np);
       const auto& reference = run < 2 ? full_paper : full_apss;
       REQUIRE(est.size() == pts.size());
       CHECK(calls == 3);
@@ -1269,7 +1274,9 @@ TEST_CASE("callback reports non-decreasing progress in [0,1] ending at 1, and re
 // The default ASO with normal_refinement(1) runs three passes (sample weights, the refinement's
 // sphere fit, the estimation), sharing [0, 1] as 0.25, 0.25, 0.5. Cancelled before the last
 // pass, no point may carry a value: the earlier passes' values are not curvature estimates.
-TEST_CASE("cancelled in the sample-weight or the refinement pass, every point is NOT_COMPUTED, in the estimation pass the points reached are the full run's", "[aso][callback][robust]")
+TEST_CASE("cancelled in the sample-weight or the refinement pass, every point is NOT_COMPUTED, in the estimation pass "
+          "the points reached are the full run's",
+          "[aso][callback][robust]")
 {
   const auto pts = sphere(50000, 1);
   const double r = 0.05;  // about 30 neighbours
@@ -1288,7 +1295,8 @@ TEST_CASE("cancelled in the sample-weight or the refinement pass, every point is
       }
       return true;
     };
-    const auto est = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, r, PSC::parameters::normal_refinement(1, maps().callback(cb)));
+    const auto est = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
+      pts, r, PSC::parameters::normal_refinement(1, maps().callback(cb)));
     REQUIRE(cancelled_at > cancel_above);
     std::size_t computed = 0, not_computed = 0, bad = 0;
     for(std::size_t i = 0; i < pts.size(); ++i)
@@ -1315,7 +1323,9 @@ TEST_CASE("cancelled in the sample-weight or the refinement pass, every point is
 
 // The documented rule: callback(fraction done) at least every 1% of the points, whatever
 // the driver, the concurrency tag, and however many points share a grid cell.
-TEST_CASE("callback comes at most 1% of the points apart on 100K points, by radius, by count and with one cell holding everything", "[aso][callback]")
+TEST_CASE("callback comes at most 1% of the points apart on 100K points, by radius, by count and with one cell holding "
+          "everything",
+          "[aso][callback]")
 {
   const auto pts = sphere(100000, 1);
   auto widest_step = [](const std::vector<double>& p) {
@@ -1334,10 +1344,10 @@ TEST_CASE("callback comes at most 1% of the points apart on 100K points, by radi
     };
     const auto by_radius = maps().callback(cb);
     const auto by_count = PSC::parameters::neighbor_count(30, maps().callback(cb));
-    const auto est = run == 0 ? CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, 0.03, by_radius)
-                   : run == 1 ? CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, 0.03, by_radius)
-                   : run == 2 ? CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, by_count)
-                              : CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, by_count);
+    const auto est = run == 0   ? CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, 0.03, by_radius)
+                     : run == 1 ? CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, 0.03, by_radius)
+                     : run == 2 ? CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, by_count)
+                                : CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, by_count);
     CHECK(count_invalid(est) == 0);
     REQUIRE(progress.size() >= 100);
     CHECK(widest_step(progress) <= 0.01 + 1e-12);  // 1000 points of 100000
@@ -1363,8 +1373,9 @@ TEST_CASE("callback comes at most 1% of the points apart on 100K points, by radi
     CHECK(widest_step(progress) <= 0.01 + 1e-12);  // 30 points of 3000
     std::size_t reports = 0;
     const std::function<bool(double)> cancel = [&reports](double) { return ++reports < 1; };
-    const auto cut = parallel ? CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(small, 3.0, maps().callback(cancel))
-                              : CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(small, 3.0, maps().callback(cancel));
+    const auto cut = parallel
+                       ? CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(small, 3.0, maps().callback(cancel))
+                       : CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(small, 3.0, maps().callback(cancel));
     CHECK(reports == 1);
     CHECK(count_invalid(cut) >= 3000 - 30);  // NOT_COMPUTED beyond the first batch
   }
@@ -1397,7 +1408,7 @@ std::vector<Oriented_point> small_patch(double half_side, double r)
   return patch;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("The per-query classes reproduce the cloud functions exactly at an input point", "[aso][apss][per_query]")
 {
@@ -1447,7 +1458,8 @@ TEST_CASE("The per-query classes reproduce the cloud functions exactly at an inp
 
 // On a real cloud the neighbours reach the classes in another order than in the cloud
 // functions (which sort points in a grid): the same sums in another order.
-TEST_CASE("The per-query classes agree with the cloud functions on Goursat 10K and ignore points beyond r", "[aso][apss][per_query]")
+TEST_CASE("The per-query classes agree with the cloud functions on Goursat 10K and ignore points beyond r",
+          "[aso][apss][per_query]")
 {
   const auto& pts = goursat_10k();
   const double r = 1.5;
@@ -1461,8 +1473,8 @@ TEST_CASE("The per-query classes agree with the cloud functions on Goursat 10K a
     CGAL::Algebraic_sphere_fit<Kernel> sphere_fit(pts[i].first, r);
     fit.add_neighbors(pts, Point_map(), Normal_map());  // the whole cloud: most are beyond r
     sphere_fit.add_neighbors(pts, Point_map(), Normal_map());
-    count_mismatch += (fit.neighbor_count() == est[i].neighbor_count &&
-                       sphere_fit.neighbor_count() == est[i].neighbor_count) ? 0 : 1;
+    count_mismatch +=
+      (fit.neighbor_count() == est[i].neighbor_count && sphere_fit.neighbor_count() == est[i].neighbor_count) ? 0 : 1;
     const Estimate e = fit.estimate(), ea = sphere_fit.estimate();
     REQUIRE(e.is_valid());
     const double scale = curvature_scale(est[i]);
@@ -1487,7 +1499,8 @@ TEST_CASE("The per-query classes agree with the cloud functions on Goursat 10K a
 // Off the surface the ASO measures the level set of the fitted field through the
 // evaluation point: for a sphere of radius R that is the concentric sphere through x, of
 // curvature 1/|x - c|. APSS returns the curvature of the fitted sphere itself, 1/R.
-TEST_CASE("The per-query classes evaluate off the cloud: ASO gives the level set's curvature, APSS the fitted sphere's", "[aso][apss][per_query]")
+TEST_CASE("The per-query classes evaluate off the cloud: ASO gives the level set's curvature, APSS the fitted sphere's",
+          "[aso][apss][per_query]")
 {
   const double R = 2, r = 0.4;
   const Point c(1, 2, 3);
@@ -1524,7 +1537,8 @@ TEST_CASE("The per-query classes evaluate off the cloud: ASO gives the level set
   CHECK(n_err.max < 1e-12);
 }
 
-TEST_CASE("The per-query classes reject bad radii, non-finite positions and unusable neighbours", "[bad_input][per_query]")
+TEST_CASE("The per-query classes reject bad radii, non-finite positions and unusable neighbours",
+          "[bad_input][per_query]")
 {
   const Point x(0, 0, 1);
   using Catch::Matchers::Contains;
@@ -1626,9 +1640,10 @@ Own_points compare_own(const std::vector<Oriented_point>& range, const std::vect
   return c;
 }
 
-} // namespace
+}  // namespace
 
-TEST_CASE("Tiles: every point estimated once, bitwise as in the whole-cloud run, by radius and by count", "[aso][apss][tile]")
+TEST_CASE("Tiles: every point estimated once, bitwise as in the whole-cloud run, by radius and by count",
+          "[aso][apss][tile]")
 {
   auto pts = ellipsoid(20000, 1, 0.8, 0.6, 7);
   pts[5].first = Point(nan_value, 0, 0);  // a non-finite point: nobody's own point
@@ -1640,7 +1655,8 @@ TEST_CASE("Tiles: every point estimated once, bitwise as in the whole-cloud run,
   // by count: the paper's variant, and the default (sample weights: the areas of the own
   // points' neighbours must be exact too)
   const auto paper = PSC::parameters::aso_variant(CGAL::Aso_variant::PAPER, maps());
-  const auto whole_count = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, PSC::parameters::neighbor_count(k, paper));
+  const auto whole_count =
+    CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, PSC::parameters::neighbor_count(k, paper));
   const auto whole_count_weighted =
     CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, PSC::parameters::neighbor_count(k, maps()));
   // the tile of all space is no tile, whatever the options
@@ -1738,14 +1754,14 @@ TEST_CASE("Tiles: every point estimated once, bitwise as in the whole-cloud run,
   CHECK(retried > 0);  // the small first halo was refused at least once (the retry path is tested)
   // a halo smaller than the reach is refused by radius: one radius for the paper's variant,
   // two with sample weights (the default); normal_refinement refuses tiles
-  CHECK_THROWS_AS(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
-                    pts, r, PSC::parameters::tile(tiles.tile(0, 0.5 * r), paper)),
-                  std::invalid_argument);
-  CHECK_THROWS_AS(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
-                    pts, r, PSC::parameters::tile(tiles.tile(0, 1.5 * r), maps())),
-                  std::invalid_argument);
-  CHECK_NOTHROW(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
-    pts, r, PSC::parameters::tile(tiles.tile(0, 1.5 * r), paper)));
+  CHECK_THROWS_AS(
+    CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, r, PSC::parameters::tile(tiles.tile(0, 0.5 * r), paper)),
+    std::invalid_argument);
+  CHECK_THROWS_AS(
+    CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, r, PSC::parameters::tile(tiles.tile(0, 1.5 * r), maps())),
+    std::invalid_argument);
+  CHECK_NOTHROW(
+    CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, r, PSC::parameters::tile(tiles.tile(0, 1.5 * r), paper)));
   CHECK_THROWS_AS(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
                     pts, r, PSC::parameters::normal_refinement(1, PSC::parameters::tile(tiles.tile(0, 3 * r), maps()))),
                   std::invalid_argument);
@@ -1754,7 +1770,8 @@ TEST_CASE("Tiles: every point estimated once, bitwise as in the whole-cloud run,
 // Issue 14: normals far from unit length are not trusted. With the authors' projection
 // (normals used unnormalised) a normal of length 1e15 once gave a VALID H = 1.0036 on the unit
 // sphere, 1e20 gave 535.
-TEST_CASE("Normals of length outside [1e-3, 1e3] are INVALID_NORMAL unless accept_unnormalized_normals", "[aso][apss][bad_input]")
+TEST_CASE("Normals of length outside [1e-3, 1e3] are INVALID_NORMAL unless accept_unnormalized_normals",
+          "[aso][apss][bad_input]")
 {
   auto pts = sphere(3000, 1);
   const double r = 0.15;
@@ -1804,9 +1821,11 @@ TEST_CASE("Tiles: bitwise with a far outlier, Halo_too_small below k points, pro
   for(int i = 0; i < 5; ++i)
     few.emplace_back(Point(5 + 0.01 * i, 0.02 * i * i, 0), Vector(0, 0, 1));
   const PSC::Tile around(CGAL::Bbox_3(4, -1, -1, 6, 1, 1), 0.5);
-  CHECK_THROWS_AS(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
-                    few, PSC::parameters::neighbor_count(25, PSC::parameters::tile(around, PSC::parameters::aso_variant(CGAL::Aso_variant::PAPER, maps())))),
-                  PSC::Halo_too_small);
+  CHECK_THROWS_AS(
+    CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
+      few, PSC::parameters::neighbor_count(
+             25, PSC::parameters::tile(around, PSC::parameters::aso_variant(CGAL::Aso_variant::PAPER, maps())))),
+    PSC::Halo_too_small);
 
   // own points 5% of the range: reports at most 1% of the own points apart
   const auto big = sphere(200000, 1);
@@ -1817,7 +1836,8 @@ TEST_CASE("Tiles: bitwise with a far outlier, Halo_too_small below k points, pro
     return true;
   };
   CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
-    big, 0.02, PSC::parameters::tile(small_core, PSC::parameters::aso_variant(CGAL::Aso_variant::PAPER, maps().callback(cb))));
+    big, 0.02,
+    PSC::parameters::tile(small_core, PSC::parameters::aso_variant(CGAL::Aso_variant::PAPER, maps().callback(cb))));
   REQUIRE(progress.size() >= 90);  // measured 99 (batches of 1% rounded up)
   double widest = progress[0];
   for(std::size_t i = 1; i < progress.size(); ++i)
@@ -1830,7 +1850,9 @@ TEST_CASE("Tiles: bitwise with a far outlier, Halo_too_small below k points, pro
   CHECK(progress.back() == 1.0);
 }
 
-TEST_CASE("Tiles: the drivers' rules: the tiles' box ignores outliers, the sample is every 2^j-th finite point, non-finite points are in no range, a range of every finite point is the whole cloud", "[tile]")
+TEST_CASE("Tiles: the drivers' rules: the tiles' box ignores outliers, the sample is every 2^j-th finite point, "
+          "non-finite points are in no range, a range of every finite point is the whole cloud",
+          "[tile]")
 {
   // 1000 points on [0, 999] along x (y = -x, z = 7), and two outliers far away
   PSC::Tile_box_sample sample;
@@ -1896,7 +1918,8 @@ TEST_CASE("Tiles: the drivers' rules: the tiles' box ignores outliers, the sampl
   CHECK(range.retry_halo(PSC::Halo_too_small(1.2, 1)) == 1.25);
 }
 
-TEST_CASE("Tiles: the halo rule (halo_for_radius, halo_guess_for_count, next_halo) gives the whole run by count", "[aso][tile]")
+TEST_CASE("Tiles: the halo rule (halo_for_radius, halo_guess_for_count, next_halo) gives the whole run by count",
+          "[aso][tile]")
 {
   CHECK(PSC::halo_for_radius(0.25) == 0.5);
   // a unit grid of 60 x 60 points: k points fill a disk of radius sqrt(k / pi)
@@ -1975,14 +1998,16 @@ TEST_CASE("aso_options: a variant's options as one value, overridden by the opti
   uniform.sample_weights = CGAL::Sample_weights::UNIFORM;
   CHECK(same(run(P::aso_options(uniform, maps())), run(P::sample_weights(CGAL::Sample_weights::UNIFORM, maps()))) == 0);
   // an option given explicitly overrides the value's member
-  CHECK(same(run(P::robust_orientation(true, P::aso_options(PSC::aso_variant_options(CGAL::Aso_variant::PAPER), maps()))),
-             run(P::robust_orientation(true, P::aso_variant(CGAL::Aso_variant::PAPER, maps())))) == 0);
+  CHECK(
+    same(run(P::robust_orientation(true, P::aso_options(PSC::aso_variant_options(CGAL::Aso_variant::PAPER), maps()))),
+         run(P::robust_orientation(true, P::aso_variant(CGAL::Aso_variant::PAPER, maps())))) == 0);
   PSC::Aso_variant_options constant = uniform;
   constant.weight_kernel = CGAL::Apss_weight_kernel::CONSTANT;
   CHECK_THROWS_AS(run(P::aso_options(constant, maps())), std::invalid_argument);
 }
 
-TEST_CASE("Algebraic_shape_operator_fit with named parameters: the cloud function's estimators at one point", "[aso][api][per_query]")
+TEST_CASE("Algebraic_shape_operator_fit with named parameters: the cloud function's estimators at one point",
+          "[aso][api][per_query]")
 {
   const auto& pts = goursat_10k();
   const double r = 1.5;
@@ -2001,9 +2026,11 @@ TEST_CASE("Algebraic_shape_operator_fit with named parameters: the cloud functio
     typedef CGAL::Algebraic_shape_operator_fit<Kernel> Fit;
     const Estimate paper = at(Fit(x, r));
     CHECK(same_estimate(paper, at(Fit(x, r, P::aso_variant(CGAL::Aso_variant::PAPER)))));
-    CHECK(same_estimate(at(Fit(x, r, CGAL::Aso_projection::AUTHORS_IMPLEMENTATION, CGAL::Apss_weight_kernel::SMOOTH_CUBIC)),
-                        at(Fit(x, r, P::aso_projection(CGAL::Aso_projection::AUTHORS_IMPLEMENTATION,
-                                                          P::weight_kernel(CGAL::Apss_weight_kernel::SMOOTH_CUBIC))))));
+    CHECK(
+      same_estimate(at(Fit(x, r, CGAL::Aso_projection::AUTHORS_IMPLEMENTATION, CGAL::Apss_weight_kernel::SMOOTH_CUBIC)),
+                    at(Fit(x, r,
+                           P::aso_projection(CGAL::Aso_projection::AUTHORS_IMPLEMENTATION,
+                                             P::weight_kernel(CGAL::Apss_weight_kernel::SMOOTH_CUBIC))))));
     const Estimate robust = at(Fit(x, r, P::aso_variant(CGAL::Aso_variant::ROBUST)));
     CHECK(same_estimate(robust, at(Fit(x, r, P::aso_options(PSC::aso_variant_options(CGAL::Aso_variant::ROBUST))))));
     CHECK_FALSE(same_estimate(robust, paper));
@@ -2055,9 +2082,8 @@ double wave_mean_curvature(double t, double amplitude, double wavelength)
 
 // The median chosen count and the mean |H - H*| over the points at least `margin` from the
 // border, for a wave z = A sin(2 pi x / L).
-std::pair<double, double> median_count_and_error(const std::vector<Oriented_point>& pts,
-                                                 const std::vector<Estimate>& e, int half_side, double margin,
-                                                 double amplitude, double wavelength)
+std::pair<double, double> median_count_and_error(const std::vector<Oriented_point>& pts, const std::vector<Estimate>& e,
+                                                 int half_side, double margin, double amplitude, double wavelength)
 {
   std::vector<double> counts;
   double error = 0;
@@ -2080,8 +2106,8 @@ std::vector<Oriented_point> with_estimated_normals(std::vector<Oriented_point> p
 {
   CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
     pts, PSC::parameters::neighbor_count(
-           40, PSC::parameters::automatic_scale(
-                 largest, PSC::parameters::normal_orientation(CGAL::Normal_orientation::along_vector(0, 0, 1), maps()))));
+           40, PSC::parameters::automatic_scale(largest, PSC::parameters::normal_orientation(
+                                                           CGAL::Normal_orientation::along_vector(0, 0, 1), maps()))));
   return pts;
 }
 
@@ -2133,16 +2159,17 @@ TEST_CASE("Automatic scale: the chosen count grows with the noise and shrinks wi
   CHECK(short_chosen.second < 0.75 * short_40.second);
 }
 
-TEST_CASE("Automatic scale: the noise told from two fits, unknown where the larger misses far more than the surface allows",
-          "[aso][automatic_scale]")
+TEST_CASE(
+  "Automatic scale: the noise told from two fits, unknown where the larger misses far more than the surface allows",
+  "[aso][automatic_scale]")
 {
   using PSC::internal::separated_noise;
   // radii 1 and 2: the surface's part of the residual variance grows 2^6 = 64 times
-  CHECK(separated_noise(1.0, 1.0, 1.0, 2.0) == Approx(1.0));          // all noise
-  CHECK(separated_noise(1.0, 1.0, 32.5, 2.0) == Approx(0.5));         // (64 - 32.5) / 63
-  CHECK(separated_noise(1.0, 1.0, 500.0, 2.0) == 0);                  // faster than r^6: no noise
-  CHECK(std::isnan(separated_noise(1.0, 1.0, 520.0, 2.0)));           // beyond 8 x 64: unknown
-  CHECK(std::isnan(separated_noise(1.0, 1.0, 1.0, 1.0001)));          // radii too close
+  CHECK(separated_noise(1.0, 1.0, 1.0, 2.0) == Approx(1.0));   // all noise
+  CHECK(separated_noise(1.0, 1.0, 32.5, 2.0) == Approx(0.5));  // (64 - 32.5) / 63
+  CHECK(separated_noise(1.0, 1.0, 500.0, 2.0) == 0);           // faster than r^6: no noise
+  CHECK(std::isnan(separated_noise(1.0, 1.0, 520.0, 2.0)));    // beyond 8 x 64: unknown
+  CHECK(std::isnan(separated_noise(1.0, 1.0, 1.0, 1.0001)));   // radii too close
 }
 
 TEST_CASE("Automatic scale: a rung of two noisy scan lines is passed over, not read as noise-free",
@@ -2282,12 +2309,14 @@ TEST_CASE("Automatic scale: the quartic kernel where a count is kept without noi
     }
   const auto automatic = [&cloud](const CGAL::Apss_weight_kernel* kernel) {
     const auto np = PSC::parameters::neighbor_count(40, PSC::parameters::automatic_scale(640, maps()));
-    return kernel ? CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(cloud, PSC::parameters::weight_kernel(*kernel, np))
-                  : CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(cloud, np);
+    return kernel
+             ? CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(cloud, PSC::parameters::weight_kernel(*kernel, np))
+             : CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(cloud, np);
   };
   const CGAL::Apss_weight_kernel quartic_kernel = CGAL::Apss_weight_kernel::SMOOTH_QUARTIC;
   const auto chosen = automatic(nullptr), quartic = automatic(&quartic_kernel);
-  const auto fixed = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(cloud, PSC::parameters::neighbor_count(40, maps()));
+  const auto fixed =
+    CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(cloud, PSC::parameters::neighbor_count(40, maps()));
   std::size_t inside = 0, kept = 0, as_quartic = 0, as_fixed = 0;
   double error = 0, fixed_error = 0;
   for(std::size_t k = 0; k < cloud.size(); ++k)
@@ -2329,7 +2358,8 @@ TEST_CASE("Automatic scale: the quartic kernel where a count is kept without noi
     }
   const auto rows_chosen = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
     rows, PSC::parameters::neighbor_count(40, PSC::parameters::automatic_scale(640, maps())));
-  const auto rows_fixed = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(rows, PSC::parameters::neighbor_count(40, maps()));
+  const auto rows_fixed =
+    CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(rows, PSC::parameters::neighbor_count(40, maps()));
   std::size_t rows_inside = 0, rows_kept = 0, rows_as_fixed = 0;
   for(std::size_t k = 0; k < rows.size(); ++k)
   {
@@ -2387,8 +2417,7 @@ TEST_CASE("Automatic scale: the quartic kernel where a count is kept without noi
   CHECK_FALSE(PSC::internal::spreads_evenly(neighborhood(1)));
 }
 
-TEST_CASE("ASO: the position fit is blended in inside a patch, left out where the neighbourhood is one-sided",
-          "[aso]")
+TEST_CASE("ASO: the position fit is blended in inside a patch, left out where the neighbourhood is one-sided", "[aso]")
 {
   // a noisy wave on a grid (41 x 41 points) with its exact normals: the quadric of the positions
   // differs from the ASO everywhere, and at the grid's edge it extrapolates from one side
@@ -2396,15 +2425,16 @@ TEST_CASE("ASO: the position fit is blended in inside a patch, left out where th
   const auto pts = noisy_height_field(half, 0.1, 2.0, 20, 5);
   const auto with = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
     pts, PSC::parameters::neighbor_count(40, PSC::parameters::position_fit_blend(0.5, maps())));
-  const auto without = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, PSC::parameters::neighbor_count(40, maps()));
+  const auto without =
+    CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, PSC::parameters::neighbor_count(40, maps()));
   std::size_t edge = 0, edge_same = 0, inside = 0, inside_same = 0;
   for(std::size_t i = 0; i < pts.size(); ++i)
   {
     REQUIRE(with[i].is_valid());
     REQUIRE(without[i].is_valid());
     const double x = std::abs(pts[i].first.x()), y = std::abs(pts[i].first.y());
-    const bool same = with[i].mean_curvature == without[i].mean_curvature &&
-                      with[i].max_curvature == without[i].max_curvature;
+    const bool same =
+      with[i].mean_curvature == without[i].mean_curvature && with[i].max_curvature == without[i].max_curvature;
     if(x == half || y == half)
     {
       ++edge;
@@ -2419,7 +2449,7 @@ TEST_CASE("ASO: the position fit is blended in inside a patch, left out where th
   CHECK(edge == 160);
   CHECK(edge_same == edge);  // one-sided: the ASO alone
   CHECK(inside == 841);
-  CHECK(inside_same == 0);   // blended
+  CHECK(inside_same == 0);  // blended
 }
 
 TEST_CASE("Automatic scale: exact on a plane and on a sphere, the count and error fields set", "[aso][automatic_scale]")
@@ -2449,8 +2479,9 @@ TEST_CASE("Automatic scale: exact on a plane and on a sphere, the count and erro
   }
   measured("sphere: points at a count above 60", double(larger));
   // without automatic_scale the field is NaN
-  CHECK(std::isnan(CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(ball, PSC::parameters::neighbor_count(40, maps()))[0]
-                     .mean_curvature_error));
+  CHECK(
+    std::isnan(CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(ball, PSC::parameters::neighbor_count(40, maps()))[0]
+                 .mean_curvature_error));
 }
 
 TEST_CASE("Automatic scale: the passes' progress in proportion to their time", "[automatic_scale][callback]")
@@ -2585,7 +2616,8 @@ TEST_CASE("Automatic scale: sequential == parallel, tiles == whole, normals too"
       try
       {
         const auto e = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
-          range, PSC::parameters::neighbor_count(40, PSC::parameters::automatic_scale(320, PSC::parameters::tile(tile, maps()))));
+          range, PSC::parameters::neighbor_count(
+                   40, PSC::parameters::automatic_scale(320, PSC::parameters::tile(tile, maps()))));
         const Own_points compared = compare_own(range, origin, tile, e, par);
         owned += compared.own;
         differ += compared.differ;
@@ -2678,7 +2710,8 @@ TEST_CASE("Automatic scale: the first tests keep most points of a clean random c
   typedef PSC::internal::Scale_ladder::Statistic Statistic;
   // measured: 0.026 in a shared frame (the normals'), 0.060 with the separate fits (the
   // curvatures'), both with the cubic's test (without it 0.104 and 0.376)
-  const double shared = first_pass_climbs(0, Statistic::NORMAL), separate = first_pass_climbs(0, Statistic::MEAN_CURVATURE);
+  const double shared = first_pass_climbs(0, Statistic::NORMAL),
+               separate = first_pass_climbs(0, Statistic::MEAN_CURVATURE);
   measured("first pass climbs, clean terrain: shared frame", shared);
   measured("  separate fits and the cubic", separate);
   CHECK(shared < 0.05);  // (0.104 without the cubic)
@@ -2710,7 +2743,8 @@ TEST_CASE("Automatic scale: the first test's cubic: its residual variance, and n
     }
     double s2 = -1;
     REQUIRE(fit.residual_variance(I::gate_cubic_least_pivot, s2));
-    measured("cubic residual variance over sigma^2 (sigma " + std::to_string(sigma) + ")", sigma > 0 ? s2 / (sigma * sigma) : s2);
+    measured("cubic residual variance over sigma^2 (sigma " + std::to_string(sigma) + ")",
+             sigma > 0 ? s2 / (sigma * sigma) : s2);
     if(sigma == 0)
       CHECK(s2 < 1e-12);  // (an exact cubic: the rounding of sum w h² less the fitted part, 2e-16)
     else
@@ -2769,16 +2803,18 @@ TEST_CASE("Automatic scale: refused with a radius, below neighbor_count, with re
                     pts, PSC::parameters::neighbor_count(
                            40, PSC::parameters::automatic_scale(320, PSC::parameters::normal_refinement(1, maps())))),
                   std::invalid_argument);
-  CHECK_THROWS_AS(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, 3.0, PSC::parameters::automatic_scale(320, maps())),
-                  std::invalid_argument);
+  CHECK_THROWS_AS(
+    CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, 3.0, PSC::parameters::automatic_scale(320, maps())),
+    std::invalid_argument);
   CHECK_THROWS_AS(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
                     pts, PSC::parameters::neighbor_count(40, PSC::parameters::automatic_scale(20, maps()))),
                   std::invalid_argument);
   std::vector<Oriented_point> copy = pts;
-  CHECK_THROWS_AS(CGAL::estimate_oriented_normals<CGAL::Sequential_tag>(
-                    copy, PSC::parameters::neighbor_count(
-                            18, PSC::parameters::automatic_scale(320, PSC::parameters::normal_fit(CGAL::Normal_fit::PLANE, maps())))),
-                  std::invalid_argument);
+  CHECK_THROWS_AS(
+    CGAL::estimate_oriented_normals<CGAL::Sequential_tag>(
+      copy, PSC::parameters::neighbor_count(
+              18, PSC::parameters::automatic_scale(320, PSC::parameters::normal_fit(CGAL::Normal_fit::PLANE, maps())))),
+    std::invalid_argument);
 }
 
 // =======================================================================================
@@ -2879,9 +2915,8 @@ TEST_CASE("Automatic scale, its sums and orders: moments, radix sort, distance r
       std::shuffle(index.begin(), index.end(), rng);
       index.resize(size);
       std::vector<std::uint32_t> expected = index;
-      std::sort(expected.begin(), expected.end(), [&](std::uint32_t a, std::uint32_t b) {
-        return cloud.input_index[a] < cloud.input_index[b];
-      });
+      std::sort(expected.begin(), expected.end(),
+                [&](std::uint32_t a, std::uint32_t b) { return cloud.input_index[a] < cloud.input_index[b]; });
       I::sort_by_input_index(cloud, index.data(), index.size(), scratch);
       CHECK(index == expected);
     }
@@ -2914,7 +2949,8 @@ TEST_CASE("Automatic scale in three passes (20, then 320, then 640): more accura
     namespace P = PSC::parameters;
     if(largest == 0)
       return CGAL::estimate_aso_curvatures<decltype(tag)>(pts, P::neighbor_count(20, maps()));
-    return CGAL::estimate_aso_curvatures<decltype(tag)>(pts, P::neighbor_count(20, P::automatic_scale(largest, maps())));
+    return CGAL::estimate_aso_curvatures<decltype(tag)>(pts,
+                                                        P::neighbor_count(20, P::automatic_scale(largest, maps())));
   };
   const auto parallel = run(CGAL::Parallel_tag(), 640);
   const auto sequential = run(CGAL::Sequential_tag(), 640);

@@ -73,16 +73,14 @@ bool same_estimate(const CGAL::Curvature_estimate<K1>& a, const CGAL::Curvature_
     if(bits(va[i]) != bits(vb[i]) || bits(ma[i]) != bits(mb[i]) || bits(xa[i]) != bits(xb[i]))
       return false;
   return a.status == b.status && a.neighbor_count == b.neighbor_count &&
-         same_bits(a.mean_curvature, b.mean_curvature) &&
-         same_bits(a.gaussian_curvature, b.gaussian_curvature) &&
+         same_bits(a.mean_curvature, b.mean_curvature) && same_bits(a.gaussian_curvature, b.gaussian_curvature) &&
          same_bits(a.min_curvature, b.min_curvature) && same_bits(a.max_curvature, b.max_curvature);
 }
 
 template <class V>
 bool is_nan_vector(const V& v)
 {
-  return std::isnan(CGAL::to_double(v.x())) && std::isnan(CGAL::to_double(v.y())) &&
-         std::isnan(CGAL::to_double(v.z()));
+  return std::isnan(CGAL::to_double(v.x())) && std::isnan(CGAL::to_double(v.y())) && std::isnan(CGAL::to_double(v.z()));
 }
 
 // The fields APSS does not provide (and no invalid estimate may hold).
@@ -97,17 +95,13 @@ bool principal_fields_nan(const CGAL::Curvature_estimate<K>& e)
 template <class K>
 bool every_numeric_field_nan(const CGAL::Curvature_estimate<K>& e)
 {
-  return principal_fields_nan(e) && std::isnan(CGAL::to_double(e.mean_curvature)) &&
-         is_nan_vector(e.normal);
+  return principal_fields_nan(e) && std::isnan(CGAL::to_double(e.mean_curvature)) && is_nan_vector(e.normal);
 }
 
 inline double length(const Vector& v) { return std::sqrt(v.squared_length()); }
 
 // Distance between two unit vectors taken as lines (a direction's sign is arbitrary).
-inline double line_distance(const Vector& a, const Vector& b)
-{
-  return std::min(length(a - b), length(a + b));
-}
+inline double line_distance(const Vector& a, const Vector& b) { return std::min(length(a - b), length(a + b)); }
 
 // |a - b| relative to max(|b|, floor): the floor keeps near-zero values from being judged
 // on their (meaningless) relative error.
@@ -148,9 +142,12 @@ struct Rotation
     for(int i = 0; i < 3; ++i)
       for(int j = 0; j < 3; ++j)
         m[i][j] = (1 - c) * k[i] * k[j] + (i == j ? c : 0.0);
-    m[0][1] -= s * k[2]; m[0][2] += s * k[1];
-    m[1][0] += s * k[2]; m[1][2] -= s * k[0];
-    m[2][0] -= s * k[1]; m[2][1] += s * k[0];
+    m[0][1] -= s * k[2];
+    m[0][2] += s * k[1];
+    m[1][0] += s * k[2];
+    m[1][2] -= s * k[0];
+    m[2][0] -= s * k[1];
+    m[2][1] += s * k[0];
   }
   Vector operator()(const Vector& v) const
   {
@@ -189,6 +186,6 @@ inline std::size_t brute_force_count(const std::vector<Oriented_point>& pts, con
   return n;
 }
 
-} // namespace psc_core_test
+}  // namespace psc_core_test
 
 #endif

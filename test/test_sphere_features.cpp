@@ -84,13 +84,12 @@ bool all_nan(const Features& f)
 bool same(double a, double b) { return (std::isnan(a) && std::isnan(b)) || a == b; }
 bool same(const Features& a, const Features& b)
 {
-  return same(a.u_c, b.u_c) && same(a.u_l.x(), b.u_l.x()) && same(a.u_l.y(), b.u_l.y()) &&
-         same(a.u_l.z(), b.u_l.z()) && same(a.u_q, b.u_q) && same(a.pratt_norm, b.pratt_norm) &&
-         same(a.geometric_variation, b.geometric_variation) && same(a.d_u_c_dr, b.d_u_c_dr) &&
-         same(a.d_normal_dr.x(), b.d_normal_dr.x()) && same(a.d_mean_curvature_dr, b.d_mean_curvature_dr) &&
-         same(a.center.x(), b.center.x()) && same(a.sphere_radius, b.sphere_radius) &&
-         same(a.projection.z(), b.projection.z()) && a.neighbor_count == b.neighbor_count &&
-         a.status == b.status && a.is_plane == b.is_plane;
+  return same(a.u_c, b.u_c) && same(a.u_l.x(), b.u_l.x()) && same(a.u_l.y(), b.u_l.y()) && same(a.u_l.z(), b.u_l.z()) &&
+         same(a.u_q, b.u_q) && same(a.pratt_norm, b.pratt_norm) && same(a.geometric_variation, b.geometric_variation) &&
+         same(a.d_u_c_dr, b.d_u_c_dr) && same(a.d_normal_dr.x(), b.d_normal_dr.x()) &&
+         same(a.d_mean_curvature_dr, b.d_mean_curvature_dr) && same(a.center.x(), b.center.x()) &&
+         same(a.sphere_radius, b.sphere_radius) && same(a.projection.z(), b.projection.z()) &&
+         a.neighbor_count == b.neighbor_count && a.status == b.status && a.is_plane == b.is_plane;
 }
 
 // A height field over the tangent plane at the origin (principal frame, normal +z):
@@ -105,8 +104,9 @@ struct Height_field
   {
     return 0.5 * (a20 * x * x + a02 * y * y) +
            (a30 * x * x * x + 3 * a21 * x * x * y + 3 * a12 * x * y * y + a03 * y * y * y) / 6 +
-           (a40 * x * x * x * x + 4 * a31 * x * x * x * y + 6 * a22 * x * x * y * y +
-            4 * a13 * x * y * y * y + a04 * y * y * y * y) / 24;
+           (a40 * x * x * x * x + 4 * a31 * x * x * x * y + 6 * a22 * x * x * y * y + 4 * a13 * x * y * y * y +
+            a04 * y * y * y * y) /
+             24;
   }
   double hx(double x, double y) const
   {
@@ -122,10 +122,7 @@ struct Height_field
   double k2() const { return -a02; }
   double H() const { return 0.5 * (k1() + k2()); }
   double K() const { return k1() * k2(); }
-  double grad_H_squared() const
-  {
-    return 0.25 * ((a30 + a12) * (a30 + a12) + (a03 + a21) * (a03 + a21));
-  }
+  double grad_H_squared() const { return 0.25 * ((a30 + a12) * (a30 + a12) + (a03 + a21) * (a03 + a21)); }
   double laplacian_H() const { return -0.5 * (a40 + 2 * a22 + a04); }
 };
 
@@ -192,7 +189,7 @@ double goursat_distance(const Point& p)
   return F / std::sqrt(g2);
 }
 
-} // namespace
+}  // namespace
 
 using Catch::Matchers::Contains;
 
@@ -230,8 +227,8 @@ TEST_CASE("Sphere: u_q = 1/(2R), u_c = 0, 1 - p = 0, v = 0, the sphere's centre 
         CHECK(f[i].kernel_radius == r);
         CHECK(std::abs(length(f[i].u_l) - 1) < 1e-12);  // the point is on its sphere
         CHECK_FALSE(f[i].is_plane);
-        e_v = std::max({e_v, f[i].geometric_variation, std::abs(f[i].d_u_c_dr),
-                        length(f[i].d_normal_dr) * r, std::abs(f[i].d_mean_curvature_dr) * r * r});
+        e_v = std::max({e_v, f[i].geometric_variation, std::abs(f[i].d_u_c_dr), length(f[i].d_normal_dr) * r,
+                        std::abs(f[i].d_mean_curvature_dr) * r * r});
       }
       // Measured (both kernels and orientations): |u_q - 1/2R| R 1.6e-15, |u_c|/R 3.3e-16,
       // 1 - p 1.6e-15, centre and radius 6e-15, v and scale derivatives 2.3e-15: the fit of a
@@ -276,7 +273,8 @@ TEST_CASE("Plane: u_q = 0, a plane (no centre, infinite radius), 1 - p = 0, v = 
   }
 }
 
-TEST_CASE("Sequential and Parallel give bitwise identical features, multi-scale features and flows", "[features][parallel]")
+TEST_CASE("Sequential and Parallel give bitwise identical features, multi-scale features and flows",
+          "[features][parallel]")
 {
   const auto pts = read_xyz(repo_data("goursat_010000.xyz"));
   const std::vector<double> radii = {1.0, 1.5, 2.0};
@@ -338,8 +336,8 @@ TEST_CASE("The analytic scale derivatives agree with central differences in r", 
     CHECK(e_H < 1e-4);
     CHECK(std::abs(f.d_normal_dr * f.normal) < 1e-12 * length(f.d_normal_dr));  // tangent
     // v is Equation 18 of these derivatives
-    const double v = f.d_u_c_dr * f.d_u_c_dr + r * r * f.d_normal_dr.squared_length() +
-                     std::pow(r * r * f.d_mean_curvature_dr, 2);
+    const double v =
+      f.d_u_c_dr * f.d_u_c_dr + r * r * f.d_normal_dr.squared_length() + std::pow(r * r * f.d_mean_curvature_dr, 2);
     CHECK(f.geometric_variation == Approx(v).epsilon(1e-12));
   }
 }
@@ -418,7 +416,7 @@ void continuum_sums(const Height_field& s, double r, double frame, Omega omega, 
   });
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("Constant kernel: the scale derivatives are those of the continuum sums", "[features][derivatives]")
 {
@@ -438,7 +436,8 @@ TEST_CASE("Constant kernel: the scale derivatives are those of the continuum sum
     std::fill(sums.qq, sums.qq + 6, 0.0);
     sums.qq[0] = sums.qq[3] = 1;  // spread in two tangent directions (tested elsewhere)
     PSCI::Sphere_sums estimated, truth;
-    continuum_sums(s, r, r, [](double ss) { return PSCI::r_dw_dr<PSCI::Constant_kernel>(ss); }, estimated);
+    continuum_sums(
+      s, r, r, [](double ss) { return PSCI::r_dw_dr<PSCI::Constant_kernel>(ss); }, estimated);
     const double h = 1e-4;
     PSCI::Sphere_sums plus, minus;  // input units
     continuum_sums(s, r * (1 + h), 1.0, one, plus);
@@ -505,9 +504,8 @@ TEST_CASE("Multi-scale features equal the single-scale ones at every radius", "[
         counts += a.neighbor_count == b.neighbor_count ? 0 : 1;
         CHECK(a.kernel_radius == r);
         // coefficients in units of r: u_c / r, u_q r, u_l, p, normal
-        e = std::max({e, std::abs(a.u_c - b.u_c) / r, std::abs(a.u_q - b.u_q) * r,
-                      length(a.u_l - b.u_l), std::abs(a.pratt_norm - b.pratt_norm),
-                      length(a.normal - b.normal)});
+        e = std::max({e, std::abs(a.u_c - b.u_c) / r, std::abs(a.u_q - b.u_q) * r, length(a.u_l - b.u_l),
+                      std::abs(a.pratt_norm - b.pratt_norm), length(a.normal - b.normal)});
         e_v = std::max(e_v, std::abs(a.geometric_variation - b.geometric_variation) / b.geometric_variation);
       }
       // Measured: coefficients 5e-15, v 3e-12 relative (the moments lose about a digit to the
@@ -633,7 +631,8 @@ TEST_CASE("Paraboloid with varying curvature: v = |grad H|^2 r^4/16 (smooth), /4
   }
 }
 
-TEST_CASE("Paraboloid: u_c = (9H^3-5KH-lap H) r^4/96 (constant), (19H^3-11KH-2 lap H) r^4/640 (smooth)", "[features][laws]")
+TEST_CASE("Paraboloid: u_c = (9H^3-5KH-lap H) r^4/96 (constant), (19H^3-11KH-2 lap H) r^4/640 (smooth)",
+          "[features][laws]")
 {
   // Theorem 1 (the paper's sign of H is the opposite of ours, hence its leading minus sign).
   const Height_field& s = varying_paraboloid;
@@ -716,7 +715,8 @@ TEST_CASE("Projection handles the plane case u_q = 0 and projects orthogonally",
   CHECK(std::abs(f.u_c - 0.1) < 1e-12);  // the algebraic distance of a plane is the distance
 }
 
-TEST_CASE("Projection onto Goursat's APSS surface converges near the surface and is idempotent", "[projection][goursat]")
+TEST_CASE("Projection onto Goursat's APSS surface converges near the surface and is idempotent",
+          "[projection][goursat]")
 {
   const auto pts = read_xyz(repo_data("goursat_010000.xyz"));
   const Surface surface(pts, 1.5, maps());
@@ -756,8 +756,8 @@ TEST_CASE("Features at arbitrary positions agree with the cloud function at clou
     {
       const Features g = surface.features(pts[i].first);
       REQUIRE(g.neighbor_count == f[i].neighbor_count);
-      e = std::max({e, std::abs(g.u_q - f[i].u_q) * 1.5, length(g.u_l - f[i].u_l),
-                    std::abs(g.u_c - f[i].u_c) / 1.5, distance(g.projection, f[i].projection) / 1.5});
+      e = std::max({e, std::abs(g.u_q - f[i].u_q) * 1.5, length(g.u_l - f[i].u_l), std::abs(g.u_c - f[i].u_c) / 1.5,
+                    distance(g.projection, f[i].projection) / 1.5});
       e = std::max(e, std::abs(g.geometric_variation - f[i].geometric_variation) / f[i].geometric_variation);
     }
     // Measured 7.6e-14 (smooth), 5.8e-14 (constant), driven by the relative v: another
@@ -819,8 +819,9 @@ TEST_CASE("The flow decreases the RMS distance to a noisy sphere at each iterati
       {
         CGAL::apss_smooth_point_set<Par>(pts, 0.15, PSC::parameters::update_normals(update, maps(w)));
         const double now = rms(pts);
-        measured(std::string("noisy sphere RMS, ") + name(w) + (update ? " updated" : " input") +
-                   ", iteration " + std::to_string(it), now);
+        measured(std::string("noisy sphere RMS, ") + name(w) + (update ? " updated" : " input") + ", iteration " +
+                   std::to_string(it),
+                 now);
         CHECK(now < previous);
         previous = now;
       }
@@ -828,7 +829,8 @@ TEST_CASE("The flow decreases the RMS distance to a noisy sphere at each iterati
     }
 }
 
-TEST_CASE("30 iterations of the flow on noisy Goursat 10K (paper's Figure 3 setting) do not collapse it", "[flow][goursat]")
+TEST_CASE("30 iterations of the flow on noisy Goursat 10K (paper's Figure 3 setting) do not collapse it",
+          "[flow][goursat]")
 {
   // Figure 3: 30 projections on algebraic spheres of a noisy cloud, positions and normals
   // evolving (update_normals). Noise sigma = 0.05, about 1/6 of the spacing; r = 1.5.
@@ -850,8 +852,8 @@ TEST_CASE("30 iterations of the flow on noisy Goursat 10K (paper's Figure 3 sett
     return std::sqrt(s / q.size());
   };
   const double size0 = mean_norm(pts), rms0 = rms_distance(pts);
-  const auto status = CGAL::apss_smooth_point_set<Par>(
-    pts, 1.5, PSC::parameters::update_normals(true, maps()).number_of_iterations(30));
+  const auto status =
+    CGAL::apss_smooth_point_set<Par>(pts, 1.5, PSC::parameters::update_normals(true, maps()).number_of_iterations(30));
   for(const Status s : status)
     CHECK(s == Status::VALID);
   const double size = mean_norm(pts), rms = rms_distance(pts);
@@ -966,13 +968,12 @@ TEST_CASE("Bad radii, radii lists and parameters throw std::invalid_argument nam
                Contains("radius"));
     CHECK_THAT(invalid_argument_message([&] { Surface(pts, r, maps()); }), Contains("radius"));
   }
-  CHECK_THAT(invalid_argument_message([&] {
-               CGAL::estimate_multiscale_algebraic_sphere_features<Seq>(pts, std::vector<double>(), maps());
-             }),
+  CHECK_THAT(invalid_argument_message(
+               [&] { CGAL::estimate_multiscale_algebraic_sphere_features<Seq>(pts, std::vector<double>(), maps()); }),
              Contains("radii"));
   CHECK_THAT(invalid_argument_message([&] {
-               CGAL::estimate_multiscale_algebraic_sphere_features<Seq>(
-                 pts, {0.5}, PSC::parameters::neighbor_count(10, maps()));
+               CGAL::estimate_multiscale_algebraic_sphere_features<Seq>(pts, {0.5},
+                                                                        PSC::parameters::neighbor_count(10, maps()));
              }),
              Contains("neighbor_count"));
   CHECK_THAT(invalid_argument_message([&] {
@@ -1009,8 +1010,7 @@ TEST_CASE("Empty ranges, unusable points, too few neighbours and degenerate fits
   CHECK((ms.size() == 2 && ms[0].empty() && ms[1].empty()));
   auto empty = none;
   CHECK(CGAL::apss_smooth_point_set<Seq>(empty, 1.0, maps()).empty());
-  CHECK(Surface(none, 1.0, maps()).project(Point(0, 0, 0)).status ==
-        CGAL::Apss_projection_status::TOO_FEW_NEIGHBORS);
+  CHECK(Surface(none, 1.0, maps()).project(Point(0, 0, 0)).status == CGAL::Apss_projection_status::TOO_FEW_NEIGHBORS);
 
   auto pts = sphere(2000, 1.0);
   const double nan = std::nan("");
@@ -1051,10 +1051,10 @@ TEST_CASE("Empty ranges, unusable points, too few neighbours and degenerate fits
   {
     const Features& a = g[j];
     const Features& b = f[kept[j]];
-    differ += a.status == b.status && a.neighbor_count == b.neighbor_count &&
-                  (!a.is_valid() || std::abs(a.u_q - b.u_q) < 1e-12)
-                ? 0
-                : 1;
+    differ +=
+      a.status == b.status && a.neighbor_count == b.neighbor_count && (!a.is_valid() || std::abs(a.u_q - b.u_q) < 1e-12)
+        ? 0
+        : 1;
   }
   CHECK(differ == 0);
 
@@ -1138,7 +1138,8 @@ TEST_CASE("callback: progress in [0,1], and returning false cancels features and
 // ---------------------------------------------------------------------------------------
 // Degenerate inputs found in review.
 
-TEST_CASE("Features, multi-scale features and the APSS surface are DEGENERATE_FIT on a circle, like APSS", "[features][bad_input]")
+TEST_CASE("Features, multi-scale features and the APSS surface are DEGENERATE_FIT on a circle, like APSS",
+          "[features][bad_input]")
 {
   // A circle of radius 2 in z = 0 with in-plane normals: the sphere fitted to one curve takes
   // the curvature along it for a mean curvature. The curvature function said so; the
@@ -1171,7 +1172,8 @@ TEST_CASE("Algebraic_point_set_surface builds on a cloud spanning +-1e308", "[pr
   std::vector<Oriented_point> pts = sphere(300, 1.0);
   pts.emplace_back(Point(1e308, 0, 0), Vector(1, 0, 0));
   pts.emplace_back(Point(-1e308, 0, 0), Vector(-1, 0, 0));
-  CGAL::Algebraic_point_set_surface<Kernel> surface(pts, 0.5, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()));
+  CGAL::Algebraic_point_set_surface<Kernel> surface(pts, 0.5,
+                                                    CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()));
   const auto projected = surface.project(Point(0, 0, 1.1));
   REQUIRE(projected.is_valid());
   CHECK(std::abs(std::sqrt(CGAL::squared_distance(projected.point, Point(0, 0, 0))) - 1) < 1e-6);
@@ -1180,7 +1182,8 @@ TEST_CASE("Algebraic_point_set_surface builds on a cloud spanning +-1e308", "[pr
 // Sample weights (issue 11): the same quadrature argument as for the ASO. A sphere stays
 // exact; on i.i.d. samples with a density ramp the APSS mean curvature of the features gets
 // closer to the truth; the multi-scale function refuses them.
-TEST_CASE("Sphere features with tangent Voronoi area weights: exact on a sphere, refused by the multi-scale function", "[features][robust]")
+TEST_CASE("Sphere features with tangent Voronoi area weights: exact on a sphere, refused by the multi-scale function",
+          "[features][robust]")
 {
   const auto pts = sphere(5000, 1.0);
   const auto weighted = CGAL::estimate_algebraic_sphere_features<Seq>(
@@ -1192,7 +1195,8 @@ TEST_CASE("Sphere features with tangent Voronoi area weights: exact on a sphere,
     worst = std::max(worst, std::abs(f.mean_curvature - 1));
   }
   CHECK(worst < 1e-9);  // measured below 1e-13
-  CHECK_THROWS_AS(CGAL::estimate_multiscale_algebraic_sphere_features<Seq>(
-                    pts, {0.2, 0.3}, PSC::parameters::sample_weights(CGAL::Sample_weights::TANGENT_VORONOI_AREA, maps())),
-                  std::invalid_argument);
+  CHECK_THROWS_AS(
+    CGAL::estimate_multiscale_algebraic_sphere_features<Seq>(
+      pts, {0.2, 0.3}, PSC::parameters::sample_weights(CGAL::Sample_weights::TANGENT_VORONOI_AREA, maps())),
+    std::invalid_argument);
 }

@@ -93,8 +93,8 @@ inline std::vector<Reference_row> read_reference(const std::string& file)
     std::replace(line.begin(), line.end(), ',', ' ');
     std::istringstream s(line);
     Reference_row r;
-    s >> r.index >> r.neighbors >> r.k_min >> r.k_max >> r.mean >> r.gaussian >> r.n[0] >> r.n[1] >>
-      r.n[2] >> r.d_min[0] >> r.d_min[1] >> r.d_min[2] >> r.d_max[0] >> r.d_max[1] >> r.d_max[2];
+    s >> r.index >> r.neighbors >> r.k_min >> r.k_max >> r.mean >> r.gaussian >> r.n[0] >> r.n[1] >> r.n[2] >>
+      r.d_min[0] >> r.d_min[1] >> r.d_min[2] >> r.d_max[0] >> r.d_max[1] >> r.d_max[2];
     if(s)
       rows.push_back(r);
   }
@@ -117,11 +117,16 @@ inline Truth truth_from_implicit(const double g[3], const double h[9])
   const double n[3] = {g[0] / gn, g[1] / gn, g[2] / gn};
   // tangent basis
   double a[3] = {1, 0, 0};
-  if(std::abs(n[0]) > 0.9) { a[0] = 0; a[1] = 1; }
+  if(std::abs(n[0]) > 0.9)
+  {
+    a[0] = 0;
+    a[1] = 1;
+  }
   const double an = a[0] * n[0] + a[1] * n[1] + a[2] * n[2];
   double t1[3] = {a[0] - an * n[0], a[1] - an * n[1], a[2] - an * n[2]};
   const double l1 = std::sqrt(t1[0] * t1[0] + t1[1] * t1[1] + t1[2] * t1[2]);
-  for(double& x : t1) x /= l1;
+  for(double& x : t1)
+    x /= l1;
   const double t2[3] = {n[1] * t1[2] - n[2] * t1[1], n[2] * t1[0] - n[0] * t1[2], n[0] * t1[1] - n[1] * t1[0]};
   auto form = [&](const double* u, const double* v) {
     double s = 0;
@@ -167,8 +172,7 @@ inline double line_angle_degrees(const Vector& a, const Vector& b)
 }
 
 // Fibonacci sphere of radius R centred at c, outward normals (or inward if `inward`).
-inline std::vector<Oriented_point> sphere(std::size_t n, double R, const Point& c = Point(0, 0, 0),
-                                          bool inward = false)
+inline std::vector<Oriented_point> sphere(std::size_t n, double R, const Point& c = Point(0, 0, 0), bool inward = false)
 {
   std::vector<Oriented_point> pts;
   const double golden = M_PI * (3 - std::sqrt(5.0));
@@ -184,8 +188,8 @@ inline std::vector<Oriented_point> sphere(std::size_t n, double R, const Point& 
 }
 
 // Cylinder of radius R around the z axis, z in [-h/2, h/2], on a jittered grid; outward normals.
-inline std::vector<Oriented_point> cylinder(std::size_t n_around, std::size_t n_along, double R,
-                                            double height, unsigned seed = 1)
+inline std::vector<Oriented_point> cylinder(std::size_t n_around, std::size_t n_along, double R, double height,
+                                            unsigned seed = 1)
 {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> jitter(-0.25, 0.25);
@@ -281,8 +285,7 @@ inline void put_le(std::string& s, std::size_t at, T v)
 // point from that position (the scanner) to each point, 1e-3 times their difference.
 inline std::string las_file(const std::vector<Oriented_point>& pts, int format, int minor, double scale,
                             const double offset[3], std::size_t extra = 0,
-                            std::vector<std::array<double, 3> >* quantised = nullptr,
-                            const double* beam_from = nullptr)
+                            std::vector<std::array<double, 3> >* quantised = nullptr, const double* beam_from = nullptr)
 {
   static const std::size_t sizes[11] = {20, 28, 26, 34, 57, 63, 30, 36, 38, 59, 67};
   const std::size_t header = minor >= 4 ? 375 : minor == 3 ? 235 : 227;
@@ -329,7 +332,7 @@ inline std::string las_file(const std::vector<Oriented_point>& pts, int format, 
       put_le<std::uint8_t>(body, o + 14, std::uint8_t(1 | (2 << 4)));
       put_le<std::uint8_t>(body, o + 15, std::uint8_t(1 << 3));  // overlap
       put_le<std::uint8_t>(body, o + 16, std::uint8_t(las_classification(i)));
-      put_le<std::int16_t>(body, o + 18, std::int16_t(-2000));   // -12 degrees
+      put_le<std::int16_t>(body, o + 18, std::int16_t(-2000));  // -12 degrees
       put_le<std::uint16_t>(body, o + 20, 7);
       put_le<double>(body, o + 22, las_gps_time(i));
       if(format == 7 || format == 8 || format == 10)
@@ -359,7 +362,6 @@ inline std::string las_file(const std::vector<Oriented_point>& pts, int format, 
   return h + body;
 }
 
-
-} // namespace psc_test
+}  // namespace psc_test
 
 #endif

@@ -152,8 +152,7 @@ struct Run
 Run run_tool(const std::string& args)
 {
   const std::string out = file("stdout.txt"), err = file("stderr.txt");
-  const std::string command =
-    std::string("'") + PSC_TOOL_PATH + "' " + args + " > '" + out + "' 2> '" + err + "'";
+  const std::string command = std::string("'") + PSC_TOOL_PATH + "' " + args + " > '" + out + "' 2> '" + err + "'";
   const int raw = std::system(command.c_str());
   Run r;
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
@@ -202,15 +201,9 @@ std::size_t files_starting_with(const std::string& prefix)
 }
 
 // Bitwise equality of doubles, NaN included (NaN == NaN here).
-bool same(double a, double b)
-{
-  return (std::isnan(a) && std::isnan(b)) || a == b;
-}
+bool same(double a, double b) { return (std::isnan(a) && std::isnan(b)) || a == b; }
 
-bool same(const Vector& a, const Vector& b)
-{
-  return same(a.x(), b.x()) && same(a.y(), b.y()) && same(a.z(), b.z());
-}
+bool same(const Vector& a, const Vector& b) { return same(a.x(), b.x()) && same(a.y(), b.y()) && same(a.z(), b.z()); }
 
 bool same(const Estimate& a, const Estimate& b)
 {
@@ -254,10 +247,10 @@ void check_ply_matches(const std::string& path, const std::vector<Oriented_point
     const Estimate& e = expected[i];
     const double d[6] = {e.min_direction.x(), e.min_direction.y(), e.min_direction.z(),
                          e.max_direction.x(), e.max_direction.y(), e.max_direction.z()};
-    bool ok = ps.point(p) == input[i].first && same(ps.normal(p), e.normal) &&
-              same(k_min[p], e.min_curvature) && same(k_max[p], e.max_curvature) &&
-              same(mean[p], e.mean_curvature) && same(gaussian[p], e.gaussian_curvature) &&
-              neighbors[p] == std::int32_t(e.neighbor_count) && valid[p] == (e.is_valid() ? 1 : 0);
+    bool ok = ps.point(p) == input[i].first && same(ps.normal(p), e.normal) && same(k_min[p], e.min_curvature) &&
+              same(k_max[p], e.max_curvature) && same(mean[p], e.mean_curvature) &&
+              same(gaussian[p], e.gaussian_curvature) && neighbors[p] == std::int32_t(e.neighbor_count) &&
+              valid[p] == (e.is_valid() ? 1 : 0);
     for(int a = 0; a < 6; ++a)
       ok = ok && same(directions[a][p], d[a]);
     mismatches += ok ? 0 : 1;
@@ -313,7 +306,7 @@ std::vector<std::string> csv_column(const std::string& text, const std::string& 
   return values;
 }
 
-} // namespace
+}  // namespace
 
 // =======================================================================================
 // Neighbourhoods by count: the library
@@ -346,7 +339,9 @@ TEST_CASE("neighbor_count: the neighbourhood of each point is the ball of radius
     for(std::size_t j = 0; j < nb.size; ++j)
     {
       s.max_q2 = std::max(s.max_q2, nb.qx[j] * nb.qx[j] + nb.qy[j] * nb.qy[j] + nb.qz[j] * nb.qz[j]);
-      s.sum[0] += nb.qx[j]; s.sum[1] += nb.qy[j]; s.sum[2] += nb.qz[j];
+      s.sum[0] += nb.qx[j];
+      s.sum[1] += nb.qy[j];
+      s.sum[2] += nb.qz[j];
     }
   };
   const std::vector<CGAL::Curvature_estimate_status> status =
@@ -395,8 +390,8 @@ TEST_CASE("neighbor_count: the neighbourhood of each point is the ball of radius
 TEST_CASE("neighbor_count: ties, k above the number of points, coincident points")
 {
   const auto count_of = [](const std::vector<Oriented_point>& pts, std::size_t k) {
-    const std::vector<Estimate> e = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
-      pts, PSC::parameters::neighbor_count(k, pair_maps));
+    const std::vector<Estimate> e =
+      CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, PSC::parameters::neighbor_count(k, pair_maps));
     std::vector<std::size_t> counts;
     for(const Estimate& x : e)
       counts.push_back(x.neighbor_count);
@@ -499,8 +494,16 @@ TEST_CASE("neighbor_count: density varying 1:10, at least k neighbours everywher
       const double x = pts[i].first.x(), y = pts[i].first.y();
       if(y < 0.1 || y > 1.9)
         continue;  // away from the borders
-      if(x > 0.1 && x < 0.3) { sparse += e[i].neighbor_count; ++n_sparse; }
-      if(x > 3.7 && x < 3.9) { dense += e[i].neighbor_count; ++n_dense; }
+      if(x > 0.1 && x < 0.3)
+      {
+        sparse += e[i].neighbor_count;
+        ++n_sparse;
+      }
+      if(x > 3.7 && x < 3.9)
+      {
+        dense += e[i].neighbor_count;
+        ++n_dense;
+      }
     }
     const double ratio = (dense / n_dense) / (sparse / n_sparse);
     measured("neighbour count ratio dense/sparse strips, fixed radius 0.08", ratio);
@@ -513,18 +516,17 @@ TEST_CASE("neighbor_count: density varying 1:10, at least k neighbours everywher
   }
   const std::size_t k = 20;
   std::vector<double> progress;
-  const auto np = PSC::parameters::neighbor_count(
-    k, pair_maps.callback(std::function<bool(double)>([&](double f) {
-      progress.push_back(f);
-      return true;
-    })));
+  const auto np = PSC::parameters::neighbor_count(k, pair_maps.callback(std::function<bool(double)>([&](double f) {
+    progress.push_back(f);
+    return true;
+  })));
   const std::vector<Estimate> seq = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, np);
   const std::size_t seq_reports = progress.size();
   const std::vector<Estimate> par = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(pts, np);
-  const std::vector<Estimate> apss_seq = CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(
-    pts, PSC::parameters::neighbor_count(k, pair_maps));
-  const std::vector<Estimate> apss_par = CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(
-    pts, PSC::parameters::neighbor_count(k, pair_maps));
+  const std::vector<Estimate> apss_seq =
+    CGAL::estimate_apss_curvatures<CGAL::Sequential_tag>(pts, PSC::parameters::neighbor_count(k, pair_maps));
+  const std::vector<Estimate> apss_par =
+    CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(pts, PSC::parameters::neighbor_count(k, pair_maps));
   std::size_t exactly_k = 0, valid = 0, different = 0;
   for(std::size_t i = 0; i < pts.size(); ++i)
   {
@@ -552,11 +554,10 @@ TEST_CASE("neighbor_count: density varying 1:10, at least k neighbours everywher
     CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, PSC::parameters::neighbor_count(k, paper));
   double first_report = -1;
   const std::vector<Estimate> cut = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
-    pts, PSC::parameters::neighbor_count(
-           k, paper.callback(std::function<bool(double)>([&first_report](double f) {
-             first_report = f;
-             return false;
-           }))));
+    pts, PSC::parameters::neighbor_count(k, paper.callback(std::function<bool(double)>([&first_report](double f) {
+      first_report = f;
+      return false;
+    }))));
   const std::size_t first_batch = static_cast<std::size_t>(std::lround(first_report * 20000));
   CHECK(first_report * 20000 == Approx(double(first_batch)).epsilon(1e-12));
   CHECK(first_batch >= 1);
@@ -575,17 +576,16 @@ TEST_CASE("neighbor_count: density varying 1:10, at least k neighbours everywher
     sphere(3000, 2.0), PSC::parameters::neighbor_count(30, pair_maps));
   double worst = 0;
   for(const Estimate& e : s)
-    worst = std::max(worst, e.is_valid() ? std::max(std::abs(e.min_curvature - 0.5),
-                                                    std::abs(e.max_curvature - 0.5))
-                                         : 1.0);
+    worst =
+      std::max(worst, e.is_valid() ? std::max(std::abs(e.min_curvature - 0.5), std::abs(e.max_curvature - 0.5)) : 1.0);
   measured("sphere R=2, 30 nearest: max |k - 1/2|", worst);
   // the fit is exact on a sphere: measured 3.6e-15 (rounding); 1e-12 allows 300x more
   // rounding (other compilers, FMA) and still fails on any real error
   CHECK(worst < 1e-12);
 
-  CHECK_THROWS_AS(CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
-                    pts, PSC::parameters::neighbor_count(0, pair_maps)),
-                  std::invalid_argument);
+  CHECK_THROWS_AS(
+    CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, PSC::parameters::neighbor_count(0, pair_maps)),
+    std::invalid_argument);
 }
 
 TEST_CASE("grid sort: the radix sort orders (cell key, index) pairs exactly as std::sort")
@@ -597,8 +597,8 @@ TEST_CASE("grid sort: the radix sort orders (cell key, index) pairs exactly as s
   // 300000 pairs make 5 chunks.
   typedef PSC::internal::Neighbor_grid::Keyed_index Keyed;
   std::mt19937_64 rng(7);
-  for(const std::size_t n : {std::size_t(0), std::size_t(1), std::size_t(100), std::size_t(2047),
-                             std::size_t(2048), std::size_t(50000), std::size_t(300000)})
+  for(const std::size_t n : {std::size_t(0), std::size_t(1), std::size_t(100), std::size_t(2047), std::size_t(2048),
+                             std::size_t(50000), std::size_t(300000)})
     for(const int bits : {1, 4, 20, 62})
     {
       std::vector<Keyed> keyed(n);
@@ -634,8 +634,7 @@ TEST_CASE("tool: binary and ASCII PLY read back with CGAL's PLY reader, every pr
   const std::string input = file("sphere.xyz");
   write_xyz(input, pts);
   const double radius = 0.4;
-  const std::vector<Estimate> expected =
-    CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, radius, pair_maps);
+  const std::vector<Estimate> expected = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, radius, pair_maps);
 
   const Run binary = run_tool(q(input) + " " + q(file("sphere_binary.ply")) + " --radius 0.4");
   INFO(binary.err);
@@ -682,9 +681,9 @@ std::string write_ply_with_attributes(const std::string& name)
          "property float nz\nproperty uchar red\nproperty float intensity\nproperty short k_min\n"
          "property float scalar_Intensity\nproperty float scalar_mean\nend_header\n";
   for(std::size_t i = 0; i < pts.size(); ++i)
-    ply << pts[i].first.x() << " " << pts[i].first.y() << " " << pts[i].first.z() << " " << pts[i].second.x()
-        << " " << pts[i].second.y() << " " << pts[i].second.z() << " " << i % 256 << " " << 0.5 * double(i) << " "
-        << -int(i) << " " << 0.25 * double(i) << " " << 2.0 * double(i) << "\n";
+    ply << pts[i].first.x() << " " << pts[i].first.y() << " " << pts[i].first.z() << " " << pts[i].second.x() << " "
+        << pts[i].second.y() << " " << pts[i].second.z() << " " << i % 256 << " " << 0.5 * double(i) << " " << -int(i)
+        << " " << 0.25 * double(i) << " " << 2.0 * double(i) << "\n";
   write_text(file(name), ply.str());
   return file(name);
 }
@@ -701,7 +700,7 @@ std::vector<std::string> ply_property_names(const std::string& path)
   return names;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("tool: --ply-names scalar names every property but x y z, normals and colours scalar_NAME, same data")
 {
@@ -715,21 +714,66 @@ TEST_CASE("tool: --ply-names scalar names every property but x y z, normals and 
     const Run r = run_tool(q(input) + " " + q(scalar) + args + " --ply-names scalar");
     INFO(r.err);
     REQUIRE(r.status == 0);
-    const std::vector<std::string> expected_plain = {
-      "x", "y", "z", "nx", "ny", "nz", "k_min", "k_max", "mean", "gaussian", "dmin_x", "dmin_y", "dmin_z",
-      "dmax_x", "dmax_y", "dmax_z", "normal_coherence", "neighbors", "valid", "red", "green", "blue",
-      "input_red", "intensity", "input_k_min", "scalar_Intensity", "scalar_mean"};
+    const std::vector<std::string> expected_plain = {"x",
+                                                     "y",
+                                                     "z",
+                                                     "nx",
+                                                     "ny",
+                                                     "nz",
+                                                     "k_min",
+                                                     "k_max",
+                                                     "mean",
+                                                     "gaussian",
+                                                     "dmin_x",
+                                                     "dmin_y",
+                                                     "dmin_z",
+                                                     "dmax_x",
+                                                     "dmax_y",
+                                                     "dmax_z",
+                                                     "normal_coherence",
+                                                     "neighbors",
+                                                     "valid",
+                                                     "red",
+                                                     "green",
+                                                     "blue",
+                                                     "input_red",
+                                                     "intensity",
+                                                     "input_k_min",
+                                                     "scalar_Intensity",
+                                                     "scalar_mean"};
     // readers that look for mean, k_min, ... find them without the option
     CHECK(ply_property_names(plain) == expected_plain);
     // x y z, the normals and --color's colours keep their names (CloudCompare loads them as
     // such); every other property gets scalar_, but for a name that has it already
     // (CloudCompare's own scalar_Intensity stays the field Intensity) unless the name is
     // taken: the input's scalar_mean becomes scalar_scalar_mean, the tool's mean scalar_mean.
-    const std::vector<std::string> expected_scalar = {
-      "x", "y", "z", "nx", "ny", "nz", "scalar_k_min", "scalar_k_max", "scalar_mean", "scalar_gaussian",
-      "scalar_dmin_x", "scalar_dmin_y", "scalar_dmin_z", "scalar_dmax_x", "scalar_dmax_y", "scalar_dmax_z",
-      "scalar_normal_coherence", "scalar_neighbors", "scalar_valid", "red", "green", "blue",
-      "scalar_input_red", "scalar_intensity", "scalar_input_k_min", "scalar_Intensity", "scalar_scalar_mean"};
+    const std::vector<std::string> expected_scalar = {"x",
+                                                      "y",
+                                                      "z",
+                                                      "nx",
+                                                      "ny",
+                                                      "nz",
+                                                      "scalar_k_min",
+                                                      "scalar_k_max",
+                                                      "scalar_mean",
+                                                      "scalar_gaussian",
+                                                      "scalar_dmin_x",
+                                                      "scalar_dmin_y",
+                                                      "scalar_dmin_z",
+                                                      "scalar_dmax_x",
+                                                      "scalar_dmax_y",
+                                                      "scalar_dmax_z",
+                                                      "scalar_normal_coherence",
+                                                      "scalar_neighbors",
+                                                      "scalar_valid",
+                                                      "red",
+                                                      "green",
+                                                      "blue",
+                                                      "scalar_input_red",
+                                                      "scalar_intensity",
+                                                      "scalar_input_k_min",
+                                                      "scalar_Intensity",
+                                                      "scalar_scalar_mean"};
     CHECK(ply_property_names(scalar) == expected_scalar);
     // only the names differ: the types, the comments and every byte of the data are the same
     const std::string a = read_text(plain), b = read_text(scalar);
@@ -744,7 +788,8 @@ TEST_CASE("tool: --ply-names scalar names every property but x y z, normals and 
   }
   // --ply-names plain is the default; the option is for .ply outputs only, and checked
   const std::string plain_again = file("cc_plain_again.ply");
-  REQUIRE(run_tool(q(input) + " " + q(plain_again) + " --radius 0.4 --color mean --quiet --ply-names plain").status == 0);
+  REQUIRE(run_tool(q(input) + " " + q(plain_again) + " --radius 0.4 --color mean --quiet --ply-names plain").status ==
+          0);
   CHECK(ply_property_names(plain_again) == ply_property_names(file("cc_plain.ply")));
   const Run csv = run_tool(q(input) + " " + q(file("cc.csv")) + " --radius 0.4 --ply-names scalar");
   CHECK(csv.status == 2);
@@ -793,17 +838,11 @@ namespace {
 // that assert nothing before skipping may call it (each does so first), or the skip would
 // hide their failures; the CTest test test_skips_come_first (test/skips_come_first.cmake)
 // checks the source for assertion macros before each call.
-void skip_test(const std::string& why)
-{
-  std::cout << "PSC_TEST_SKIPPED: " << why << std::endl;
-}
+void skip_test(const std::string& why) { std::cout << "PSC_TEST_SKIPPED: " << why << std::endl; }
 
-bool has_cloudcompare()
-{
-  return std::system("command -v CloudCompare > /dev/null 2>&1") == 0;
-}
+bool has_cloudcompare() { return std::system("command -v CloudCompare > /dev/null 2>&1") == 0; }
 
-} // namespace
+}  // namespace
 
 // DIR/out.ply opened by CloudCompare headless and saved as ASCII with a header line naming the
 // columns (X Y Z R G B, the scalar fields, Nx Ny Nz): the path of that .asc file.
@@ -838,8 +877,8 @@ TEST_CASE("tool: CloudCompare loads every estimate and attribute of a --ply-name
   const auto cloudcompare_export = [&](const std::string& folder, const std::string& options) {
     const fs::path dir = work_dir() / folder;
     fs::create_directories(dir);
-    REQUIRE(run_tool(q(input) + " " + q((dir / "out.ply").string()) + " --radius 0.4 --color mean --quiet" +
-                     options).status == 0);
+    REQUIRE(run_tool(q(input) + " " + q((dir / "out.ply").string()) + " --radius 0.4 --color mean --quiet" + options)
+              .status == 0);
     return cloudcompare_asc(dir);
   };
   const std::string asc = cloudcompare_export("cloudcompare", " --ply-names scalar");
@@ -847,10 +886,33 @@ TEST_CASE("tool: CloudCompare loads every estimate and attribute of a --ply-name
   std::string header;
   std::getline(lines, header);
   // the names CloudCompare 2.11.3 gives the fields
-  const std::vector<std::string> expected = {
-    "//X", "Y", "Z", "R", "G", "B", "k_min", "k_max", "mean", "gaussian", "dmin_x", "dmin_y", "dmin_z", "dmax_x",
-    "dmax_y", "dmax_z", "normal_coherence", "neighbors", "valid", "input_red", "intensity", "input_k_min",
-    "Intensity", "scalar_mean", "Nx", "Ny", "Nz"};
+  const std::vector<std::string> expected = {"//X",
+                                             "Y",
+                                             "Z",
+                                             "R",
+                                             "G",
+                                             "B",
+                                             "k_min",
+                                             "k_max",
+                                             "mean",
+                                             "gaussian",
+                                             "dmin_x",
+                                             "dmin_y",
+                                             "dmin_z",
+                                             "dmax_x",
+                                             "dmax_y",
+                                             "dmax_z",
+                                             "normal_coherence",
+                                             "neighbors",
+                                             "valid",
+                                             "input_red",
+                                             "intensity",
+                                             "input_k_min",
+                                             "Intensity",
+                                             "scalar_mean",
+                                             "Nx",
+                                             "Ny",
+                                             "Nz"};
   std::istringstream words(header);
   std::vector<std::string> columns;
   for(std::string w; words >> w;)
@@ -923,7 +985,7 @@ Rgb16 wide_colour(std::size_t i)
   return Rgb16{{std::uint16_t(256 * (i % 256)), std::uint16_t(257 * (i % 200)), 65535}};
 }
 
-} // namespace
+}  // namespace
 
 // Issue 42, item 1: the input's colours (LAS: 16 bits) are written to PLY as the 8-bit colours
 // viewers read (CloudCompare 2.11.3 showed ushort red green blue as black on every point): the
@@ -1036,8 +1098,8 @@ TEST_CASE("tool: a third-party LAS reader (loaders.gl) reads the LAS output: hea
   // the reader's lines "name values..." as a map
   const auto reader = [&](const std::string& output, const std::string& mode, const std::string& input) {
     const std::string log = file("third_party.txt");
-    const std::string command = "node " + script + " " + q(modules) + " " + q(output) + " " + mode + " " + q(input) +
-                                " > " + q(log) + " 2>&1";
+    const std::string command =
+      "node " + script + " " + q(modules) + " " + q(output) + " " + mode + " " + q(input) + " > " + q(log) + " 2>&1";
     const int status = std::system(command.c_str());
     const std::string text = read_text(log);
     INFO(text);
@@ -1158,8 +1220,8 @@ TEST_CASE("tool: invalid rows are NaN with valid = 0, in PLY and CSV, with --nei
   const std::vector<Oriented_point> pts = sphere_with_invalid_points();
   const std::string input = file("sphere_invalid.xyz");
   write_xyz(input, pts);
-  const std::vector<Estimate> expected = CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
-    pts, PSC::parameters::neighbor_count(25, pair_maps));
+  const std::vector<Estimate> expected =
+    CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(pts, PSC::parameters::neighbor_count(25, pair_maps));
   // the isolated point sees 24 points of the sphere (k counts): valid but meaningless;
   // the zero normal is invalid
   REQUIRE(expected[2001].status == CGAL::Curvature_estimate_status::INVALID_NORMAL);
@@ -1192,10 +1254,9 @@ TEST_CASE("tool: invalid rows are NaN with valid = 0, in PLY and CSV, with --nei
       v.push_back(f == "nan" ? std::numeric_limits<double>::quiet_NaN() : std::strtod(f.c_str(), nullptr));
     const Estimate& e = expected[rows];
     const bool ok = v.size() == 19 && v[0] == pts[rows].first.x() && same(v[3], e.normal.x()) &&
-                    same(v[6], e.min_curvature) && same(v[8], e.mean_curvature) &&
-                    same(v[9], e.gaussian_curvature) && same(v[15], e.max_direction.z()) &&
-                    same(v[16], e.normal_coherence) && v[17] == double(e.neighbor_count) &&
-                    v[18] == (e.is_valid() ? 1 : 0);
+                    same(v[6], e.min_curvature) && same(v[8], e.mean_curvature) && same(v[9], e.gaussian_curvature) &&
+                    same(v[15], e.max_direction.z()) && same(v[16], e.normal_coherence) &&
+                    v[17] == double(e.neighbor_count) && v[18] == (e.is_valid() ? 1 : 0);
     mismatches += !ok;
     ++rows;
   }
@@ -1208,7 +1269,8 @@ TEST_CASE("tool: invalid rows are NaN with valid = 0, in PLY and CSV, with --nei
   REQUIRE(a.status == 0);
   CHECK(a.out.find("n/a (not estimated by this method)") != std::string::npos);
   std::istringstream ply(read_text(file("apss.ply")));
-  while(std::getline(ply, line) && line != "end_header") {}
+  while(std::getline(ply, line) && line != "end_header")
+  {}
   std::size_t nan_gaussian = 0, finite_mean = 0;
   while(std::getline(ply, line))
   {
@@ -1344,14 +1406,17 @@ TEST_CASE("tool: every error exits with status 2, one line naming the file or op
                           "element face 1\nproperty list int int vertex_indices\nend_header\n" + std::string(12, '\0');
   huge_list += std::string("\x00\x94\x35\x77", 4);  // a list of 2e9 items
   write_text(file("huge_list.ply"), huge_list);
-  write_text(file("negative_list.ply"), "ply\nformat ascii 1.0\nelement vertex 1\n" + vertex_xyz +
-                                          "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n-1\n");
-  write_text(file("partial_normals.ply"), "ply\nformat ascii 1.0\nelement vertex 1\n" + vertex_xyz +
-                                            "property float nx\nend_header\n0 0 0 1\n");
+  write_text(file("negative_list.ply"),
+             "ply\nformat ascii 1.0\nelement vertex 1\n" + vertex_xyz +
+               "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n-1\n");
+  write_text(file("partial_normals.ply"),
+             "ply\nformat ascii 1.0\nelement vertex 1\n" + vertex_xyz + "property float nx\nend_header\n0 0 0 1\n");
   write_text(file("nine.xyz"), "0 0 0 1 2 3 0 0 1\n");
   write_text(file("colours.off"), "OFF\n3 0 0\n0 0 0 200 120 35\n1 0 0 200 120 35\n0 1 0 200 120 35\n");
-  write_text(file("wrapped.ply"), "ply\nformat ascii 1.0\nelement vertex 2\n" + vertex_xyz + "end_header\n1 2\n3 4 5 6\n");
-  write_text(file("two_per_line.ply"), "ply\nformat ascii 1.0\nelement vertex 2\n" + vertex_xyz + "end_header\n1 2 3 4 5 6\n");
+  write_text(file("wrapped.ply"),
+             "ply\nformat ascii 1.0\nelement vertex 2\n" + vertex_xyz + "end_header\n1 2\n3 4 5 6\n");
+  write_text(file("two_per_line.ply"),
+             "ply\nformat ascii 1.0\nelement vertex 2\n" + vertex_xyz + "end_header\n1 2 3 4 5 6\n");
   write_text(file("plus_minus.xyz"), "0 0 0\n+-1 0 0\n0 1 0\n");
   {
     std::string same;
@@ -1370,18 +1435,24 @@ TEST_CASE("tool: every error exits with status 2, one line naming the file or op
     {q(file("missing.xyz")) + " " + q(out), "cannot open input '" + file("missing.xyz") + "': No such file"},
     {q(file("a_directory.xyz")) + " " + q(out), "'" + file("a_directory.xyz") + "': it is a directory"},
     {q(file("truncated_binary.ply")) + " " + q(out), "'" + file("truncated_binary.ply") + "': truncated"},
-    {q(file("truncated_ascii.ply")) + " " + q(out), "'" + file("truncated_ascii.ply") + "': truncated: the file ends in vertex 3"},
+    {q(file("truncated_ascii.ply")) + " " + q(out),
+     "'" + file("truncated_ascii.ply") + "': truncated: the file ends in vertex 3"},
     {q(file("text_ascii.ply")) + " " + q(out), "'" + file("text_ascii.ply") + "': line 12: 'zero' is not a number"},
-    {q(file("count_more.ply")) + " " + q(out), "'" + file("count_more.ply") + "': truncated: the file ends in vertex 4 of the 4"},
-    {q(file("count_fewer.ply")) + " " + q(out), "'" + file("count_fewer.ply") + "': line 13: more data than the 2 vertices"},
+    {q(file("count_more.ply")) + " " + q(out),
+     "'" + file("count_more.ply") + "': truncated: the file ends in vertex 4 of the 4"},
+    {q(file("count_fewer.ply")) + " " + q(out),
+     "'" + file("count_fewer.ply") + "': line 13: more data than the 2 vertices"},
     {q(file("count_fewer_binary.ply")) + " " + q(out), "more data than the 499 vertices"},
     {q(file("text.xyz")) + " " + q(out), "'" + file("text.xyz") + "' line 3: '1x' is not a number"},
     {q(file("text_normal.xyz")) + " " + q(out), "line 3: 'abc' is not a number"},
     {q(file("columns.xyz")) + " " + q(out), "line 2: 3 values where the previous lines have 6"},
     {q(file("count.xyz")) + " " + q(out), "first line declares 4 points but it has 3"},
     {q(file("text.off")) + " " + q(out), "'" + file("text.off") + "' line 4: 'x' is not a number"},
-    {q(file("count.off")) + " " + q(out), "'" + file("count.off") + "' line 6: expected 3 (x y z) or 6 (x y z nx ny nz) values like the other vertices, found 4 (wrong vertex count in the header?)"},
-    {q(file("faces.off")) + " " + q(out), "'" + file("faces.off") + "' line 7: unexpected line after the 3 vertices and 1 faces declared"},
+    {q(file("count.off")) + " " + q(out), "'" + file("count.off") +
+                                            "' line 6: expected 3 (x y z) or 6 (x y z nx ny nz) values like the other "
+                                            "vertices, found 4 (wrong vertex count in the header?)"},
+    {q(file("faces.off")) + " " + q(out),
+     "'" + file("faces.off") + "' line 7: unexpected line after the 3 vertices and 1 faces declared"},
     {q(file("empty.xyz")) + " " + q(out), "'" + file("empty.xyz") + "' contains no points"},
     {q(file("not_ply.ply")) + " " + q(out), "not a PLY file"},
     {q(file("positions.xyz")) + " " + q(out) + " --require-normals", "has no normals"},
@@ -1445,7 +1516,8 @@ TEST_CASE("tool: every error exits with status 2, one line naming the file or op
 }
 
 // Issue 10: columns that are not normals, normals under other names, small neighbourhoods.
-TEST_CASE("tool: rgb columns are refused with a message naming --columns, and --columns, CSV headers and normal_x PLY read the same cloud")
+TEST_CASE("tool: rgb columns are refused with a message naming --columns, and --columns, CSV headers and normal_x PLY "
+          "read the same cloud")
 {
   const std::vector<Oriented_point> pts = sphere(500, 1.0);
   write_xyz(file("cols.xyz"), pts);
@@ -1490,9 +1562,9 @@ TEST_CASE("tool: rgb columns are refused with a message naming --columns, and --
   // the same cloud through --columns, a comma-separated file and CloudCompare's header, and
   // CloudCompare's .asc export, read like .txt (issue 28: refused as an unknown extension)
   // (the colour columns of CloudCompare's files are attributes, dropped here to compare)
-  for(const std::string& args : {q(file("nine.txt")) + " --columns x,y,z,_,_,_,nx,ny,nz",
-                                 q(file("plain.csv")), q(file("cloudcompare.csv")), q(file("cloudcompare.asc")),
-                                 q(file("plain.asc")), q(file("cloudcompare.asc")) + " --columns x,y,z,_,_,_,nx,ny,nz"})
+  for(const std::string& args : {q(file("nine.txt")) + " --columns x,y,z,_,_,_,nx,ny,nz", q(file("plain.csv")),
+                                 q(file("cloudcompare.csv")), q(file("cloudcompare.asc")), q(file("plain.asc")),
+                                 q(file("cloudcompare.asc")) + " --columns x,y,z,_,_,_,nx,ny,nz"})
   {
     const Run r = run_tool(args + " " + q(file("cols_other.csv")) + " --radius 0.6 --drop-attributes");
     INFO(args << ": " << r.err);
@@ -1521,7 +1593,8 @@ TEST_CASE("tool: rgb columns are refused with a message naming --columns, and --
   CHECK(read_text(file("cols_other.csv")) == reference);
 }
 
-TEST_CASE("tool: 3-neighbour estimates are invalid, and a run without a valid estimate exits 3 with one line suggesting a scale")
+TEST_CASE("tool: 3-neighbour estimates are invalid, and a run without a valid estimate exits 3 with one line "
+          "suggesting a scale")
 {
   // The simulated LiDAR scan at r = 0.3: every point has about 3 neighbours. They used to be
   // reported valid (86.9%) with a mean H error of 0.072; then all invalid with exit status 0,
@@ -1535,16 +1608,18 @@ TEST_CASE("tool: 3-neighbour estimates are invalid, and a run without a valid es
       CHECK(r.out.find("valid       0 (0.00 %); 2947 too_few_neighbors") != std::string::npos);
     else
       CHECK(r.out.empty());
-    CHECK(r.err.rfind("point_set_curvatures: error: no valid estimate: all 2947 points are too_few_neighbors: the median "
-                      "neighbourhood holds 3 points: fewer than 12 neighbours, the least count of a valid aso estimate; "
-                      "for about 40 neighbours, try --radius ", 0) == 0);
+    CHECK(
+      r.err.rfind("point_set_curvatures: error: no valid estimate: all 2947 points are too_few_neighbors: the median "
+                  "neighbourhood holds 3 points: fewer than 12 neighbours, the least count of a valid aso estimate; "
+                  "for about 40 neighbours, try --radius ",
+                  0) == 0);
     CHECK(r.err.find("' was written, every row invalid\n") != std::string::npos);
     CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
   }
   const Run r = run_tool(q(repo_data("goursat-lidar.xyz")) + " " + q(file("lidar.csv")) + " --radius 0.3");
   const std::string rows = read_text(file("lidar.csv"));
   CHECK(std::count(rows.begin(), rows.end(), '\n') == 2948);  // the header and every point
-  CHECK(rows.find(",1\n") == std::string::npos);  // no row ends with valid = 1
+  CHECK(rows.find(",1\n") == std::string::npos);              // no row ends with valid = 1
 
   // at the scale it suggests (about 40 neighbours), no warning and every point valid but a few
   const std::size_t at = r.err.find("try --radius ") + 13;
@@ -1559,12 +1634,15 @@ TEST_CASE("tool: 3-neighbour estimates are invalid, and a run without a valid es
   CHECK(few.status == 2);
   CHECK(few.err.find("--neighbors 5 is below the 12 neighbours of a valid aso estimate") != std::string::npos);
   // and allowed with --min-neighbors
-  CHECK(run_tool(q(repo_data("goursat-lidar.xyz")) + " " + q(file("lidar.csv")) + " --neighbors 5 --min-neighbors 5 --quiet").status == 0);
+  CHECK(run_tool(q(repo_data("goursat-lidar.xyz")) + " " + q(file("lidar.csv")) +
+                 " --neighbors 5 --min-neighbors 5 --quiet")
+          .status == 0);
 }
 
 // Issue 28: a file smaller than a good neighbourhood is told so, not to try the count it ran
 // with; counts of one are singular.
-TEST_CASE("tool: a file with fewer points than a good neighbourhood is told it is too small, and one point is one point")
+TEST_CASE(
+  "tool: a file with fewer points than a good neighbourhood is told it is too small, and one point is one point")
 {
   // 10 points of a plane and one point far from them; --min-neighbors 5 lets the 10 be valid
   std::vector<Oriented_point> pts;
@@ -1583,7 +1661,9 @@ TEST_CASE("tool: a file with fewer points than a good neighbourhood is told it i
   CHECK(std::count(ten.err.begin(), ten.err.end(), '\n') == 1);
   // the default automatic scale on 10 points: the estimate of the fixed count, with an error
   // of 0 where a quadric fits the plane exactly, NaN where too few neighbours weigh for one
-  CHECK(run_tool(q(file("ten.xyz")) + " " + q(file("ten_40.csv")) + " --quiet --min-neighbors 5 --neighbors 40").status == 0);
+  CHECK(
+    run_tool(q(file("ten.xyz")) + " " + q(file("ten_40.csv")) + " --quiet --min-neighbors 5 --neighbors 40").status ==
+    0);
   CHECK(csv_column(read_text(file("ten.csv")), "mean") == csv_column(read_text(file("ten_40.csv")), "mean"));
   CHECK(csv_column(read_text(file("ten.csv")), "dmax_x") == csv_column(read_text(file("ten_40.csv")), "dmax_x"));
   for(const std::string& e : csv_column(read_text(file("ten.csv")), "mean_error"))
@@ -1620,14 +1700,17 @@ TEST_CASE("tool: a file with fewer points than a good neighbourhood is told it i
   INFO(none.err);
   CHECK(none.status == 3);
   CHECK(none.err == "point_set_curvatures: error: no valid estimate: all 10 points are too_few_neighbors: '" +
-                      file("ten.xyz") + "' is too small for aso: it holds 10 usable points (finite, with a normal), "
+                      file("ten.xyz") +
+                      "' is too small for aso: it holds 10 usable points (finite, with a normal), "
                       "fewer than the 12 neighbours from which aso's errors stay within twice those at 40 (measured, "
                       "see the manual), whatever --radius or --neighbors (--min-neighbors lowers the least count of a "
-                      "valid estimate, at a cost in accuracy); '" + file("ten.csv") + "' was written, every row invalid\n");
+                      "valid estimate, at a cost in accuracy); '" +
+                      file("ten.csv") + "' was written, every row invalid\n");
 }
 
 // Issue 28: every other reason for a run without a valid estimate is named, with exit status 3.
-TEST_CASE("tool: runs without a valid estimate exit 3 naming the most frequent status: degenerate_fit, invalid_normal, non_finite_point, two_sheets")
+TEST_CASE("tool: runs without a valid estimate exit 3 naming the most frequent status: degenerate_fit, invalid_normal, "
+          "non_finite_point, two_sheets")
 {
   const std::vector<Oriented_point> pts = sphere(500, 1.0);
   write_xyz(file("ball.xyz"), pts);
@@ -1647,11 +1730,13 @@ TEST_CASE("tool: runs without a valid estimate exit 3 naming the most frequent s
   };
   const Case cases[] = {
     {q(file("ball.xyz")) + " --radius 1e300", "no valid estimate: all 500 points are degenerate_fit: coincident "
-                                             "neighbours, neighbours along one line (a single scan line), or a radius "
-                                             "far larger than the cloud; --radius 3.5x gives about 40 neighbours"},
-    {q(file("zero.xyz")) + " --radius 0.5 --columns x,y,z,nx,ny,nz", "no valid estimate: all 500 points are invalid_normal: the normals are zero"},
+                                              "neighbours, neighbours along one line (a single scan line), or a radius "
+                                              "far larger than the cloud; --radius 3.5x gives about 40 neighbours"},
+    {q(file("zero.xyz")) + " --radius 0.5 --columns x,y,z,nx,ny,nz",
+     "no valid estimate: all 500 points are invalid_normal: the normals are zero"},
     {q(file("nan.xyz")), "no valid estimate: all 2 points are non_finite_point: NaN or infinite coordinates"},
-    {q(file("plate.xyz")) + " --radius 0.3", "points are two_sheets: two layers with opposite normals in every neighbourhood"},
+    {q(file("plate.xyz")) + " --radius 0.3",
+     "points are two_sheets: two layers with opposite normals in every neighbourhood"},
   };
   for(const Case& c : cases)
   {
@@ -1701,9 +1786,10 @@ std::pair<double, std::size_t> normal_agreement(const std::vector<Position_and_n
   return {worst, flipped};
 }
 
-} // namespace
+}  // namespace
 
-TEST_CASE("estimate_oriented_normals: spheres and a terrain, by spanning tree, vector and point, sequential == parallel")
+TEST_CASE(
+  "estimate_oriented_normals: spheres and a terrain, by spanning tree, vector and point, sequential == parallel")
 {
   // Two spheres far apart (two connected parts of the graph), exact outward normals as truth.
   std::vector<Oriented_point> two = sphere(20000, 1.0);
@@ -1738,7 +1824,8 @@ TEST_CASE("estimate_oriented_normals: spheres and a terrain, by spanning tree, v
   const std::vector<Oriented_point> terrain = varying_density(20000, 3);
   auto up = positions_of(terrain);
   CHECK(CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
-          up, 0.1, PSC::parameters::normal_orientation(CGAL::Normal_orientation::along_vector(0, 0, 1), tuple_maps)) == 0);
+          up, 0.1, PSC::parameters::normal_orientation(CGAL::Normal_orientation::along_vector(0, 0, 1), tuple_maps)) ==
+        0);
   const auto along = normal_agreement(up, terrain);
   measured("terrain, quadric normals by radius 0.1, worst angle (deg)", along.first);
   CHECK(along.first < 1.0);  // measured 0.18 (0.58 with the PCA plane; the sparse end has few points per ball)
@@ -1823,7 +1910,7 @@ std::vector<Oriented_point> random_torus(std::size_t n, double R, double r, unsi
   return pts;
 }
 
-} // namespace
+}  // namespace
 
 // The pipeline for clouds without normals: quadric normals (the default of
 // estimate_oriented_normals) and the ASO with position_fit_blend(0.5), against the ASO with the
@@ -1889,7 +1976,8 @@ TEST_CASE("ASO on sparse airborne lines: with exact normals at most PSS's error 
   CHECK(aso < 0.05 * mean_abs_h);
 }
 
-TEST_CASE("estimate_oriented_normals: one scan line gives no normal, never a sideways one, and quadric normals on two or three lines")
+TEST_CASE("estimate_oriented_normals: one scan line gives no normal, never a sideways one, and quadric normals on two "
+          "or three lines")
 {
   // Airborne lines 40 times farther apart than the spacing along a line: the 40 nearest of
   // every point lie on its own line, where any normal about the line would fit.
@@ -1908,7 +1996,7 @@ TEST_CASE("estimate_oriented_normals: one scan line gives no normal, never a sid
     measured("one scan line per neighbourhood: points without a normal (of " + std::to_string(pts.size()) + ")",
              double(without));
     CHECK(without > 0.99 * double(pts.size()));  // measured 1680 and 1673 of 1680
-    CHECK(worst < 1.0);  // the few with a normal see two lines
+    CHECK(worst < 1.0);                          // the few with a normal see two lines
     // 200 neighbours reach the next lines: every normal, and right
     const std::size_t without_200 = CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
       pts, PSC::parameters::neighbor_count(200, PSC::parameters::normal_fit(fit, pair_maps)));
@@ -1964,9 +2052,9 @@ TEST_CASE("estimate_oriented_normals: one scan line gives no normal, never a sid
            double(without));
   measured("noisy mobile profiles: share > 60 deg", share_off(automatic, 60));
   measured("noisy mobile profiles: share > 20 deg", share_off(automatic, 20));
-  CHECK(without <= profiles.size() / 1000);      // measured 1 of 19496
-  CHECK(share_off(automatic, 60) < 0.002);  // measured 0.02%
-  CHECK(share_off(automatic, 20) < 0.02);   // measured 0.82%
+  CHECK(without <= profiles.size() / 1000);  // measured 1 of 19496
+  CHECK(share_off(automatic, 60) < 0.002);   // measured 0.02%
+  CHECK(share_off(automatic, 20) < 0.02);    // measured 0.82%
   // (with a fixed count of 40 the frame alone does not do: 8% of the normals more than 60
   // degrees off; the fit has too little weight across the line. Not asserted: the default is
   // the automatic scale)
@@ -1976,8 +2064,8 @@ TEST_CASE("estimate_oriented_normals: one scan line gives no normal, never a sid
   // noise from a nearest half along one line (the simulated mobile scan of scan_experiments at
   // noise 0.3: mean |H - H*| 0.048 -> 0.021, APSS at 40 0.029)
   const std::vector<Estimate> e = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
-    automatic,
-    PSC::parameters::neighbor_count(40, PSC::parameters::automatic_scale(640, PSC::parameters::position_fit_blend(0.5, pair_maps))));
+    automatic, PSC::parameters::neighbor_count(
+                 40, PSC::parameters::automatic_scale(640, PSC::parameters::position_fit_blend(0.5, pair_maps))));
   const double error = mean_h_error(e, profiles);  // (99.99% valid)
   measured("noisy mobile profiles, default curvatures: mean |H - H*|", error);
   CHECK(error < 0.067);  // measured 0.0615 (0.0732 before)
@@ -2037,9 +2125,9 @@ TEST_CASE("estimate_oriented_normals: closed objects outward, open ones up, auto
   CHECK(!PSC::is_two_and_a_half_d(59, 100));
   CHECK(PSC::is_two_and_a_half_d(60, 100));
   CHECK_THROWS_AS(CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
-                    up, PSC::parameters::normal_orientation(CGAL::Normal_orientation::automatic(),
-                                                            PSC::parameters::tile(PSC::Tile(CGAL::Bbox_3(0, 0, 0, 1, 1, 1), 1),
-                                                                                  pair_maps))),
+                    up, PSC::parameters::normal_orientation(
+                          CGAL::Normal_orientation::automatic(),
+                          PSC::parameters::tile(PSC::Tile(CGAL::Bbox_3(0, 0, 0, 1, 1, 1), 1), pair_maps))),
                   std::invalid_argument);
 }
 
@@ -2062,7 +2150,7 @@ struct Flat_part
   Vector normal(std::size_t i) const { return Vector(n[3 * i], n[3 * i + 1], n[3 * i + 2]); }
 };
 
-} // namespace
+}  // namespace
 
 // Issue 44 item 1: a real tile (ground, roofs, walls, no pulses) came out with every ground normal
 // down: the spanning tree had turned the ground against the roofs, which made one part whose
@@ -2146,7 +2234,7 @@ struct Sphere_graph
   }
 };
 
-} // namespace
+}  // namespace
 
 // Issue 44 item 2: pieces of a closed part that the tree entered across a thin part or a sharp
 // turn are turned back by the winding number of the rest, and the small ones by their neighbours
@@ -2250,7 +2338,7 @@ std::vector<Oriented_point> thin_plate(std::size_t n, double t, unsigned seed)
   return pts;
 }
 
-} // namespace
+}  // namespace
 
 // Issue 44 item 2: on a thin part the spanning tree reaches the far sheet round a knife-edge
 // rim (its radius of curvature t^2 far below the spacing, the normals there the mid-plane's),
@@ -2341,10 +2429,9 @@ TEST_CASE("tool: SIGINT during a long run exits 130, SIGTERM 143, and neither le
     // (\$: expanded by bash -c, not by the shell of std::system)
     const std::string kill = "kill -" + c.signal + " \\$pid";
     const std::string kills = c.signals == 1 ? kill : kill + "; " + kill;
-    const std::string script = std::string("'") + PSC_TOOL_PATH + "' '" + file("slow.xyz") + "' '" +
-                               file("slow.ply") + "' --radius 3 --quiet 2> '" + file("slow.err") +
-                               "' & pid=\\$!; sleep 1; " + kills + "; wait \\$pid; echo \\$? > '" +
-                               file("slow.status") + "'";
+    const std::string script = std::string("'") + PSC_TOOL_PATH + "' '" + file("slow.xyz") + "' '" + file("slow.ply") +
+                               "' --radius 3 --quiet 2> '" + file("slow.err") + "' & pid=\\$!; sleep 1; " + kills +
+                               "; wait \\$pid; echo \\$? > '" + file("slow.status") + "'";
     REQUIRE(std::system(("bash -c \"" + script + "\"").c_str()) == 0);
     CHECK(std::atoi(read_text(file("slow.status")).c_str()) == c.status);
     CHECK(!fs::exists(file("slow.ply")));
@@ -2358,7 +2445,8 @@ TEST_CASE("tool: SIGINT during a long run exits 130, SIGTERM 143, and neither le
 }
 
 // Review findings: formats some writers produce are read, not refused.
-TEST_CASE("tool: readers accept trailing comments, a count before a header, OFF counts on the first line, a line break after binary PLY data, out-of-range numbers")
+TEST_CASE("tool: readers accept trailing comments, a count before a header, OFF counts on the first line, a line break "
+          "after binary PLY data, out-of-range numbers")
 {
   const std::vector<Oriented_point> pts = sphere(500, 1.0);
   write_xyz(file("ref.xyz"), pts);
@@ -2374,8 +2462,8 @@ TEST_CASE("tool: readers accept trailing comments, a count before a header, OFF 
     const std::string row = [&] {
       std::ostringstream r;
       r.precision(17);
-      r << p.first.x() << " " << p.first.y() << " " << p.first.z() << " " << p.second.x() << " " << p.second.y()
-        << " " << p.second.z();
+      r << p.first.x() << " " << p.first.y() << " " << p.first.z() << " " << p.second.x() << " " << p.second.y() << " "
+        << p.second.z();
       return r.str();
     }();
     commented << row << "  # a comment\n";
@@ -2400,7 +2488,8 @@ TEST_CASE("tool: readers accept trailing comments, a count before a header, OFF 
   CHECK(nl.status == 0);
   // 1e400 is infinite (a non-finite point), 1e-400 is 0
   write_text(file("range.xyz"), "1e400 0 0\n1e-400 0 0\n");
-  const Run range = run_tool(q(file("range.xyz")) + " " + q(file("range.csv")) + " --radius 1 --min-neighbors 1 --quiet");
+  const Run range =
+    run_tool(q(file("range.xyz")) + " " + q(file("range.csv")) + " --radius 1 --min-neighbors 1 --quiet");
   CHECK(range.status == 3);  // read: no estimate is possible (one finite point), said with exit status 3
   CHECK(fs::exists(file("range.csv")));
 }
@@ -2409,7 +2498,8 @@ TEST_CASE("tool: readers accept trailing comments, a count before a header, OFF 
 // PLY, 19 identical points without normals (once a crash), neighbor_count(SIZE_MAX).
 TEST_CASE("tool and library: BOM, integer PLY coordinates, identical points, neighbor_count(SIZE_MAX)")
 {
-  write_text(file("bom.xyz"), "\xEF\xBB\xBF" "0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n");
+  write_text(file("bom.xyz"), "\xEF\xBB\xBF"
+                              "0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n");
   CHECK(run_tool(q(file("bom.xyz")) + " " + q(file("bom.csv")) + " --quiet --min-neighbors 3").status == 0);
   write_text(file("int.ply"), "ply\nformat ascii 1.0\nelement vertex 3\nproperty int x\nproperty float y\n"
                               "property double z\nend_header\n0 0 0\n1 0 0\n0 1 0\n");
@@ -2449,7 +2539,7 @@ std::vector<std::array<double, 3> > write_las(const std::string& path, const std
   return quantised;
 }
 
-} // namespace
+}  // namespace
 
 TEST_CASE("tool: LAS 1.0-1.4 point formats 0-10 with their fields as attributes, refused and suspicious LAS files")
 {
@@ -2472,7 +2562,8 @@ TEST_CASE("tool: LAS 1.0-1.4 point formats 0-10 with their fields as attributes,
   {
     const int format = version.first, minor = version.second;
     INFO("point format " << format << ", LAS 1." << minor);
-    const std::string las = file("f" + std::to_string(format) + (minor < 2 ? "_1" + std::to_string(minor) : "") + ".las"),
+    const std::string las =
+                        file("f" + std::to_string(format) + (minor < 2 ? "_1" + std::to_string(minor) : "") + ".las"),
                       out = file("f.ply");
     const auto quantised = write_las(las, pts, format, minor, 0.001, offset, format == 8 ? 5 : 0);
     const Run r = run_tool(q(las) + " " + q(out) + " --radius 0.5" + viewpoint);
@@ -2614,7 +2705,8 @@ TEST_CASE("tool: LAS 1.0-1.4 point formats 0-10 with their fields as attributes,
     for(const char* limit : {"", " --memory-limit 400K"})
     {
       INFO("oriented.xyz --orient scanner" << limit);
-      const Run r = run_tool(q(file("oriented.xyz")) + " " + q(file("o.ply")) + " --radius 0.2 --orient scanner" + limit);
+      const Run r =
+        run_tool(q(file("oriented.xyz")) + " " + q(file("o.ply")) + " --radius 0.2 --orient scanner" + limit);
       CHECK(r.status == 0);
       CHECK(r.out.find("valid       3000 (100.00 %)") != std::string::npos);
     }
@@ -2704,14 +2796,16 @@ std::string las_with_extra_bytes(const std::vector<Oriented_point>& pts, const d
     set_le<std::int16_t>(in, r + 4, std::int16_t(int(i % 2000) - 1000));
     set_le<std::uint16_t>(in, r + 6, std::uint16_t(i * 7));
   }
-  const std::string descriptors = descriptor(9, "Amplitude") + descriptor(4, "Reflectance", 8, 0.01, 0, "reflectance dB") +
+  const std::string descriptors = descriptor(9, "Amplitude") +
+                                  descriptor(4, "Reflectance", 8, 0.01, 0, "reflectance dB") +
                                   descriptor(3, "Deviation");
   return with_vlrs(in, {vlr("LASF_Projection", 34735, geokeys(1)), vlr("LASF_Spec", 4, descriptors)});
 }
 
-} // namespace
+}  // namespace
 
-TEST_CASE("tool: LAS output is LAS 1.4 with the estimates as extra bytes, per an independent reader of the specification, tiles give the same bytes, read back")
+TEST_CASE("tool: LAS output is LAS 1.4 with the estimates as extra bytes, per an independent reader of the "
+          "specification, tiles give the same bytes, read back")
 {
   using namespace psc_las_test;
   ::setenv("SOURCE_DATE_EPOCH", "1700000000", 1);  // 2023-11-14, day 318: reproducible headers
@@ -2765,9 +2859,10 @@ TEST_CASE("tool: LAS output is LAS 1.4 with the estimates as extra bytes, per an
   CHECK(l.vlrs[0].payload == geokeys(1));
   CHECK(l.vlrs[1].user_id == "LASF_Spec");
   CHECK(l.vlrs[1].record_id == 4);
-  const std::vector<std::string> names = {"nx", "ny", "nz", "k_min", "k_max", "mean", "gaussian", "dmin_x", "dmin_y",
-                                          "dmin_z", "dmax_x", "dmax_y", "dmax_z", "normal_coherence", "neighbors",
-                                          "valid", "Amplitude", "Reflectance", "Deviation"};
+  const std::vector<std::string> names = {
+    "nx",        "ny",     "nz",        "k_min",       "k_max",    "mean",   "gaussian",
+    "dmin_x",    "dmin_y", "dmin_z",    "dmax_x",      "dmax_y",   "dmax_z", "normal_coherence",
+    "neighbors", "valid",  "Amplitude", "Reflectance", "Deviation"};
   REQUIRE(l.descriptors.size() == names.size());
   for(std::size_t k = 0; k < names.size(); ++k)
   {
@@ -2828,7 +2923,8 @@ TEST_CASE("tool: LAS output is LAS 1.4 with the estimates as extra bytes, per an
   CHECK(worst_h < 0.05);
 
   // in tiles: the same bytes
-  const Run tiled = run_tool(q(file("eb.las")) + " " + q(file("eb_tiled.las")) + " --radius 0.5 --orient +z --memory-limit 1200K");
+  const Run tiled =
+    run_tool(q(file("eb.las")) + " " + q(file("eb_tiled.las")) + " --radius 0.5 --orient +z --memory-limit 1200K");
   const Run whole = run_tool(q(file("eb.las")) + " " + q(file("eb_whole.las")) + " --radius 0.5 --orient +z");
   REQUIRE(tiled.status == 0);
   REQUIRE(whole.status == 0);
@@ -2836,7 +2932,9 @@ TEST_CASE("tool: LAS output is LAS 1.4 with the estimates as extra bytes, per an
   CHECK(read_text(file("eb_tiled.las")) == read_text(file("eb_whole.las")));
 
   // --float: float32 estimates with a NaN no_data (a double, as the specification upcasts floats)
-  REQUIRE(run_tool(q(file("eb.las")) + " " + q(file("eb_float.las")) + " --radius 0.5 --float --quiet" + viewpoint).status == 0);
+  REQUIRE(
+    run_tool(q(file("eb.las")) + " " + q(file("eb_float.las")) + " --radius 0.5 --float --quiet" + viewpoint).status ==
+    0);
   const Las f = read_las_1_4(read_text(file("eb_float.las")));
   REQUIRE(f.descriptors.size() == names.size());
   CHECK(f.descriptors[5].data_type == 9);
@@ -2848,7 +2946,9 @@ TEST_CASE("tool: LAS output is LAS 1.4 with the estimates as extra bytes, per an
   CHECK(le<float>(f.record(7), float_mean_at) == float(le<double>(l.record(7), mean_at)));
 
   // read back by the tool's reader: the estimates and the extra bytes as attributes
-  REQUIRE(run_tool(q(file("eb_out.las")) + " " + q(file("back.csv")) + " --radius 0.5 --fields mean --quiet" + viewpoint).status == 0);
+  REQUIRE(
+    run_tool(q(file("eb_out.las")) + " " + q(file("back.csv")) + " --radius 0.5 --fields mean --quiet" + viewpoint)
+      .status == 0);
   const std::string back = read_text(file("back.csv"));
   const std::vector<double> input_mean = csv_values(back, "input_mean"), amplitude = csv_values(back, "Amplitude"),
                             reflectance = csv_values(back, "Reflectance"), deviation = csv_values(back, "Deviation"),
@@ -2870,7 +2970,9 @@ TEST_CASE("tool: LAS output is LAS 1.4 with the estimates as extra bytes, per an
   for(const Oriented_point& p : sphere(2000, 2.0))
     ball.emplace_back(Point(p.first.x() + 10.5, p.first.y() + 20.5, p.first.z() + 30.5), p.second);
   write_xyz(file("ball.xyz"), ball);
-  REQUIRE(run_tool(q(file("ball.xyz")) + " " + q(file("ball.las")) + " --radius 0.5 --fields mean,valid --quiet").status == 0);
+  REQUIRE(
+    run_tool(q(file("ball.xyz")) + " " + q(file("ball.las")) + " --radius 0.5 --fields mean,valid --quiet").status ==
+    0);
   const Las b = read_las_1_4(read_text(file("ball.las")));
   CHECK(b.format == 6);
   CHECK(b.legacy_count == 0);  // formats 6-10: the legacy counts are 0
@@ -2914,10 +3016,12 @@ TEST_CASE("tool: LAS output is LAS 1.4 with the estimates as extra bytes, per an
     std::ofstream add(file("ball.xyz"), std::ios::app);
     add << "nan 20 30 0 0 1\n";
   }
-  const Run nan_run = run_tool(q(file("ball.xyz")) + " " + q(file("ball_nan.las")) + " --radius 0.5 --fields mean,valid");
+  const Run nan_run =
+    run_tool(q(file("ball.xyz")) + " " + q(file("ball_nan.las")) + " --radius 0.5 --fields mean,valid");
   REQUIRE(nan_run.status == 0);
-  CHECK(nan_run.err.find("1 points with non-finite coordinates are written to the LAS output at its offset, withheld") !=
-        std::string::npos);
+  CHECK(
+    nan_run.err.find("1 points with non-finite coordinates are written to the LAS output at its offset, withheld") !=
+    std::string::npos);
   const Las bn = read_las_1_4(read_text(file("ball_nan.las")));
   REQUIRE(bn.count == ball.size() + 1);
   CHECK((bn.record(ball.size())[15] & 4) == 4);  // withheld (formats 6-10: bit 2 of byte 15)
@@ -2929,7 +3033,9 @@ TEST_CASE("tool: LAS output is LAS 1.4 with the estimates as extra bytes, per an
     CHECK(bn.max[a] == b.max[a]);
   }
   // --drop-attributes: a LAS input's standard fields stay, its extra bytes go
-  REQUIRE(run_tool(q(file("eb.las")) + " " + q(file("eb_drop.las")) + " --radius 0.5 --fields mean --drop-attributes --quiet" + viewpoint).status == 0);
+  REQUIRE(run_tool(q(file("eb.las")) + " " + q(file("eb_drop.las")) +
+                   " --radius 0.5 --fields mean --drop-attributes --quiet" + viewpoint)
+            .status == 0);
   const Las dropped = read_las_1_4(read_text(file("eb_drop.las")));
   REQUIRE(dropped.descriptors.size() == 1);
   CHECK(dropped.descriptors[0].name == "mean");
@@ -2945,7 +3051,8 @@ TEST_CASE("tool: LAS output is LAS 1.4 with the estimates as extra bytes, per an
   set_le<std::uint32_t>(v14, 243, 1);
   v14 += evlr("LASF_Projection", 2112, wkt + std::string(1, '\0'));
   write_text(file("evlr.las"), v14);
-  const Run e = run_tool(q(file("evlr.las")) + " " + q(file("evlr_out.las")) + " --radius 0.5 --fields mean" + viewpoint);
+  const Run e =
+    run_tool(q(file("evlr.las")) + " " + q(file("evlr_out.las")) + " --radius 0.5 --fields mean" + viewpoint);
   INFO(e.err);
   REQUIRE(e.status == 0);
   CHECK(e.err.find("meaningless") == std::string::npos);
@@ -2974,8 +3081,8 @@ TEST_CASE("tool: LAS output is LAS 1.4 with the estimates as extra bytes, per an
     const std::string mine(100, 'x');
     eb += evlr("LASF_Spec", 4, descriptor(9, "Amplitude")) + evlr("MyStuff", 7, mine);
     write_text(file("evlr_eb.las"), eb);
-    const Run r = run_tool(q(file("evlr_eb.las")) + " " + q(file("evlr_eb_out.las")) + " --radius 0.5 --fields mean" +
-                           viewpoint);
+    const Run r =
+      run_tool(q(file("evlr_eb.las")) + " " + q(file("evlr_eb_out.las")) + " --radius 0.5 --fields mean" + viewpoint);
     INFO(r.err);
     REQUIRE(r.status == 0);
     const Las l = read_las_1_4(read_text(file("evlr_eb_out.las")));
@@ -3001,10 +3108,17 @@ TEST_CASE("tool: LAS output is LAS 1.4 with the estimates as extra bytes, per an
       const std::size_t header = le<std::uint16_t>(src, 94);
       if(format == 4 || format == 5 || format == 9 || format == 10)
         for(std::size_t i = 0; i < few.size(); ++i)
-          set_le<std::uint64_t>(src, header + i * standard[format] + (format == 4 ? 28 : format == 5 ? 34 : format == 9 ? 30 : 38) + 1,
+          set_le<std::uint64_t>(src,
+                                header + i * standard[format] +
+                                  (format == 4   ? 28
+                                   : format == 5 ? 34
+                                   : format == 9 ? 30
+                                                 : 38) +
+                                  1,
                                 std::uint64_t(1000 + 256 * i));
       write_text(file("fmt.las"), src);
-      const Run fr = run_tool(q(file("fmt.las")) + " " + q(file("fmt_out.las")) + " --radius 0.5 --fields mean --quiet" + viewpoint);
+      const Run fr =
+        run_tool(q(file("fmt.las")) + " " + q(file("fmt_out.las")) + " --radius 0.5 --fields mean --quiet" + viewpoint);
       INFO(fr.err);
       REQUIRE(fr.status == 0);
       const Las fl = read_las_1_4(read_text(file("fmt_out.las")));
@@ -3013,7 +3127,8 @@ TEST_CASE("tool: LAS output is LAS 1.4 with the estimates as extra bytes, per an
       CHECK(fl.legacy_count == (format <= 5 ? few.size() : 0));
       std::size_t different = 0;
       for(std::size_t i = 0; i < few.size(); ++i)
-        different += fl.record(i).substr(0, standard[format]) != src.substr(header + i * standard[format], standard[format]);
+        different +=
+          fl.record(i).substr(0, standard[format]) != src.substr(header + i * standard[format], standard[format]);
       CHECK(different == 0);
     }
   }
@@ -3029,7 +3144,8 @@ TEST_CASE("tool: LAS output is LAS 1.4 with the estimates as extra bytes, per an
   ::unsetenv("SOURCE_DATE_EPOCH");
 }
 
-TEST_CASE("tool: LAS extra bytes are read in their types (float Amplitude, int16 Reflectance with a scale, uint16 Deviation) and carried to PLY and CSV, deprecated and undocumented ones are warned of")
+TEST_CASE("tool: LAS extra bytes are read in their types (float Amplitude, int16 Reflectance with a scale, uint16 "
+          "Deviation) and carried to PLY and CSV, deprecated and undocumented ones are warned of")
 {
   using namespace psc_las_test;
   const double offset[3] = {1e6, 2e6, 100};
@@ -3058,9 +3174,11 @@ TEST_CASE("tool: LAS extra bytes are read in their types (float Amplitude, int16
     ++i;
   }
   CHECK(wrong == 0);
-  REQUIRE(run_tool(q(file("eb2.las")) + " " + q(file("eb2.csv")) + " --radius 0.5 --orient +z --fields mean --quiet").status == 0);
+  REQUIRE(run_tool(q(file("eb2.las")) + " " + q(file("eb2.csv")) + " --radius 0.5 --orient +z --fields mean --quiet")
+            .status == 0);
   const std::string csv = read_text(file("eb2.csv"));
-  CHECK(csv.substr(0, csv.find('\n')).find(",gps_time,red,green,blue,Amplitude,Reflectance,Deviation") != std::string::npos);
+  CHECK(csv.substr(0, csv.find('\n')).find(",gps_time,red,green,blue,Amplitude,Reflectance,Deviation") !=
+        std::string::npos);
   CHECK(csv_values(csv, "Reflectance")[3] == -9.97);
   CHECK(csv_values(csv, "Deviation")[1499] == 1499 * 7);
 
@@ -3081,7 +3199,8 @@ TEST_CASE("tool: LAS extra bytes are read in their types (float Amplitude, int16
   CHECK(width[1234] == 1234);
 }
 
-TEST_CASE("tool: a geographic LAS (GeoTIFF key, WKT GEOGCS, or x y like degrees) gets one warning naming the reprojection, a projected one none")
+TEST_CASE("tool: a geographic LAS (GeoTIFF key, WKT GEOGCS, or x y like degrees) gets one warning naming the "
+          "reprojection, a projected one none")
 {
   using namespace psc_las_test;
   const double offset[3] = {1e6, 2e6, 100};
@@ -3094,8 +3213,9 @@ TEST_CASE("tool: a geographic LAS (GeoTIFF key, WKT GEOGCS, or x y like degrees)
   std::vector<Oriented_point> terrain;
   for(int u = 0; u < 40; ++u)
     for(int v = 0; v < 40; ++v)
-      terrain.emplace_back(Point(7.1 + 0.00025 * u, 46.2 + 0.00025 * v, 500 + 15 * std::sin(0.2 * u) * std::cos(0.15 * v)),
-                           Vector(0, 0, 1));
+      terrain.emplace_back(
+        Point(7.1 + 0.00025 * u, 46.2 + 0.00025 * v, 500 + 15 * std::sin(0.2 * u) * std::cos(0.15 * v)),
+        Vector(0, 0, 1));
   const double geo_offset[3] = {7, 46, 0};
   const std::pair<std::string, std::string> cases[] = {
     {with_vlrs(base, {vlr("LASF_Projection", 34735, geokeys(2))}), "GTModelTypeGeoKey 1024 = 2"},
@@ -3153,7 +3273,9 @@ TEST_CASE("tool: a truncated LAS is refused, and read to its last complete recor
   REQUIRE(CGAL::IO::read_PLY(file("cut.ply"), ps));
   CHECK(ps.size() == 1064);
   // to LAS: the count written is the points read
-  REQUIRE(run_tool(q(file("cut.las")) + " " + q(file("cut_out.las")) + " --radius 0.5 --orient +z --allow-truncated --quiet").status == 0);
+  REQUIRE(
+    run_tool(q(file("cut.las")) + " " + q(file("cut_out.las")) + " --radius 0.5 --orient +z --allow-truncated --quiet")
+      .status == 0);
   const psc_las_test::Las l = psc_las_test::read_las_1_4(read_text(file("cut_out.las")));
   CHECK(l.count == 1064);
   CHECK(l.legacy_count == 1064);
@@ -3169,14 +3291,15 @@ TEST_CASE("tool: input attributes carried in their types, renamed on a clash, --
       << "\nproperty double x\nproperty double y\nproperty double z\nproperty float nx\nproperty float ny\n"
          "property float nz\nproperty uchar red\nproperty float intensity\nproperty short k_min\nend_header\n";
   for(std::size_t i = 0; i < pts.size(); ++i)
-    ply << pts[i].first.x() << " " << pts[i].first.y() << " " << pts[i].first.z() << " " << pts[i].second.x()
-        << " " << pts[i].second.y() << " " << pts[i].second.z() << " " << i % 256 << " " << 0.5 * double(i) << " "
-        << -int(i) << "\n";
+    ply << pts[i].first.x() << " " << pts[i].first.y() << " " << pts[i].first.z() << " " << pts[i].second.x() << " "
+        << pts[i].second.y() << " " << pts[i].second.z() << " " << i % 256 << " " << 0.5 * double(i) << " " << -int(i)
+        << "\n";
   write_text(file("attr.ply"), ply.str());
-  REQUIRE(run_tool(q(file("attr.ply")) + " " + q(file("attr_out.ply")) + " --radius 0.3 --color mean --quiet").status == 0);
+  REQUIRE(run_tool(q(file("attr.ply")) + " " + q(file("attr_out.ply")) + " --radius 0.3 --color mean --quiet").status ==
+          0);
   Point_set ps;
   REQUIRE(CGAL::IO::read_PLY(file("attr_out.ply"), ps));
-  const auto red_in = property<std::uint8_t>(ps, "input_red");      // red is --color's
+  const auto red_in = property<std::uint8_t>(ps, "input_red");  // red is --color's
   const auto intensity = property<float>(ps, "intensity");
   const auto k_min_in = property<std::int16_t>(ps, "input_k_min");  // k_min is the estimate's
   const auto k_min = property<double>(ps, "k_min");
@@ -3192,7 +3315,8 @@ TEST_CASE("tool: input attributes carried in their types, renamed on a clash, --
   // --fields: x y z and the fields named, in the tool's order; --float: float32 estimates,
   // double positions; CSV the same columns
   REQUIRE(run_tool(q(file("attr.ply")) + " " + q(file("fields.ply")) +
-                   " --radius 0.3 --fields valid,mean,dmin --float --drop-attributes --quiet").status == 0);
+                   " --radius 0.3 --fields valid,mean,dmin --float --drop-attributes --quiet")
+            .status == 0);
   const std::string fields = read_text(file("fields.ply"));
   const std::string header = fields.substr(0, fields.find("end_header"));
   CHECK(header.find("property double x\nproperty double y\nproperty double z\nproperty float mean\n"
@@ -3202,7 +3326,8 @@ TEST_CASE("tool: input attributes carried in their types, renamed on a clash, --
   CHECK(header.find("k_min") == std::string::npos);
   // 3 doubles + 4 floats + 1 byte per point
   CHECK(fields.size() - fields.find("end_header\n") - 11 == pts.size() * (24 + 16 + 1));
-  REQUIRE(run_tool(q(file("attr.ply")) + " " + q(file("fields.csv")) + " --radius 0.3 --fields mean --quiet").status == 0);
+  REQUIRE(run_tool(q(file("attr.ply")) + " " + q(file("fields.csv")) + " --radius 0.3 --fields mean --quiet").status ==
+          0);
   const std::string csv = read_text(file("fields.csv"));
   CHECK(csv.substr(0, csv.find('\n')) == "x,y,z,mean,red,intensity,input_k_min");
   const Run bad = run_tool(q(file("attr.ply")) + " " + q(file("x.ply")) + " --fields mean,curvedness");
@@ -3217,7 +3342,8 @@ TEST_CASE("tool: input attributes carried in their types, renamed on a clash, --
     txt << pts[k].first.x() << " " << pts[k].first.y() << " " << pts[k].first.z() << " " << pts[k].second.x() << " "
         << pts[k].second.y() << " " << pts[k].second.z() << " " << 0.25 * double(k) << " 9\n";
   write_text(file("attr.txt"), txt.str());
-  REQUIRE(run_tool(q(file("attr.txt")) + " " + q(file("attr_txt.csv")) + " --radius 0.3 --fields mean --quiet").status == 0);
+  REQUIRE(
+    run_tool(q(file("attr.txt")) + " " + q(file("attr_txt.csv")) + " --radius 0.3 --fields mean --quiet").status == 0);
   const std::string out = read_text(file("attr_txt.csv"));
   CHECK(out.substr(0, out.find('\n')) == "x,y,z,mean,reflectance");
   CHECK(out.find(",199.75\n") != std::string::npos);  // the last point's reflectance
@@ -3234,9 +3360,9 @@ TEST_CASE("tool: the output's columns are the package's table of fields, in its 
   for(const bool automatic : {false, true})
   {
     INFO("automatic scale " << automatic);
-    REQUIRE(run_tool(q(file("table.xyz")) + " " + q(file("table.csv")) + (automatic ? "" : " --neighbors 40") +
-                     " --quiet")
-              .status == 0);
+    REQUIRE(
+      run_tool(q(file("table.xyz")) + " " + q(file("table.csv")) + (automatic ? "" : " --neighbors 40") + " --quiet")
+        .status == 0);
     std::string expected = "x,y,z";
     for(const PSC::Field_description& f : PSC::field_descriptions)
       if(f.name && (automatic || !f.automatic_scale_only))
@@ -3289,7 +3415,8 @@ TEST_CASE("tool: the output's columns are the package's table of fields, in its 
 // ---------------------------------------------------------------------------------------
 // Inputs larger than --memory-limit: estimated in tiles, bitwise as in memory (issue 12)
 
-TEST_CASE("tool: --memory-limit tiles give the in-memory output bitwise, by radius and by count, PLY CSV and ASCII, attributes, invalid points, colours")
+TEST_CASE("tool: --memory-limit tiles give the in-memory output bitwise, by radius and by count, PLY CSV and ASCII, "
+          "attributes, invalid points, colours")
 {
   // density varying 1:10 (the halo by count differs across the cloud), an attribute, a
   // point far away (too few neighbours), a zero normal, a NaN coordinate
@@ -3301,8 +3428,8 @@ TEST_CASE("tool: --memory-limit tiles give the in-memory output bitwise, by radi
          "property double nz\nproperty ushort intensity\nend_header\n";
   for(std::size_t i = 0; i < pts.size(); ++i)
   {
-    ply << pts[i].first.x() << " " << pts[i].first.y() << " " << pts[i].first.z() << " " << pts[i].second.x()
-        << " " << pts[i].second.y() << " " << pts[i].second.z() << " " << i % 65536 << "\n";
+    ply << pts[i].first.x() << " " << pts[i].first.y() << " " << pts[i].first.z() << " " << pts[i].second.x() << " "
+        << pts[i].second.y() << " " << pts[i].second.z() << " " << i % 65536 << "\n";
     if(i == 1000)
       ply << "40 40 40 0 0 1 7\n";
     if(i == 2000)
@@ -3318,10 +3445,10 @@ TEST_CASE("tool: --memory-limit tiles give the in-memory output bitwise, by radi
     std::string options, output;
   };
   const Case cases[] = {
-    {"--radius 0.12 --color mean", "r.ply"},                           // robust ASO, sample weights
+    {"--radius 0.12 --color mean", "r.ply"},  // robust ASO, sample weights
     {"--radius 0.12 --method apss --ascii", "apss.ply"},
     {"--neighbors 30 --variant paper --fields mean,k_min,valid --float", "k.ply"},
-    {"--neighbors 30 --color gaussian", "kw.ply"},                      // robust ASO by count
+    {"--neighbors 30 --color gaussian", "kw.ply"},  // robust ASO by count
     {"--neighbors 20 --method apss --color k_max", "k.csv"},
   };
   for(const Case& c : cases)
@@ -3385,7 +3512,8 @@ TEST_CASE("tool: --memory-limit tiles give the in-memory output bitwise, by radi
     INFO(scale);
     const std::string options = " " + scale + " --orient +z --normal-neighbors 12 --fields normal,mean,valid";
     const Run memory = run_tool(q(file("no_normals.xyz")) + " " + q(file("nn_memory.ply")) + options);
-    const Run tiled = run_tool(q(file("no_normals.xyz")) + " " + q(file("nn_tiled.ply")) + options + " --memory-limit 300K");
+    const Run tiled =
+      run_tool(q(file("no_normals.xyz")) + " " + q(file("nn_tiled.ply")) + options + " --memory-limit 300K");
     REQUIRE(memory.status == 0);
     REQUIRE(tiled.status == 0);
     CHECK(tiled.out.find("  tiles") != std::string::npos);
@@ -3402,7 +3530,8 @@ TEST_CASE("tool: --memory-limit tiles give the in-memory output bitwise, by radi
   {
     const std::string options = " --normal-neighbors 12 --fields normal,mean,valid,neighbors";
     const Run memory = run_tool(q(file("no_normals.xyz")) + " " + q(file("mst_memory.ply")) + options);
-    const Run tiled = run_tool(q(file("no_normals.xyz")) + " " + q(file("mst_tiled.ply")) + options + " --memory-limit 2900K");
+    const Run tiled =
+      run_tool(q(file("no_normals.xyz")) + " " + q(file("mst_tiled.ply")) + options + " --memory-limit 2900K");
     REQUIRE(memory.status == 0);
     REQUIRE(tiled.status == 0);
     INFO(tiled.out);
@@ -3469,7 +3598,8 @@ std::string same_whole_and_tiled(const std::string& input, const std::string& op
     INFO("--memory-limit " << limit);
     const std::string tiled_output = file("tiled" + extension);
     fs::remove(tiled_output);
-    const Run tiled = run_tool_within(120, q(input) + " " + q(tiled_output) + " " + options + " --memory-limit " + limit);
+    const Run tiled =
+      run_tool_within(120, q(input) + " " + q(tiled_output) + " " + options + " --memory-limit " + limit);
     INFO(tiled.err);
     CHECK(tiled.status == status);
     CHECK(tiled.out.find("  tiles") != std::string::npos);
@@ -3478,7 +3608,7 @@ std::string same_whole_and_tiled(const std::string& input, const std::string& op
   return expected;
 }
 
-} // namespace
+}  // namespace
 
 // Two real airborne tiles without normals (data/real, PDAL's test data): the default pipeline
 // orients them upwards because they are 2.5-D, gives every ground normal up and a valid estimate
@@ -3596,7 +3726,8 @@ TEST_CASE("tool: the default tiles a real LAS file without normals, bitwise as i
 // neighbourhood asks for. The whole run gives every point all the others; the tiled run
 // failed with "internal error: the tile's halo inf is too small ...; a halo of inf suffices"
 // (exit 1), or with a finite halo said too small and sufficient at once.
-TEST_CASE("tool: tiles of clouds smaller than a neighbourhood give the whole run's bytes (3 and 39 points, 60 LAS points with normals from 200 neighbours, pairs on a line)")
+TEST_CASE("tool: tiles of clouds smaller than a neighbourhood give the whole run's bytes (3 and 39 points, 60 LAS "
+          "points with normals from 200 neighbours, pairs on a line)")
 {
   for(std::size_t n : {std::size_t(3), std::size_t(39)})
   {
@@ -3615,8 +3746,8 @@ TEST_CASE("tool: tiles of clouds smaller than a neighbourhood give the whole run
     INFO("60 LAS points without normals, --orient scanner --normal-neighbors 200");
     const double offset[3] = {0, 0, 0}, scanner[3] = {0, 0, 0};
     write_las(file("few.las"), sphere(60, 1.0), 4, 3, 0.001, offset, 0, scanner);
-    const std::string csv = same_whole_and_tiled(file("few.las"), "--orient scanner --normal-neighbors 200 --drop-attributes",
-                                                 {"1K", "4K"}, ".csv");
+    const std::string csv = same_whole_and_tiled(
+      file("few.las"), "--orient scanner --normal-neighbors 200 --drop-attributes", {"1K", "4K"}, ".csv");
     // (every normal is the fit of the whole sphere: meaningless, but the same) 40 neighbours
     const std::vector<std::string> neighbors = csv_column(csv, "neighbors");
     REQUIRE(neighbors.size() == 60);
@@ -3634,8 +3765,8 @@ TEST_CASE("tool: tiles of clouds smaller than a neighbourhood give the whole run
       line.emplace_back(Point(2.0 * (i / 2), 0, 0), Vector(0, 0, 1));
     const double offset[3] = {0, 0, 0};
     write_las(file("line.las"), line, 0, 2, 0.001, offset);
-    const std::string csv = same_whole_and_tiled(file("line.las"), "--method jet --radius 0.3 --orient +z --drop-attributes",
-                                                 {"1K", "2K"}, ".csv", 3);
+    const std::string csv = same_whole_and_tiled(
+      file("line.las"), "--method jet --radius 0.3 --orient +z --drop-attributes", {"1K", "2K"}, ".csv", 3);
     const std::vector<std::string> valid = csv_column(csv, "valid");
     CHECK(std::count(valid.begin(), valid.end(), "0") == 24);
   }
@@ -3644,7 +3775,8 @@ TEST_CASE("tool: tiles of clouds smaller than a neighbourhood give the whole run
 // Class 2 of issue 30: coordinates whose extent overflows a double. The tiled run hung (the
 // tile grid's side stayed infinite; SIGTERM did not end it); now it tiles with arithmetic
 // that cannot overflow and gives the whole run's bytes.
-TEST_CASE("tool: clouds whose extent overflows a double are tiled as the whole run (points at -1e308 and 1e308 in .xyz .ply .off, a LAS X scale of 1.5e304)")
+TEST_CASE("tool: clouds whose extent overflows a double are tiled as the whole run (points at -1e308 and 1e308 in .xyz "
+          ".ply .off, a LAS X scale of 1.5e304)")
 {
   std::vector<Oriented_point> pts = sphere(80, 1.0);
   pts.insert(pts.begin() + 30, Oriented_point(Point(-1e308, 0, 0), Vector(0, 0, 1)));
@@ -3700,8 +3832,8 @@ TEST_CASE("tool: clouds whose extent overflows a double are tiled as the whole r
     put_le<double>(las, 131, 1.5e304);
     write_text(file("xscale.las"), las);
     // (no valid estimate: exit status 3 in both runs)
-    const std::string csv = same_whole_and_tiled(file("xscale.las"), "--orient +z --drop-attributes --fields mean,valid",
-                                                 {"2K"}, ".csv", 3);
+    const std::string csv =
+      same_whole_and_tiled(file("xscale.las"), "--orient +z --drop-attributes --fields mean,valid", {"2K"}, ".csv", 3);
     const std::vector<std::string> x = csv_column(csv, "x"), valid = csv_column(csv, "valid");
     REQUIRE(x.size() == 80);
     const auto [lo, hi] = std::minmax_element(x.begin(), x.end(), [](const std::string& a, const std::string& b) {
@@ -3716,7 +3848,8 @@ TEST_CASE("tool: clouds whose extent overflows a double are tiled as the whole r
 // of its visible sets by vertex address): two runs with --threads 1 differed in the last bits
 // in 78 of 80 rows, one result of three at random. Its cells are now computed from data
 // alone: every run, sequential or parallel, gives the same bytes. VCM's tiles stay refused.
-TEST_CASE("tool: VCM gives the same bytes in every run, sequential and parallel, by radius and by count, and tiled VCM is refused")
+TEST_CASE("tool: VCM gives the same bytes in every run, sequential and parallel, by radius and by count, and tiled VCM "
+          "is refused")
 {
   write_xyz(file("vcm.xyz"), sphere(80, 1.0));
   for(const std::string scale : {"--radius 1.2", "--neighbors 20"})
@@ -3739,7 +3872,8 @@ TEST_CASE("tool: VCM gives the same bytes in every run, sequential and parallel,
       CHECK(bytes == first);
     }
   }
-  const Run tiled = run_tool_within(60, q(file("vcm.xyz")) + " " + q(file("vcm.ply")) + " --method vcm --memory-limit 2K");
+  const Run tiled =
+    run_tool_within(60, q(file("vcm.xyz")) + " " + q(file("vcm.ply")) + " --method vcm --memory-limit 2K");
   CHECK(tiled.status == 2);
   CHECK(std::count(tiled.err.begin(), tiled.err.end(), '\n') == 1);
   CHECK(tiled.err.find("--method vcm needs the whole cloud") != std::string::npos);
@@ -3769,7 +3903,8 @@ TEST_CASE("tool: SIGINT and SIGTERM stop every phase of a tiled run, with and wi
     {"phases.xyz", "--memory-limit 60K --neighbors 30", "tile *curvatures#9"},
     {"phases.xyz", "--memory-limit 60K --radius 0.25", "tile *curvatures#20"},
     {"phases.xyz", "--memory-limit 60K --radius 0.25", "writing"},
-    {"phases_nn.xyz", "--memory-limit 250K --orient +z --neighbors 40", "tile *curvatures#3"},  // the normals, then the curvatures
+    {"phases_nn.xyz", "--memory-limit 250K --orient +z --neighbors 40",
+     "tile *curvatures#3"},  // the normals, then the curvatures
     {"phases_nn.xyz", "--memory-limit 250K --orient +z --radius 0.25", "writing"},
   };
   for(const Case& c : cases)
@@ -3811,8 +3946,8 @@ TEST_CASE("tool: SIGTERM during a long tiled run exits 143 and leaves no file")
   const std::string script = std::string("'") + PSC_TOOL_PATH + "' '" + file("long.xyz") + "' '" + file("long.ply") +
                              "' --radius 3 --memory-limit 2M --quiet 2> '" + file("long.err") +
                              "' & pid=\\$!; (sleep 300; kill -KILL \\$pid) > /dev/null 2>&1 & dog=\\$!; sleep 1; "
-                             "kill -TERM \\$pid; wait \\$pid; echo \\$? > '" + file("long.status") +
-                             "'; kill \\$dog 2> /dev/null; true";
+                             "kill -TERM \\$pid; wait \\$pid; echo \\$? > '" +
+                             file("long.status") + "'; kill \\$dog 2> /dev/null; true";
   REQUIRE(std::system(("bash -c \"" + script + "\"").c_str()) == 0);
   CHECK(std::atoi(read_text(file("long.status")).c_str()) == 143);
   CHECK(read_text(file("long.err")).find("interrupted (") != std::string::npos);
@@ -3837,7 +3972,7 @@ TEST_CASE("tool: the fraction of a pass over the tiles follows the time the tile
   CHECK(pass.at(0.5) == Approx(0.5 / (0.5 + 0.5 * 1 + prior + 3 * 1)));  // (the estimations: `prior` reads in all)
   now = 1;
   pass.begin_estimation(0);
-  now = 1.5;  // its first report after 0.5 s of set-up
+  now = 1.5;                                     // its first report after 0.5 s of set-up
   CHECK(pass.at(0.0) >= 0.5 / (1 + prior + 3));  // (never less than reported)
   now = 5.5;  // a tenth in 4 s: 40 s the whole from its first report, 40.5 s the tile's estimation
   pass.at(0.1);
@@ -3884,7 +4019,7 @@ TEST_CASE("tool: the progress line shows the elapsed time, an ETA once a fractio
   CHECK(progress_line("curvatures", 0.25, 10.0).find("ETA 30 s") != std::string::npos);
   CHECK(progress_line("curvatures", 0.5, 150.0).find("ETA 2 min 30 s") != std::string::npos);
   CHECK(progress_line("curvatures", 0.01, 100.0).find("ETA 2 h 45 min") != std::string::npos);  // 9900 s
-  CHECK(progress_line("curvatures", 0.5, 0.5).find("ETA") == std::string::npos);  // under a second: no guess
+  CHECK(progress_line("curvatures", 0.5, 0.5).find("ETA") == std::string::npos);   // under a second: no guess
   CHECK(progress_line("curvatures", 1.0, 20.0).find("ETA") == std::string::npos);  // done
   CHECK(progress_line("curvatures", std::nan(""), 3.0).find("  0%") != std::string::npos);
   CHECK(psc_tool::eta_text(59.6) == "1 min 00 s");
@@ -3912,7 +4047,8 @@ TEST_CASE("tool: the progress line shows the elapsed time, an ETA once a fractio
 // unlinked at once). One killed while writing leaves ".OUTPUT.tmp-PID-XXXXXX", which the next
 // run writing OUTPUT removes, with a note, as it does those of earlier versions
 // (".OUTPUT.tmp-XXXXXX"), never those of a run still going (its PID alive).
-TEST_CASE("tool: a run killed while computing leaves no temporary file, and the next run removes a killed run's with a note")
+TEST_CASE(
+  "tool: a run killed while computing leaves no temporary file, and the next run removes a killed run's with a note")
 {
   write_xyz(file("killed.xyz"), sphere(2000, 1.0));
   write_xyz(file("killed_nn.xyz"), sphere(2000, 1.0), false);
@@ -3941,13 +4077,13 @@ TEST_CASE("tool: a run killed while computing leaves no temporary file, and the 
   CHECK(w.status == 137);
   CHECK(files_starting_with(".killed.ply.tmp-") == 1);
   // planted: a run of an earlier version, and killed ones (a PID above Linux's largest)
-  for(const std::string name : {".killed.ply.tmp-AbC123", ".killed.ply.tmp-4194305-xYz789",
-                                ".killed.ply.tmp-4194305-tile3-aBcDeF"})
+  for(const std::string name :
+      {".killed.ply.tmp-AbC123", ".killed.ply.tmp-4194305-xYz789", ".killed.ply.tmp-4194305-tile3-aBcDeF"})
     write_text(file(name), "partial");
   // kept: a run still going (this process), other names
   const std::string running = ".killed.ply.tmp-" + std::to_string(::getpid()) + "-kEePmE";
-  for(const std::string& name : {running, std::string(".killed.ply.tmp-notes.txt"), std::string(".other.ply.tmp-AbC123"),
-                                 std::string("killed.ply.tmp-AbC123")})
+  for(const std::string& name : {running, std::string(".killed.ply.tmp-notes.txt"),
+                                 std::string(".other.ply.tmp-AbC123"), std::string("killed.ply.tmp-AbC123")})
     write_text(file(name), "keep");
   const Run next = run_tool(q(file("killed.xyz")) + " " + q(file("killed.ply")) + " --radius 0.3");
   INFO(next.err);
@@ -3964,8 +4100,8 @@ TEST_CASE("tool: a run killed while computing leaves no temporary file, and the 
   const Run again = run_tool(q(file("killed.xyz")) + " " + q(file("killed.ply")) + " --radius 0.3");
   CHECK(again.status == 0);
   CHECK(again.err.find("note:") == std::string::npos);
-  for(const std::string& name : {running, std::string(".killed.ply.tmp-notes.txt"), std::string(".other.ply.tmp-AbC123"),
-                                 std::string("killed.ply.tmp-AbC123")})
+  for(const std::string& name : {running, std::string(".killed.ply.tmp-notes.txt"),
+                                 std::string(".other.ply.tmp-AbC123"), std::string("killed.ply.tmp-AbC123")})
     fs::remove(file(name));
 }
 
@@ -3973,7 +4109,8 @@ TEST_CASE("tool: a run killed while computing leaves no temporary file, and the 
 // SIGKILL hook at the estimation's start would kill a run that reached it), with one line:
 // a directory, a folder that does not exist or is a file, more than the file size limit
 // (ulimit -f: the reservation of the output's size fails with EFBIG); a full disk below.
-TEST_CASE("tool: an OUTPUT that is a directory, in a missing folder or over the file size limit fails before the estimation")
+TEST_CASE(
+  "tool: an OUTPUT that is a directory, in a missing folder or over the file size limit fails before the estimation")
 {
   write_xyz(file("early.xyz"), sphere(2000, 1.0));
   const std::string kill = "PSC_TOOL_TEST_SIGNAL='KILL@curvatures'";
@@ -3989,19 +4126,21 @@ TEST_CASE("tool: an OUTPUT that is a directory, in a missing folder or over the 
   fs::create_directories(file("dir.ply"));
   refused(file("dir.ply"), "", "is a directory: give a file name, such as");
   CHECK(fs::is_empty(file("dir.ply")));
-  refused(file("missing/sub/out.ply"), "", "its folder '" + file("missing/sub") + "' does not exist (create it with mkdir -p");
+  refused(file("missing/sub/out.ply"), "",
+          "its folder '" + file("missing/sub") + "' does not exist (create it with mkdir -p");
   CHECK(!fs::exists(file("missing")));
   refused(file("early.xyz/out.ply"), "", "is not a directory; choose another OUTPUT");
   // 277 KB of binary PLY, 860 KB of CSV at most, over a limit of 64 blocks (32 or 64 KB)
-  refused(file("early.ply"), "ulimit -f 64;", "more than the largest file allowed (the shell's file size limit, ulimit -f");
+  refused(file("early.ply"), "ulimit -f 64;",
+          "more than the largest file allowed (the shell's file size limit, ulimit -f");
   refused(file("early.csv"), "ulimit -f 64;", "more than the largest file allowed");
   CHECK(!fs::exists(file("early.ply")));
   // within the limit: the reservation, larger than a CSV written, is cut to the bytes written
   for(const std::string ext : {".ply", ".csv"})
   {
     const Run free_run = run_tool(q(file("early.xyz")) + " " + q(file("early_free" + ext)) + " --radius 0.3");
-    const Run limited = run_tool_within(60, q(file("early.xyz")) + " " + q(file("early" + ext)) + " --radius 0.3",
-                                        "ulimit -f 100000;");
+    const Run limited =
+      run_tool_within(60, q(file("early.xyz")) + " " + q(file("early" + ext)) + " --radius 0.3", "ulimit -f 100000;");
     REQUIRE(free_run.status == 0);
     REQUIRE(limited.status == 0);
     const std::string expected = read_text(file("early_free" + ext));
@@ -4025,12 +4164,14 @@ TEST_CASE("tool: an OUTPUT on a full disk fails before the estimation, naming th
   const std::string kill = "PSC_TOOL_TEST_SIGNAL='KILL@curvatures'";
   const std::string script = mount + " && " + kill + " '" + PSC_TOOL_PATH + "' '" + file("full.xyz") + "' '" +
                              file("tiny/early.ply") + "' --radius 0.3 2> '" + file("tiny.err") + "'; echo \\$? > '" +
-                             file("tiny.status") + "'; ls -a '" + file("tiny") + "' | wc -l > '" + file("tiny.files") + "'";
+                             file("tiny.status") + "'; ls -a '" + file("tiny") + "' | wc -l > '" + file("tiny.files") +
+                             "'";
   REQUIRE(std::system(("unshare -rm sh -c \"" + script + "\"").c_str()) == 0);
   const std::string err = read_text(file("tiny.err"));
   INFO(err);
   CHECK(std::atoi(read_text(file("tiny.status")).c_str()) == 2);
-  CHECK(err.find("not enough space for output '" + file("tiny/early.ply") + "': it needs up to 277.0 KB (binary PLY "
+  CHECK(err.find("not enough space for output '" + file("tiny/early.ply") +
+                 "': it needs up to 277.0 KB (binary PLY "
                  "of 2000 points, 19 fields), the file system holding it has 128.0 KB free") != std::string::npos);
   CHECK(std::count(err.begin(), err.end(), '\n') == 1);
   CHECK(std::atoi(read_text(file("tiny.files")).c_str()) == 2);  // . and ..: nothing left
@@ -4045,7 +4186,8 @@ TEST_CASE("tool: a --memory-limit making hundreds of tiles or above the RAM is w
   // a plane, as smaller tiles keep lowering the most points a tile reads: on a sphere of 1000
   // points, where they soon stop, the tiles are fewer than 500)
   write_xyz(file("limits.xyz"), plane(45, 0.2));
-  const Run tiny = run_tool_within(120, q(file("limits.xyz")) + " " + q(file("limits.ply")) + " --memory-limit 1K --neighbors 40");
+  const Run tiny =
+    run_tool_within(120, q(file("limits.xyz")) + " " + q(file("limits.ply")) + " --memory-limit 1K --neighbors 40");
   INFO(tiny.err);
   REQUIRE(tiny.status == 0);
   const std::size_t at = tiny.err.find("warning: --memory-limit 1.0 KB makes ");
@@ -4063,14 +4205,15 @@ TEST_CASE("tool: a --memory-limit making hundreds of tiles or above the RAM is w
   // back through buffers within the limit (a file per tile held a 1 MB buffer each: 750 MB
   // here; 10 MB now). Not under the sanitizers (AddressSanitizer's quarantine keeps freed memory).
 #ifndef PSC_TEST_MEMORY_SANITIZED
-  const std::pair<int, long> peak = run_tool_peak_kb(q(file("limits.xyz")) + " " + q(file("peak.ply")) +
-                                                     " --memory-limit 1K --neighbors 40");
+  const std::pair<int, long> peak =
+    run_tool_peak_kb(q(file("limits.xyz")) + " " + q(file("peak.ply")) + " --memory-limit 1K --neighbors 40");
   CHECK(peak.first == 0);
   CHECK(peak.second < 150 * 1024);
 #endif
   // the limit suggested gives at most that many tiles, the same bytes, and no warning
   const std::string expected = read_text(file("limits.ply"));
-  const Run fewer = run_tool_within(120, q(file("limits.xyz")) + " " + q(file("limits.ply")) + " --neighbors 40 --memory-limit " + suggested);
+  const Run fewer = run_tool_within(120, q(file("limits.xyz")) + " " + q(file("limits.ply")) +
+                                           " --neighbors 40 --memory-limit " + suggested);
   INFO(suggested << "\n" << fewer.out);
   REQUIRE(fewer.status == 0);
   CHECK(fewer.err.empty());
@@ -4084,7 +4227,8 @@ TEST_CASE("tool: a --memory-limit making hundreds of tiles or above the RAM is w
   const double ram = double(::sysconf(_SC_PHYS_PAGES)) * double(::sysconf(_SC_PAGE_SIZE));
   char ram_text[64];
   std::snprintf(ram_text, sizeof ram_text, "%.1f GB of RAM", ram / (1024.0 * 1024 * 1024));
-  const Run huge = run_tool(q(file("limits.xyz")) + " " + q(file("limits.ply")) + " --memory-limit 1024T --neighbors 40");
+  const Run huge =
+    run_tool(q(file("limits.xyz")) + " " + q(file("limits.ply")) + " --memory-limit 1024T --neighbors 40");
   INFO(huge.err);
   CHECK(huge.status == 0);
   CHECK(huge.err.find("warning: --memory-limit 1024.0 TB exceeds this machine's memory (" + std::string(ram_text) +
@@ -4120,7 +4264,8 @@ TEST_CASE("tool: --memory-limit bounds the peak memory of a run in tiles, a few 
   write_xyz(file("peak_small.xyz"), plane(20, 0.2), false);
   const std::string options = " --neighbors 40 --orient +z";
   const std::pair<int, long> base = run_tool_peak_kb(q(file("peak_small.xyz")) + " " + q(file("peak.ply")) + options);
-  const std::pair<int, long> whole = run_tool_peak_kb(q(file("peak_terrain.xyz")) + " " + q(file("peak.ply")) + options);
+  const std::pair<int, long> whole =
+    run_tool_peak_kb(q(file("peak_terrain.xyz")) + " " + q(file("peak.ply")) + options);
   const std::pair<int, long> tiled =
     run_tool_peak_kb(q(file("peak_terrain.xyz")) + " " + q(file("peak.ply")) + options + " --memory-limit 10M");
   REQUIRE(base.first == 0);
@@ -4191,7 +4336,8 @@ TEST_CASE("tool: without normals, the default pipeline and what the summary says
   CHECK(tiled.status == 2);
   CHECK(tiled.err.find("--orient +z") != std::string::npos);
   CHECK(!fs::exists(file("tiled.csv")));
-  const Run tiled_z = run_tool(q(file("terrain.las")) + " " + q(file("tiled_z.csv")) + " --orient +z --memory-limit 200K");
+  const Run tiled_z =
+    run_tool(q(file("terrain.las")) + " " + q(file("tiled_z.csv")) + " --orient +z --memory-limit 200K");
   const Run whole_z = run_tool(q(file("terrain.las")) + " " + q(file("whole_z.csv")) + " --orient +z");
   REQUIRE(tiled_z.status == 0);
   REQUIRE(whole_z.status == 0);

@@ -55,8 +55,8 @@ std::size_t normal_largest_count(const Options& o)
 std::string normal_fit_description(const Options& o)
 {
   if(normal_automatic_largest(o) > 0)
-    return cat("a quadric fitted to the nearest neighbours, their count chosen per point from ", normal_neighbor_count(o),
-               " to ", normal_automatic_largest(o));
+    return cat("a quadric fitted to the nearest neighbours, their count chosen per point from ",
+               normal_neighbor_count(o), " to ", normal_automatic_largest(o));
   return cat(o.normal_fit == CGAL::Normal_fit::QUADRIC ? "a quadric fitted to the " : "the PCA plane of the ",
              normal_neighbor_count(o), " nearest neighbours");
 }
@@ -117,7 +117,7 @@ std::string color_choices()
   return s;
 }
 
-} // namespace
+}  // namespace
 
 namespace {
 
@@ -177,7 +177,8 @@ void parse_radius(const std::string& text, Estimation_settings& scale)
   double value = 0;
   if(!parse_double(multiple ? text.substr(0, text.size() - 1) : text, value))
     throw Error(cat("--radius expects a positive length or a multiple of the average spacing "
-                    "such as 4x, got ", in_quotes(text)));
+                    "such as 4x, got ",
+                    in_quotes(text)));
   if(!(value > 0))
     throw Error(cat("--radius must be positive, got ", in_quotes(text)));
   scale.by_count = false;
@@ -249,6 +250,8 @@ const std::vector<Option_spec>& option_table()
 {
   namespace PSC = CGAL::Point_set_curvatures;
   typedef const std::string& S;
+  // (a table laid out by hand: one option a row, its help lines as --help prints them)
+  // clang-format off
   static const std::vector<Option_spec> table = {
     {"the estimator", {"--method"}, "M", cat("estimator: ", method_names(), " (default aso)"),
      [](Options& o, S, S v) {
@@ -427,10 +430,11 @@ const std::vector<Option_spec>& option_table()
      [](Options& o, S, S) { o.quiet = true; }},
     {nullptr, {"--help", "-h"}, nullptr, "print this help", [](Options& o, S, S) { o.help = true; }},
   };
+  // clang-format on
   return table;
 }
 
-} // namespace
+}  // namespace
 
 void print_usage(std::ostream& os)
 {
@@ -470,8 +474,8 @@ void print_usage(std::ostream& os)
     if(option.heading)
       os << "\noptions: " << option.heading << "\n";
     const std::string left = option.names.front() + (option.value ? cat(" ", option.value) : std::string());
-    os << "  " << left << (left.size() < 19 ? std::string(19 - left.size(), ' ') : std::string("  "))
-       << option.help << "\n";
+    os << "  " << left << (left.size() < 19 ? std::string(19 - left.size(), ' ') : std::string("  ")) << option.help
+       << "\n";
   }
   os << "\n"
      << "Exit status: 0 on success; 2 on an invalid argument or an unreadable, malformed or\n"
@@ -529,11 +533,11 @@ Options parse_command_line(int argc, char** argv)
   if(o.help)
     return o;
   if(positional.size() < 2)
-    throw Error(cat("missing ", positional.empty() ? "INPUT and OUTPUT" : "OUTPUT", " (usage: ",
-                    program, " INPUT OUTPUT [options]; see --help)"));
+    throw Error(cat("missing ", positional.empty() ? "INPUT and OUTPUT" : "OUTPUT", " (usage: ", program,
+                    " INPUT OUTPUT [options]; see --help)"));
   if(positional.size() > 2)
-    throw Error(cat("unexpected argument ", in_quotes(positional[2]), " (usage: ", program,
-                    " INPUT OUTPUT [options])"));
+    throw Error(
+      cat("unexpected argument ", in_quotes(positional[2]), " (usage: ", program, " INPUT OUTPUT [options])"));
   if(o.radius_given && o.neighbors_given)
     throw Error("give either --radius or --neighbors, not both");
   // The default scale (the library's front_end_defaults): automatic for the ASO's robust
@@ -547,16 +551,19 @@ Options parse_command_line(int argc, char** argv)
   if(o.scale.automatic_largest == 0)
     for_each_tool_field([&o](const CGAL::Point_set_curvatures::Field_description& f) {
       if(f.automatic_scale_only && std::find(o.fields.begin(), o.fields.end(), f.name) != o.fields.end())
-        throw Error(cat("--fields: ", f.name, " comes with the automatic scale only: add --neighbors auto, or leave it "
+        throw Error(cat("--fields: ", f.name,
+                        " comes with the automatic scale only: add --neighbors auto, or leave it "
                         "out"));
     });
   if(o.normal_fit == CGAL::Normal_fit::QUADRIC && o.normal_neighbors != 0 && o.normal_neighbors < 6)
-    throw Error(cat("--normal-neighbors ", o.normal_neighbors, " is below the 6 points a quadric needs: use "
+    throw Error(cat("--normal-neighbors ", o.normal_neighbors,
+                    " is below the 6 points a quadric needs: use "
                     "--normal-neighbors 6 or more, or --normal-fit plane"));
   const std::size_t least = o.scale.min_neighbors ? o.scale.min_neighbors : o.method->min_neighbors;
   if(o.scale.by_count && o.scale.neighbors < least)
-    throw Error(cat("--neighbors ", o.scale.neighbors, " is below the ", least, " neighbours of a valid ", o.method->name,
-                    " estimate", o.scale.min_neighbors ? " (--min-neighbors)" : " (measured minimum, see the manual)",
+    throw Error(cat("--neighbors ", o.scale.neighbors, " is below the ", least, " neighbours of a valid ",
+                    o.method->name, " estimate",
+                    o.scale.min_neighbors ? " (--min-neighbors)" : " (measured minimum, see the manual)",
                     ": every estimate would be invalid; use --neighbors ", least,
                     " or more, or lower the threshold with --min-neighbors"));
   o.input = positional[0];
@@ -567,4 +574,4 @@ Options parse_command_line(int argc, char** argv)
   return o;
 }
 
-} // namespace psc_tool
+}  // namespace psc_tool

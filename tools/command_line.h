@@ -34,19 +34,19 @@ struct Options
   int threads = 0;  // 0: every core
   bool quiet = false, ascii = false, require_normals = false, help = false;
   bool float32 = false, drop_attributes = false;  // --float, --drop-attributes
-  bool ply_scalar_names = false;                   // --ply-names scalar (CloudCompare's scalar_NAME)
-  bool allow_truncated = false;                    // --allow-truncated
-  std::vector<std::string> fields;                 // --fields, empty: all
-  std::string color;  // quantity to colour by, empty for none
-  std::vector<std::string> columns;  // --columns, empty: automatic
+  bool ply_scalar_names = false;                  // --ply-names scalar (CloudCompare's scalar_NAME)
+  bool allow_truncated = false;                   // --allow-truncated
+  std::vector<std::string> fields;                // --fields, empty: all
+  std::string color;                              // quantity to colour by, empty for none
+  std::vector<std::string> columns;               // --columns, empty: automatic
   // --orient; "auto" is resolved once the input is known (resolve_orientation())
   CGAL::Normal_orientation orientation = CGAL::Normal_orientation::automatic();
   std::string orientation_text = "auto";
-  bool orient_scanner = false;           // --orient scanner
+  bool orient_scanner = false;                              // --orient scanner
   CGAL::Normal_fit normal_fit = CGAL::Normal_fit::QUADRIC;  // --normal-fit
-  std::size_t normal_neighbors = 0;      // --normal-neighbors; 0: the fit's default (40, plane 18)
-  double position_blend = -1;            // --position-blend; < 0: 0.5 if the normals are estimated, else 0
-  double memory_limit = 0;               // --memory-limit in bytes; 0: a quarter of the RAM
+  std::size_t normal_neighbors = 0;                         // --normal-neighbors; 0: the fit's default (40, plane 18)
+  double position_blend = -1;  // --position-blend; < 0: 0.5 if the normals are estimated, else 0
+  double memory_limit = 0;     // --memory-limit in bytes; 0: a quarter of the RAM
 };
 
 // --neighbors auto: the library's ladder of counts of the automatic scale (curvatures and,
@@ -71,6 +71,6 @@ void print_usage(std::ostream& os);
 // The options of the command line; throws Error for anything invalid.
 Options parse_command_line(int argc, char** argv);
 
-} // namespace psc_tool
+}  // namespace psc_tool
 
 #endif

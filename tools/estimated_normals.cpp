@@ -61,12 +61,12 @@ auto normal_parameters(const Options& o, const CGAL::Normal_orientation& orienta
     normal_neighbor_count(o),
     PSC::parameters::automatic_scale(
       normal_automatic_largest(o),
-      PSC::parameters::normal_fit(
-        o.normal_fit, PSC::parameters::normal_orientation(
-                        orientation, PSC::parameters::tile(tile, CGAL::parameters::callback(progress))))));
+      PSC::parameters::normal_fit(o.normal_fit,
+                                  PSC::parameters::normal_orientation(
+                                    orientation, PSC::parameters::tile(tile, CGAL::parameters::callback(progress))))));
 }
 
-} // namespace
+}  // namespace
 
 void Vertical_count::add(double x, double y, double z)
 {
@@ -91,9 +91,11 @@ std::string automatic_orientation_text(const Vertical_count& c)
     return cat("+z (LAS file, 2.5-D: ", within, "; ", percent_text(c.vertical_up, c.vertical), "% of those point up",
                c.vertical_up < c.vertical ? ", the others are the undersides of closed objects, turned outward" : "",
                "; the steeper ones along a minimum spanning tree; --orient auto)");
-  return cat("mst (LAS file, not 2.5-D: ", within, "): along a minimum spanning tree, closed parts "
+  return cat("mst (LAS file, not 2.5-D: ", within,
+             "): along a minimum spanning tree, closed parts "
              "outward, open parts up, parts seen from all sides checked point by point by the parity of the "
-             "crossings along the normals; ", percent_text(c.up, c.usable), "% of them point up; --orient auto)");
+             "crossings along the normals; ",
+             percent_text(c.up, c.usable), "% of them point up; --orient auto)");
 }
 
 std::size_t estimate_normals(Point_set& ps, const Options& o, Orientation_choice& choice, const Progress& progress,
@@ -101,8 +103,8 @@ std::size_t estimate_normals(Point_set& ps, const Options& o, Orientation_choice
 {
   if(!ps.has_normal_map())
     ps.add_normal_map();
-  const std::size_t without = CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
-    ps, normal_parameters(o, choice.orientation, tile, progress));
+  const std::size_t without =
+    CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(ps, normal_parameters(o, choice.orientation, tile, progress));
   if(interrupted)
     throw Cancelled();
   if(choice.orientation.kind == CGAL::Normal_orientation::AUTOMATIC)
@@ -121,13 +123,12 @@ std::vector<PSC::internal::Normal_record> estimate_normal_records(Point_set& ps,
                                                                   const Progress& progress, const PSC::Tile& tile)
 {
   bool cancelled = false;
-  std::vector<PSC::internal::Normal_record> records =
-    PSC::internal::estimate_normal_records<CGAL::Parallel_tag>(
-      ps, false, 0.0, normal_parameters(o, CGAL::Normal_orientation::along_vector(0, 0, 1), tile, progress),
-      progress, cancelled);
+  std::vector<PSC::internal::Normal_record> records = PSC::internal::estimate_normal_records<CGAL::Parallel_tag>(
+    ps, false, 0.0, normal_parameters(o, CGAL::Normal_orientation::along_vector(0, 0, 1), tile, progress), progress,
+    cancelled);
   if(cancelled || interrupted)
     throw Cancelled();
   return records;
 }
 
-} // namespace psc_tool
+}  // namespace psc_tool

@@ -91,6 +91,6 @@ std::vector<CGAL::Point_set_curvatures::internal::Normal_record>
 estimate_normal_records(Point_set& ps, const Options& o, const Progress& progress,
                         const CGAL::Point_set_curvatures::Tile& tile);
 
-} // namespace psc_tool
+}  // namespace psc_tool
 
 #endif

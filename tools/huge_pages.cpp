@@ -71,7 +71,7 @@ void* allocate(std::size_t n)
   }
 }
 
-} // namespace
+}  // namespace
 
 void* operator new(std::size_t n) { return allocate(n); }
 void* operator new[](std::size_t n) { return allocate(n); }

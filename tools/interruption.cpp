@@ -41,7 +41,7 @@ void test_signal_at_phase_start(const std::string& phase)
   std::raise(signal == "TERM" ? SIGTERM : signal == "KILL" ? SIGKILL : SIGINT);
 }
 
-} // namespace psc_tool
+}  // namespace psc_tool
 
 extern "C" void on_interrupt(int signal)
 {

@@ -32,7 +32,7 @@ extern std::string current_phase;
 // and what a run killed in a phase leaves behind.
 void test_signal_at_phase_start(const std::string& phase);
 
-} // namespace psc_tool
+}  // namespace psc_tool
 
 // The first Ctrl-C (or SIGTERM) cancels the current phase at its next progress report; a
 // second one removes the temporary output and exits at once. Exit status 128 + the signal,

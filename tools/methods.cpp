@@ -24,6 +24,7 @@ namespace psc_tool {
 namespace PSC = CGAL::Point_set_curvatures;
 
 // The run function of an estimator; the Point_set_3's point and normal maps are the defaults.
+// clang-format off
 #define PSC_TOOL_RUN(NAME)                                                                     \
   Run{#NAME, [](const Point_set& points, const Estimation_settings& scale, const Progress& callback,          \
                 const PSC::Tile& tile) -> Estimates {                                           \
@@ -51,9 +52,10 @@ const Run runs[] = {
   PSC_TOOL_RUN(aso), PSC_TOOL_RUN(apss), PSC_TOOL_RUN(barycenter), PSC_TOOL_RUN(pca_plane),
   PSC_TOOL_RUN(pss), PSC_TOOL_RUN(jet), PSC_TOOL_RUN(vcm), PSC_TOOL_RUN(wavejet),
 };
+// clang-format on
 static_assert(std::size(runs) == std::size(PSC::estimators), "one run per described estimator");
 
-} // namespace
+}  // namespace
 
 const std::vector<Method>& methods()
 {
@@ -86,4 +88,4 @@ std::string method_names()
   return s;
 }
 
-} // namespace psc_tool
+}  // namespace psc_tool

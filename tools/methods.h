@@ -57,12 +57,12 @@ struct Estimation_settings
 {
   bool by_count = true;
   std::size_t neighbors = CGAL::Point_set_curvatures::front_end_defaults::neighbor_count;  // by count
-  double radius = 0;           // by radius, in the unit of the coordinates
-  double spacing_multiple = 0; // > 0 for "--radius Nx"
-  double spacing = 0;          // CGAL::compute_average_spacing, for "--radius Nx"
-  std::size_t min_neighbors = 0;  // --min-neighbors; 0: the method's default
+  double radius = 0;                                      // by radius, in the unit of the coordinates
+  double spacing_multiple = 0;                            // > 0 for "--radius Nx"
+  double spacing = 0;                                     // CGAL::compute_average_spacing, for "--radius Nx"
+  std::size_t min_neighbors = 0;                          // --min-neighbors; 0: the method's default
   CGAL::Aso_variant variant = CGAL::Aso_variant::ROBUST;  // --variant (aso)
-  double position_fit_blend = 0;  // --position-blend (aso)
+  double position_fit_blend = 0;                          // --position-blend (aso)
   // --neighbors auto (aso): the automatic scale's largest count, `neighbors` its smallest; 0: off
   std::size_t automatic_largest = 0;
   // the largest neighbourhood a point's estimate reads, by count
@@ -71,7 +71,7 @@ struct Estimation_settings
 
 // Every point is estimated with PSC::Tile::whole_space(), a tile's own points otherwise.
 typedef Estimates (*Run_method)(const Point_set&, const Estimation_settings&, const Progress&,
-                                 const CGAL::Point_set_curvatures::Tile&);
+                                const CGAL::Point_set_curvatures::Tile&);
 
 // A method: the library's description of its estimator (name, summary, fields, neighbour
 // counts, options) and the function that runs it.
@@ -89,6 +89,6 @@ const Method* find_method(const std::string& name);
 // "aso|apss|...": the names of every method.
 std::string method_names();
 
-} // namespace psc_tool
+}  // namespace psc_tool
 
 #endif

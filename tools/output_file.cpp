@@ -55,7 +55,7 @@ int allocate(int fd, std::uint64_t bytes)
 #endif
 }
 
-} // namespace
+}  // namespace
 
 std::string size_text(double bytes)
 {
@@ -93,8 +93,8 @@ void check_output_path(const std::string& output)
     throw Error(cat("cannot write output ", in_quotes(output), ": ", in_quotes(folder),
                     " is not a directory; choose another OUTPUT"));
   if(::access(folder.c_str(), W_OK | X_OK) != 0)
-    throw Error(cat("cannot write output ", in_quotes(output), ": its folder ", in_quotes(folder),
-                    " is not writable (", std::strerror(errno), "); choose another OUTPUT or change its permissions"));
+    throw Error(cat("cannot write output ", in_quotes(output), ": its folder ", in_quotes(folder), " is not writable (",
+                    std::strerror(errno), "); choose another OUTPUT or change its permissions"));
 }
 
 std::size_t remove_stale_temporaries(const std::string& output)
@@ -240,20 +240,23 @@ Error Temporary_output::reservation_error(int e, std::uint64_t bytes, const std:
   if(e == ENOSPC)
   {
     struct statvfs v;
-    const std::string free_space = ::statvfs(folder_of(m_output).c_str(), &v) == 0
-                                     ? cat(", the file system holding it has ", size_text(double(v.f_bavail) * double(v.f_frsize)), " free")
-                                     : std::string();
+    const std::string free_space =
+      ::statvfs(folder_of(m_output).c_str(), &v) == 0
+        ? cat(", the file system holding it has ", size_text(double(v.f_bavail) * double(v.f_frsize)), " free")
+        : std::string();
     return Error(cat("not enough space for output ", in_quotes(m_output), ": it needs up to ", needs, free_space,
                      "; free some space or write OUTPUT elsewhere"));
   }
   if(e == EDQUOT)
-    return Error(cat("output ", in_quotes(m_output), " needs up to ", needs, ", beyond your disk quota; free some "
+    return Error(cat("output ", in_quotes(m_output), " needs up to ", needs,
+                     ", beyond your disk quota; free some "
                      "space or write OUTPUT elsewhere"));
   if(e == EFBIG)
-    return Error(cat("output ", in_quotes(m_output), " needs up to ", needs, ", more than the largest file allowed "
+    return Error(cat("output ", in_quotes(m_output), " needs up to ", needs,
+                     ", more than the largest file allowed "
                      "(the shell's file size limit, ulimit -f, or the file system's); raise the limit or write "
                      "OUTPUT elsewhere"));
   return Error(cat("cannot reserve ", needs, " for output ", in_quotes(m_output), ": ", std::strerror(e)));
 }
 
-} // namespace psc_tool
+}  // namespace psc_tool

@@ -77,6 +77,6 @@ private:
   int m_reserved = -1;  // the unlinked file holding the space reserved, until open()
 };
 
-} // namespace psc_tool
+}  // namespace psc_tool
 
 #endif

@@ -93,8 +93,10 @@ void refuse_without_normals(const Options& o, bool with_normals)
 Estimation_settings estimation_scale(const Options& o, bool normals_estimated)
 {
   Estimation_settings s = o.scale;
-  s.position_fit_blend = o.position_blend >= 0 ? o.position_blend
-                         : CGAL::Point_set_curvatures::front_end_defaults::position_fit_blend(s.variant, normals_estimated);
+  s.position_fit_blend =
+    o.position_blend >= 0
+      ? o.position_blend
+      : CGAL::Point_set_curvatures::front_end_defaults::position_fit_blend(s.variant, normals_estimated);
   return s;
 }
 
@@ -144,17 +146,18 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
   refuse_without_normals(o, with_normals);
   const bool global = !with_normals && CGAL::Point_set_curvatures::internal::is_global(orientation.orientation);
   if(memory_limit < least_memory_for_tiled_normals(double(n), global))
-    throw Error(cat(too_large, " and has no normals: ",
-                    "orienting them along a spanning tree over the whole cloud (",
+    throw Error(cat(too_large, " and has no normals: ", "orienting them along a spanning tree over the whole cloud (",
                     o.orientation_text == "auto" ? "--orient auto here" : "--orient mst", ") needs --memory-limit ",
-                    memory_argument(least_memory_for_tiled_normals(double(n), global)), " or more; or orient them "
+                    memory_argument(least_memory_for_tiled_normals(double(n), global)),
+                    " or more; or orient them "
                     "locally, tile by tile: --orient +z (airborne scans), another axis, or viewpoint:X,Y,Z"));
   if(!o.scale.by_count && o.scale.spacing_multiple > 0)
-    throw Error(cat(too_large, ": --radius ", o.scale.spacing_multiple, "x needs the whole cloud for the average "
+    throw Error(cat(too_large, ": --radius ", o.scale.spacing_multiple,
+                    "x needs the whole cloud for the average "
                     "spacing; give the radius as a length, or raise --memory-limit"));
   if(!o.method->supports_tiles)
-    throw Error(cat(too_large, ": --method ", o.method->name, " needs the whole cloud (",
-                    o.method->whole_cloud_reason, "); raise --memory-limit"));
+    throw Error(cat(too_large, ": --method ", o.method->name, " needs the whole cloud (", o.method->whole_cloud_reason,
+                    "); raise --memory-limit"));
   const Estimation_settings scale = estimation_scale(o, !with_normals);
   reserve_output(o, output, o.drop_attributes && !las ? std::vector<Attribute>() : input.cloud.attributes, n, las);
   Tiling tiling;
@@ -171,18 +174,18 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
   // a limit making many tiles is said at once on a terminal (the run may be long), else with
   // the other warnings at the end
   const auto slow_tiling = [&](const char* makes, std::size_t tiles, std::size_t few_grid, double few_points) {
-    return cat("--memory-limit ", size_text(memory_limit), makes, tiles, " tiles, each read again from the input "
-               "with its halo: slow; --memory-limit ",
-               memory_argument(few_points * tiling.point_bytes + (with_normals ? 0.0 : gathered_normal_bytes * double(n))),
-               " gives at most ",
-               plural(few_grid, "tile"));
+    return cat(
+      "--memory-limit ", size_text(memory_limit), makes, tiles,
+      " tiles, each read again from the input "
+      "with its halo: slow; --memory-limit ",
+      memory_argument(few_points * tiling.point_bytes + (with_normals ? 0.0 : gathered_normal_bytes * double(n))),
+      " gives at most ", plural(few_grid, "tile"));
   };
   bool slow_tiling_said = false;
   tiling.grid_chosen = [&](std::size_t tiles, std::size_t few_grid, double few_points) {
     if(tiles > many_tiles)
-      slow_tiling_said =
-        c.progress.note(cat(program, ": warning: ", slow_tiling(" makes up to ", tiles, few_grid, few_points),
-                            " (Ctrl-C to stop)"));
+      slow_tiling_said = c.progress.note(
+        cat(program, ": warning: ", slow_tiling(" makes up to ", tiles, few_grid, few_points), " (Ctrl-C to stop)"));
   };
   Orientation_choice tile_orientation = orientation;  // (completed when estimated)
   Tiled_normals normals;
@@ -208,7 +211,8 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
     }
     catch(const std::invalid_argument& e)
     {
-      throw Error(cat(e.what(), " (", too_large, ", so it is estimated in tiles: give --radius, or raise "
+      throw Error(cat(e.what(), " (", too_large,
+                      ", so it is estimated in tiles: give --radius, or raise "
                       "--memory-limit)"));
     }
     if(interrupted)
@@ -223,31 +227,29 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
     [&](const Row_source& rows) {
       add_normal_warnings(c.warnings, o, with_normals, tile_orientation, summary, normals.undirected);
       const auto write_start = std::chrono::steady_clock::now();
-      write_output(c, output, scale,
-                   o.drop_attributes && !las ? std::vector<Attribute>() : input.cloud.attributes, n, summary, rows,
-                   las);
+      write_output(c, output, scale, o.drop_attributes && !las ? std::vector<Attribute>() : input.cloud.attributes, n,
+                   summary, rows, las);
       write_seconds = seconds_since(write_start);
     });
   if(report.tiles > many_tiles && !slow_tiling_said)
     c.warnings.push_back(slow_tiling(" makes ", report.tiles, report.few_tiles_grid, report.few_tiles_points));
-  print_report(c, scale, n,
-               with_normals ? std::string() : cat(normal_fit_description(o), ", oriented ", tile_orientation.text),
-               summary,
-               cat("count ", s3(count_seconds),
-                   !with_normals ? cat(", normals: density ", s3(normals.report.density_seconds), ", tile reads ",
-                                  s3(normals.report.read_seconds), ", tiles ", s3(normals.report.estimate_seconds),
-                                  ", orientation ", s3(normals.orientation_seconds))
-                            : std::string(),
-                   ", density ", s3(report.density_seconds), ", tile reads ",
-                   s3(report.read_seconds), ", curvatures ", s3(report.estimate_seconds), ", tile rows ",
-                   s3(report.rows_seconds),
-                   ", merge and write ", s3(write_seconds)),
-               cat(report.tiles, " (memory limit ", memory_limit / (1 << 20), " MB; at most ", report.largest_range,
-                   " points with a halo of ", report.halo, report.halo_growths
-                     ? cat("; ", report.halo_growths, " tiles read again with a larger halo") : std::string(),
-                   !with_normals ? cat("; the normals first in ", plural(normals.report.tiles, "tile"),
-                                       global ? ", oriented over the whole cloud in memory" : "")
-                                 : std::string(), ")"));
+  print_report(
+    c, scale, n, with_normals ? std::string() : cat(normal_fit_description(o), ", oriented ", tile_orientation.text),
+    summary,
+    cat("count ", s3(count_seconds),
+        !with_normals ? cat(", normals: density ", s3(normals.report.density_seconds), ", tile reads ",
+                            s3(normals.report.read_seconds), ", tiles ", s3(normals.report.estimate_seconds),
+                            ", orientation ", s3(normals.orientation_seconds))
+                      : std::string(),
+        ", density ", s3(report.density_seconds), ", tile reads ", s3(report.read_seconds), ", curvatures ",
+        s3(report.estimate_seconds), ", tile rows ", s3(report.rows_seconds), ", merge and write ", s3(write_seconds)),
+    cat(report.tiles, " (memory limit ", memory_limit / (1 << 20), " MB; at most ", report.largest_range,
+        " points with a halo of ", report.halo,
+        report.halo_growths ? cat("; ", report.halo_growths, " tiles read again with a larger halo") : std::string(),
+        !with_normals ? cat("; the normals first in ", plural(normals.report.tiles, "tile"),
+                            global ? ", oriented over the whole cloud in memory" : "")
+                      : std::string(),
+        ")"));
   return 0;
 }
 
@@ -256,12 +258,14 @@ int run(const Options& o)
   const auto start = std::chrono::steady_clock::now();
   const std::string out_ext = lower_extension(o.output);
   if(out_ext != ".ply" && out_ext != ".csv" && out_ext != ".las")
-    throw Error(cat("unsupported output format ", in_quotes(out_ext.empty() ? o.output : out_ext),
-                    " for ", in_quotes(o.output), " (expected .ply, .csv or .las)"));
+    throw Error(cat("unsupported output format ", in_quotes(out_ext.empty() ? o.output : out_ext), " for ",
+                    in_quotes(o.output), " (expected .ply, .csv or .las)"));
   const bool las_output = out_ext == ".las";
   if(las_output && !o.color.empty())
-    throw Error(cat("--color ", o.color, ": a .las output holds no colours of the estimates (LAS viewers colour by "
-                    "a field: choose ", o.color, "); drop --color, or write .ply"));
+    throw Error(cat("--color ", o.color,
+                    ": a .las output holds no colours of the estimates (LAS viewers colour by "
+                    "a field: choose ",
+                    o.color, "); drop --color, or write .ply"));
   if(las_output && o.ascii)
     throw Error("--ascii: a .las output is binary; drop --ascii, or write .ply or .csv");
   {
@@ -273,8 +277,8 @@ int run(const Options& o)
 
   std::unique_ptr<tbb::global_control> threads;
   if(o.threads > 0)
-    threads.reset(new tbb::global_control(tbb::global_control::max_allowed_parallelism,
-                                          static_cast<std::size_t>(o.threads)));
+    threads.reset(
+      new tbb::global_control(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(o.threads)));
 
   // An unwritable OUTPUT fails before any long computation; its size is reserved once the
   // input is read, and its file created when writing starts.
@@ -303,7 +307,8 @@ int run(const Options& o)
   // 1. Read, or count the points of a file too large for the memory limit.
   const double memory_limit = o.memory_limit > 0 ? o.memory_limit : 0.25 * physical_memory();
   if(o.memory_limit > physical_memory() && physical_memory() > 0)
-    warn(cat("--memory-limit ", size_text(o.memory_limit), " exceeds this machine's memory (", size_text(physical_memory()),
+    warn(cat("--memory-limit ", size_text(o.memory_limit), " exceeds this machine's memory (",
+             size_text(physical_memory()),
              " of RAM): inputs up to that size are read whole and may be swapped out; give at most the RAM, or "
              "omit --memory-limit for a quarter of it"));
   Read_options read_options;
@@ -317,15 +322,16 @@ int run(const Options& o)
   // (the automatic scale of the curvatures takes more memory, and so does a spanning tree over
   // the estimated normals: --orient mst, or auto but on a LAS file with pulse directions)
   const bool automatic_scale = estimation_scale(o, false).automatic_largest > 0;
-  const bool spanning_tree = CGAL::Point_set_curvatures::internal::is_global(o.orientation) ||
-                             o.orientation_text == "auto";
-  Scanned_input input = read_or_scan(o.input, read_options, memory_limit > 0 ? memory_limit : HUGE_VAL,
-                                     automatic_scale, spanning_tree);
+  const bool spanning_tree =
+    CGAL::Point_set_curvatures::internal::is_global(o.orientation) || o.orientation_text == "auto";
+  Scanned_input input =
+    read_or_scan(o.input, read_options, memory_limit > 0 ? memory_limit : HUGE_VAL, automatic_scale, spanning_tree);
   for(const std::string& w : input.cloud.warnings)
     warn(w);
   const std::array<int, 3> pulse = pulse_attributes(input.cloud.attributes);
   if(o.orient_scanner && !input.cloud.has_normals() && *std::min_element(pulse.begin(), pulse.end()) < 0)
-    throw Error(cat("--orient scanner: ", in_quotes(o.input), " holds no pulse directions (the wave packets of LAS point "
+    throw Error(cat("--orient scanner: ", in_quotes(o.input),
+                    " holds no pulse directions (the wave packets of LAS point "
                     "formats 4, 5, 9 and 10); use --orient +z (airborne scans) or viewpoint:X,Y,Z"));
   const bool has_pulses = *std::min_element(pulse.begin(), pulse.end()) >= 0;
   Orientation_choice orientation = choose_orientation(o, las, has_pulses);
@@ -373,8 +379,8 @@ int run(const Options& o)
     check_interrupted();
     scale.radius = scale.spacing_multiple * scale.spacing;
     if(!(scale.radius > 0) || !std::isfinite(scale.radius))
-      throw Error(cat("--radius ", scale.spacing_multiple, "x: the average spacing of ",
-                      in_quotes(o.input), " is ", scale.spacing, " (coincident points?)"));
+      throw Error(cat("--radius ", scale.spacing_multiple, "x: the average spacing of ", in_quotes(o.input), " is ",
+                      scale.spacing, " (coincident points?)"));
   }
   const double spacing_seconds = seconds_since(spacing_start);
 
@@ -385,7 +391,8 @@ int run(const Options& o)
   if(!with_normals && orientation.scanner)  // (a file with normals may have no pulses)
     for(int a = 0; a < 3; ++a)
       pulses[a] = &attributes[pulse[a]].values;
-  const Estimates estimates = estimator.estimate(ps, PSC::Tile::whole_space(), pulses, [&progress](const char* name) { return progress.phase(name); });
+  const Estimates estimates = estimator.estimate(ps, PSC::Tile::whole_space(), pulses,
+                                                 [&progress](const char* name) { return progress.phase(name); });
   const double estimation_seconds = seconds_since(estimation_start) - estimator.normals_seconds();
   check_interrupted();
 
@@ -401,8 +408,9 @@ int run(const Options& o)
     }
   }
   add_normal_warnings(warnings, o, with_normals, orientation, summary, estimator.undirected());
-  write_output(context, output, scale, o.drop_attributes && !las_output ? no_attributes : attributes, ps.size(),
-               summary, [&](std::size_t i, Output_row& r) { estimate_row(ps, estimates, i, r); }, las_out);
+  write_output(
+    context, output, scale, o.drop_attributes && !las_output ? no_attributes : attributes, ps.size(), summary,
+    [&](std::size_t i, Output_row& r) { estimate_row(ps, estimates, i, r); }, las_out);
   const double write_seconds = seconds_since(write_start);
   print_report(context, scale, ps.size(),
                with_normals ? std::string() : cat(normal_fit_description(o), ", oriented ", orientation.text), summary,
@@ -411,7 +419,7 @@ int run(const Options& o)
                "");
   return 0;
 }
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv)
 {

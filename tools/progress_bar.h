@@ -182,7 +182,7 @@ private:
   bool m_stop = false;
   bool m_active = false;  // a phase is running (between phase() and finish())
   std::string m_name;
-  std::string m_label;  // the step's (step()), shown after the line
+  std::string m_label;            // the step's (step()), shown after the line
   std::size_t m_label_width = 0;  // the longest label of the phase
   std::chrono::steady_clock::time_point m_start;
   double m_fraction = 0;
@@ -191,6 +191,6 @@ private:
   bool m_drawn = false;
 };
 
-} // namespace psc_tool
+}  // namespace psc_tool
 
 #endif

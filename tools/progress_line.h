@@ -42,8 +42,7 @@ inline std::string eta_text(double seconds)
 // `eta`, if not negative, is the time left to show in place of that estimate (once a fraction of
 // at least 1% is known and a second has passed).
 inline std::string progress_line(const std::string& name, double fraction, double seconds,
-                                 const std::string& label = std::string(), std::size_t label_width = 0,
-                                 double eta = -1)
+                                 const std::string& label = std::string(), std::size_t label_width = 0, double eta = -1)
 {
   const double f = std::isfinite(fraction) ? std::max(0.0, std::min(1.0, fraction)) : 0.0;
   const int percent = static_cast<int>(100 * f);
@@ -53,15 +52,14 @@ inline std::string progress_line(const std::string& name, double fraction, doubl
   if(f >= 0.01 && f < 1 && seconds >= 1)
     eta_shown = "ETA " + eta_text(eta >= 0 ? eta : seconds * (1 - f) / f);
   char text[256];
-  std::snprintf(text, sizeof text, "%-12s [%s%s] %3d%% %7.1f s  %-16s", name.c_str(),
-                std::string(filled, '#').c_str(), std::string(width - filled, '.').c_str(), percent,
-                std::max(0.0, seconds), eta_shown.c_str());
+  std::snprintf(text, sizeof text, "%-12s [%s%s] %3d%% %7.1f s  %-16s", name.c_str(), std::string(filled, '#').c_str(),
+                std::string(width - filled, '.').c_str(), percent, std::max(0.0, seconds), eta_shown.c_str());
   std::string line = text;
   if(label_width > 0 || !label.empty())
     line += " " + label + std::string(label_width > label.size() ? label_width - label.size() : 0, ' ');
   return line;
 }
 
-} // namespace psc_tool
+}  // namespace psc_tool
 
 #endif

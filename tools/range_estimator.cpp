@@ -17,9 +17,8 @@ namespace PSC = CGAL::Point_set_curvatures;
 
 Range_estimator::Range_estimator(const Options& o, const Estimation_settings& scale, Orientation_choice& orientation,
                                  bool with_normals)
-  : m_o(o), m_scale(scale), m_orientation(orientation), m_with_normals(with_normals)
-{
-}
+    : m_o(o), m_scale(scale), m_orientation(orientation), m_with_normals(with_normals)
+{}
 
 Estimates Range_estimator::estimate(Point_set& ps, const PSC::Tile& tile, const Pulse_values& pulses,
                                     const std::function<Progress(const char*)>& phase)
@@ -75,7 +74,8 @@ void add_normal_warnings(std::vector<std::string>& warnings, const Options& o, b
        s.first == int(CGAL::Curvature_estimate_status::NON_FINITE_POINT))
       without += s.second;
   if(without > 0)
-    warnings.push_back(cat(without, " points got no normal (coincident neighbours, neighbours along one line such "
+    warnings.push_back(cat(without,
+                           " points got no normal (coincident neighbours, neighbours along one line such "
                            "as a single scan line: try a larger --normal-neighbors; non-finite coordinates) and "
                            "are invalid_normal"));
   if(undirected > 0)
@@ -83,4 +83,4 @@ void add_normal_warnings(std::vector<std::string>& warnings, const Options& o, b
       cat("--orient scanner: ", undirected, " points have no pulse direction and keep normals oriented to +z"));
 }
 
-} // namespace psc_tool
+}  // namespace psc_tool

@@ -66,9 +66,8 @@ private:
 // were estimated and how they are oriented, the points that got none, the points whose pulse
 // has no direction. Nothing when the file has normals.
 void add_normal_warnings(std::vector<std::string>& warnings, const Options& o, bool with_normals,
-                         const Orientation_choice& orientation, const Row_summary& summary,
-                         std::size_t undirected);
+                         const Orientation_choice& orientation, const Row_summary& summary, std::size_t undirected);
 
-} // namespace psc_tool
+}  // namespace psc_tool
 
 #endif

@@ -44,7 +44,8 @@ Output_layout output_layout(const Options& o, const Estimation_settings& scale,
   layout.format = lower_extension(o.output) == ".csv" ? Output_layout::CSV
                   : o.ascii                           ? Output_layout::ASCII_PLY
                                                       : Output_layout::BINARY_PLY;
-  layout.comments.push_back(cat("point_set_curvatures method ", method_label(o, scale), ", ", scale_description(scale)));
+  layout.comments.push_back(
+    cat("point_set_curvatures method ", method_label(o, scale), ", ", scale_description(scale)));
   layout.comments.push_back(cat("input ", o.input));
   if(color_quantity >= 0)
     layout.comments.push_back(
@@ -88,11 +89,13 @@ Output_layout output_layout(const Options& o, const Estimation_settings& scale,
 // "binary PLY of 20000 points": the output, for messages.
 std::string output_description(const Output_layout& layout, std::size_t n)
 {
-  return cat(layout.format == Output_layout::CSV ? "CSV" : layout.format == Output_layout::ASCII_PLY ? "ASCII PLY" : "binary PLY",
+  return cat(layout.format == Output_layout::CSV         ? "CSV"
+             : layout.format == Output_layout::ASCII_PLY ? "ASCII PLY"
+                                                         : "binary PLY",
              " of ", plural(n, "point"), ", ", plural(layout.fields.size(), "field"));
 }
 
-} // namespace
+}  // namespace
 
 void estimate_row(const Point_set& ps, const Estimates& estimates, std::size_t i, Output_row& r)
 {
@@ -100,12 +103,13 @@ void estimate_row(const Point_set& ps, const Estimates& estimates, std::size_t i
   fill_row(p.x(), p.y(), p.z(), estimates[i], r);
 }
 
-void reserve_output(const Options& o, Temporary_output& output, const std::vector<Attribute>& attributes,
-                    std::size_t n, const Las_output_options* las)
+void reserve_output(const Options& o, Temporary_output& output, const std::vector<Attribute>& attributes, std::size_t n,
+                    const Las_output_options* las)
 {
   if(las)
   {
-    const std::vector<Output_field> fields = output_fields(o.fields, o.float32, false, attributes, o.scale.automatic_largest > 0);
+    const std::vector<Output_field> fields =
+      output_fields(o.fields, o.float32, false, attributes, o.scale.automatic_largest > 0);
     output.reserve(las_output_size(*las, fields, attributes, n),
                    cat("LAS of ", plural(n, "point"), ", ", plural(fields.size(), "field")));
     return;
@@ -124,7 +128,8 @@ void write_output(const Run_context& c, Temporary_output& output, const Estimati
   {
     // LAS 1.4, the estimates as extra bytes (write_las.h); no colours (refused in run());
     // the temporary file is created now, when writing starts
-    const std::vector<Output_field> fields = output_fields(o.fields, o.float32, false, attributes, o.scale.automatic_largest > 0);
+    const std::vector<Output_field> fields =
+      output_fields(o.fields, o.float32, false, attributes, o.scale.automatic_largest > 0);
     std::FILE* file = output.open(las_output_size(*las, fields, attributes, n),
                                   cat("LAS of ", plural(n, "point"), ", ", plural(fields.size(), "field")));
     const std::vector<std::string> w = write_las(file, *las, fields, attributes, n, rows, c.progress.phase("writing"));
@@ -149,19 +154,22 @@ void write_output(const Run_context& c, Temporary_output& output, const Estimati
   // the temporary file is created now, when writing starts
   std::FILE* file = output.open(output_size_bound(layout, n), output_description(layout, n));
   const int color_value = color_quantity >= 0 ? summary_quantities::value_index[std::size_t(color_quantity)] : -1;
-  write_point_cloud(file, layout, n, [&](std::size_t i, Output_row& r) {
-    rows(i, r);
-    if(color_value >= 0)
-    {
-      const std::array<unsigned char, 3> rgb =
-        diverging_color(r.valid() ? r.value[color_value] : std::nan(""), color_range);
-      std::copy(rgb.begin(), rgb.end(), r.color);
-    }
-  }, c.progress.phase("writing"));
+  write_point_cloud(
+    file, layout, n,
+    [&](std::size_t i, Output_row& r) {
+      rows(i, r);
+      if(color_value >= 0)
+      {
+        const std::array<unsigned char, 3> rgb =
+          diverging_color(r.valid() ? r.value[color_value] : std::nan(""), color_range);
+        std::copy(rgb.begin(), rgb.end(), r.color);
+      }
+    },
+    c.progress.phase("writing"));
   c.progress.finish();
   if(interrupted)
     throw Cancelled();
   output.commit();
 }
 
-} // namespace psc_tool
+}  // namespace psc_tool

@@ -30,8 +30,8 @@ void estimate_row(const Point_set& ps, const Estimates& estimates, std::size_t i
 // Reserves the output's size before the estimation (Temporary_output::reserve): the layout of
 // write_output() with the scale and colour range still unknown (a margin for the header
 // comments that hold them). A LAS output (`las` not null) has its size from write_las.h.
-void reserve_output(const Options& o, Temporary_output& output, const std::vector<Attribute>& attributes,
-                    std::size_t n, const Las_output_options* las);
+void reserve_output(const Options& o, Temporary_output& output, const std::vector<Attribute>& attributes, std::size_t n,
+                    const Las_output_options* las);
 
 // Writes the n rows of `rows` (asked for in input order), coloured from the summary; a LAS
 // output when `las` is not null.
@@ -39,6 +39,6 @@ void write_output(const Run_context& c, Temporary_output& output, const Estimati
                   const std::vector<Attribute>& attributes, std::size_t n, const Row_summary& summary,
                   const Row_source& rows, const Las_output_options* las);
 
-} // namespace psc_tool
+}  // namespace psc_tool
 
 #endif

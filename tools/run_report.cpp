@@ -75,16 +75,19 @@ std::string small_neighborhood_warning(const Method& m, const Estimation_setting
   const std::size_t good = m.good_neighbors_of(scale.variant);
   if(median >= double(good))
     return "";
-  const std::string invalid = summary.too_few() == 0 ? std::string()
-                              : cat("; ", plural(summary.too_few(), "point"), summary.too_few() == 1 ? " has " : " have ",
-                                    fewer_than_least(m, scale), " and ", summary.too_few() == 1 ? "is" : "are",
-                                    " invalid (too_few_neighbors)");
+  const std::string invalid =
+    summary.too_few() == 0
+      ? std::string()
+      : cat("; ", plural(summary.too_few(), "point"), summary.too_few() == 1 ? " has " : " have ",
+            fewer_than_least(m, scale), " and ", summary.too_few() == 1 ? "is" : "are", " invalid (too_few_neighbors)");
   const std::string too_small = too_small_input(m, scale, input, summary);
   if(!too_small.empty())
     return too_small + invalid;
   return cat("the median neighbourhood holds ", plural(std::size_t(median), "point"), ", fewer than the ", good,
-             " from which ", m.name, "'s errors stay within twice those at 40 neighbours (measured, see the "
-             "manual)", invalid, ". For about 40 neighbours, try ", suggested_scale(m, scale, median));
+             " from which ", m.name,
+             "'s errors stay within twice those at 40 neighbours (measured, see the "
+             "manual)",
+             invalid, ". For about 40 neighbours, try ", suggested_scale(m, scale, median));
 }
 
 // Why no point got a valid estimate (exit status 3): the most frequent status, what causes
@@ -104,14 +107,14 @@ std::string no_valid_estimate_reason(const Method& m, const Estimation_settings&
       count = s.second;
     }
   }
-  const std::string what = cat(count == n ? (n == 1 ? std::string("the only point is ") : cat("all ", n, " points are "))
-                                          : cat(count, " of the ", n, count == 1 ? " points is " : " points are "),
-                               CGAL::to_string(static_cast<Status>(status)));
+  const std::string what =
+    cat(count == n ? (n == 1 ? std::string("the only point is ") : cat("all ", n, " points are "))
+                   : cat(count, " of the ", n, count == 1 ? " points is " : " points are "),
+        CGAL::to_string(static_cast<Status>(status)));
   std::string why;
   switch(static_cast<Status>(status))
   {
-    case Status::TOO_FEW_NEIGHBORS:
-    {
+    case Status::TOO_FEW_NEIGHBORS: {
       const std::string too_small = too_small_input(m, scale, input, summary);
       if(!too_small.empty())
         why = too_small + " (--min-neighbors lowers the least count of a valid estimate, at a cost in accuracy)";
@@ -128,9 +131,7 @@ std::string no_valid_estimate_reason(const Method& m, const Estimation_settings&
       why = "coincident neighbours, neighbours along one line (a single scan line), or a radius far larger than "
             "the cloud; --radius 3.5x gives about 40 neighbours";
       break;
-    case Status::NON_FINITE_POINT:
-      why = "NaN or infinite coordinates";
-      break;
+    case Status::NON_FINITE_POINT: why = "NaN or infinite coordinates"; break;
     case Status::INVALID_NORMAL:
       why = normals_estimated ? "no normal could be estimated (too few points, coincident points, or points along "
                                 "one line: try a larger --normal-neighbors)"
@@ -141,8 +142,7 @@ std::string no_valid_estimate_reason(const Method& m, const Estimation_settings&
       why = "two layers with opposite normals in every neighbourhood (a thin plate, or neighbourhoods reaching "
             "across the object): try a smaller --radius or --neighbors";
       break;
-    default:
-      break;
+    default: break;
   }
   return cat("no valid estimate: ", what, why.empty() ? std::string() : ": " + why);
 }
@@ -187,7 +187,7 @@ void print_summary(const Run_context& c, const Estimation_settings& scale, std::
   std::printf("  K (Gauss)   %s\n", min_median_max(summary, summary_quantities::of("gaussian")).c_str());
 }
 
-} // namespace
+}  // namespace
 
 std::string s3(double seconds)
 {
@@ -229,8 +229,9 @@ void print_report(const Run_context& c, const Estimation_settings& scale, std::s
     c.warnings.push_back(small);
   print_summary(c, scale, n, estimated_normals, summary, times, tiles);
   if(none_valid)
-    throw No_valid_estimate(cat(no_valid_estimate_reason(*o.method, scale, summary, o.input, !estimated_normals.empty()),
-                                "; ", in_quotes(o.output), " was written, every row invalid"));
+    throw No_valid_estimate(
+      cat(no_valid_estimate_reason(*o.method, scale, summary, o.input, !estimated_normals.empty()), "; ",
+          in_quotes(o.output), " was written, every row invalid"));
 }
 
-} // namespace psc_tool
+}  // namespace psc_tool

@@ -50,6 +50,6 @@ void print_report(const Run_context& c, const Estimation_settings& scale, std::s
                   const std::string& estimated_normals, const Row_summary& summary, const std::string& times,
                   const std::string& tiles);
 
-} // namespace psc_tool
+}  // namespace psc_tool
 
 #endif

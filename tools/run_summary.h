@@ -70,7 +70,7 @@ constexpr std::array<int, count()> value_indices()
   return at;
 }
 inline constexpr std::array<int, count()> value_index = value_indices();
-} // namespace summary_quantities
+}  // namespace summary_quantities
 
 class Row_summary
 {
@@ -81,7 +81,7 @@ public:
   // `points`: the rows to come; `too_few_status`: the status whose rows still count in the
   // neighbour counts (too few neighbours).
   Row_summary(std::size_t points, int too_few_status)
-    : m_step(std::max<std::size_t>(1, (points + (std::size_t(1) << 20) - 1) >> 20)), m_too_few_status(too_few_status)
+      : m_step(std::max<std::size_t>(1, (points + (std::size_t(1) << 20) - 1) >> 20)), m_too_few_status(too_few_status)
   {
     for(int q = 0; q < quantities; ++q)
     {
@@ -166,6 +166,6 @@ private:
   std::vector<double> m_sample[quantities], m_neighbor_sample;
 };
 
-} // namespace psc_tool
+}  // namespace psc_tool
 
 #endif

@@ -47,9 +47,9 @@ public:
   // `read_seconds`: the time of a read of the file (the density pass's); `now`: seconds from
   // any origin (empty: the steady clock).
   Tile_pass_progress(std::vector<double> own, double read_seconds, std::function<double()> now = {})
-    : m_own(std::move(own)), m_read_prior(std::max(0.0, read_seconds)),
-      m_now(now ? std::move(now) : std::function<double()>(&CGAL::Point_set_curvatures::internal::steady_seconds)),
-      m_start(m_now())
+      : m_own(std::move(own)), m_read_prior(std::max(0.0, read_seconds)),
+        m_now(now ? std::move(now) : std::function<double()>(&CGAL::Point_set_curvatures::internal::steady_seconds)),
+        m_start(m_now())
   {
     m_own_from.assign(m_own.size() + 1, 0.0);
     for(std::size_t v = m_own.size(); v-- > 0;)
@@ -151,6 +151,6 @@ private:
   double m_reported = 0;
 };
 
-} // namespace psc_tool
+}  // namespace psc_tool
 
 #endif

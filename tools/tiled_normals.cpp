@@ -29,16 +29,13 @@ namespace {
 // queue's edges, arrays of a byte to 4 bytes per point: by_height, visited, piece, part; and
 // the parity check's 29: its grid of at most 8 bytes a point, a part's scales and their sorted
 // copy, the points it turns, the votes); otherwise the normals only.
-double gathered_bytes(bool global)
-{
-  return global ? double(sizeof(Normal_record)) + 24 : gathered_normal_bytes;
-}
+double gathered_bytes(bool global) { return global ? double(sizeof(Normal_record)) + 24 : gathered_normal_bytes; }
 double peak_bytes(bool global)
 {
   return global ? gathered_bytes(true) + gathered_normal_bytes + 8 + 96 + 64 + 17 + 29 : gathered_normal_bytes;
 }
 
-} // namespace
+}  // namespace
 
 double least_memory_for_tiled_normals(double points, bool global)
 {
@@ -57,7 +54,8 @@ Tiled_normals estimate_tiled_normals(const std::string& path, const Read_options
     throw std::logic_error("estimate_tiled_normals: the memory limit is below least_memory_for_tiled_normals()");
   if(global && input.points > std::numeric_limits<std::uint32_t>::max())
     throw Error(cat("a spanning tree orients at most ", std::numeric_limits<std::uint32_t>::max(), " points (",
-                    in_quotes(path), " holds ", input.points, "): orient them locally, --orient +z (airborne scans), "
+                    in_quotes(path), " holds ", input.points,
+                    "): orient them locally, --orient +z (airborne scans), "
                     "another axis, or viewpoint:X,Y,Z"));
   Tiled_normals result;
   std::vector<Normal_record> records(global ? n : 0);
@@ -73,7 +71,8 @@ Tiled_normals estimate_tiled_normals(const std::string& path, const Read_options
     Read_options read = read_options;
     read.keep_attributes = choice.scanner;
     tiling.memory_limit = std::max(0.0, tiling.memory_limit - double(n) * gathered_bytes(global));
-    tiling.point_bytes = bytes_per_point(choice.scanner ? input.cloud.attributes.size() : 0, normal_automatic_largest(o) > 0);
+    tiling.point_bytes =
+      bytes_per_point(choice.scanner ? input.cloud.attributes.size() : 0, normal_automatic_largest(o) > 0);
     tiling.neighbors = normal_largest_count(o);
     tiling.halo = 0;
     tiling.normals = nullptr;
@@ -131,9 +130,9 @@ Tiled_normals estimate_tiled_normals(const std::string& path, const Read_options
   // 2. Their orientation, as the library orients a whole cloud.
   const auto start = std::chrono::steady_clock::now();
   const Progress progress = tiling.phase("orientation");
-  const bool oriented = PSC::internal::orient_normal_records(
-    records, xyz, choice.orientation, result.normals,
-    [&progress](double f) { return !interrupted && (!progress || progress(f)); });
+  const bool oriented =
+    PSC::internal::orient_normal_records(records, xyz, choice.orientation, result.normals,
+                                         [&progress](double f) { return !interrupted && (!progress || progress(f)); });
   if(!oriented || interrupted)
     throw Cancelled();
   if(choice.orientation.kind == CGAL::Normal_orientation::AUTOMATIC)
@@ -147,4 +146,4 @@ Tiled_normals estimate_tiled_normals(const std::string& path, const Read_options
   return result;
 }
 
-} // namespace psc_tool
+}  // namespace psc_tool

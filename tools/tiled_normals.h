@@ -43,10 +43,10 @@ double least_memory_for_tiled_normals(double points, bool global);
 
 struct Tiled_normals
 {
-  std::vector<double> normals;  // 3 per point of the file, in input order (zero: none)
-  Tiled_report report;          // of the first pass
+  std::vector<double> normals;     // 3 per point of the file, in input order (zero: none)
+  Tiled_report report;             // of the first pass
   double orientation_seconds = 0;  // the spanning tree's
-  std::size_t undirected = 0;   // --orient scanner: own points whose pulse has no direction
+  std::size_t undirected = 0;      // --orient scanner: own points whose pulse has no direction
 };
 
 // The normals of every point of `input` (not in memory: Scanned_input::fits false), estimated
@@ -58,6 +58,6 @@ Tiled_normals estimate_tiled_normals(const std::string& path, const Read_options
                                      const Scanned_input& input, const Options& o, Orientation_choice& choice,
                                      Tiling tiling);
 
-} // namespace psc_tool
+}  // namespace psc_tool
 
 #endif

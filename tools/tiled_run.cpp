@@ -81,12 +81,11 @@ public:
     for(std::size_t k = 1; k < d2; ++k)
       for(std::size_t j = 1; j < d1; ++j)
         for(std::size_t i = 1; i < d0; ++i)
-          m_sum[i + d0 * (j + d1 * k)] = m_count[(i - 1) + m_dims[0] * ((j - 1) + m_dims[1] * (k - 1))] +
-                                         m_sum[(i - 1) + d0 * (j + d1 * k)] + m_sum[i + d0 * ((j - 1) + d1 * k)] +
-                                         m_sum[i + d0 * (j + d1 * (k - 1))] - m_sum[(i - 1) + d0 * ((j - 1) + d1 * k)] -
-                                         m_sum[(i - 1) + d0 * (j + d1 * (k - 1))] -
-                                         m_sum[i + d0 * ((j - 1) + d1 * (k - 1))] +
-                                         m_sum[(i - 1) + d0 * ((j - 1) + d1 * (k - 1))];
+          m_sum[i + d0 * (j + d1 * k)] =
+            m_count[(i - 1) + m_dims[0] * ((j - 1) + m_dims[1] * (k - 1))] + m_sum[(i - 1) + d0 * (j + d1 * k)] +
+            m_sum[i + d0 * ((j - 1) + d1 * k)] + m_sum[i + d0 * (j + d1 * (k - 1))] -
+            m_sum[(i - 1) + d0 * ((j - 1) + d1 * k)] - m_sum[(i - 1) + d0 * (j + d1 * (k - 1))] -
+            m_sum[i + d0 * ((j - 1) + d1 * (k - 1))] + m_sum[(i - 1) + d0 * ((j - 1) + d1 * (k - 1))];
   }
 
   // An upper bound of the points in the box [lo, hi] (the cells it meets; every point for a
@@ -109,8 +108,8 @@ public:
     }
     const std::size_t d0 = m_dims[0] + 1, d1 = m_dims[1] + 1;
     auto s = [&](std::size_t i, std::size_t j, std::size_t k) { return m_sum[i + d0 * (j + d1 * k)]; };
-    return s(e[0], e[1], e[2]) - s(b[0], e[1], e[2]) - s(e[0], b[1], e[2]) - s(e[0], e[1], b[2]) +
-           s(b[0], b[1], e[2]) + s(b[0], e[1], b[2]) + s(e[0], b[1], b[2]) - s(b[0], b[1], b[2]);
+    return s(e[0], e[1], e[2]) - s(b[0], e[1], e[2]) - s(e[0], b[1], e[2]) - s(e[0], e[1], b[2]) + s(b[0], b[1], e[2]) +
+           s(b[0], e[1], b[2]) + s(e[0], b[1], b[2]) - s(b[0], b[1], b[2]);
   }
 
 private:
@@ -165,7 +164,7 @@ class Row_store
 {
 public:
   Row_store(const std::string& prefix, std::size_t attributes)
-    : m_attributes(attributes), m_record(sizeof(std::uint64_t) + sizeof(Output_row) + sizeof(double) * attributes)
+      : m_attributes(attributes), m_record(sizeof(std::uint64_t) + sizeof(Output_row) + sizeof(double) * attributes)
   {
     std::string pattern = prefix + "XXXXXX";
     std::vector<char> name(pattern.begin(), pattern.end());
@@ -222,10 +221,9 @@ public:
   {
   public:
     Cursor(const Row_store& store, std::size_t segment, std::size_t buffered)
-      : m_store(&store), m_next(store.m_segments[segment].begin), m_end(store.m_segments[segment].end),
-        m_buffered(std::max<std::size_t>(1, buffered))
-    {
-    }
+        : m_store(&store), m_next(store.m_segments[segment].begin), m_end(store.m_segments[segment].end),
+          m_buffered(std::max<std::size_t>(1, buffered))
+    {}
 
     // false at the end
     bool get(std::uint64_t& index, Output_row& row, std::vector<double>& attributes)
@@ -297,7 +295,7 @@ void tile_box(const Scanned_input& input, double lo[3], double hi[3])
   }
 }
 
-} // namespace
+}  // namespace
 
 double density_halo(const Scanned_input& input, std::size_t k)
 {
@@ -334,8 +332,8 @@ Scanned_input read_or_scan(const std::string& path, const Read_options& options,
     if(!(fraction_read > 0))
       return;
     const double predicted = 1.1 * double(s.points) / std::min(1.0, fraction_read) + double(o.chunk_points);
-    const double affordable = memory_limit / bytes_per_point(attribute_count, automatic_scale,
-                                                             spanning_tree && with_normals == 0);
+    const double affordable =
+      memory_limit / bytes_per_point(attribute_count, automatic_scale, spanning_tree && with_normals == 0);
     const std::size_t count = std::size_t(std::min(predicted, affordable));
     if(3 * count <= xyz.capacity())
       return;
@@ -401,8 +399,8 @@ namespace {
 
 // The density pass: the finite points of the file counted in a grid over the box of the tiles
 // [lo, hi].
-Density_grid read_density(const std::string& path, const Read_options& options, const double lo[3],
-                          const double hi[3], const Tiling& tiling)
+Density_grid read_density(const std::string& path, const Read_options& options, const double lo[3], const double hi[3],
+                          const Tiling& tiling)
 {
   Density_grid density(lo, hi);
   Read_options o = options;
@@ -454,8 +452,8 @@ PSC::Tile_grid choose_tile_grid(const Density_grid& density, const double lo[3],
       counts[a] = std::max(1.0, std::ceil(half[a] / side));  // (1 when the ratio underflows, or NaN)
     if(!(counts[0] * counts[1] * counts[2] <= 4096))
       break;  // the halos dominate: as good as it gets
-    grid = PSC::Tile_grid(box, std::array<std::size_t, 3>{{std::size_t(counts[0]), std::size_t(counts[1]),
-                                                         std::size_t(counts[2])}});
+    grid = PSC::Tile_grid(
+      box, std::array<std::size_t, 3>{{std::size_t(counts[0]), std::size_t(counts[1]), std::size_t(counts[2])}});
     if(tiling.interrupted && tiling.interrupted())
       throw Cancelled();
   }
@@ -535,7 +533,7 @@ Tile_read read_tile(const std::string& path, const Read_options& options, const 
   return r;
 }
 
-} // namespace
+}  // namespace
 
 Tiled_report visit_tiles(const std::string& path, const Read_options& options, const Scanned_input& input,
                          const Tiling& tiling, const Tile_visitor& visit)
@@ -596,8 +594,7 @@ Tiled_report visit_tiles(const std::string& path, const Read_options& options, c
       const auto read_start = std::chrono::steady_clock::now();
       pass_progress.begin_read(v);
       step(name + " read");
-      Tile_read read =
-        read_tile(path, options, input, tiling, grid, t, tile, lo, hi, density, gathered, step_progress);
+      Tile_read read = read_tile(path, options, input, tiling, grid, t, tile, lo, hi, density, gathered, step_progress);
       report.read_seconds += seconds_since(read_start);
       if(read.own_count == 0)
       {
@@ -682,8 +679,8 @@ Tiled_report run_tiled(const std::string& path, const Read_options& options, con
   store.finish();
   const std::size_t segments = store.segments();
   const double share = tiling.memory_limit / 2 / double(std::max<std::size_t>(1, segments));
-  const std::size_t buffered = std::size_t(
-    std::max(16.0, std::min(share, double(1 << 20)) / double(store.record_bytes())));
+  const std::size_t buffered =
+    std::size_t(std::max(16.0, std::min(share, double(1 << 20)) / double(store.record_bytes())));
   struct Head
   {
     std::uint64_t index;
@@ -718,4 +715,4 @@ Tiled_report run_tiled(const std::string& path, const Read_options& options, con
   return report;
 }
 
-} // namespace psc_tool
+}  // namespace psc_tool

@@ -35,20 +35,20 @@ namespace psc_tool {
 // The input's points within a tile's halo, in input order.
 struct Tile_points
 {
-  std::vector<double> xyz, normals;               // 3 per point; normals empty without
-  std::vector<std::uint64_t> index;               // each point's index in the input
-  std::vector<std::vector<double>> attributes;    // per attribute of the input, a value per point
+  std::vector<double> xyz, normals;             // 3 per point; normals empty without
+  std::vector<std::uint64_t> index;             // each point's index in the input
+  std::vector<std::vector<double>> attributes;  // per attribute of the input, a value per point
   std::size_t size() const { return index.size(); }
 };
 
 // What read_or_scan() found.
 struct Scanned_input
 {
-  bool fits = false;           // the whole cloud is in `cloud`
-  Point_cloud cloud;           // all the points if `fits`; otherwise only the description
-  std::uint64_t points = 0;    // every point of the file
-  std::uint64_t finite = 0;    // those with finite coordinates
-  double lo[3], hi[3];         // the bounds of the finite points
+  bool fits = false;         // the whole cloud is in `cloud`
+  Point_cloud cloud;         // all the points if `fits`; otherwise only the description
+  std::uint64_t points = 0;  // every point of the file
+  std::uint64_t finite = 0;  // those with finite coordinates
+  double lo[3], hi[3];       // the bounds of the finite points
   // a sample of the finite points (at most 2^20 of them, evenly spaced in input order), for
   // the tiles' box, which ignores outliers
   CGAL::Point_set_curvatures::Tile_box_sample sample;
@@ -77,9 +77,9 @@ typedef std::function<void(std::size_t, Output_row&)> Row_source;
 
 struct Tiling
 {
-  double memory_limit = 0;     // bytes
-  double halo = 0;             // the halo of the tiles by radius
-  std::size_t neighbors = 0;   // by count (halo unused): the tiles start with density_halo()
+  double memory_limit = 0;    // bytes
+  double halo = 0;            // the halo of the tiles by radius
+  std::size_t neighbors = 0;  // by count (halo unused): the tiles start with density_halo()
   // (a tile's halo grows when the estimator throws Halo_too_small)
   std::string temporary_prefix;  // the rows' temporary file is named prefix + "tiles-XXXXXX"
   // starts a progress phase (the density pass; the pass over the tiles, named estimate_phase)
@@ -112,13 +112,13 @@ typedef std::function<Row_source(Tile_points& points, const CGAL::Point_set_curv
 
 struct Tiled_report
 {
-  std::size_t tiles = 0;       // tiles with own points
-  std::size_t halo_growths = 0;  // tiles read again with a larger halo
-  double halo = 0;             // the largest halo of a tile
-  std::size_t largest_range = 0;  // the most points of one tile with its halo
-  double density_seconds = 0;  // the pass that chooses the tiles
+  std::size_t tiles = 0;                          // tiles with own points
+  std::size_t halo_growths = 0;                   // tiles read again with a larger halo
+  double halo = 0;                                // the largest halo of a tile
+  std::size_t largest_range = 0;                  // the most points of one tile with its halo
+  double density_seconds = 0;                     // the pass that chooses the tiles
   double read_seconds = 0, estimate_seconds = 0;  // of all tiles
-  double rows_seconds = 0;  // the tiles' rows to their temporary files
+  double rows_seconds = 0;                        // the tiles' rows to their temporary files
   // The grid of at most `few_tiles` tiles closest to the one chosen: its number of tiles and
   // the most points of one of them with its first halo (the memory limit that would choose
   // it, divided by Tiling::point_bytes).
@@ -146,6 +146,6 @@ Tiled_report run_tiled(const std::string& path, const Read_options& options, con
                        const std::function<void(std::size_t, const Output_row&)>& own_row,
                        const std::function<void(const Row_source&)>& write);
 
-} // namespace psc_tool
+}  // namespace psc_tool
 
 #endif

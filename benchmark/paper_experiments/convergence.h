@@ -86,22 +86,29 @@ void experiment_convergence(Context& ctx)
   if(!domain_check.empty())
   {
     Table c;
-    c.header = {"estimator", "N", "H error, whole surface", "H error, domain", "normal error, whole surface",
-                "normal error, domain", "k_max error, whole surface", "k_max error, domain"};
+    c.header = {"estimator",
+                "N",
+                "H error, whole surface",
+                "H error, domain",
+                "normal error, whole surface",
+                "normal error, domain",
+                "k_max error, whole surface",
+                "k_max error, domain"};
     for(const Domain_check& d : domain_check)
-      c.rows.push_back({d.estimator, format_count(d.n),
-                        format(d.whole.H), format(d.domain.H), format(d.whole.normal), format(d.domain.normal),
-                        format(d.whole.kmax), format(d.domain.kmax)});
+      c.rows.push_back({d.estimator, format_count(d.n), format(d.whole.H), format(d.domain.H), format(d.whole.normal),
+                        format(d.domain.normal), format(d.whole.kmax), format(d.domain.kmax)});
     ctx.report.text("Check of the domain scoring (fixed radius, same estimates scored on the whole surface and on "
-                    "the fundamental domain only, " + std::to_string(domain_check.front().domain_points) + " points):\n");
+                    "the fundamental domain only, " +
+                    std::to_string(domain_check.front().domain_points) + " points):\n");
     ctx.report.table(c);
   }
-  plot_errors_vs_x(ctx, "convergence", "Convergence on the Goursat surface (exact normals)",
-                   {{"r = 5% diag", fixed_rows}, {"r = r_5 (N/10K)^{-1/4}", shrinking_rows}}, "N (points)",
-                   [](const Error_row& r) { return double(r.N); }, true);
+  plot_errors_vs_x(
+    ctx, "convergence", "Convergence on the Goursat surface (exact normals)",
+    {{"r = 5% diag", fixed_rows}, {"r = r_5 (N/10K)^{-1/4}", shrinking_rows}}, "N (points)",
+    [](const Error_row& r) { return double(r.N); }, true);
 }
 
-} // namespace
-} // namespace psc_paper
+}  // namespace
+}  // namespace psc_paper
 
 #endif

@@ -62,18 +62,18 @@ void experiment_neighbors(Context& ctx)
 {
   ctx.report.section("Experiment 6: error against the neighbour count (the minimum of a valid estimate)");
   const std::vector<std::size_t> ks = ctx.options.quick
-    ? std::vector<std::size_t>{3, 4, 6, 8, 12, 20, 40}
-    : std::vector<std::size_t>{3, 4, 5, 6, 7, 8, 10, 12, 15, 20, 25, 30, 40};
+                                        ? std::vector<std::size_t>{3, 4, 6, 8, 12, 20, 40}
+                                        : std::vector<std::size_t>{3, 4, 5, 6, 7, 8, 10, 12, 15, 20, 25, 30, 40};
   std::vector<Count_cloud> clouds;
-  clouds.push_back({"Goursat 10K blue noise",
-                    scored_everywhere(psc_test::read_xyz(ctx.options.data + "/goursat_010000.xyz"), false)});
+  clouds.push_back(
+    {"Goursat 10K blue noise", scored_everywhere(psc_test::read_xyz(ctx.options.data + "/goursat_010000.xyz"), false)});
   if(!ctx.options.quick)
     clouds.push_back({"Goursat 50K blue noise",
                       scored_everywhere(psc_test::read_xyz(ctx.options.data + "/goursat_050000.xyz"), false)});
-  clouds.push_back({"Goursat 10K i.i.d. random",
-                    scored_everywhere(goursat::iid_sample(10000, ctx.options.seed * 31 + 5), false)});
-  clouds.push_back({"Goursat simulated LiDAR",
-                    scored_everywhere(psc_test::read_xyz(ctx.options.data + "/goursat-lidar.xyz"), true)});
+  clouds.push_back(
+    {"Goursat 10K i.i.d. random", scored_everywhere(goursat::iid_sample(10000, ctx.options.seed * 31 + 5), false)});
+  clouds.push_back(
+    {"Goursat simulated LiDAR", scored_everywhere(psc_test::read_xyz(ctx.options.data + "/goursat-lidar.xyz"), true)});
   ctx.report.text("Every estimator by count, `neighbor_count(k)` with `min_neighbors(1)` (every estimate the fit "
                   "can produce is scored), exact normals, Goursat surface. Primary error: mean |H - H*| (mean "
                   "| |H| - |H*| | for the unsigned barycenter and PCA-plane estimators, mean k_max error for VCM). "
@@ -178,14 +178,13 @@ void experiment_neighbors(Context& ctx)
   }
   ctx.report.table(t);
   ctx.report.text(skipped_text(ctx, "neighbors"));
-  plot_errors_vs_x(ctx, "neighbors", "Error against the neighbour count k (by count, exact normals)", plot_rows,
-                   "k (neighbours, query included)",
-                   [](const Error_row& row) { return std::stod(row.condition.substr(2)); }, true,
-                   {"set xrange [2.8:45]", "set xtics (3, 4, 6, 8, 12, 20, 40)"},
-                   "primary error (mean |H - H*|, see text)");
+  plot_errors_vs_x(
+    ctx, "neighbors", "Error against the neighbour count k (by count, exact normals)", plot_rows,
+    "k (neighbours, query included)", [](const Error_row& row) { return std::stod(row.condition.substr(2)); }, true,
+    {"set xrange [2.8:45]", "set xtics (3, 4, 6, 8, 12, 20, 40)"}, "primary error (mean |H - H*|, see text)");
 }
 
-} // namespace
-} // namespace psc_paper
+}  // namespace
+}  // namespace psc_paper
 
 #endif

@@ -46,8 +46,7 @@ void experiment_noise_position(Context& ctx)
   write_error_csv(ctx.path("noise_position.csv"), rows);
   ctx.report.table(error_table(rows, false, true));
   ctx.report.text(skipped_text(ctx, "noise_position"));
-  plot_errors_vs_x(ctx, "noise_position",
-                   "Gaussian noise on the positions, N = " + format_count(n) + ", r = 5% diag",
+  plot_errors_vs_x(ctx, "noise_position", "Gaussian noise on the positions, N = " + format_count(n) + ", r = 5% diag",
                    {{"noise", rows}}, "sigma / r",
                    [](const Error_row& row) { return std::stod(row.condition.substr(6)); }, false,
                    {"set xrange [-0.01:0.21]"});
@@ -121,26 +120,26 @@ void experiment_noise_normals(Context& ctx)
                               if(random.uniform() < p)
                                 q.second = -q.second;
                           }});
-  conditions.push_back({"pca_normals_k" + std::to_string(k), [&](Cloud& c) {
-                          const auto t0 = std::chrono::steady_clock::now();
-                          const std::size_t failed = pca_oriented_normals(c, k);
-                          double angle = 0;
-                          std::size_t wrong = 0;
-                          for(std::size_t i = 0; i < c.size(); ++i)
-                          {
-                            const Vector& truth = sample.points[i].second;
-                            const double d = c[i].second * truth / std::sqrt(c[i].second.squared_length());
-                            angle += std::acos(std::min(1.0, std::abs(d))) * 180 / M_PI;
-                            if(d < 0)
-                              ++wrong;
-                          }
-                          notes.push_back("pca_normals_k" + std::to_string(k) + ": CGAL::pca_estimate_normals (k = " +
-                                          std::to_string(k) + ") + CGAL::mst_orient_normals (k = " + std::to_string(k) +
-                                          ") in " + format(seconds_since(t0)) + " s; mean angle to the true normal " +
-                                          format(angle / double(c.size())) + " degrees; " + std::to_string(wrong) +
-                                          " normals point inwards, " + std::to_string(failed) +
-                                          " left unoriented by the MST");
-                        }});
+  conditions.push_back(
+    {"pca_normals_k" + std::to_string(k), [&](Cloud& c) {
+       const auto t0 = std::chrono::steady_clock::now();
+       const std::size_t failed = pca_oriented_normals(c, k);
+       double angle = 0;
+       std::size_t wrong = 0;
+       for(std::size_t i = 0; i < c.size(); ++i)
+       {
+         const Vector& truth = sample.points[i].second;
+         const double d = c[i].second * truth / std::sqrt(c[i].second.squared_length());
+         angle += std::acos(std::min(1.0, std::abs(d))) * 180 / M_PI;
+         if(d < 0)
+           ++wrong;
+       }
+       notes.push_back("pca_normals_k" + std::to_string(k) + ": CGAL::pca_estimate_normals (k = " + std::to_string(k) +
+                       ") + CGAL::mst_orient_normals (k = " + std::to_string(k) + ") in " + format(seconds_since(t0)) +
+                       " s; mean angle to the true normal " + format(angle / double(c.size())) + " degrees; " +
+                       std::to_string(wrong) + " normals point inwards, " + std::to_string(failed) +
+                       " left unoriented by the MST");
+     }});
   for(const Condition& c : conditions)
   {
     Cloud input = sample.points;
@@ -169,13 +168,14 @@ void experiment_noise_normals(Context& ctx)
     tics += (i ? ", " : "") + gp_quote(names[i]) + " " + std::to_string(i);
   tics += ") rotate by -30 font ',8' noenhanced";
   plot_errors_vs_x(ctx, "noise_normals", "Perturbed input normals, N = " + format_count(n) + ", r = 5% diag",
-                   {{"normals", rows}}, "", [names](const Error_row& row) {
+                   {{"normals", rows}}, "",
+                   [names](const Error_row& row) {
                      return double(std::find(names.begin(), names.end(), row.condition) - names.begin());
                    },
                    false, {tics, "set xrange [-0.5:" + std::to_string(names.size() - 0.5) + "]"});
 }
 
-} // namespace
-} // namespace psc_paper
+}  // namespace
+}  // namespace psc_paper
 
 #endif

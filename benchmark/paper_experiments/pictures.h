@@ -37,7 +37,8 @@ double mean_nearest_distance(const Cloud& c)
       hi[i] = std::max(hi[i], p.first[i]);
     }
   // cells of about 4 points on a surface filling the box
-  double area = (hi[0] - lo[0]) * (hi[1] - lo[1]) + (hi[1] - lo[1]) * (hi[2] - lo[2]) + (hi[0] - lo[0]) * (hi[2] - lo[2]);
+  double area =
+    (hi[0] - lo[0]) * (hi[1] - lo[1]) + (hi[1] - lo[1]) * (hi[2] - lo[2]) + (hi[0] - lo[0]) * (hi[2] - lo[2]);
   const double cell = 2 * std::sqrt(2 * area / double(c.size()));
   const goursat::Hash_grid grid(xyz, cell);
   double sum = 0;
@@ -139,7 +140,8 @@ void render_figure(Context& ctx, const std::string& name, const std::string& tit
   gp << "set origin " << columns * cw << "," << top - rows.size() * ch << "\nset size " << 100.0 / w << ","
      << rows.size() * ch << "\n";
   gp << "unset title\nset colorbox user origin " << (columns * cw + 0.01) << "," << (top - rows.size() * ch + 0.1 * ch)
-     << " size 0.015," << (rows.size() * ch - 0.2 * ch) << "\nset cbtics font ',10'\nset cblabel 'curvature (1/length)'\n";
+     << " size 0.015," << (rows.size() * ch - 0.2 * ch)
+     << "\nset cbtics font ',10'\nset cblabel 'curvature (1/length)'\n";
   gp << "unset size\nset size " << 100.0 / w << "," << rows.size() * ch << "\n";
   gp << "plot [0:1][0:1] '+' using (NaN):(NaN):(0) with points palette\n";
   gp << "unset multiplot\n";
@@ -170,8 +172,9 @@ void experiment_pictures(Context& ctx)
     std::vector<double> pooled = panels[1].values;
     pooled.insert(pooled.end(), panels[2].values.begin(), panels[2].values.end());
     const double range = quantile_abs(pooled, 0.95);
-    render_figure(ctx, "curvatures_bunny", "Stanford bunny (" + format_count(bunny.size()) + " points), ASO, r = " + format(r),
-                  bunny, {panels}, render::View::looking_from({{0, 0, 1}}, {{0, 1, 0}}), range);
+    render_figure(ctx, "curvatures_bunny",
+                  "Stanford bunny (" + format_count(bunny.size()) + " points), ASO, r = " + format(r), bunny, {panels},
+                  render::View::looking_from({{0, 0, 1}}, {{0, 1, 0}}), range);
     ctx.report.text("- `curvatures_bunny.png`: bunny, ASO at r = " + format(r) + ", " + std::to_string(invalid) +
                     " invalid estimates (dark green); colour range ±" + format(range) +
                     " (95% quantile of |k|), blue negative, red positive.");
@@ -214,11 +217,13 @@ void experiment_pictures(Context& ctx)
     pooled.insert(pooled.end(), truth_panels[2].values.begin(), truth_panels[2].values.end());
     const double range = quantile_abs(pooled, 0.95);
     render_figure(ctx, "curvatures_goursat_lidar",
-                  "Goursat surface, simulated LiDAR (" + std::to_string(lidar.size()) + " points), ASO r = " + format(r) +
-                    " (top) and exact values (bottom)",
+                  "Goursat surface, simulated LiDAR (" + std::to_string(lidar.size()) +
+                    " points), ASO r = " + format(r) + " (top) and exact values (bottom)",
                   lidar, {est_panels, truth_panels}, render::View::looking_from({{0, 0, 1}}, {{0, 1, 0}}), range);
-    ctx.report.text("- `curvatures_goursat_lidar.png`: simulated LiDAR scan of the Goursat surface (top face, anisotropic, "
-                    "depth noise), ASO at r = " + format(r) + " above the exact values; colour range ±" + format(range) + ".\n");
+    ctx.report.text(
+      "- `curvatures_goursat_lidar.png`: simulated LiDAR scan of the Goursat surface (top face, anisotropic, "
+      "depth noise), ASO at r = " +
+      format(r) + " above the exact values; colour range ±" + format(range) + ".\n");
 
     std::vector<Error_row> rows;
     for(const Estimator& e : ctx.estimators)
@@ -235,7 +240,7 @@ void experiment_pictures(Context& ctx)
   }
 }
 
-} // namespace
-} // namespace psc_paper
+}  // namespace
+}  // namespace psc_paper
 
 #endif

@@ -49,9 +49,9 @@ void experiment_sampler(Context& ctx)
 {
   ctx.report.section("Sampler: blue noise on the Goursat surface");
   const auto& c = goursat::surface_constants();
-  ctx.report.text("Surface `-8 - 2(x²+y²+z²) + 0.03(x⁴+y⁴+z⁴) = 0`: area " + format(c.area, 7) +
-                  ", bounding box [-" + format(c.half_extent, 7) + ", " + format(c.half_extent, 7) +
-                  "]³, diagonal " + format(c.diagonal, 7) + ". Spacing below is the nearest-neighbour "
+  ctx.report.text("Surface `-8 - 2(x²+y²+z²) + 0.03(x⁴+y⁴+z⁴) = 0`: area " + format(c.area, 7) + ", bounding box [-" +
+                  format(c.half_extent, 7) + ", " + format(c.half_extent, 7) + "]³, diagonal " + format(c.diagonal, 7) +
+                  ". Spacing below is the nearest-neighbour "
                   "distance divided by h = sqrt(area/N) (a hexagonal lattice has 1.075 h, uniform random "
                   "points 0.5 h on average with a coefficient of variation of 0.52).\n");
   std::vector<Spacing_stats> stats;
@@ -98,11 +98,11 @@ void experiment_sampler(Context& ctx)
     }
   }
   Table t;
-  t.header = {"point set", "N", "mean spacing / h", "coefficient of variation", "min / h", "1% quantile / h",
+  t.header = {"point set",       "N", "mean spacing / h", "coefficient of variation", "min / h", "1% quantile / h",
               "99% quantile / h"};
   for(const Spacing_stats& s : stats)
-    t.rows.push_back({s.name, std::to_string(s.n), format(s.mean), format(s.cv), format(s.min),
-                      format(s.p01), format(s.p99)});
+    t.rows.push_back(
+      {s.name, std::to_string(s.n), format(s.mean), format(s.cv), format(s.min), format(s.p01), format(s.p99)});
   ctx.report.table(t);
   ctx.report.text("The same estimators on the shared samples and on this sampler's (r = 5% of the diagonal, exact "
                   "normals, every point scored; the shared points lie within 1e-5 of the surface):\n");
@@ -112,8 +112,7 @@ void experiment_sampler(Context& ctx)
   std::ofstream csv(ctx.path("sampler.csv"));
   csv << "point_set,N,mean_spacing_over_h,cv,min_over_h,p01_over_h,p99_over_h\n";
   for(const Spacing_stats& s : stats)
-    csv << s.name << "," << s.n << "," << s.mean << "," << s.cv << "," << s.min << "," << s.p01 << ","
-        << s.p99 << "\n";
+    csv << s.name << "," << s.n << "," << s.mean << "," << s.cv << "," << s.min << "," << s.p01 << "," << s.p99 << "\n";
 
   std::ofstream gp(ctx.path("spacing.gp"));
   gp << "set terminal pngcairo size 900,520 font ',11'\nset output 'spacing.png'\n";
@@ -136,7 +135,7 @@ void experiment_sampler(Context& ctx)
   gp << "\n";
 }
 
-} // namespace
-} // namespace psc_paper
+}  // namespace
+}  // namespace psc_paper
 
 #endif

@@ -163,20 +163,19 @@ struct Estimator
   std::function<std::vector<Estimate>(const Cloud&, std::size_t, std::size_t)> run_by_count;
 };
 
-#define PSC_ESTIMATOR(NAME, FUNCTION, UNSIGNED)                                              \
-  list.push_back(Estimator{NAME, UNSIGNED, [](const Cloud& c, double r, bool parallel) {      \
-                             const auto np =                                                  \
-                               CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()); \
-                             return parallel ? CGAL::FUNCTION<CGAL::Parallel_tag>(c, r, np)    \
-                                             : CGAL::FUNCTION<CGAL::Sequential_tag>(c, r, np); \
-                           },                                                                 \
-                           [](const Cloud& c, std::size_t k, std::size_t minimum) {           \
-                             namespace P = CGAL::Point_set_curvatures::parameters;            \
-                             return CGAL::FUNCTION<CGAL::Parallel_tag>(                       \
-                               c, P::neighbor_count(k, P::min_neighbors(                      \
-                                    minimum, CGAL::parameters::point_map(Point_map())         \
-                                               .normal_map(Normal_map()))));                  \
-                           }})
+#define PSC_ESTIMATOR(NAME, FUNCTION, UNSIGNED)                                                                        \
+  list.push_back(Estimator{                                                                                            \
+    NAME, UNSIGNED,                                                                                                    \
+    [](const Cloud& c, double r, bool parallel) {                                                                      \
+      const auto np = CGAL::parameters::point_map(Point_map()).normal_map(Normal_map());                               \
+      return parallel ? CGAL::FUNCTION<CGAL::Parallel_tag>(c, r, np) : CGAL::FUNCTION<CGAL::Sequential_tag>(c, r, np); \
+    },                                                                                                                 \
+    [](const Cloud& c, std::size_t k, std::size_t minimum) {                                                           \
+      namespace P = CGAL::Point_set_curvatures::parameters;                                                            \
+      return CGAL::FUNCTION<CGAL::Parallel_tag>(                                                                       \
+        c, P::neighbor_count(                                                                                          \
+             k, P::min_neighbors(minimum, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()))));        \
+    }})
 
 // In the order of the paper's Table 2.
 std::vector<Estimator> all_estimators()
@@ -191,21 +190,23 @@ std::vector<Estimator> all_estimators()
   PSC_ESTIMATOR("APSS", estimate_apss_curvatures, false);
   PSC_ESTIMATOR("ASO", estimate_aso_curvatures, false);  // the package's default (ROBUST)
   // the paper's estimator (Aso_variant::PAPER), side by side with the default
-  list.push_back(Estimator{"ASO-paper", false,
-                           [](const Cloud& c, double r, bool parallel) {
-                             namespace P = CGAL::Point_set_curvatures::parameters;
-                             const auto np = P::aso_variant(
-                               CGAL::Aso_variant::PAPER, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()));
-                             return parallel ? CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(c, r, np)
-                                             : CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(c, r, np);
-                           },
-                           [](const Cloud& c, std::size_t k, std::size_t minimum) {
-                             namespace P = CGAL::Point_set_curvatures::parameters;
-                             return CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
-                               c, P::neighbor_count(k, P::min_neighbors(minimum, P::aso_variant(
-                                    CGAL::Aso_variant::PAPER, CGAL::parameters::point_map(Point_map())
-                                                                .normal_map(Normal_map())))));
-                           }});
+  list.push_back(Estimator{
+    "ASO-paper", false,
+    [](const Cloud& c, double r, bool parallel) {
+      namespace P = CGAL::Point_set_curvatures::parameters;
+      const auto np =
+        P::aso_variant(CGAL::Aso_variant::PAPER, CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()));
+      return parallel ? CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(c, r, np)
+                      : CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(c, r, np);
+    },
+    [](const Cloud& c, std::size_t k, std::size_t minimum) {
+      namespace P = CGAL::Point_set_curvatures::parameters;
+      return CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
+        c, P::neighbor_count(
+             k, P::min_neighbors(minimum,
+                                 P::aso_variant(CGAL::Aso_variant::PAPER,
+                                                CGAL::parameters::point_map(Point_map()).normal_map(Normal_map())))));
+    }});
 #ifdef PSC_HAS_JET
   PSC_ESTIMATOR("OJets", estimate_jet_curvatures, false);
 #endif
@@ -247,9 +248,7 @@ struct Skipped_run
 class Budget
 {
 public:
-  Budget(std::string experiment, double cap)
-    : m_experiment(std::move(experiment)), m_cap(cap)
-  {}
+  Budget(std::string experiment, double cap) : m_experiment(std::move(experiment)), m_cap(cap) {}
 
   static double work(double points, double neighbors) { return points * (neighbors + 10); }
 
@@ -266,8 +265,7 @@ public:
   static double elapsed() { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start()).count(); }
 
   // true if the run fits; otherwise records it as skipped.
-  bool allow(const std::string& key, double work, const std::string& setting,
-             std::vector<Skipped_run>& skipped)
+  bool allow(const std::string& key, double work, const std::string& setting, std::vector<Skipped_run>& skipped)
   {
     auto it = m_last.find(key);
     const double predicted = it == m_last.end() ? 0 : it->second.first * work / it->second.second;
@@ -276,9 +274,9 @@ public:
     if(fits && in_time)
       return true;
     skipped.push_back(Skipped_run{m_experiment, key, setting + (in_time ? "" : " (program deadline)"), predicted});
-    std::cerr << "  skip " << key << " " << setting << ": predicted " << format(predicted)
-              << " s, budget left " << format(m_cap - m_spent[key]) << " s, program time "
-              << format(elapsed()) << " s of " << format(deadline()) << " s\n";
+    std::cerr << "  skip " << key << " " << setting << ": predicted " << format(predicted) << " s, budget left "
+              << format(m_cap - m_spent[key]) << " s, program time " << format(elapsed()) << " s of "
+              << format(deadline()) << " s\n";
     return false;
   }
 
@@ -311,9 +309,7 @@ struct Goursat_sample
 class Sample_cache
 {
 public:
-  explicit Sample_cache(std::uint64_t seed)
-    : m_seed(seed)
-  {}
+  explicit Sample_cache(std::uint64_t seed) : m_seed(seed) {}
 
   const Goursat_sample& get(std::size_t n)
   {
@@ -373,8 +369,7 @@ double distance_to_fundamental_cone(const double p[3])
     for(int i = start[b]; i < end; ++i)
       projection[i] = std::max(0.0, value[b]);
   }
-  return std::sqrt((p[0] - projection[0]) * (p[0] - projection[0]) +
-                   (p[1] - projection[1]) * (p[1] - projection[1]) +
+  return std::sqrt((p[0] - projection[0]) * (p[0] - projection[0]) + (p[1] - projection[1]) * (p[1] - projection[1]) +
                    (p[2] - projection[2]) * (p[2] - projection[2]));
 }
 
@@ -548,10 +543,9 @@ void write_error_csv(const std::string& file, const std::vector<Error_row>& rows
     throw std::runtime_error("cannot write " + file);
   out << error_csv_header << "\n";
   for(const Error_row& r : rows)
-    out << r.estimator << "," << r.N << "," << format(r.radius, 6) << "," << r.condition << ","
-        << format(r.errors.H, 6) << "," << format(r.errors.normal, 6) << "," << format(r.errors.kmin, 6)
-        << "," << format(r.errors.kmax, 6) << "," << format(r.errors.direction, 6) << ","
-        << format(r.errors.valid_fraction, 6) << "\n";
+    out << r.estimator << "," << r.N << "," << format(r.radius, 6) << "," << r.condition << "," << format(r.errors.H, 6)
+        << "," << format(r.errors.normal, 6) << "," << format(r.errors.kmin, 6) << "," << format(r.errors.kmax, 6)
+        << "," << format(r.errors.direction, 6) << "," << format(r.errors.valid_fraction, 6) << "\n";
 }
 
 // ------------------------------------------------------------------------------------
@@ -591,8 +585,8 @@ Table error_table(const std::vector<Error_row>& rows, bool with_n, bool with_con
   t.header.push_back("r");
   if(with_condition)
     t.header.push_back("condition");
-  for(const char* h : {"mean abs(abs(H)-abs(H*))", "mean 1-abs(n.n*)", "mean abs(k_min err)",
-                       "mean abs(k_max err)", "direction err (deg)", "valid", "seconds"})
+  for(const char* h : {"mean abs(abs(H)-abs(H*))", "mean 1-abs(n.n*)", "mean abs(k_min err)", "mean abs(k_max err)",
+                       "direction err (deg)", "valid", "seconds"})
     t.header.push_back(h);
   for(const Error_row& r : rows)
   {
@@ -617,9 +611,7 @@ Table error_table(const std::vector<Error_row>& rows, bool with_n, bool with_con
 class Report
 {
 public:
-  explicit Report(std::string file)
-    : m_file(std::move(file))
-  {}
+  explicit Report(std::string file) : m_file(std::move(file)) {}
   void section(const std::string& title) { add("\n## " + title + "\n\n"); }
   void text(const std::string& s) { add(s + "\n"); }
   void table(const Table& t) { add(t.markdown() + "\n"); }
@@ -687,8 +679,7 @@ struct Context
   Report report;
   std::vector<Skipped_run> skipped;
 
-  Context(const Options& o)
-    : options(o), estimators(all_estimators()), samples(o.seed), report(o.out + "/summary.md")
+  Context(const Options& o) : options(o), estimators(all_estimators()), samples(o.seed), report(o.out + "/summary.md")
   {}
 
   std::string path(const std::string& name) const { return options.out + "/" + name; }
@@ -699,8 +690,8 @@ struct Context
 };
 
 // Runs one estimator on a test cloud (Parallel_tag) and scores it; false if skipped.
-bool run_and_score(Context& ctx, Budget& budget, const Estimator& e, const Test_cloud& t,
-                   double radius, const std::string& condition, std::vector<Error_row>& rows,
+bool run_and_score(Context& ctx, Budget& budget, const Estimator& e, const Test_cloud& t, double radius,
+                   const std::string& condition, std::vector<Error_row>& rows,
                    std::function<void(const std::vector<Estimate>&)> also = {})
 {
   const double work = Budget::work(double(t.points.size()), ctx.expected_neighbors(t.sample_size, radius));
@@ -711,10 +702,10 @@ bool run_and_score(Context& ctx, Budget& budget, const Estimator& e, const Test_
   const std::vector<Estimate> est = e.run(t.points, radius, true);
   const double seconds = seconds_since(t0);
   budget.record(e.name, seconds, work);
-  rows.push_back(Error_row{e.name, t.sample_size, radius, condition, score(t, est, e.unsigned_curvatures),
-                           seconds, t.points.size()});
-  std::cerr << "  " << e.name << " " << setting << ": " << format(seconds) << " s on "
-            << t.points.size() << " points\n";
+  rows.push_back(Error_row{e.name, t.sample_size, radius, condition, score(t, est, e.unsigned_curvatures), seconds,
+                           t.points.size()});
+  std::cerr << "  " << e.name << " " << setting << ": " << format(seconds) << " s on " << t.points.size()
+            << " points\n";
   if(also)
     also(est);
   return true;
@@ -725,11 +716,10 @@ std::string skipped_text(const Context& ctx, const std::string& experiment)
   std::ostringstream s;
   for(const Skipped_run& k : ctx.skipped)
     if(k.experiment == experiment)
-      s << "- skipped (time budget): " << k.estimator << ", " << k.setting << ", predicted "
-        << format(k.predicted) << " s\n";
+      s << "- skipped (time budget): " << k.estimator << ", " << k.setting << ", predicted " << format(k.predicted)
+        << " s\n";
   return s.str();
 }
-
 
 // Errors against x for every estimator, as a gnuplot script (experiments 1, 2, 3 and 6).
 void plot_errors_vs_x(Context& ctx, const std::string& file, const std::string& title,
@@ -748,9 +738,8 @@ void plot_errors_vs_x(Context& ctx, const std::string& file, const std::string& 
   // Layout in pixels: 75 for the figure and panel titles, 300 per row of graphs, 95 between
   // rows, the x labels (120 for rotated names), 35 for the legend of the whole figure.
   const double rows_count = double(rows_per_row.size());
-  const bool rotated_tics = std::any_of(xtics.begin(), xtics.end(), [](const std::string& t) {
-    return t.find("rotate") != std::string::npos;
-  });
+  const bool rotated_tics =
+    std::any_of(xtics.begin(), xtics.end(), [](const std::string& t) { return t.find("rotate") != std::string::npos; });
   const double labels = rotated_tics ? 120 : 55;
   const double height = 75 + 300 * rows_count + 95 * (rows_count - 1) + labels + 35;
   gp << "set terminal pngcairo size 1900," << int(height) << " font ',10'\n";
@@ -797,7 +786,8 @@ void plot_errors_vs_x(Context& ctx, const std::string& file, const std::string& 
       const double y1 = 1 - (75 + double(row) * 395) / height;
       gp << "set lmargin at screen " << x0 << "\nset rmargin at screen " << x0 + width << "\n";
       gp << "set tmargin at screen " << y1 << "\nset bmargin at screen " << y1 - 300 / height << "\n";
-      gp << "set title " << gp_quote(std::string(q == 0 ? first_title : quantity_titles[q]) + " — " + rows_per_row[row].first) << "\n";
+      gp << "set title "
+         << gp_quote(std::string(q == 0 ? first_title : quantity_titles[q]) + " — " + rows_per_row[row].first) << "\n";
       gp << "plot ";
       bool first = true;
       for(std::size_t i = 0; i < ctx.estimators.size(); ++i)
@@ -850,7 +840,7 @@ Test_cloud scored_everywhere(const Cloud& points, bool project)
   }
   return t;
 }
-} // namespace
-} // namespace psc_paper
+}  // namespace
+}  // namespace psc_paper
 
 #endif

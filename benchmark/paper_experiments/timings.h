@@ -106,11 +106,15 @@ void experiment_timings(Context& ctx)
           << r.estimator << "," << r.execution << "," << format(r.seconds, 6) << ","
           << format(r.seconds / aso_seconds(r), 4) << "," << r.note << "\n";
   }
-  ctx.report.text("Same radius for every estimator: bunny r = " + format(bunny_r) + ", Goursat r = " + format(goursat_r, 4) +
+  ctx.report.text("Same radius for every estimator: bunny r = " + format(bunny_r) +
+                  ", Goursat r = " + format(goursat_r, 4) +
                   " (40 expected neighbours). Seconds for the whole cloud (input to results, neighbour search "
-                  "included), best of up to 3 runs while they take under " + format(ctx.options.quick ? 2 : 10) +
+                  "included), best of up to 3 runs while they take under " +
+                  format(ctx.options.quick ? 2 : 10) +
                   " s in all; parallel = CGAL::Parallel_tag "
-                  "on " + std::to_string(threads) + " hardware threads (the parallel rows are meaningful "
+                  "on " +
+                  std::to_string(threads) +
+                  " hardware threads (the parallel rows are meaningful "
                   "only if no other job used the cores: the last table gives the speed-ups measured).\n");
   Table t;
   t.header = {"data", "execution"};
@@ -181,14 +185,15 @@ void experiment_timings(Context& ctx)
         "set style data histogram\nset style histogram cluster gap 1\nset style fill solid 0.8 border -1\n"
         "set logscale y\nset ylabel 'seconds'\nset grid y\nset xtics rotate by -30\nset key top left\n";
   for(std::size_t i = 0; i < data.size(); ++i)
-    gp << "set title " << gp_quote(data[i].name + " (" + format_count(data[i].points.size()) + " points, r = " +
-                                   format(data[i].radius) + ")")
+    gp << "set title "
+       << gp_quote(data[i].name + " (" + format_count(data[i].points.size()) +
+                   " points, r = " + format(data[i].radius) + ")")
        << "\nplot $T using " << 2 + 2 * i << ":xtic(1) title 'sequential' lc rgb '#7570b3', '' using " << 3 + 2 * i
        << " title 'parallel' lc rgb '#1b9e77'\n";
   gp << "unset multiplot\n";
 }
 
-} // namespace
-} // namespace psc_paper
+}  // namespace
+}  // namespace psc_paper
 
 #endif

@@ -56,10 +56,13 @@ void experiment_variants(Context& ctx)
                          std::size_t refinement, bool blend) {
     return [=](const Cloud& c, double r) {
       return CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
-        c, r, P::aso_variant(CGAL::Aso_variant::PAPER,
-                             P::weight_kernel(kernel, P::sample_weights(weights, P::robust_orientation(
-                                                                                    robust, P::normal_refinement(refinement,
-                                                                                    P::normal_field_blend(blend, maps)))))));
+        c, r,
+        P::aso_variant(
+          CGAL::Aso_variant::PAPER,
+          P::weight_kernel(
+            kernel, P::sample_weights(
+                      weights, P::robust_orientation(
+                                 robust, P::normal_refinement(refinement, P::normal_field_blend(blend, maps)))))));
     };
   };
   typedef CGAL::Apss_weight_kernel W;
@@ -98,14 +101,16 @@ void experiment_variants(Context& ctx)
   conditions.push_back({"Goursat 50K blue noise", scored_everywhere(g50, false), 1.5});
   conditions.push_back(
     {"Goursat 10K i.i.d.", scored_everywhere(goursat::iid_sample(10000, ctx.options.seed * 37 + 1), false), 1.5});
-  conditions.push_back({"Goursat LiDAR", scored_everywhere(psc_test::read_xyz(ctx.options.data + "/goursat-lidar.xyz"), true), 1.4});
+  conditions.push_back(
+    {"Goursat LiDAR", scored_everywhere(psc_test::read_xyz(ctx.options.data + "/goursat-lidar.xyz"), true), 1.4});
   {
     // i.i.d. ellipsoid 1 x 0.7 x 0.45 with a density ramp 1:4 along x (rejection sampling)
     const double a = 1, b = 0.7, c = 0.45;
     std::mt19937_64 rng(ctx.options.seed * 41 + 3);
     std::uniform_real_distribution<double> u(0, 1);
     Cloud e;
-    for(const Oriented_point& p : psc_test::ellipsoid(ctx.options.quick ? 40000 : 80000, a, b, c, unsigned(ctx.options.seed)))
+    for(const Oriented_point& p :
+        psc_test::ellipsoid(ctx.options.quick ? 40000 : 80000, a, b, c, unsigned(ctx.options.seed)))
       if(u(rng) * 4 < 1 + 3 * (p.first.x() / a + 1) / 2)
         e.push_back(p);
     Test_cloud t;
@@ -208,7 +213,7 @@ void experiment_variants(Context& ctx)
   ctx.report.text(skipped_text(ctx, "variants"));
 }
 
-} // namespace
-} // namespace psc_paper
+}  // namespace
+}  // namespace psc_paper
 
 #endif

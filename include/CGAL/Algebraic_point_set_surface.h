@@ -26,8 +26,7 @@ namespace CGAL {
 
 /// \ingroup PkgPointSetCurvaturesRef
 /// Outcome of `CGAL::Algebraic_point_set_surface::project()`.
-enum class Apss_projection_status : unsigned char
-{
+enum class Apss_projection_status : unsigned char {
   CONVERGED = 0,      ///< the last step moved the point by less than the tolerance
   NOT_CONVERGED,      ///< the iteration cap was reached first; the last iterate is returned
   TOO_FEW_NEIGHBORS,  ///< fewer than 3 points of the cloud at distance `< r` of an iterate
@@ -51,10 +50,7 @@ inline const char* to_string(Apss_projection_status s)
   return "unknown";
 }
 
-inline std::ostream& operator<<(std::ostream& os, Apss_projection_status s)
-{
-  return os << to_string(s);
-}
+inline std::ostream& operator<<(std::ostream& os, Apss_projection_status s) { return os << to_string(s); }
 
 /// \ingroup PkgPointSetCurvaturesRef
 ///
@@ -132,8 +128,7 @@ public:
       const double x[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
       double n[3] = {CGAL::to_double(v.x()), CGAL::to_double(v.y()), CGAL::to_double(v.z())};
       const double nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
-      if(!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]) || !(nn > 0) ||
-         !std::isfinite(nn))
+      if(!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]) || !(nn > 0) || !std::isfinite(nn))
         continue;
       const double inv = 1.0 / std::sqrt(nn);
       for(int a = 0; a < 3; ++a)
@@ -159,8 +154,7 @@ public:
     if(!(tolerance >= 0) || !std::isfinite(tolerance))
     {
       std::ostringstream msg;
-      msg << "Algebraic_point_set_surface: parameter 'tolerance' must be non-negative and finite, got "
-          << tolerance;
+      msg << "Algebraic_point_set_surface: parameter 'tolerance' must be non-negative and finite, got " << tolerance;
       throw std::invalid_argument(msg.str());
     }
     m_tolerance = tolerance;
@@ -243,8 +237,12 @@ public:
         soa[a * n + i] = buffer[6 * i + a];
     PSCI::Neighborhood nb;
     nb.size = n;
-    nb.qx = soa.data(); nb.qy = nb.qx + n; nb.qz = nb.qy + n;
-    nb.nx = nb.qz + n; nb.ny = nb.nx + n; nb.nz = nb.ny + n;
+    nb.qx = soa.data();
+    nb.qy = nb.qx + n;
+    nb.qz = nb.qy + n;
+    nb.nx = nb.qz + n;
+    nb.ny = nb.nx + n;
+    nb.nz = nb.ny + n;
     nb.radius = m_radius;
     for(int a = 0; a < 3; ++a)
       nb.center[a] = y[a];
@@ -298,6 +296,6 @@ private:
   Point_set_curvatures::internal::Position_index m_index;
 };
 
-} // namespace CGAL
+}  // namespace CGAL
 
 #endif

@@ -32,22 +32,24 @@ Aso_settings aso_settings_from(const NamedParameters& np, Aso_variant default_va
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   using CGAL::parameters::is_default_parameter;
-  const Aso_variant_options preset =
-    choose_parameter(get_parameter(np, internal_np::aso_options),
-                     aso_variant_options(choose_parameter(get_parameter(np, internal_np::aso_variant), default_variant)));
+  const Aso_variant_options preset = choose_parameter(
+    get_parameter(np, internal_np::aso_options),
+    aso_variant_options(choose_parameter(get_parameter(np, internal_np::aso_variant), default_variant)));
   const Apss_weight_kernel kernel = is_default_parameter<NamedParameters, internal_np::weight_kernel_t>::value
                                       ? preset.weight_kernel
                                       : weight_kernel_parameter(np);
   if(kernel == Apss_weight_kernel::CONSTANT)
-    throw std::invalid_argument(std::string(function_name) + ": parameter 'weight_kernel': the ASO differentiates "
+    throw std::invalid_argument(std::string(function_name) +
+                                ": parameter 'weight_kernel': the ASO differentiates "
                                 "the kernel, Apss_weight_kernel::CONSTANT is not supported");
   Aso_settings settings;
-  settings.projection = choose_parameter(get_parameter(np, internal_np::aso_projection), Aso_projection::CORRECTED_NORMAL);
+  settings.projection =
+    choose_parameter(get_parameter(np, internal_np::aso_projection), Aso_projection::CORRECTED_NORMAL);
   settings.kernel_exponent = kernel_exponent(kernel);
-  settings.orient_neighbors = choose_parameter(get_parameter(np, internal_np::robust_orientation),
-                                               preset.robust_orientation);
-  settings.normal_field_blend = choose_parameter(get_parameter(np, internal_np::normal_field_blend),
-                                                 preset.normal_field_blend);
+  settings.orient_neighbors =
+    choose_parameter(get_parameter(np, internal_np::robust_orientation), preset.robust_orientation);
+  settings.normal_field_blend =
+    choose_parameter(get_parameter(np, internal_np::normal_field_blend), preset.normal_field_blend);
   settings.position_fit_blend = choose_parameter(get_parameter(np, internal_np::position_fit_blend), 0.0);
   if(!(settings.position_fit_blend >= 0 && settings.position_fit_blend <= 1))
     throw std::invalid_argument(std::string(function_name) + ": parameter 'position_fit_blend' must lie in [0, 1]");
@@ -57,8 +59,8 @@ Aso_settings aso_settings_from(const NamedParameters& np, Aso_variant default_va
   return settings;
 }
 
-} // namespace internal
-} // namespace Point_set_curvatures
+}  // namespace internal
+}  // namespace Point_set_curvatures
 
 /// \ingroup PkgPointSetCurvaturesRef
 ///
@@ -90,9 +92,9 @@ public:
   Algebraic_shape_operator_fit(const Point_3& evaluation_point, FT radius,
                                Aso_projection projection = Aso_projection::CORRECTED_NORMAL,
                                Apss_weight_kernel kernel = Apss_weight_kernel::SMOOTH)
-    : Algebraic_shape_operator_fit(evaluation_point, radius,
-                                   Point_set_curvatures::parameters::aso_projection(
-                                     projection, Point_set_curvatures::parameters::weight_kernel(kernel)))
+      : Algebraic_shape_operator_fit(evaluation_point, radius,
+                                     Point_set_curvatures::parameters::aso_projection(
+                                       projection, Point_set_curvatures::parameters::weight_kernel(kernel)))
   {}
 
   /// Starts a fit at `evaluation_point` with the estimator that these named parameters of
@@ -104,9 +106,10 @@ public:
   /// \throws std::invalid_argument as above, or if `position_fit_blend` is outside [0, 1].
   template <class NamedParameters>
   Algebraic_shape_operator_fit(const Point_3& evaluation_point, FT radius, const NamedParameters& np)
-    : m_settings(Point_set_curvatures::internal::aso_settings_from(np, Aso_variant::PAPER, "Algebraic_shape_operator_fit")),
-      m_frame(evaluation_point, CGAL::to_double(radius), "Algebraic_shape_operator_fit",
-              m_settings.projection == Aso_projection::CORRECTED_NORMAL)
+      : m_settings(
+          Point_set_curvatures::internal::aso_settings_from(np, Aso_variant::PAPER, "Algebraic_shape_operator_fit")),
+        m_frame(evaluation_point, CGAL::to_double(radius), "Algebraic_shape_operator_fit",
+                m_settings.projection == Aso_projection::CORRECTED_NORMAL)
   {}
 
   /// Adds the oriented point `(p, n)` with the quadrature weight `sample_weight` (positive:
@@ -155,8 +158,8 @@ public:
   /// neighbours added so far. Invalid with `TOO_FEW_NEIGHBORS` below `min_neighbors`
   /// neighbours (by default `CGAL::Point_set_curvatures::default_min_neighbors::aso`, the
   /// measured minimum of `estimate_aso_curvatures()`; never below 3), or `DEGENERATE_FIT`.
-  Curvature_estimate<GeomTraits> estimate(
-    std::size_t min_neighbors = Point_set_curvatures::default_min_neighbors::aso) const
+  Curvature_estimate<GeomTraits>
+  estimate(std::size_t min_neighbors = Point_set_curvatures::default_min_neighbors::aso) const
   {
     if(neighbor_count() < min_neighbors)
       return Point_set_curvatures::internal::to_curvature_estimate<GeomTraits>(
@@ -164,8 +167,12 @@ public:
         neighbor_count());
     Point_set_curvatures::internal::Neighborhood nb;
     nb.size = neighbor_count();
-    nb.qx = m_columns[0].data(); nb.qy = m_columns[1].data(); nb.qz = m_columns[2].data();
-    nb.nx = m_columns[3].data(); nb.ny = m_columns[4].data(); nb.nz = m_columns[5].data();
+    nb.qx = m_columns[0].data();
+    nb.qy = m_columns[1].data();
+    nb.qz = m_columns[2].data();
+    nb.nx = m_columns[3].data();
+    nb.ny = m_columns[4].data();
+    nb.nz = m_columns[5].data();
     nb.radius = m_frame.radius();
     nb.sample_weight = m_weighted ? m_weights.data() : nullptr;
     return Point_set_curvatures::internal::to_curvature_estimate<GeomTraits>(
@@ -181,6 +188,6 @@ private:
   bool m_weighted = false;           // some sample weight differs from 1
 };
 
-} // namespace CGAL
+}  // namespace CGAL
 
 #endif

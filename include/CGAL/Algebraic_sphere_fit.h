@@ -36,7 +36,7 @@ public:
   /// \throws std::invalid_argument if `radius` is not positive and finite or the
   /// evaluation point is not finite.
   Algebraic_sphere_fit(const Point_3& evaluation_point, FT radius)
-    : m_frame(evaluation_point, CGAL::to_double(radius), "Algebraic_sphere_fit")
+      : m_frame(evaluation_point, CGAL::to_double(radius), "Algebraic_sphere_fit")
   {}
 
   /// Adds the oriented point `(p, n)`; returns `true` if it lies at distance `< radius`
@@ -65,15 +65,14 @@ public:
   /// `TOO_FEW_NEIGHBORS` below `min_neighbors` neighbours (by default
   /// `CGAL::Point_set_curvatures::default_min_neighbors::apss`, the measured minimum of
   /// `estimate_apss_curvatures()`; never below 3), or `DEGENERATE_FIT`.
-  Curvature_estimate<GeomTraits> estimate(
-    std::size_t min_neighbors = Point_set_curvatures::default_min_neighbors::apss) const
+  Curvature_estimate<GeomTraits>
+  estimate(std::size_t min_neighbors = Point_set_curvatures::default_min_neighbors::apss) const
   {
     namespace I = Point_set_curvatures::internal;
     if(m_sums.count < min_neighbors)
       return I::to_curvature_estimate<GeomTraits>(
         I::Local_estimate::invalid(Curvature_estimate_status::TOO_FEW_NEIGHBORS), m_sums.count);
-    return I::to_curvature_estimate<GeomTraits>(I::algebraic_sphere_estimate(m_sums, m_frame.radius()),
-                                                m_sums.count);
+    return I::to_curvature_estimate<GeomTraits>(I::algebraic_sphere_estimate(m_sums, m_frame.radius()), m_sums.count);
   }
 
 private:
@@ -81,6 +80,6 @@ private:
   Point_set_curvatures::internal::Algebraic_sphere_sums<> m_sums;
 };
 
-} // namespace CGAL
+}  // namespace CGAL
 
 #endif

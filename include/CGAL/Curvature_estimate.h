@@ -16,8 +16,7 @@ namespace CGAL {
 /// \ingroup PkgPointSetCurvaturesRef
 /// Why an estimate is, or is not, valid. Every estimator of the package fills
 /// `Curvature_estimate::status` with one of these values.
-enum class Curvature_estimate_status : unsigned char
-{
+enum class Curvature_estimate_status : unsigned char {
   VALID = 0,          ///< every field the estimator provides holds a finite value
   TOO_FEW_NEIGHBORS,  ///< fewer points at distance `< r` (query included) than the estimator needs
   DEGENERATE_FIT,     ///< the neighbours (nearly) coincide, or the fit has no usable normal or tensor
@@ -47,10 +46,7 @@ inline const char* to_string(Curvature_estimate_status s)
   return "unknown";
 }
 
-inline std::ostream& operator<<(std::ostream& os, Curvature_estimate_status s)
-{
-  return os << to_string(s);
-}
+inline std::ostream& operator<<(std::ostream& os, Curvature_estimate_status s) { return os << to_string(s); }
 
 /// \ingroup PkgPointSetCurvaturesRef
 ///
@@ -126,6 +122,6 @@ struct Curvature_estimate
   static Vector_3 nan_vector() { return Vector_3(nan(), nan(), nan()); }
 };
 
-} // namespace CGAL
+}  // namespace CGAL
 
-#endif // CGAL_CURVATURE_ESTIMATE_H
+#endif  // CGAL_CURVATURE_ESTIMATE_H

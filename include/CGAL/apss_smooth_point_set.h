@@ -35,8 +35,7 @@ namespace internal {
 // sphere fitted around it (Equation 20 at the evaluation point, in input units) and the
 // sphere's unit normal there. Returns the status of the fit.
 template <class WeightKernel>
-Curvature_estimate_status apss_flow_step(const Neighborhood& nb, double displacement[3],
-                                         double normal[3])
+Curvature_estimate_status apss_flow_step(const Neighborhood& nb, double displacement[3], double normal[3])
 {
   Algebraic_sphere_sums<WeightKernel> sums;
   sums.add(nb);
@@ -66,8 +65,7 @@ bool is_negative(T x)
 template <class Map>
 constexpr bool is_writable_map()
 {
-  return std::is_convertible<typename boost::property_traits<Map>::category,
-                             boost::writable_property_map_tag>::value;
+  return std::is_convertible<typename boost::property_traits<Map>::category, boost::writable_property_map_tag>::value;
 }
 
 // The visitor of one iteration of apss_smooth_point_set(): per point, the status of the step
@@ -86,16 +84,15 @@ struct Apss_flow_visitor
   void operator()(std::size_t i, const Neighborhood& nb) const
   {
     double d[3], normal[3];
-    (*fit_status)[i] =
-      with_weight_kernel(kernel, [&](auto k) { return apss_flow_step<decltype(k)>(nb, d, normal); });
+    (*fit_status)[i] = with_weight_kernel(kernel, [&](auto k) { return apss_flow_step<decltype(k)>(nb, d, normal); });
     if((*fit_status)[i] == Curvature_estimate_status::VALID)
       (*next)[i] = Oriented(K::Point_3(nb.center[0] + d[0], nb.center[1] + d[1], nb.center[2] + d[2]),
                             update_normals ? K::Vector_3(normal[0], normal[1], normal[2]) : (*state)[i].second);
   }
 };
 
-} // namespace internal
-} // namespace Point_set_curvatures
+}  // namespace internal
+}  // namespace Point_set_curvatures
 
 /// \ingroup PkgPointSetCurvaturesRef
 ///
@@ -182,11 +179,9 @@ struct Apss_flow_visitor
 ///          or no iteration asked for).
 /// \throws std::invalid_argument if `radius` is not positive and finite, or if
 ///         `update_normals(true)` is given with a normal map that is not writable.
-template <typename ConcurrencyTag, typename PointRange,
-          typename NamedParameters = parameters::Default_named_parameters>
-std::vector<Curvature_estimate_status>
-apss_smooth_point_set(PointRange& points, double radius,
-                      const NamedParameters& np = parameters::default_values())
+template <typename ConcurrencyTag, typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
+std::vector<Curvature_estimate_status> apss_smooth_point_set(PointRange& points, double radius,
+                                                             const NamedParameters& np = parameters::default_values())
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
@@ -201,21 +196,17 @@ apss_smooth_point_set(PointRange& points, double radius,
                 "sphere fit needs oriented normals.");
   const char* name = "apss_smooth_point_set";
   PSC::internal::check_radius(radius, name);
-  const auto asked_iterations =
-    choose_parameter(get_parameter(np, internal_np::number_of_iterations), 1u);
+  const auto asked_iterations = choose_parameter(get_parameter(np, internal_np::number_of_iterations), 1u);
   if(PSC::internal::is_negative(asked_iterations))
-    throw std::invalid_argument(std::string(name) +
-                                ": parameter 'number_of_iterations' must be non-negative");
+    throw std::invalid_argument(std::string(name) + ": parameter 'number_of_iterations' must be non-negative");
   const std::size_t iterations = static_cast<std::size_t>(asked_iterations);
-  const bool update_normals =
-    choose_parameter(get_parameter(np, PSC::internal_np::update_normals), false);
+  const bool update_normals = choose_parameter(get_parameter(np, PSC::internal_np::update_normals), false);
   const Apss_weight_kernel kernel = PSC::internal::weight_kernel_parameter(np);
   const std::function<bool(double)> callback =
     choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
   constexpr bool normals_writable = PSC::internal::is_writable_map<Normal_map>();
   if(update_normals && !normals_writable)
-    throw std::invalid_argument(std::string(name) +
-                                ": parameter 'update_normals' needs a writable normal map");
+    throw std::invalid_argument(std::string(name) + ": parameter 'update_normals' needs a writable normal map");
 
   Point_map point_map = NP_helper::get_point_map(points, np);
   Normal_map normal_map = NP_helper::get_normal_map(points, np);
@@ -251,8 +242,8 @@ apss_smooth_point_set(PointRange& points, double radius,
       };
     const PSC::internal::Apss_flow_visitor visit{kernel, update_normals, &state, &next, &fit_status};
     const std::vector<Curvature_estimate_status> visited = PSC::internal::for_each_neighborhood<ConcurrencyTag>(
-      state, CGAL::First_of_pair_property_map<Oriented>(), CGAL::Second_of_pair_property_map<Oriented>(),
-      radius, options, visit);
+      state, CGAL::First_of_pair_property_map<Oriented>(), CGAL::Second_of_pair_property_map<Oriented>(), radius,
+      options, visit);
     for(std::size_t i = 0; i < n; ++i)
     {
       status[i] = visited[i] == Curvature_estimate_status::VALID ? fit_status[i] : visited[i];
@@ -279,6 +270,6 @@ apss_smooth_point_set(PointRange& points, double radius,
   return status;
 }
 
-} // namespace CGAL
+}  // namespace CGAL
 
 #endif

@@ -139,8 +139,7 @@ namespace internal {
 
 // Converts the scaled-frame features of the evaluation point `x` to input units.
 template <class GeomTraits>
-Algebraic_sphere_features<GeomTraits> to_sphere_features(const Local_sphere_features& f,
-                                                         const double x[3])
+Algebraic_sphere_features<GeomTraits> to_sphere_features(const Local_sphere_features& f, const double x[3])
 {
   typedef typename GeomTraits::FT FT;
   typedef typename GeomTraits::Point_3 Point_3;
@@ -175,15 +174,13 @@ Algebraic_sphere_features<GeomTraits> to_sphere_features(const Local_sphere_feat
   else
   {
     const double k = -0.5 / s.u_q;  // centre = x + r * (-u_l / (2 u_q))
-    out.center = Point_3(FT(x[0] + r * k * s.u_l[0]), FT(x[1] + r * k * s.u_l[1]),
-                         FT(x[2] + r * k * s.u_l[2]));
+    out.center = Point_3(FT(x[0] + r * k * s.u_l[0]), FT(x[1] + r * k * s.u_l[1]), FT(x[2] + r * k * s.u_l[2]));
     out.sphere_radius = FT(r * p / (2.0 * std::abs(s.u_q)));
   }
   const double origin[3] = {0, 0, 0};
   double projected[3], n[3];
   if(project_on_sphere(s, origin, projected, n))
-    out.projection = Point_3(FT(x[0] + r * projected[0]), FT(x[1] + r * projected[1]),
-                             FT(x[2] + r * projected[2]));
+    out.projection = Point_3(FT(x[0] + r * projected[0]), FT(x[1] + r * projected[1]), FT(x[2] + r * projected[2]));
   return out;
 }
 
@@ -204,10 +201,10 @@ struct Sphere_features_at_point
 
 // The common body of the single-scale feature functions (with a radius or by count).
 template <class ConcurrencyTag, class PointRange, class NamedParameters>
-std::vector<Algebraic_sphere_features<
-  typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
-sphere_features_at_every_point(const PointRange& points, bool radius_given, double radius,
-                               const NamedParameters& np, const char* function_name)
+std::vector<
+  Algebraic_sphere_features<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
+sphere_features_at_every_point(const PointRange& points, bool radius_given, double radius, const NamedParameters& np,
+                               const char* function_name)
 {
   typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
   typedef typename NP_helper::Geom_traits Geom_traits;
@@ -226,12 +223,13 @@ sphere_features_at_every_point(const PointRange& points, bool radius_given, doub
   {
     const std::size_t k = checked_scale<PointRange>(radius, radius_given, np, function_name);
     if(options.has_tile)
-      throw std::invalid_argument(std::string(function_name) + ": parameter 'tile' is not supported with sample weights");
+      throw std::invalid_argument(std::string(function_name) +
+                                  ": parameter 'tile' is not supported with sample weights");
     Neighborhood_options o = options;
     o.callback = {};
-    areas = tangent_voronoi_areas<ConcurrencyTag>(points, radius_given, radius, k,
-                                                  NP_helper::get_const_point_map(points, np),
-                                                  NP_helper::get_normal_map(points, np), o);
+    areas =
+      tangent_voronoi_areas<ConcurrencyTag>(points, radius_given, radius, k, NP_helper::get_const_point_map(points, np),
+                                            NP_helper::get_normal_map(points, np), o);
     options.point_weights = &areas;
   }
   return evaluate_at_every_point<Algebraic_sphere_features<Geom_traits>, ConcurrencyTag>(
@@ -252,7 +250,7 @@ struct Multiscale_visitor
 
   Multiscale_visitor(std::vector<std::vector<Algebraic_sphere_features<GeomTraits> > >* results,
                      const std::vector<double>* radii, Apss_weight_kernel kernel, std::size_t min_count)
-    : results(results), radii(radii), kernel(kernel), min_count(min_count)
+      : results(results), radii(radii), kernel(kernel), min_count(min_count)
   {
     scales.set_radii(*radii);
     local.resize(radii->size());
@@ -266,8 +264,8 @@ struct Multiscale_visitor
   }
 };
 
-} // namespace internal
-} // namespace Point_set_curvatures
+}  // namespace internal
+}  // namespace Point_set_curvatures
 
 /// \ingroup PkgPointSetCurvaturesRef
 ///
@@ -371,10 +369,9 @@ struct Multiscale_visitor
 ///
 /// \sa `estimate_multiscale_algebraic_sphere_features()` for several radii in one pass;
 /// `CGAL::Algebraic_point_set_surface` for the features at arbitrary positions.
-template <typename ConcurrencyTag, typename PointRange,
-          typename NamedParameters = parameters::Default_named_parameters>
-std::vector<Algebraic_sphere_features<
-  typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
+template <typename ConcurrencyTag, typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
+std::vector<
+  Algebraic_sphere_features<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
 estimate_algebraic_sphere_features(const PointRange& points, double radius,
                                    const NamedParameters& np = parameters::default_values())
 {
@@ -401,13 +398,12 @@ estimate_algebraic_sphere_features(const PointRange& points, const NamedParamete
 /// \ingroup PkgPointSetCurvaturesRef
 /// Same as above with the point and normal maps given explicitly.
 template <typename ConcurrencyTag, typename PointRange, typename PointMap, typename NormalMap>
-std::vector<Algebraic_sphere_features<typename Kernel_traits<
-  typename boost::property_traits<PointMap>::value_type>::Kernel> >
-estimate_algebraic_sphere_features(const PointRange& points, PointMap point_map,
-                                   NormalMap normal_map, double radius)
+std::vector<
+  Algebraic_sphere_features<typename Kernel_traits<typename boost::property_traits<PointMap>::value_type>::Kernel> >
+estimate_algebraic_sphere_features(const PointRange& points, PointMap point_map, NormalMap normal_map, double radius)
 {
-  return estimate_algebraic_sphere_features<ConcurrencyTag>(
-    points, radius, parameters::point_map(point_map).normal_map(normal_map));
+  return estimate_algebraic_sphere_features<ConcurrencyTag>(points, radius,
+                                                            parameters::point_map(point_map).normal_map(normal_map));
 }
 
 /// \ingroup PkgPointSetCurvaturesRef
@@ -431,12 +427,10 @@ estimate_algebraic_sphere_features(const PointRange& points, PointMap point_map,
 /// \returns `result[k][i]`: the features of the `i`-th element of `points` at `radii[k]`.
 /// \throws std::invalid_argument if `radii` is empty or holds a radius that is not positive
 ///         and finite, or if `neighbor_count` is given.
-template <typename ConcurrencyTag, typename PointRange,
-          typename NamedParameters = parameters::Default_named_parameters>
-std::vector<std::vector<Algebraic_sphere_features<
-  typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> > >
-estimate_multiscale_algebraic_sphere_features(const PointRange& points,
-                                              const std::vector<double>& radii,
+template <typename ConcurrencyTag, typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
+std::vector<std::vector<
+  Algebraic_sphere_features<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> > >
+estimate_multiscale_algebraic_sphere_features(const PointRange& points, const std::vector<double>& radii,
                                               const NamedParameters& np = parameters::default_values())
 {
   using parameters::choose_parameter;
@@ -454,23 +448,22 @@ estimate_multiscale_algebraic_sphere_features(const PointRange& points,
     if(!(radii[k] > 0) || !std::isfinite(radii[k]))
     {
       std::ostringstream msg;
-      msg << name << ": parameter 'radii' must hold positive finite radii, radii[" << k
-          << "] = " << radii[k];
+      msg << name << ": parameter 'radii' must hold positive finite radii, radii[" << k << "] = " << radii[k];
       throw std::invalid_argument(msg.str());
     }
-  const std::size_t k = choose_parameter(get_parameter(np, PSC::internal_np::neighbor_count),
-                                         std::size_t(0));
+  const std::size_t k = choose_parameter(get_parameter(np, PSC::internal_np::neighbor_count), std::size_t(0));
   if(k != 0)
     throw std::invalid_argument(std::string(name) + ": neighbor_count is not supported, give radii");
 
   const PSC::internal::Neighborhood_options options = PSC::internal::neighborhood_options(np, name, true);
   if(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, PSC::internal_np::sample_weights),
                                         Sample_weights::UNIFORM) != Sample_weights::UNIFORM)
-    throw std::invalid_argument(std::string(name) + ": parameter 'sample_weights' is not supported by the "
+    throw std::invalid_argument(std::string(name) +
+                                ": parameter 'sample_weights' is not supported by the "
                                 "multi-scale features (the areas depend on the scale); use the single-scale function");
   if(PSC::internal::has_sample_weight_map<NamedParameters>())
     throw std::invalid_argument(std::string(name) + ": parameter 'sample_weight_map' is not supported by the "
-                                "multi-scale features; use the single-scale function");
+                                                    "multi-scale features; use the single-scale function");
   const Apss_weight_kernel kernel = PSC::internal::weight_kernel_parameter(np);
 
   const std::size_t n = static_cast<std::size_t>(std::distance(points.begin(), points.end()));
@@ -481,8 +474,8 @@ estimate_multiscale_algebraic_sphere_features(const PointRange& points,
     PSC::internal::min_neighbors_parameter(np, PSC::internal::default_min_neighbors::sphere_features));
   const double max_radius = *std::max_element(radii.begin(), radii.end());
   const std::vector<Curvature_estimate_status> status = PSC::internal::for_each_neighborhood<ConcurrencyTag>(
-    points, NP_helper::get_const_point_map(points, np), NP_helper::get_normal_map(points, np),
-    max_radius, options, visit);
+    points, NP_helper::get_const_point_map(points, np), NP_helper::get_normal_map(points, np), max_radius, options,
+    visit);
   for(std::size_t i = 0; i < n; ++i)
     if(status[i] != Curvature_estimate_status::VALID)
       for(auto& scale : results)
@@ -490,6 +483,6 @@ estimate_multiscale_algebraic_sphere_features(const PointRange& points,
   return results;
 }
 
-} // namespace CGAL
+}  // namespace CGAL
 
 #endif

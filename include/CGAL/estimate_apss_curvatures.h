@@ -29,8 +29,7 @@ struct Apss_estimator : Estimator_base
     takes_weight_map = true;
   }
   template <class NamedParameters>
-  explicit Apss_estimator(const NamedParameters& np)
-    : Apss_estimator()
+  explicit Apss_estimator(const NamedParameters& np) : Apss_estimator()
   {
     using CGAL::parameters::choose_parameter;
     using CGAL::parameters::get_parameter;
@@ -57,8 +56,8 @@ struct Apss_estimator : Estimator_base
   }
 };
 
-} // namespace internal
-} // namespace Point_set_curvatures
+}  // namespace internal
+}  // namespace Point_set_curvatures
 
 /// \ingroup PkgPointSetCurvaturesRef
 ///
@@ -160,16 +159,13 @@ struct Apss_estimator : Estimator_base
 /// \throws std::invalid_argument if `radius` is not positive and finite.
 ///
 /// \sa `CGAL::Algebraic_sphere_fit` for a single evaluation point.
-template <typename ConcurrencyTag, typename PointRange,
-          typename NamedParameters = parameters::Default_named_parameters>
-std::vector<Curvature_estimate<
-  typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
+template <typename ConcurrencyTag, typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
+std::vector<Curvature_estimate<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
 estimate_apss_curvatures(const PointRange& points, double radius,
                          const NamedParameters& np = parameters::default_values())
 {
   return Point_set_curvatures::internal::estimate_at_every_point<ConcurrencyTag>(
-    points, true, radius, np, Point_set_curvatures::internal::Apss_estimator(np),
-    "estimate_apss_curvatures");
+    points, true, radius, np, Point_set_curvatures::internal::Apss_estimator(np), "estimate_apss_curvatures");
 }
 
 /// \ingroup PkgPointSetCurvaturesRef
@@ -183,22 +179,19 @@ typename Point_set_curvatures::internal::Estimates_without_radius<PointRange, Na
 estimate_apss_curvatures(const PointRange& points, const NamedParameters& np)
 {
   return Point_set_curvatures::internal::estimate_at_every_point<ConcurrencyTag>(
-    points, false, 0.0, np, Point_set_curvatures::internal::Apss_estimator(np),
-    "estimate_apss_curvatures");
+    points, false, 0.0, np, Point_set_curvatures::internal::Apss_estimator(np), "estimate_apss_curvatures");
 }
 
 /// \ingroup PkgPointSetCurvaturesRef
 /// Same as above with the point and normal maps given explicitly.
 template <typename ConcurrencyTag, typename PointRange, typename PointMap, typename NormalMap>
-std::vector<Curvature_estimate<typename Kernel_traits<
-  typename boost::property_traits<PointMap>::value_type>::Kernel> >
-estimate_apss_curvatures(const PointRange& points, PointMap point_map, NormalMap normal_map,
-                         double radius)
+std::vector<Curvature_estimate<typename Kernel_traits<typename boost::property_traits<PointMap>::value_type>::Kernel> >
+estimate_apss_curvatures(const PointRange& points, PointMap point_map, NormalMap normal_map, double radius)
 {
-  return estimate_apss_curvatures<ConcurrencyTag>(
-    points, radius, parameters::point_map(point_map).normal_map(normal_map));
+  return estimate_apss_curvatures<ConcurrencyTag>(points, radius,
+                                                  parameters::point_map(point_map).normal_map(normal_map));
 }
 
-} // namespace CGAL
+}  // namespace CGAL
 
 #endif

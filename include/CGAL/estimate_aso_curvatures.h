@@ -24,8 +24,7 @@ struct Aso_estimator : Estimator_base
 {
   Aso_settings settings;
 
-  explicit Aso_estimator(const Aso_settings& s)
-    : settings(s)
+  explicit Aso_estimator(const Aso_settings& s) : settings(s)
   {
     normalize_normals = (s.projection == Aso_projection::CORRECTED_NORMAL);
     check_tangent_spread = false;  // tested on the first pass's moments
@@ -33,10 +32,7 @@ struct Aso_estimator : Estimator_base
     min_neighbors = default_min_neighbors::aso;
   }
 
-  Local_estimate operator()(const Neighborhood& nb) const
-  {
-    return algebraic_shape_operator(nb, settings);
-  }
+  Local_estimate operator()(const Neighborhood& nb) const { return algebraic_shape_operator(nb, settings); }
 
   // The normals of the normal_refinement passes: the APSS sphere's, with the paper's wider
   // kernel (1 - d²/r²)² and the ASO's sample weights and orientation. Measured on Goursat 50K
@@ -69,8 +65,8 @@ Aso_estimator aso_estimator_from(const NamedParameters& np)
   return estimator;
 }
 
-} // namespace internal
-} // namespace Point_set_curvatures
+}  // namespace internal
+}  // namespace Point_set_curvatures
 
 /// \ingroup PkgPointSetCurvaturesRef
 ///
@@ -266,17 +262,14 @@ Aso_estimator aso_estimator_from(const NamedParameters& np)
 ///
 /// \sa `CGAL::Algebraic_shape_operator_fit` to evaluate at other positions or with your own
 /// neighbourhoods; `CGAL::estimate_apss_curvatures()` for the cheaper normal and mean curvature.
-template <typename ConcurrencyTag, typename PointRange,
-          typename NamedParameters = parameters::Default_named_parameters>
-std::vector<Curvature_estimate<
-  typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
+template <typename ConcurrencyTag, typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
+std::vector<Curvature_estimate<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
 estimate_aso_curvatures(const PointRange& points, double radius,
                         const NamedParameters& np = parameters::default_values())
 {
   Point_set_curvatures::internal::automatic_scale_parameter(np, true, "estimate_aso_curvatures");
   return Point_set_curvatures::internal::estimate_at_every_point<ConcurrencyTag>(
-    points, true, radius, np, Point_set_curvatures::internal::aso_estimator_from(np),
-    "estimate_aso_curvatures");
+    points, true, radius, np, Point_set_curvatures::internal::aso_estimator_from(np), "estimate_aso_curvatures");
 }
 
 /// \ingroup PkgPointSetCurvaturesRef
@@ -298,7 +291,7 @@ estimate_aso_curvatures(const PointRange& points, const NamedParameters& np)
   // (a refinement pass would read the refined normals of the points its pass visits only)
   if(aso.normal_refinements > 0)
     throw std::invalid_argument(std::string(name) + ": parameter 'automatic_scale' is not supported with "
-                                "normal_refinement");
+                                                    "normal_refinement");
   I::Apss_estimator sphere;
   sphere.orient_neighbors = aso.settings.orient_neighbors;
   I::Scale_ladder ladder;
@@ -324,15 +317,13 @@ estimate_aso_curvatures(const PointRange& points, const NamedParameters& np)
 /// \ingroup PkgPointSetCurvaturesRef
 /// Same as above with the point and normal maps given explicitly.
 template <typename ConcurrencyTag, typename PointRange, typename PointMap, typename NormalMap>
-std::vector<Curvature_estimate<typename Kernel_traits<
-  typename boost::property_traits<PointMap>::value_type>::Kernel> >
-estimate_aso_curvatures(const PointRange& points, PointMap point_map, NormalMap normal_map,
-                        double radius)
+std::vector<Curvature_estimate<typename Kernel_traits<typename boost::property_traits<PointMap>::value_type>::Kernel> >
+estimate_aso_curvatures(const PointRange& points, PointMap point_map, NormalMap normal_map, double radius)
 {
-  return estimate_aso_curvatures<ConcurrencyTag>(
-    points, radius, parameters::point_map(point_map).normal_map(normal_map));
+  return estimate_aso_curvatures<ConcurrencyTag>(points, radius,
+                                                 parameters::point_map(point_map).normal_map(normal_map));
 }
 
-} // namespace CGAL
+}  // namespace CGAL
 
 #endif

@@ -23,14 +23,11 @@ struct Barycenter_estimator : Estimator_base
     normalize_normals = false;
     min_neighbors = default_min_neighbors::barycenter;
   }
-  Local_estimate operator()(const Neighborhood& nb) const
-  {
-    return barycenter_mean_curvature(nb);
-  }
+  Local_estimate operator()(const Neighborhood& nb) const { return barycenter_mean_curvature(nb); }
 };
 
-} // namespace internal
-} // namespace Point_set_curvatures
+}  // namespace internal
+}  // namespace Point_set_curvatures
 
 /// \ingroup PkgPointSetCurvaturesRef
 ///
@@ -128,16 +125,13 @@ struct Barycenter_estimator : Estimator_base
 ///
 /// \sa `CGAL::estimate_pca_plane_curvatures()`, which removes the tangential drift;
 /// `CGAL::estimate_apss_curvatures()` for a signed mean curvature.
-template <typename ConcurrencyTag, typename PointRange,
-          typename NamedParameters = parameters::Default_named_parameters>
-std::vector<Curvature_estimate<
-  typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
+template <typename ConcurrencyTag, typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
+std::vector<Curvature_estimate<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
 estimate_barycenter_curvatures(const PointRange& points, double radius,
                                const NamedParameters& np = parameters::default_values())
 {
   return Point_set_curvatures::internal::estimate_at_every_point<ConcurrencyTag>(
-    points, true, radius, np, Point_set_curvatures::internal::Barycenter_estimator(),
-    "estimate_barycenter_curvatures");
+    points, true, radius, np, Point_set_curvatures::internal::Barycenter_estimator(), "estimate_barycenter_curvatures");
 }
 
 /// \ingroup PkgPointSetCurvaturesRef
@@ -151,22 +145,19 @@ typename Point_set_curvatures::internal::Estimates_without_radius<PointRange, Na
 estimate_barycenter_curvatures(const PointRange& points, const NamedParameters& np)
 {
   return Point_set_curvatures::internal::estimate_at_every_point<ConcurrencyTag>(
-    points, false, 0.0, np, Point_set_curvatures::internal::Barycenter_estimator(),
-    "estimate_barycenter_curvatures");
+    points, false, 0.0, np, Point_set_curvatures::internal::Barycenter_estimator(), "estimate_barycenter_curvatures");
 }
 
 /// \ingroup PkgPointSetCurvaturesRef
 /// Same as above with the point and normal maps given explicitly.
 template <typename ConcurrencyTag, typename PointRange, typename PointMap, typename NormalMap>
-std::vector<Curvature_estimate<typename Kernel_traits<
-  typename boost::property_traits<PointMap>::value_type>::Kernel> >
-estimate_barycenter_curvatures(const PointRange& points, PointMap point_map, NormalMap normal_map,
-                               double radius)
+std::vector<Curvature_estimate<typename Kernel_traits<typename boost::property_traits<PointMap>::value_type>::Kernel> >
+estimate_barycenter_curvatures(const PointRange& points, PointMap point_map, NormalMap normal_map, double radius)
 {
-  return estimate_barycenter_curvatures<ConcurrencyTag>(
-    points, radius, parameters::point_map(point_map).normal_map(normal_map));
+  return estimate_barycenter_curvatures<ConcurrencyTag>(points, radius,
+                                                        parameters::point_map(point_map).normal_map(normal_map));
 }
 
-} // namespace CGAL
+}  // namespace CGAL
 
 #endif

@@ -23,10 +23,7 @@ struct Jet_estimator : Estimator_base
 {
   Jet_degrees degrees;
   explicit Jet_estimator(const Jet_degrees& d) : degrees(d) { min_neighbors = default_min_neighbors::jet; }
-  Local_estimate operator()(const Neighborhood& nb) const
-  {
-    return osculating_jet_estimate(nb, degrees);
-  }
+  Local_estimate operator()(const Neighborhood& nb) const { return osculating_jet_estimate(nb, degrees); }
 };
 
 // Reads and checks CGAL's named parameters degree_fitting and degree_monge.
@@ -35,10 +32,10 @@ Jet_degrees jet_degrees(const NamedParameters& np, const char* function_name)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  const long long fitting = static_cast<long long>(
-    choose_parameter(get_parameter(np, CGAL::internal_np::degree_fitting), 2));
-  const long long monge = static_cast<long long>(
-    choose_parameter(get_parameter(np, CGAL::internal_np::degree_monge), 2));
+  const long long fitting =
+    static_cast<long long>(choose_parameter(get_parameter(np, CGAL::internal_np::degree_fitting), 2));
+  const long long monge =
+    static_cast<long long>(choose_parameter(get_parameter(np, CGAL::internal_np::degree_monge), 2));
   std::ostringstream msg;
   msg << function_name << ": ";
   if(monge < 2 || monge > 4)
@@ -56,8 +53,8 @@ Jet_degrees jet_degrees(const NamedParameters& np, const char* function_name)
   throw std::invalid_argument(msg.str());
 }
 
-} // namespace internal
-} // namespace Point_set_curvatures
+}  // namespace internal
+}  // namespace Point_set_curvatures
 
 /// \ingroup PkgPointSetCurvaturesRef
 ///
@@ -177,15 +174,14 @@ Jet_degrees jet_degrees(const NamedParameters& np, const char* function_name)
 ///
 /// \sa `CGAL::estimate_aso_curvatures()`, more accurate and faster;
 ///   `CGAL::Monge_via_jet_fitting`.
-template <typename ConcurrencyTag, typename PointRange,
-          typename NamedParameters = parameters::Default_named_parameters>
-std::vector<Curvature_estimate<
-  typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
+template <typename ConcurrencyTag, typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
+std::vector<Curvature_estimate<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
 estimate_jet_curvatures(const PointRange& points, double radius,
                         const NamedParameters& np = parameters::default_values())
 {
   return Point_set_curvatures::internal::estimate_at_every_point<ConcurrencyTag>(
-    points, true, radius, np, Point_set_curvatures::internal::Jet_estimator(
+    points, true, radius, np,
+    Point_set_curvatures::internal::Jet_estimator(
       Point_set_curvatures::internal::jet_degrees(np, "estimate_jet_curvatures")),
     "estimate_jet_curvatures");
 }
@@ -202,7 +198,8 @@ typename Point_set_curvatures::internal::Estimates_without_radius<PointRange, Na
 estimate_jet_curvatures(const PointRange& points, const NamedParameters& np)
 {
   return Point_set_curvatures::internal::estimate_at_every_point<ConcurrencyTag>(
-    points, false, 0.0, np, Point_set_curvatures::internal::Jet_estimator(
+    points, false, 0.0, np,
+    Point_set_curvatures::internal::Jet_estimator(
       Point_set_curvatures::internal::jet_degrees(np, "estimate_jet_curvatures")),
     "estimate_jet_curvatures");
 }
@@ -210,15 +207,13 @@ estimate_jet_curvatures(const PointRange& points, const NamedParameters& np)
 /// \ingroup PkgPointSetCurvaturesRef
 /// Same as above with the point and normal maps given explicitly.
 template <typename ConcurrencyTag, typename PointRange, typename PointMap, typename NormalMap>
-std::vector<Curvature_estimate<typename Kernel_traits<
-  typename boost::property_traits<PointMap>::value_type>::Kernel> >
-estimate_jet_curvatures(const PointRange& points, PointMap point_map, NormalMap normal_map,
-                        double radius)
+std::vector<Curvature_estimate<typename Kernel_traits<typename boost::property_traits<PointMap>::value_type>::Kernel> >
+estimate_jet_curvatures(const PointRange& points, PointMap point_map, NormalMap normal_map, double radius)
 {
-  return estimate_jet_curvatures<ConcurrencyTag>(
-    points, radius, parameters::point_map(point_map).normal_map(normal_map));
+  return estimate_jet_curvatures<ConcurrencyTag>(points, radius,
+                                                 parameters::point_map(point_map).normal_map(normal_map));
 }
 
-} // namespace CGAL
+}  // namespace CGAL
 
 #endif

@@ -33,8 +33,7 @@ namespace CGAL {
 /// How `CGAL::estimate_oriented_normals()` orients the normals it estimates.
 struct Normal_orientation
 {
-  enum Kind
-  {
+  enum Kind {
     /// Propagation along a minimum spanning tree of the neighbourhood graph weighted by
     /// `1 - |n_i . n_j|` (Hoppe et al. 1992), in each connected part from its highest point;
     /// then each part's sign is chosen as a whole: outward where the part looks closed (the
@@ -80,7 +79,9 @@ struct Normal_orientation
   {
     Normal_orientation o;
     o.kind = ALONG_VECTOR;
-    o.target[0] = x; o.target[1] = y; o.target[2] = z;
+    o.target[0] = x;
+    o.target[1] = y;
+    o.target[2] = z;
     return o;
   }
   /// normals towards the point `(x, y, z)`
@@ -101,8 +102,7 @@ struct Normal_orientation
 
 /// \ingroup PkgPointSetCurvaturesRef
 /// What `CGAL::estimate_oriented_normals()` fits to each neighbourhood.
-enum class Normal_fit
-{
+enum class Normal_fit {
   /// the least-squares plane of the neighbours (principal component analysis, unweighted):
   /// biased by the curvature to first order, and rough from point to point
   PLANE,
@@ -116,7 +116,7 @@ namespace Point_set_curvatures {
 namespace internal_np {
 enum normal_orientation_t { normal_orientation };
 enum normal_fit_t { normal_fit };
-} // namespace internal_np
+}  // namespace internal_np
 
 namespace parameters {
 /// \ingroup PkgPointSetCurvaturesRef
@@ -125,8 +125,7 @@ template <class NamedParameters = CGAL::parameters::Default_named_parameters>
 CGAL::Named_function_parameters<Normal_orientation, internal_np::normal_orientation_t, NamedParameters>
 normal_orientation(const Normal_orientation& o, const NamedParameters& np = CGAL::parameters::default_values())
 {
-  return CGAL::Named_function_parameters<Normal_orientation, internal_np::normal_orientation_t,
-                                         NamedParameters>(o, np);
+  return CGAL::Named_function_parameters<Normal_orientation, internal_np::normal_orientation_t, NamedParameters>(o, np);
 }
 /// \ingroup PkgPointSetCurvaturesRef
 /// Named parameter of `CGAL::estimate_oriented_normals()`: what is fitted to each
@@ -137,16 +136,13 @@ normal_fit(Normal_fit fit, const NamedParameters& np = CGAL::parameters::default
 {
   return CGAL::Named_function_parameters<Normal_fit, internal_np::normal_fit_t, NamedParameters>(fit, np);
 }
-} // namespace parameters
+}  // namespace parameters
 
 /// \ingroup PkgPointSetCurvaturesRef
 /// The default neighbour count of `CGAL::estimate_oriented_normals()` for a fit: 40 for the
 /// quadric (its best count for the ASO at 40 neighbours on simulated scans, benchmark/README.md
 /// "Scans without normals"), 18 for the plane.
-inline std::size_t default_normal_neighbors(Normal_fit fit)
-{
-  return fit == Normal_fit::QUADRIC ? 40 : 18;
-}
+inline std::size_t default_normal_neighbors(Normal_fit fit) { return fit == Normal_fit::QUADRIC ? 40 : 18; }
 
 namespace internal {
 
@@ -371,8 +367,7 @@ inline bool choose_part_sign(const std::vector<std::uint32_t>& part, const std::
     flux += d[0] * n[3 * std::size_t(i)] + d[1] * n[3 * std::size_t(i) + 1] + d[2] * n[3 * std::size_t(i) + 2];
     spread += std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
   }
-  bool closed = m[0] * m[0] + m[1] * m[1] + m[2] * m[2] < 0.25 * count * count &&
-                std::abs(flux) >= 0.3 * spread;
+  bool closed = m[0] * m[0] + m[1] * m[1] + m[2] * m[2] < 0.25 * count * count && std::abs(flux) >= 0.3 * spread;
   if(closed && upward)
     closed = seen_from_all_sides(part, xyz, n, flux < 0 ? -1.0 : 1.0);
   auto turn = [&n](std::uint32_t i) {
@@ -504,8 +499,8 @@ inline void repair_closed_part(const std::vector<std::uint32_t>& part, const std
       continue;
     const double* p = &xyz[3 * std::size_t(part[a])];
     const double* q = &xyz[3 * std::size_t(rec.neighbor[0])];
-    nearest.push_back(std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
-                                (p[2] - q[2]) * (p[2] - q[2])));
+    nearest.push_back(
+      std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2])));
   }
   double d = 0;  // (0 without a spacing, as on copies of one point: no winding number)
   if(!nearest.empty())
@@ -594,9 +589,8 @@ inline void repair_closed_part(const std::vector<std::uint32_t>& part, const std
 // sides by the parity of the crossings along its normal (repair_by_crossing_parity()).
 // Deterministic. `progress` gets the fraction of the points visited; returns false if
 // cancelled.
-inline bool orient_along_spanning_tree(const std::vector<Normal_record>& records,
-                                       const std::vector<double>& xyz, std::vector<double>& n, bool upward,
-                                       const std::function<bool(double)>& progress)
+inline bool orient_along_spanning_tree(const std::vector<Normal_record>& records, const std::vector<double>& xyz,
+                                       std::vector<double>& n, bool upward, const std::function<bool(double)>& progress)
 {
   const std::size_t count = records.size();
   auto usable = [&](std::size_t i) { return records[i].status == Curvature_estimate_status::VALID; };
@@ -609,9 +603,8 @@ inline bool orient_along_spanning_tree(const std::vector<Normal_record>& records
     if(usable(i))
       by_height.push_back(static_cast<std::uint32_t>(i));
   auto z = [&xyz](std::uint32_t i) { return xyz[3 * std::size_t(i) + 2]; };
-  std::sort(by_height.begin(), by_height.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return z(a) > z(b) || (z(a) == z(b) && a < b);
-  });
+  std::sort(by_height.begin(), by_height.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return z(a) > z(b) || (z(a) == z(b) && a < b); });
 
   // The candidate edges, by weight quantized to 1/4096 (a bucket queue: O(1) per edge, where
   // a binary heap of the ~24 edges per point costs 5 times more on 2M points); within a
@@ -850,8 +843,7 @@ inline bool orient_normal_records(const std::vector<Normal_record>& records, con
 
 // The common body of the two overloads.
 template <class ConcurrencyTag, class PointRange, class NamedParameters>
-std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, double radius,
-                                      const NamedParameters& np)
+std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, double radius, const NamedParameters& np)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -917,8 +909,8 @@ std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, dou
   return without;
 }
 
-} // namespace internal
-} // namespace Point_set_curvatures
+}  // namespace internal
+}  // namespace Point_set_curvatures
 
 /// \ingroup PkgPointSetCurvaturesRef
 ///
@@ -1010,10 +1002,8 @@ std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, dou
 ///
 /// \throws std::invalid_argument for a `neighbor_count` of 0, a non-finite orientation target,
 /// or a tile with the spanning tree or the automatic orientation.
-template <typename ConcurrencyTag, typename PointRange,
-          typename NamedParameters = parameters::Default_named_parameters>
-std::size_t estimate_oriented_normals(PointRange& points,
-                                      const NamedParameters& np = parameters::default_values())
+template <typename ConcurrencyTag, typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
+std::size_t estimate_oriented_normals(PointRange& points, const NamedParameters& np = parameters::default_values())
 {
   return Point_set_curvatures::internal::estimate_oriented_normals<ConcurrencyTag>(points, false, 0.0, np);
 }
@@ -1021,14 +1011,13 @@ std::size_t estimate_oriented_normals(PointRange& points,
 /// \ingroup PkgPointSetCurvaturesRef
 /// Same as above with the neighbours at distance `< radius` instead of the `k` nearest.
 /// \throws std::invalid_argument if `radius` is not positive and finite.
-template <typename ConcurrencyTag, typename PointRange,
-          typename NamedParameters = parameters::Default_named_parameters>
+template <typename ConcurrencyTag, typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
 std::size_t estimate_oriented_normals(PointRange& points, double radius,
                                       const NamedParameters& np = parameters::default_values())
 {
   return Point_set_curvatures::internal::estimate_oriented_normals<ConcurrencyTag>(points, true, radius, np);
 }
 
-} // namespace CGAL
+}  // namespace CGAL
 
 #endif

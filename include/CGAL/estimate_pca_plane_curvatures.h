@@ -19,14 +19,11 @@ namespace internal {
 struct Pca_plane_estimator : Estimator_base
 {
   Pca_plane_estimator() { min_neighbors = default_min_neighbors::pca_plane; }
-  Local_estimate operator()(const Neighborhood& nb) const
-  {
-    return pca_plane_mean_curvature(nb);
-  }
+  Local_estimate operator()(const Neighborhood& nb) const { return pca_plane_mean_curvature(nb); }
 };
 
-} // namespace internal
-} // namespace Point_set_curvatures
+}  // namespace internal
+}  // namespace Point_set_curvatures
 
 /// \ingroup PkgPointSetCurvaturesRef
 ///
@@ -126,16 +123,13 @@ struct Pca_plane_estimator : Estimator_base
 ///
 /// \sa `CGAL::estimate_barycenter_curvatures()`; `CGAL::estimate_apss_curvatures()` for a
 /// signed mean curvature and a corrected normal.
-template <typename ConcurrencyTag, typename PointRange,
-          typename NamedParameters = parameters::Default_named_parameters>
-std::vector<Curvature_estimate<
-  typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
+template <typename ConcurrencyTag, typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
+std::vector<Curvature_estimate<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
 estimate_pca_plane_curvatures(const PointRange& points, double radius,
                               const NamedParameters& np = parameters::default_values())
 {
   return Point_set_curvatures::internal::estimate_at_every_point<ConcurrencyTag>(
-    points, true, radius, np, Point_set_curvatures::internal::Pca_plane_estimator(),
-    "estimate_pca_plane_curvatures");
+    points, true, radius, np, Point_set_curvatures::internal::Pca_plane_estimator(), "estimate_pca_plane_curvatures");
 }
 
 /// \ingroup PkgPointSetCurvaturesRef
@@ -149,22 +143,19 @@ typename Point_set_curvatures::internal::Estimates_without_radius<PointRange, Na
 estimate_pca_plane_curvatures(const PointRange& points, const NamedParameters& np)
 {
   return Point_set_curvatures::internal::estimate_at_every_point<ConcurrencyTag>(
-    points, false, 0.0, np, Point_set_curvatures::internal::Pca_plane_estimator(),
-    "estimate_pca_plane_curvatures");
+    points, false, 0.0, np, Point_set_curvatures::internal::Pca_plane_estimator(), "estimate_pca_plane_curvatures");
 }
 
 /// \ingroup PkgPointSetCurvaturesRef
 /// Same as above with the point and normal maps given explicitly.
 template <typename ConcurrencyTag, typename PointRange, typename PointMap, typename NormalMap>
-std::vector<Curvature_estimate<typename Kernel_traits<
-  typename boost::property_traits<PointMap>::value_type>::Kernel> >
-estimate_pca_plane_curvatures(const PointRange& points, PointMap point_map, NormalMap normal_map,
-                              double radius)
+std::vector<Curvature_estimate<typename Kernel_traits<typename boost::property_traits<PointMap>::value_type>::Kernel> >
+estimate_pca_plane_curvatures(const PointRange& points, PointMap point_map, NormalMap normal_map, double radius)
 {
-  return estimate_pca_plane_curvatures<ConcurrencyTag>(
-    points, radius, parameters::point_map(point_map).normal_map(normal_map));
+  return estimate_pca_plane_curvatures<ConcurrencyTag>(points, radius,
+                                                       parameters::point_map(point_map).normal_map(normal_map));
 }
 
-} // namespace CGAL
+}  // namespace CGAL
 
 #endif

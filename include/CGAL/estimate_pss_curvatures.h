@@ -22,8 +22,8 @@ struct Pss_estimator : Estimator_base
   Local_estimate operator()(const Neighborhood& nb) const { return pss_estimate(nb); }
 };
 
-} // namespace internal
-} // namespace Point_set_curvatures
+}  // namespace internal
+}  // namespace Point_set_curvatures
 
 /// \ingroup PkgPointSetCurvaturesRef
 ///
@@ -129,16 +129,13 @@ struct Pss_estimator : Estimator_base
 ///
 /// \sa `CGAL::estimate_aso_curvatures()`, more accurate and faster;
 /// `CGAL::estimate_jet_curvatures()`, `CGAL::estimate_wavejet_curvatures()`.
-template <typename ConcurrencyTag, typename PointRange,
-          typename NamedParameters = parameters::Default_named_parameters>
-std::vector<Curvature_estimate<
-  typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
+template <typename ConcurrencyTag, typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
+std::vector<Curvature_estimate<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
 estimate_pss_curvatures(const PointRange& points, double radius,
                         const NamedParameters& np = parameters::default_values())
 {
   return Point_set_curvatures::internal::estimate_at_every_point<ConcurrencyTag>(
-    points, true, radius, np, Point_set_curvatures::internal::Pss_estimator(),
-    "estimate_pss_curvatures");
+    points, true, radius, np, Point_set_curvatures::internal::Pss_estimator(), "estimate_pss_curvatures");
 }
 
 /// \ingroup PkgPointSetCurvaturesRef
@@ -152,22 +149,19 @@ typename Point_set_curvatures::internal::Estimates_without_radius<PointRange, Na
 estimate_pss_curvatures(const PointRange& points, const NamedParameters& np)
 {
   return Point_set_curvatures::internal::estimate_at_every_point<ConcurrencyTag>(
-    points, false, 0.0, np, Point_set_curvatures::internal::Pss_estimator(),
-    "estimate_pss_curvatures");
+    points, false, 0.0, np, Point_set_curvatures::internal::Pss_estimator(), "estimate_pss_curvatures");
 }
 
 /// \ingroup PkgPointSetCurvaturesRef
 /// Same as above with the point and normal maps given explicitly.
 template <typename ConcurrencyTag, typename PointRange, typename PointMap, typename NormalMap>
-std::vector<Curvature_estimate<typename Kernel_traits<
-  typename boost::property_traits<PointMap>::value_type>::Kernel> >
-estimate_pss_curvatures(const PointRange& points, PointMap point_map, NormalMap normal_map,
-                        double radius)
+std::vector<Curvature_estimate<typename Kernel_traits<typename boost::property_traits<PointMap>::value_type>::Kernel> >
+estimate_pss_curvatures(const PointRange& points, PointMap point_map, NormalMap normal_map, double radius)
 {
-  return estimate_pss_curvatures<ConcurrencyTag>(
-    points, radius, parameters::point_map(point_map).normal_map(normal_map));
+  return estimate_pss_curvatures<ConcurrencyTag>(points, radius,
+                                                 parameters::point_map(point_map).normal_map(normal_map));
 }
 
-} // namespace CGAL
+}  // namespace CGAL
 
 #endif

@@ -26,8 +26,7 @@ namespace internal {
 // The body of both overloads: the areas of the estimators' pass (same neighbourhoods, same
 // normalisation of the normals), put into the sample_weight_map of `np` in range order.
 template <class ConcurrencyTag, class PointRange, class NamedParameters>
-bool tangent_voronoi_areas_into_map(PointRange& points, bool radius_given, double radius,
-                                    const NamedParameters& np)
+bool tangent_voronoi_areas_into_map(PointRange& points, bool radius_given, double radius, const NamedParameters& np)
 {
   static_assert(has_sample_weight_map<NamedParameters>(),
                 "Error: no sample weight map. Pass CGAL::Point_set_curvatures::parameters::"
@@ -37,8 +36,9 @@ bool tangent_voronoi_areas_into_map(PointRange& points, bool radius_given, doubl
   const std::size_t k = checked_scale<PointRange>(radius, radius_given, np, name);
   Neighborhood_options options = neighborhood_options(np, name, true);
   if(options.has_tile)
-    throw std::invalid_argument(std::string(name) + ": parameter 'tile' is not supported: compute the areas "
-                                "of the whole cloud, or let each estimator compute them on its tile (no sample_weight_map)");
+    throw std::invalid_argument(
+      std::string(name) + ": parameter 'tile' is not supported: compute the areas "
+                          "of the whole cloud, or let each estimator compute them on its tile (no sample_weight_map)");
   bool cancelled = false;
   options.callback = noting_cancellation(options.callback, cancelled);
   const std::vector<double> areas =
@@ -53,8 +53,8 @@ bool tangent_voronoi_areas_into_map(PointRange& points, bool radius_given, doubl
   return !cancelled;
 }
 
-} // namespace internal
-} // namespace Point_set_curvatures
+}  // namespace internal
+}  // namespace Point_set_curvatures
 
 /// \ingroup PkgPointSetCurvaturesRef
 ///
@@ -138,6 +138,6 @@ estimate_tangent_voronoi_areas(PointRange& points, const NamedParameters& np)
   return Point_set_curvatures::internal::tangent_voronoi_areas_into_map<ConcurrencyTag>(points, false, 0.0, np);
 }
 
-} // namespace CGAL
+}  // namespace CGAL
 
 #endif

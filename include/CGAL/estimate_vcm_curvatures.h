@@ -134,15 +134,13 @@ namespace CGAL {
 ///
 /// \sa `CGAL::compute_vcm()`, `CGAL::vcm_estimate_normals()`;
 /// `CGAL::estimate_aso_curvatures()`, signed, more accurate and faster.
-template <typename ConcurrencyTag, typename PointRange,
-          typename NamedParameters = parameters::Default_named_parameters>
-std::vector<Curvature_estimate<
-  typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
+template <typename ConcurrencyTag, typename PointRange, typename NamedParameters = parameters::Default_named_parameters>
+std::vector<Curvature_estimate<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
 estimate_vcm_curvatures(const PointRange& points, double radius,
                         const NamedParameters& np = parameters::default_values())
 {
-  return Point_set_curvatures::internal::estimate_vcm_at_every_point<ConcurrencyTag>(
-    points, true, radius, np, "estimate_vcm_curvatures");
+  return Point_set_curvatures::internal::estimate_vcm_at_every_point<ConcurrencyTag>(points, true, radius, np,
+                                                                                     "estimate_vcm_curvatures");
 }
 
 /// \ingroup PkgPointSetCurvaturesRef
@@ -158,22 +156,20 @@ template <typename ConcurrencyTag, typename PointRange, typename NamedParameters
 typename Point_set_curvatures::internal::Estimates_without_radius<PointRange, NamedParameters>::type
 estimate_vcm_curvatures(const PointRange& points, const NamedParameters& np)
 {
-  return Point_set_curvatures::internal::estimate_vcm_at_every_point<ConcurrencyTag>(
-    points, false, 0.0, np, "estimate_vcm_curvatures");
+  return Point_set_curvatures::internal::estimate_vcm_at_every_point<ConcurrencyTag>(points, false, 0.0, np,
+                                                                                     "estimate_vcm_curvatures");
 }
 
 /// \ingroup PkgPointSetCurvaturesRef
 /// Same as above with the point and normal maps given explicitly.
 template <typename ConcurrencyTag, typename PointRange, typename PointMap, typename NormalMap>
-std::vector<Curvature_estimate<typename Kernel_traits<
-  typename boost::property_traits<PointMap>::value_type>::Kernel> >
-estimate_vcm_curvatures(const PointRange& points, PointMap point_map, NormalMap normal_map,
-                        double radius)
+std::vector<Curvature_estimate<typename Kernel_traits<typename boost::property_traits<PointMap>::value_type>::Kernel> >
+estimate_vcm_curvatures(const PointRange& points, PointMap point_map, NormalMap normal_map, double radius)
 {
-  return estimate_vcm_curvatures<ConcurrencyTag>(
-    points, radius, parameters::point_map(point_map).normal_map(normal_map));
+  return estimate_vcm_curvatures<ConcurrencyTag>(points, radius,
+                                                 parameters::point_map(point_map).normal_map(normal_map));
 }
 
-} // namespace CGAL
+}  // namespace CGAL
 
 #endif

@@ -33,7 +33,7 @@ class Byte_source
 {
 public:
   Byte_source(const std::string& path, std::uint64_t size, const Progress& progress)
-    : m_size(size), m_progress(progress)
+      : m_size(size), m_progress(progress)
   {
     m_file = std::fopen(path.c_str(), "rb");
     if(!m_file)
@@ -223,7 +223,6 @@ inline bool parse_count(std::string_view t, std::uint64_t& v)
 
 inline std::string quoted(std::string_view t) { return in_quotes(std::string(t.substr(0, 60))); }
 
-
 // Chunked reading (Read_options::chunk): hands the points held over once there are
 // chunk_points of them, or at the end, and keeps the cloud's description.
 inline void hand_over(Point_cloud& cloud, const Read_options& options, bool at_end = false)
@@ -248,7 +247,7 @@ Point_cloud read_ply(Byte_source& bytes, const std::string& path, const Read_opt
 // The LAS reader (read_las.cpp).
 Point_cloud read_las(Byte_source& bytes, const std::string& path, const Read_options& options);
 
-} // namespace input
-} // namespace psc_tool
+}  // namespace input
+}  // namespace psc_tool
 
 #endif

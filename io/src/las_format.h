@@ -29,7 +29,7 @@ inline bool has_wave_packet(int f) { return f == 4 || f == 5 || f == 9 || f == 1
 // parametric line of the pulse x(t) y(t) z(t) (floats, coordinate units per picosecond)
 inline std::size_t wave_offset(int f) { return f == 4 ? 28 : f == 5 ? 34 : f == 9 ? 30 : 38; }
 
-} // namespace las
-} // namespace psc_tool
+}  // namespace las
+}  // namespace psc_tool
 
 #endif

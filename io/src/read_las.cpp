@@ -77,10 +77,7 @@ T little(const char* p)
 using namespace las;  // format_size, has_rgb, ... (las_format.h)
 
 // The user id of a VLR is `id` (16 characters, NUL-padded).
-bool user_id_is(const std::string& user_id, const char* id)
-{
-  return std::string(user_id.c_str()) == id;
-}
+bool user_id_is(const std::string& user_id, const char* id) { return std::string(user_id.c_str()) == id; }
 
 // A field name usable as a PLY property, a CSV column and a LAS extra-bytes name.
 std::string field_name(const char* p, std::size_t size)
@@ -159,7 +156,7 @@ double extra_value(const char* p, int data_type)
   }
 }
 
-} // namespace
+}  // namespace
 
 namespace {
 
@@ -234,10 +231,7 @@ Las_header read_las_header(Byte_source& bytes, const std::string& path)
 
 // The records declared that are in the file (what follows them is allowed: waveforms,
 // extended variable length records).
-std::uint64_t complete_records(const Las_header& l)
-{
-  return (l.file_size - l.point_offset) / l.record_length;
-}
+std::uint64_t complete_records(const Las_header& l) { return (l.file_size - l.point_offset) / l.record_length; }
 
 // The message of a file that holds fewer records than its header declares, up to the count of
 // the complete ones (each reader ends it as it treats the file).
@@ -279,9 +273,9 @@ void read_vlrs(Byte_source& bytes, const Las_header& l, const std::string& path,
       if(size - at < 54 || size - at - 54 < little<std::uint16_t>(region.data() + at + 20))
       {
         source.vlrs_complete = false;
-        warnings.push_back(cat(in_quotes(path), ": the header declares ", vlr_count,
-                                     " variable length records, ", k, " fit before the point data: the others are "
-                                     "not read"));
+        warnings.push_back(cat(in_quotes(path), ": the header declares ", vlr_count, " variable length records, ", k,
+                               " fit before the point data: the others are "
+                               "not read"));
         break;
       }
       Las_source::Vlr v;
@@ -334,8 +328,8 @@ std::vector<Las_source::Vlr> read_evlrs(const std::string& path, const Las_heade
     if(at > file_size || file_size - at < 60 || std::fseek(f, long(at), SEEK_SET) != 0 ||
        std::fread(e, 1, 60, f) != 60 || little<std::uint64_t>(e + 20) > file_size - at - 60)
     {
-      warnings.push_back(cat(in_quotes(path), ": the extended variable length record ", k + 1, " of ",
-                                   number, " is not within the file: it and those after it are not read"));
+      warnings.push_back(cat(in_quotes(path), ": the extended variable length record ", k + 1, " of ", number,
+                             " is not within the file: it and those after it are not read"));
       break;
     }
     const std::uint64_t length = little<std::uint64_t>(e + 20);
@@ -343,8 +337,7 @@ std::vector<Las_source::Vlr> read_evlrs(const std::string& path, const Las_heade
     Las_source::Vlr v;
     v.user_id.assign(e + 2, 16);
     v.record_id = little<std::uint16_t>(e + 18);
-    if(user_id_is(v.user_id, "LASF_Projection") && (v.record_id == 2112 || v.record_id == 34735) &&
-       length < (1u << 20))
+    if(user_id_is(v.user_id, "LASF_Projection") && (v.record_id == 2112 || v.record_id == 34735) && length < (1u << 20))
     {
       v.payload.resize(std::size_t(length));
       if(std::fread(&v.payload[0], 1, v.payload.size(), f) == v.payload.size())
@@ -385,15 +378,19 @@ std::vector<Extra_field> extra_fields(const Las_source& source, const Las_header
       size = extra_type_size[(data_type - 11) % 10 + 1] * (data_type <= 20 ? 2 : 3);
     else
     {
-      cloud.warnings.push_back(cat(in_quotes(path), ": extra bytes field ", in_quotes(name), " has the reserved "
-                                   "data type ", data_type, ": it and the extra bytes after it are not read"));
+      cloud.warnings.push_back(cat(in_quotes(path), ": extra bytes field ", in_quotes(name),
+                                   " has the reserved "
+                                   "data type ",
+                                   data_type, ": it and the extra bytes after it are not read"));
       break;
     }
     if(size > record_length - at)
     {
       cloud.warnings.push_back(cat(in_quotes(path), ": the extra-bytes VLR describes more bytes than the ",
-                                   record_length - format_size[format], " extra bytes of the records: "
-                                   "from field ", in_quotes(name), " on, they are not read"));
+                                   record_length - format_size[format],
+                                   " extra bytes of the records: "
+                                   "from field ",
+                                   in_quotes(name), " on, they are not read"));
       break;
     }
     if(data_type >= 1 && data_type <= 10 && keep_attributes)
@@ -415,19 +412,18 @@ std::vector<Extra_field> extra_fields(const Las_source& source, const Las_header
         if(taken)
           name = "extra_" + name;
       }
-      static const Scalar_type raw_type[11] = {
-        Scalar_type::FLOAT64, Scalar_type::UINT8,   Scalar_type::INT8,    Scalar_type::UINT16,
-        Scalar_type::INT16,   Scalar_type::UINT32,  Scalar_type::INT32,   Scalar_type::FLOAT64,
-        Scalar_type::FLOAT64, Scalar_type::FLOAT32, Scalar_type::FLOAT64};
+      static const Scalar_type raw_type[11] = {Scalar_type::FLOAT64, Scalar_type::UINT8,   Scalar_type::INT8,
+                                               Scalar_type::UINT16,  Scalar_type::INT16,   Scalar_type::UINT32,
+                                               Scalar_type::INT32,   Scalar_type::FLOAT64, Scalar_type::FLOAT64,
+                                               Scalar_type::FLOAT32, Scalar_type::FLOAT64};
       x.attribute = cloud.attributes.size();
-      cloud.attributes.push_back(
-        Attribute(name, (options_bits & 24) ? Scalar_type::FLOAT64 : raw_type[data_type]));
+      cloud.attributes.push_back(Attribute(name, (options_bits & 24) ? Scalar_type::FLOAT64 : raw_type[data_type]));
       cloud.attributes.back().las_descriptor.assign(e, 192);
       extras.push_back(x);
     }
     else if(data_type != 0 || size > 0)
-      skipped.push_back(cat(in_quotes(name.empty() ? "?" : name), data_type == 0 ? " (undocumented)"
-                                                                                 : " (deprecated array type)"));
+      skipped.push_back(
+        cat(in_quotes(name.empty() ? "?" : name), data_type == 0 ? " (undocumented)" : " (deprecated array type)"));
     at += size;
   }
   if(!skipped.empty() && keep_attributes)
@@ -439,8 +435,10 @@ std::vector<Extra_field> extra_fields(const Las_source& source, const Las_header
   }
   if(at < record_length && keep_attributes)
     cloud.warnings.push_back(cat(in_quotes(path), ": ", record_length - at, " extra bytes per point record ",
-                                 described ? "beyond those the extra-bytes VLR describes" : "without an extra-bytes VLR "
-                                 "describing them", " are not read"));
+                                 described ? "beyond those the extra-bytes VLR describes"
+                                           : "without an extra-bytes VLR "
+                                             "describing them",
+                                 " are not read"));
   return extras;
 }
 
@@ -458,9 +456,9 @@ void warn_of_bounds_and_degrees(const std::string& path, const Las_header& l, st
     const double slack = 0.5 * std::abs(scale[a]) + 1e-9 * std::max(std::abs(lo[a]), std::abs(hi[a]));
     if(!(lo[a] >= min_bound[a] - slack && hi[a] <= max_bound[a] + slack))
       warnings.push_back(cat(in_quotes(path), ": the points' ", "xyz"[a], " range [", exact_number(lo[a]), ", ",
-                                   exact_number(hi[a]), "] is not within the header's bounds [",
-                                   exact_number(min_bound[a]), ", ", exact_number(max_bound[a]),
-                                   "] (a corrupted header, or a writer that did not update it)"));
+                             exact_number(hi[a]), "] is not within the header's bounds [", exact_number(min_bound[a]),
+                             ", ", exact_number(max_bound[a]),
+                             "] (a corrupted header, or a writer that did not update it)"));
   }
   // coordinates in degrees: from the CRS, or x and y within longitudes and latitudes spanning
   // less than a degree while z spans 20 times more (metres)
@@ -468,14 +466,15 @@ void warn_of_bounds_and_degrees(const std::string& path, const Las_header& l, st
   {
     const double xy = std::max(hi[0] - lo[0], hi[1] - lo[1]), z = hi[2] - lo[2];
     if(xy < 1 && z > 20 * xy)
-      geographic = cat("x and y look like longitude and latitude (x in [", lo[0], ", ", hi[0], "], y in [", lo[1],
-                       ", ", hi[1], "], while z spans ", z, ")");
+      geographic = cat("x and y look like longitude and latitude (x in [", lo[0], ", ", hi[0], "], y in [", lo[1], ", ",
+                       hi[1], "], while z spans ", z, ")");
   }
   if(!geographic.empty())
-    warnings.push_back(cat(in_quotes(path), ": ", geographic, ": curvatures in 1/degree are meaningless; "
-                                 "reproject to a projected CRS in metres first, for example 'pdal translate IN.las "
-                                 "OUT.las reprojection --filters.reprojection.out_srs=EPSG:326xx' (UTM zone xx "
-                                 "north), or give --radius in degrees"));
+    warnings.push_back(cat(in_quotes(path), ": ", geographic,
+                           ": curvatures in 1/degree are meaningless; "
+                           "reproject to a projected CRS in metres first, for example 'pdal translate IN.las "
+                           "OUT.las reprojection --filters.reprojection.out_srs=EPSG:326xx' (UTM zone xx "
+                           "north), or give --radius in degrees"));
 }
 
 // The standard fields of point record `r` (point format `format`) into row `i` of the columns
@@ -569,17 +568,38 @@ std::shared_ptr<Las_source> header_source(Byte_source& bytes, const Las_header& 
 void add_las_fields(int format, bool keep_attributes, Point_cloud& cloud, bool present[LAS_FIELD_COUNT],
                     int column_of[LAS_FIELD_COUNT])
 {
-  static const char* const names[LAS_FIELD_COUNT] = {
-    "intensity", "return_number", "number_of_returns", "scan_direction_flag", "edge_of_flight_line",
-    "classification", "synthetic", "key_point", "withheld", "overlap", "scanner_channel", "scan_angle",
-    "user_data", "point_source_id", "gps_time", "red", "green", "blue", "nir", "wave_descriptor",
-    "wave_data_offset", "wave_packet_size", "wave_return_location", "wave_x_t", "wave_y_t", "wave_z_t"};
+  static const char* const names[LAS_FIELD_COUNT] = {"intensity",
+                                                     "return_number",
+                                                     "number_of_returns",
+                                                     "scan_direction_flag",
+                                                     "edge_of_flight_line",
+                                                     "classification",
+                                                     "synthetic",
+                                                     "key_point",
+                                                     "withheld",
+                                                     "overlap",
+                                                     "scanner_channel",
+                                                     "scan_angle",
+                                                     "user_data",
+                                                     "point_source_id",
+                                                     "gps_time",
+                                                     "red",
+                                                     "green",
+                                                     "blue",
+                                                     "nir",
+                                                     "wave_descriptor",
+                                                     "wave_data_offset",
+                                                     "wave_packet_size",
+                                                     "wave_return_location",
+                                                     "wave_x_t",
+                                                     "wave_y_t",
+                                                     "wave_z_t"};
   static const Scalar_type types[LAS_FIELD_COUNT] = {
-    Scalar_type::UINT16, Scalar_type::UINT8, Scalar_type::UINT8, Scalar_type::UINT8, Scalar_type::UINT8,
-    Scalar_type::UINT8, Scalar_type::UINT8, Scalar_type::UINT8, Scalar_type::UINT8, Scalar_type::UINT8,
-    Scalar_type::UINT8, Scalar_type::FLOAT32, Scalar_type::UINT8, Scalar_type::UINT16, Scalar_type::FLOAT64,
-    Scalar_type::UINT16, Scalar_type::UINT16, Scalar_type::UINT16, Scalar_type::UINT16, Scalar_type::UINT8,
-    Scalar_type::FLOAT64, Scalar_type::UINT32, Scalar_type::FLOAT32, Scalar_type::FLOAT32, Scalar_type::FLOAT32,
+    Scalar_type::UINT16,  Scalar_type::UINT8,   Scalar_type::UINT8,   Scalar_type::UINT8,   Scalar_type::UINT8,
+    Scalar_type::UINT8,   Scalar_type::UINT8,   Scalar_type::UINT8,   Scalar_type::UINT8,   Scalar_type::UINT8,
+    Scalar_type::UINT8,   Scalar_type::FLOAT32, Scalar_type::UINT8,   Scalar_type::UINT16,  Scalar_type::FLOAT64,
+    Scalar_type::UINT16,  Scalar_type::UINT16,  Scalar_type::UINT16,  Scalar_type::UINT16,  Scalar_type::UINT8,
+    Scalar_type::FLOAT64, Scalar_type::UINT32,  Scalar_type::FLOAT32, Scalar_type::FLOAT32, Scalar_type::FLOAT32,
     Scalar_type::FLOAT32};
   const bool extended = format >= 6;
   for(int f = 0; f < LAS_FIELD_COUNT; ++f)
@@ -604,7 +624,7 @@ void add_las_fields(int format, bool keep_attributes, Point_cloud& cloud, bool p
   }
 }
 
-} // namespace
+}  // namespace
 
 Point_cloud read_las(Byte_source& bytes, const std::string& path, const Read_options& options)
 {
@@ -622,8 +642,8 @@ Point_cloud read_las(Byte_source& bytes, const std::string& path, const Read_opt
     const std::uint64_t complete = complete_records(l);
     if(!options.allow_truncated)
       throw Error(truncated_text(path, l) + ": --allow-truncated reads them)");
-    cloud.warnings.push_back(cat(in_quotes(path), ": truncated: read the ", complete, " complete points of the ",
-                                 count, " the header declares (--allow-truncated)"));
+    cloud.warnings.push_back(cat(in_quotes(path), ": truncated: read the ", complete, " complete points of the ", count,
+                                 " the header declares (--allow-truncated)"));
     count = complete;
   }
 
@@ -697,7 +717,7 @@ Point_cloud read_las(Byte_source& bytes, const std::string& path, const Read_opt
   return cloud;  // the rest of the file (waveforms, extended records) is not read
 }
 
-} // namespace input
+}  // namespace input
 
 Las_point_layout las_point_layout(const std::string& path)
 {
@@ -718,4 +738,4 @@ Las_point_layout las_point_layout(const std::string& path)
   return layout;
 }
 
-} // namespace psc_tool
+}  // namespace psc_tool

@@ -20,11 +20,11 @@ typedef Scalar_type Ply_type;
 bool ply_type(std::string_view name, Ply_type& t)
 {
   static const std::pair<const char*, Ply_type> names[] = {
-    {"char", Ply_type::INT8},     {"int8", Ply_type::INT8},       {"uchar", Ply_type::UINT8},
-    {"uint8", Ply_type::UINT8},   {"short", Ply_type::INT16},     {"int16", Ply_type::INT16},
-    {"ushort", Ply_type::UINT16}, {"uint16", Ply_type::UINT16},   {"int", Ply_type::INT32},
-    {"int32", Ply_type::INT32},   {"uint", Ply_type::UINT32},     {"uint32", Ply_type::UINT32},
-    {"float", Ply_type::FLOAT32}, {"float32", Ply_type::FLOAT32}, {"double", Ply_type::FLOAT64},
+    {"char", Ply_type::INT8},      {"int8", Ply_type::INT8},       {"uchar", Ply_type::UINT8},
+    {"uint8", Ply_type::UINT8},    {"short", Ply_type::INT16},     {"int16", Ply_type::INT16},
+    {"ushort", Ply_type::UINT16},  {"uint16", Ply_type::UINT16},   {"int", Ply_type::INT32},
+    {"int32", Ply_type::INT32},    {"uint", Ply_type::UINT32},     {"uint32", Ply_type::UINT32},
+    {"float", Ply_type::FLOAT32},  {"float32", Ply_type::FLOAT32}, {"double", Ply_type::FLOAT64},
     {"float64", Ply_type::FLOAT64}};
   for(const auto& n : names)
     if(name == n.first)
@@ -39,9 +39,13 @@ std::size_t type_size(Ply_type t)
 {
   switch(t)
   {
-    case Ply_type::INT8: case Ply_type::UINT8: return 1;
-    case Ply_type::INT16: case Ply_type::UINT16: return 2;
-    case Ply_type::INT32: case Ply_type::UINT32: case Ply_type::FLOAT32: return 4;
+    case Ply_type::INT8:
+    case Ply_type::UINT8: return 1;
+    case Ply_type::INT16:
+    case Ply_type::UINT16: return 2;
+    case Ply_type::INT32:
+    case Ply_type::UINT32:
+    case Ply_type::FLOAT32: return 4;
     default: return 8;
   }
 }
@@ -58,14 +62,46 @@ double binary_value(const char* p, Ply_type t, bool swap)
     std::reverse(b, b + n);
   switch(t)
   {
-    case Ply_type::INT8: { std::int8_t v; std::memcpy(&v, b, 1); return v; }
-    case Ply_type::UINT8: { std::uint8_t v; std::memcpy(&v, b, 1); return v; }
-    case Ply_type::INT16: { std::int16_t v; std::memcpy(&v, b, 2); return v; }
-    case Ply_type::UINT16: { std::uint16_t v; std::memcpy(&v, b, 2); return v; }
-    case Ply_type::INT32: { std::int32_t v; std::memcpy(&v, b, 4); return v; }
-    case Ply_type::UINT32: { std::uint32_t v; std::memcpy(&v, b, 4); return v; }
-    case Ply_type::FLOAT32: { float v; std::memcpy(&v, b, 4); return v; }
-    default: { double v; std::memcpy(&v, b, 8); return v; }
+    case Ply_type::INT8: {
+      std::int8_t v;
+      std::memcpy(&v, b, 1);
+      return v;
+    }
+    case Ply_type::UINT8: {
+      std::uint8_t v;
+      std::memcpy(&v, b, 1);
+      return v;
+    }
+    case Ply_type::INT16: {
+      std::int16_t v;
+      std::memcpy(&v, b, 2);
+      return v;
+    }
+    case Ply_type::UINT16: {
+      std::uint16_t v;
+      std::memcpy(&v, b, 2);
+      return v;
+    }
+    case Ply_type::INT32: {
+      std::int32_t v;
+      std::memcpy(&v, b, 4);
+      return v;
+    }
+    case Ply_type::UINT32: {
+      std::uint32_t v;
+      std::memcpy(&v, b, 4);
+      return v;
+    }
+    case Ply_type::FLOAT32: {
+      float v;
+      std::memcpy(&v, b, 4);
+      return v;
+    }
+    default: {
+      double v;
+      std::memcpy(&v, b, 8);
+      return v;
+    }
   }
 }
 
@@ -103,8 +139,8 @@ struct Ply_header
 {
   Ply_format format = Ply_format::ASCII;
   std::vector<Ply_element> elements;
-  std::size_t vertex = 0;        // index of the vertex element
-  int role_property[6];          // per role (x y z nx ny nz), the vertex property, or -1
+  std::size_t vertex = 0;  // index of the vertex element
+  int role_property[6];    // per role (x y z nx ny nz), the vertex property, or -1
   // per vertex property, its attribute in Point_cloud::attributes, or -1 (roles, lists,
   // attributes not kept)
   std::vector<int> attribute_of;
@@ -216,8 +252,8 @@ Ply_header read_ply_header(Line_source& lines, const std::string& path)
       for(int a = 0; a < 3; ++a)
         h.role_property[3 + a] = found[a];
     else if(present != 0 && present != 3)
-      throw Error(cat(in_quotes(path), ": the PLY vertex element has only some of ", names[0], " ", names[1],
-                      " ", names[2]));
+      throw Error(
+        cat(in_quotes(path), ": the PLY vertex element has only some of ", names[0], " ", names[1], " ", names[2]));
   }
   return h;
 }
@@ -287,12 +323,12 @@ void read_ply_binary(Byte_source& bytes, const Ply_header& h, Point_cloud& cloud
           for(std::size_t i = 0; i < n; ++i, base += size)
           {
             for(int r = 0; r < 3; ++r)
-              cloud.xyz.push_back(binary_value(base + offset[h.role_property[r]],
-                                               e.properties[h.role_property[r]].type, swap));
+              cloud.xyz.push_back(
+                binary_value(base + offset[h.role_property[r]], e.properties[h.role_property[r]].type, swap));
             if(normals)
               for(int r = 3; r < 6; ++r)
-                cloud.normals.push_back(binary_value(base + offset[h.role_property[r]],
-                                                     e.properties[h.role_property[r]].type, swap));
+                cloud.normals.push_back(
+                  binary_value(base + offset[h.role_property[r]], e.properties[h.role_property[r]].type, swap));
             for(std::size_t pi = 0; pi < e.properties.size(); ++pi)
               if(h.attribute_of[pi] >= 0)
                 cloud.attributes[h.attribute_of[pi]].values.push_back(
@@ -455,13 +491,13 @@ void read_ply_ascii(Line_source& lines, const Ply_header& h, Point_cloud& cloud,
   if(values.next(extra))
   {
     const Ply_element& v = h.elements[h.vertex];
-    throw Error(cat(in_quotes(path), ": line ", values.line_number(), ": more data than the ", v.count,
-                    " vertices", h.elements.size() > 1 ? " and other elements" : "",
+    throw Error(cat(in_quotes(path), ": line ", values.line_number(), ": more data than the ", v.count, " vertices",
+                    h.elements.size() > 1 ? " and other elements" : "",
                     " declared in the header (wrong vertex count?)"));
   }
 }
 
-} // namespace
+}  // namespace
 
 Point_cloud read_ply(Byte_source& bytes, const std::string& path, const Read_options& options)
 {
@@ -501,7 +537,7 @@ Point_cloud read_ply(Byte_source& bytes, const std::string& path, const Read_opt
   return cloud;
 }
 
-} // namespace input
+}  // namespace input
 
 Ply_vertex_layout ply_vertex_layout(const std::string& path)
 {
@@ -511,7 +547,8 @@ Ply_vertex_layout ply_vertex_layout(const std::string& path)
   Line_source lines(bytes);
   const Ply_header h = read_ply_header(lines, path);
   if(h.format == Ply_format::ASCII)
-    throw Error(cat(in_quotes(path), ": an ASCII PLY file cannot be read in place: only binary PLY files are "
+    throw Error(cat(in_quotes(path),
+                    ": an ASCII PLY file cannot be read in place: only binary PLY files are "
                     "(convert it, for example with the point_set_curvatures tool, or save the points as .npy)"));
   Ply_vertex_layout layout;
   layout.big_endian = h.format == Ply_format::BINARY_BIG_ENDIAN;
@@ -549,4 +586,4 @@ Ply_vertex_layout ply_vertex_layout(const std::string& path)
   return layout;
 }
 
-} // namespace psc_tool
+}  // namespace psc_tool

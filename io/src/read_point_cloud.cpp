@@ -176,7 +176,7 @@ Point_cloud read_xyz(Byte_source& bytes, const std::string& path, const Read_opt
   while(lines.next(line))
   {
     if(lines.line_number() == 1 && line.size() >= 3 && line.substr(0, 3) == "\xEF\xBB\xBF")
-      line.remove_prefix(3);  // UTF-8 byte order mark
+      line.remove_prefix(3);                      // UTF-8 byte order mark
     line = trim(line.substr(0, line.find('#')));  // '#' starts a comment, anywhere
     if(line.empty())
       continue;
@@ -211,7 +211,8 @@ Point_cloud read_xyz(Byte_source& bytes, const std::string& path, const Read_opt
           roles = roles_of(header);
           const std::string problem = layout_problem(roles);
           if(!problem.empty())
-            fail(cat("the header line ", problem, ": give --columns to name the columns (for example "
+            fail(cat("the header line ", problem,
+                     ": give --columns to name the columns (for example "
                      "--columns x,y,z,nx,ny,nz)"));
           layout_origin = "the header line";
           name_attributes(header);
@@ -328,8 +329,8 @@ Point_cloud read_off(Byte_source& bytes, const std::string& path)
   if(stage < 2)
     throw Error(cat(in_quotes(path), ": not an OFF file (missing header or counts)"));
   if(cloud.size() != declared_vertices)
-    throw Error(cat(in_quotes(path), ": the header declares ", declared_vertices, " vertices but the file has ",
-                    cloud.size()));
+    throw Error(
+      cat(in_quotes(path), ": the header declares ", declared_vertices, " vertices but the file has ", cloud.size()));
   if(faces != declared_faces)
     throw Error(cat(in_quotes(path), ": the header declares ", declared_faces, " faces but the file has ", faces));
   if(!cloud.normals.empty())
@@ -340,7 +341,7 @@ Point_cloud read_off(Byte_source& bytes, const std::string& path)
   return cloud;
 }
 
-} // namespace
+}  // namespace
 
 const char* readable_formats() { return ".xyz, .pwn, .txt, .csv, .asc, .ply, .off or .las"; }
 
@@ -357,7 +358,8 @@ std::vector<std::string> parse_columns(const std::string& text)
   for(;;)
   {
     const std::size_t comma = text.find(',', b);
-    names.push_back(std::string(trim(std::string_view(text).substr(b, comma == std::string::npos ? std::string::npos : comma - b))));
+    names.push_back(
+      std::string(trim(std::string_view(text).substr(b, comma == std::string::npos ? std::string::npos : comma - b))));
     if(comma == std::string::npos)
       break;
     b = comma + 1;
@@ -386,7 +388,7 @@ std::uint64_t regular_file_size(const std::string& path)
   return std::uint64_t(st.st_size);
 }
 
-} // namespace input
+}  // namespace input
 
 Point_cloud read_point_cloud(const std::string& path, const Read_options& options)
 {
@@ -397,7 +399,7 @@ Point_cloud read_point_cloud(const std::string& path, const Read_options& option
   const bool text = ext == ".xyz" || ext == ".pwn" || ext == ".txt" || ext == ".csv" || ext == ".asc";
   if(ext == ".laz")
     throw Error(cat(in_quotes(path), ": compressed LAS (.laz) is not read; decompress it first, for example "
-                    "with 'laszip -i FILE.laz -o FILE.las' or 'pdal translate FILE.laz FILE.las'"));
+                                     "with 'laszip -i FILE.laz -o FILE.las' or 'pdal translate FILE.laz FILE.las'"));
   if(!text && ext != ".ply" && ext != ".off" && ext != ".las")
     throw Error(cat("unsupported input format ", in_quotes(ext.empty() ? path : ext), " for ", in_quotes(path),
                     " (expected ", readable_formats(), ")"));
@@ -417,4 +419,4 @@ Point_cloud read_point_cloud(const std::string& path, const Read_options& option
   return cloud;
 }
 
-} // namespace psc_tool
+}  // namespace psc_tool

@@ -24,11 +24,28 @@ namespace psc_tool {
 namespace {
 
 // The unsigned integer of a type's size.
-template <std::size_t N> struct Unsigned;
-template <> struct Unsigned<1> { typedef std::uint8_t type; };
-template <> struct Unsigned<2> { typedef std::uint16_t type; };
-template <> struct Unsigned<4> { typedef std::uint32_t type; };
-template <> struct Unsigned<8> { typedef std::uint64_t type; };
+template <std::size_t N>
+struct Unsigned;
+template <>
+struct Unsigned<1>
+{
+  typedef std::uint8_t type;
+};
+template <>
+struct Unsigned<2>
+{
+  typedef std::uint16_t type;
+};
+template <>
+struct Unsigned<4>
+{
+  typedef std::uint32_t type;
+};
+template <>
+struct Unsigned<8>
+{
+  typedef std::uint64_t type;
+};
 
 // `v` at `at`, little-endian whatever the machine's order.
 template <class T>
@@ -98,11 +115,11 @@ const char* description_of(const std::string& name)
 // An extra-bytes field of the output.
 struct Extra
 {
-  std::size_t field = 0;    // in the fields
+  std::size_t field = 0;  // in the fields
   int data_type = 10;
   double scale = 1, shift = 0;  // raw = (value - shift) / scale
-  std::size_t offset = 0;   // in the record
-  std::string descriptor;   // 192 bytes
+  std::size_t offset = 0;       // in the record
+  std::string descriptor;       // 192 bytes
 };
 
 std::string padded(const std::string& s, std::size_t size)
@@ -133,7 +150,7 @@ void creation_date(int& day, int& year)
 // The largest power of ten not above v (v > 0, finite).
 double power_of_ten_below(double v) { return std::pow(10.0, std::floor(std::log10(v))); }
 
-} // namespace
+}  // namespace
 
 namespace {
 
@@ -273,7 +290,7 @@ Las_layout las_layout(const Las_output_options& options, const std::vector<Outpu
   return l;
 }
 
-} // namespace
+}  // namespace
 
 std::uint64_t las_output_size(const Las_output_options& options, const std::vector<Output_field>& fields,
                               const std::vector<Attribute>& attributes, std::size_t n)
@@ -327,9 +344,9 @@ std::string las_header_start(const Las_source* source, const Las_layout& l, cons
   global_encoding = 0;
   if(source)
   {
-    std::memcpy(&header[4], source->header.data() + 4, 2);    // file source id
+    std::memcpy(&header[4], source->header.data() + 4, 2);  // file source id
     global_encoding = get<std::uint16_t>(source->header.data() + 6);
-    std::memcpy(&header[8], source->header.data() + 8, 16);   // project id
+    std::memcpy(&header[8], source->header.data() + 8, 16);    // project id
     std::memcpy(&header[26], source->header.data() + 26, 32);  // system identifier
     global_encoding &= 0x1F;
     if(!has_wave_packet(format))
@@ -391,8 +408,8 @@ inline void encode_las_fields(char* p, int format, bool finite, const Field& fie
     const unsigned overlap = to_integer<std::uint8_t>(field(LAS_OVERLAP, 0)) & 1;
     const unsigned channel = to_integer<std::uint8_t>(field(LAS_SCANNER_CHANNEL, 0)) & 3;
     p[14] = char((return_number & 15) | ((returns & 15) << 4));
-    p[15] = char(synthetic | (key << 1) | (held << 2) | (overlap << 3) | (channel << 4) | (direction << 6) |
-                 (edge << 7));
+    p[15] =
+      char(synthetic | (key << 1) | (held << 2) | (overlap << 3) | (channel << 4) | (direction << 6) | (edge << 7));
     p[16] = char(classification);
     put(p + 17, to_integer<std::uint8_t>(field(LAS_USER_DATA, 0)));
     put(p + 18, to_integer<std::int16_t>(field(LAS_SCAN_ANGLE, 0) / 0.006));
@@ -434,7 +451,8 @@ std::uint64_t copy_las_evlrs(std::FILE* f, const Las_output_options& options, co
   {
     std::FILE* in = std::fopen(options.input_path.c_str(), "rb");
     if(!in)
-      throw Error(cat("cannot open input ", in_quotes(options.input_path), " again to copy its extended variable "
+      throw Error(cat("cannot open input ", in_quotes(options.input_path),
+                      " again to copy its extended variable "
                       "length records"));
     std::vector<char> buffer(1 << 20);
     for(const auto& e : source->evlrs)
@@ -500,7 +518,7 @@ void finish_las_header(std::string& header, int format, std::size_t n, std::uint
     put(&header[255 + 8 * k], by_return[k]);
 }
 
-} // namespace
+}  // namespace
 
 std::vector<std::string> write_las(std::FILE* f, const Las_output_options& options,
                                    const std::vector<Output_field>& fields, const std::vector<Attribute>& attributes,
@@ -538,9 +556,7 @@ std::vector<std::string> write_las(std::FILE* f, const Las_output_options& optio
   for(std::size_t i = 0; i < n; ++i)
   {
     row(i, r);
-    auto attribute = [&](std::size_t j) {
-      return r.attributes ? r.attributes[j] : attributes[j].values[i];
-    };
+    auto attribute = [&](std::size_t j) { return r.attributes ? r.attributes[j] : attributes[j].values[i]; };
     auto field = [&](int f, double otherwise) {
       return standard_source[f] >= 0 ? attribute(std::size_t(standard_source[f])) : otherwise;
     };
@@ -578,7 +594,7 @@ std::vector<std::string> write_las(std::FILE* f, const Las_output_options& optio
     std::fwrite(chunk.data(), 1, chunk.size(), f);
   if(not_finite > 0)
     warnings.push_back(cat(not_finite, " points with non-finite coordinates are written to the LAS output at its "
-                           "offset, withheld (LAS coordinates are integers)"));
+                                       "offset, withheld (LAS coordinates are integers)"));
 
   // the extended variable length records, copied from the input
   std::uint64_t first_evlr = 0, waveform_start = 0;
@@ -600,4 +616,4 @@ std::vector<std::string> write_las(std::FILE* f, const Las_output_options& optio
   return warnings;
 }
 
-} // namespace psc_tool
+}  // namespace psc_tool

@@ -18,7 +18,7 @@ namespace {
 
 namespace PSC = CGAL::Point_set_curvatures;
 
-} // namespace
+}  // namespace
 
 const char* selectable_fields()
 {
@@ -89,8 +89,10 @@ std::vector<Output_field> output_fields(const std::vector<std::string>& selected
   });
   if(color)
     for(int c = 0; c < 3; ++c)
-      fields.push_back(Output_field{c == 0 ? "red" : c == 1 ? "green" : "blue", Scalar_type::UINT8,
-                                    Output_field::COLOR + c});
+      fields.push_back(Output_field{c == 0   ? "red"
+                                    : c == 1 ? "green"
+                                             : "blue",
+                                    Scalar_type::UINT8, Output_field::COLOR + c});
   for(const Output_field& f : fields)
     taken.insert(f.name);
   for(std::size_t j = 0; j < attributes.size(); ++j)
@@ -226,9 +228,13 @@ std::size_t binary_size(Scalar_type t)
 {
   switch(t)
   {
-    case Scalar_type::INT8: case Scalar_type::UINT8: return 1;
-    case Scalar_type::INT16: case Scalar_type::UINT16: return 2;
-    case Scalar_type::INT32: case Scalar_type::UINT32: case Scalar_type::FLOAT32: return 4;
+    case Scalar_type::INT8:
+    case Scalar_type::UINT8: return 1;
+    case Scalar_type::INT16:
+    case Scalar_type::UINT16: return 2;
+    case Scalar_type::INT32:
+    case Scalar_type::UINT32:
+    case Scalar_type::FLOAT32: return 4;
     default: return 8;
   }
 }
@@ -237,18 +243,18 @@ std::size_t text_width(Scalar_type t)
 {
   switch(t)
   {
-    case Scalar_type::INT8: return 4;     // -128
-    case Scalar_type::UINT8: return 3;    // 255
-    case Scalar_type::INT16: return 6;    // -32768
-    case Scalar_type::UINT16: return 5;   // 65535
-    case Scalar_type::INT32: return 11;   // -2147483648
-    case Scalar_type::UINT32: return 10;  // 4294967295
-    case Scalar_type::FLOAT32: return 15; // -1.17549435e-38 (%.9g)
-    default: return 24;                   // -2.2250738585072014e-308 (%.17g)
+    case Scalar_type::INT8: return 4;      // -128
+    case Scalar_type::UINT8: return 3;     // 255
+    case Scalar_type::INT16: return 6;     // -32768
+    case Scalar_type::UINT16: return 5;    // 65535
+    case Scalar_type::INT32: return 11;    // -2147483648
+    case Scalar_type::UINT32: return 10;   // 4294967295
+    case Scalar_type::FLOAT32: return 15;  // -1.17549435e-38 (%.9g)
+    default: return 24;                    // -2.2250738585072014e-308 (%.17g)
   }
 }
 
-} // namespace
+}  // namespace
 
 std::uint64_t output_size_bound(const Output_layout& layout, std::size_t n)
 {
@@ -283,10 +289,10 @@ void write_point_cloud(std::FILE* f, const Output_layout& layout, std::size_t n,
     {
       const Output_field& field = layout.fields[c];
       const int s = field.source;
-      double v = s < output_value_count               ? r.value[s]
-                 : s < Output_field::ATTRIBUTE        ? double(r.color[s - Output_field::COLOR])
-                 : r.attributes                       ? r.attributes[s - Output_field::ATTRIBUTE]
-                                                      : (*layout.attributes)[s - Output_field::ATTRIBUTE].values[i];
+      double v = s < output_value_count        ? r.value[s]
+                 : s < Output_field::ATTRIBUTE ? double(r.color[s - Output_field::COLOR])
+                 : r.attributes                ? r.attributes[s - Output_field::ATTRIBUTE]
+                                               : (*layout.attributes)[s - Output_field::ATTRIBUTE].values[i];
       if(field.shift)
         v = std::floor(v / double(1 << field.shift));
       if(layout.format == Output_layout::BINARY_PLY)
@@ -315,4 +321,4 @@ void write_point_cloud(std::FILE* f, const Output_layout& layout, std::size_t n,
     std::fwrite(chunk.data(), 1, chunk.size(), f);
 }
 
-} // namespace psc_tool
+}  // namespace psc_tool

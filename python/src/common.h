@@ -46,7 +46,7 @@ struct Options
   int normal_field_blend = -1;  // 0 / 1
   long long normal_refinement = 0;
   double position_fit_blend = 0;  // [0, 1]
-  int aso_projection = 0;       // CGAL::Aso_projection: 0 CORRECTED_NORMAL, 1 AUTHORS_IMPLEMENTATION
+  int aso_projection = 0;         // CGAL::Aso_projection: 0 CORRECTED_NORMAL, 1 AUTHORS_IMPLEMENTATION
   // jets
   long long degree_fitting = 2;
   long long degree_monge = 2;
@@ -67,7 +67,8 @@ struct Cloud_weight_map
   typedef double value_type;
   typedef double reference;
   typedef std::conditional_t<std::is_const<Value>::value, boost::readable_property_map_tag,
-                             boost::read_write_property_map_tag> category;
+                             boost::read_write_property_map_tag>
+    category;
   const Oriented* base = nullptr;
   Value* weights = nullptr;
 
@@ -142,20 +143,16 @@ template <class NP, class F>
 auto dispatch(const Cloud& cloud, const Scale& s, const Tile_arg& t, bool parallel, const NP& np, const F& f)
 {
   namespace P = CGAL::Point_set_curvatures::parameters;
-  auto go = [&](auto tag, const auto& np2) {
-    return s.by_count ? f(tag, cloud, np2) : f(tag, cloud, s.radius, np2);
-  };
+  auto go = [&](auto tag, const auto& np2) { return s.by_count ? f(tag, cloud, np2) : f(tag, cloud, s.radius, np2); };
   if(parallel)
     return t.has ? go(CGAL::Parallel_tag(), P::tile(t.tile, np)) : go(CGAL::Parallel_tag(), np);
   return t.has ? go(CGAL::Sequential_tag(), P::tile(t.tile, np)) : go(CGAL::Sequential_tag(), np);
 }
 
-} // namespace psc_py
+}  // namespace psc_py
 
 // An estimation function as a generic callable: f(tag, cloud, radius, np) or f(tag, cloud, np).
-#define PSC_PY_FUNCTION(name)                                                                 \
-  [](auto tag, const ::psc_py::Cloud& c, const auto&... args) {                               \
-    return CGAL::name<decltype(tag)>(c, args...);                                             \
-  }
+#define PSC_PY_FUNCTION(name)                                                                                          \
+  [](auto tag, const ::psc_py::Cloud& c, const auto&... args) { return CGAL::name<decltype(tag)>(c, args...); }
 
 #endif

@@ -18,8 +18,8 @@ std::vector<Estimate> estimate_apss(const Cloud& cloud, const Scale& s, const Op
   const CGAL::Sample_weights weights =
     o.sample_weights >= 0 ? CGAL::Sample_weights(o.sample_weights) : CGAL::Sample_weights::UNIFORM;
   const bool robust = o.robust_orientation > 0;
-  const auto np = common_parameters(s, o, cb, CGAL::Point_set_curvatures::default_min_neighbors::apss,
-    [&](const auto& base) {
+  const auto np =
+    common_parameters(s, o, cb, CGAL::Point_set_curvatures::default_min_neighbors::apss, [&](const auto& base) {
       return P::weight_kernel(kernel, P::sample_weights(weights, P::robust_orientation(robust, base)));
     });
   return with_given_weights(cloud, o, np, [&](const auto& np2) {
@@ -27,4 +27,4 @@ std::vector<Estimate> estimate_apss(const Cloud& cloud, const Scale& s, const Op
   });
 }
 
-} // namespace psc_py
+}  // namespace psc_py

@@ -24,18 +24,19 @@ std::vector<Estimate> estimate_aso(const Cloud& cloud, const Scale& s, const Opt
     options.robust_orientation = o.robust_orientation != 0;
   if(o.normal_field_blend >= 0)
     options.normal_field_blend = o.normal_field_blend != 0;
-  const auto np = common_parameters(s, o, cb, CGAL::Point_set_curvatures::default_min_neighbors::aso,
-    [&](const auto& base) {
-      return P::aso_variant(variant,
-             P::aso_options(options,
-             P::normal_refinement(static_cast<std::size_t>(o.normal_refinement),
-             P::position_fit_blend(o.position_fit_blend,
-             P::aso_projection(CGAL::Aso_projection(o.aso_projection),
-             P::automatic_scale(s.automatic_largest, base))))));
+  const auto np =
+    common_parameters(s, o, cb, CGAL::Point_set_curvatures::default_min_neighbors::aso, [&](const auto& base) {
+      return P::aso_variant(
+        variant, P::aso_options(
+                   options, P::normal_refinement(static_cast<std::size_t>(o.normal_refinement),
+                                                 P::position_fit_blend(
+                                                   o.position_fit_blend,
+                                                   P::aso_projection(CGAL::Aso_projection(o.aso_projection),
+                                                                     P::automatic_scale(s.automatic_largest, base))))));
     });
   return with_given_weights(cloud, o, np, [&](const auto& np2) {
     return dispatch(cloud, s, t, parallel, np2, PSC_PY_FUNCTION(estimate_aso_curvatures));
   });
 }
 
-} // namespace psc_py
+}  // namespace psc_py

@@ -36,9 +36,10 @@ std::vector<Estimate> estimate_vcm(const Cloud& cloud, const Scale& s, const Opt
   if(std::isnan(o.vcm_offset_radius))  // the C++ default (the radius, or the median radius by count)
     return dispatch(cloud, s, no_tile, parallel,
                     common_parameters(s, o, cb, D::vcm, [](const auto& base) { return base; }), f);
-  return dispatch(cloud, s, no_tile, parallel, common_parameters(s, o, cb, D::vcm, [&](const auto& base) {
-                    return P::vcm_offset_radius(o.vcm_offset_radius, base);
-                  }), f);
+  return dispatch(cloud, s, no_tile, parallel,
+                  common_parameters(s, o, cb, D::vcm,
+                                    [&](const auto& base) { return P::vcm_offset_radius(o.vcm_offset_radius, base); }),
+                  f);
 }
 
-} // namespace psc_py
+}  // namespace psc_py

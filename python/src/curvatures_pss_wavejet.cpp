@@ -11,8 +11,7 @@
 namespace psc_py {
 
 std::vector<Estimate> estimate_pss_wavejet(const std::string& method, const Cloud& cloud, const Scale& s,
-                                           const Options& o, const Tile_arg& t, bool parallel,
-                                           const Callback& cb)
+                                           const Options& o, const Tile_arg& t, bool parallel, const Callback& cb)
 {
   namespace D = CGAL::Point_set_curvatures::default_min_neighbors;
   const auto same = [](const auto& base) { return base; };
@@ -23,4 +22,4 @@ std::vector<Estimate> estimate_pss_wavejet(const std::string& method, const Clou
                   PSC_PY_FUNCTION(estimate_wavejet_curvatures));
 }
 
-} // namespace psc_py
+}  // namespace psc_py

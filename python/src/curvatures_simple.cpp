@@ -10,8 +10,8 @@
 
 namespace psc_py {
 
-std::vector<Estimate> estimate_simple(const std::string& method, const Cloud& cloud, const Scale& s,
-                                      const Options& o, const Tile_arg& t, bool parallel, const Callback& cb)
+std::vector<Estimate> estimate_simple(const std::string& method, const Cloud& cloud, const Scale& s, const Options& o,
+                                      const Tile_arg& t, bool parallel, const Callback& cb)
 {
   namespace D = CGAL::Point_set_curvatures::default_min_neighbors;
   const auto same = [](const auto& base) { return base; };
@@ -22,4 +22,4 @@ std::vector<Estimate> estimate_simple(const std::string& method, const Cloud& cl
                   PSC_PY_FUNCTION(estimate_pca_plane_curvatures));
 }
 
-} // namespace psc_py
+}  // namespace psc_py

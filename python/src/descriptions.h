@@ -97,6 +97,6 @@ inline py::dict estimator_to_dict(const CGAL::Point_set_curvatures::Estimator_de
   return d;
 }
 
-} // namespace psc_py
+}  // namespace psc_py
 
 #endif

@@ -19,7 +19,7 @@ CGAL::Apss_weight_kernel sphere_kernel(const Options& o)
   return o.weight_kernel >= 0 ? CGAL::Apss_weight_kernel(o.weight_kernel) : CGAL::Apss_weight_kernel::SMOOTH;
 }
 
-} // namespace
+}  // namespace
 
 std::vector<Features> sphere_features(const Cloud& cloud, const Scale& s, const Options& o, const Tile_arg& t,
                                       bool parallel, const Callback& cb)
@@ -27,8 +27,8 @@ std::vector<Features> sphere_features(const Cloud& cloud, const Scale& s, const 
   namespace P = CGAL::Point_set_curvatures::parameters;
   const CGAL::Sample_weights weights =
     o.sample_weights >= 0 ? CGAL::Sample_weights(o.sample_weights) : CGAL::Sample_weights::UNIFORM;
-  const auto np = common_parameters(s, o, cb,
-    CGAL::Point_set_curvatures::default_min_neighbors::sphere_features,
+  const auto np = common_parameters(
+    s, o, cb, CGAL::Point_set_curvatures::default_min_neighbors::sphere_features,
     [&](const auto& base) { return P::weight_kernel(sphere_kernel(o), P::sample_weights(weights, base)); });
   return with_given_weights(cloud, o, np, [&](const auto& np2) {
     return dispatch(cloud, s, t, parallel, np2, PSC_PY_FUNCTION(estimate_algebraic_sphere_features));
@@ -40,12 +40,13 @@ bool tangent_voronoi_areas(Cloud& cloud, const Scale& s, bool accept_unnormalize
 {
   namespace P = CGAL::Point_set_curvatures::parameters;
   areas.assign(cloud.size(), 0.0);
-  const auto np = P::sample_weight_map(Cloud_weight_map<double>{cloud.data(), areas.data()},
-                                       P::accept_unnormalized_normals(accept_unnormalized_normals,
-                                       P::neighbor_count(s.by_count ? s.k : 0,
-                                         CGAL::parameters::point_map(CGAL::First_of_pair_property_map<Oriented>())
-                                           .normal_map(CGAL::Second_of_pair_property_map<Oriented>())
-                                           .callback(cb))));
+  const auto np = P::sample_weight_map(
+    Cloud_weight_map<double>{cloud.data(), areas.data()},
+    P::accept_unnormalized_normals(
+      accept_unnormalized_normals,
+      P::neighbor_count(s.by_count ? s.k : 0, CGAL::parameters::point_map(CGAL::First_of_pair_property_map<Oriented>())
+                                                .normal_map(CGAL::Second_of_pair_property_map<Oriented>())
+                                                .callback(cb))));
   auto go = [&](auto tag) {
     typedef decltype(tag) Tag;
     return s.by_count ? CGAL::estimate_tangent_voronoi_areas<Tag>(cloud, np)
@@ -61,8 +62,8 @@ std::vector<std::vector<Features> > multiscale_sphere_features(const Cloud& clou
   const Scale by_radius;  // neighbor_count(0): the multi-scale function refuses a count
   const CGAL::Sample_weights weights =
     o.sample_weights >= 0 ? CGAL::Sample_weights(o.sample_weights) : CGAL::Sample_weights::UNIFORM;
-  const auto np = common_parameters(by_radius, o, cb,
-    CGAL::Point_set_curvatures::default_min_neighbors::sphere_features,
+  const auto np = common_parameters(
+    by_radius, o, cb, CGAL::Point_set_curvatures::default_min_neighbors::sphere_features,
     [&](const auto& base) { return P::weight_kernel(sphere_kernel(o), P::sample_weights(weights, base)); });
   if(parallel)
     return CGAL::estimate_multiscale_algebraic_sphere_features<CGAL::Parallel_tag>(cloud, radii, np);
@@ -75,12 +76,12 @@ std::vector<CGAL::Curvature_estimate_status> smooth_point_set(Cloud& cloud, doub
 {
   namespace P = CGAL::Point_set_curvatures::parameters;
   // number_of_iterations is read as a signed integer and checked by the function.
-  const auto np = P::weight_kernel(sphere_kernel(o),
-                    P::update_normals(update_normals,
-                      CGAL::parameters::point_map(CGAL::First_of_pair_property_map<Oriented>())
-                        .normal_map(CGAL::Second_of_pair_property_map<Oriented>())
-                        .callback(cb)
-                        .number_of_iterations(iterations)));
+  const auto np = P::weight_kernel(
+    sphere_kernel(o),
+    P::update_normals(update_normals, CGAL::parameters::point_map(CGAL::First_of_pair_property_map<Oriented>())
+                                        .normal_map(CGAL::Second_of_pair_property_map<Oriented>())
+                                        .callback(cb)
+                                        .number_of_iterations(iterations)));
   if(parallel)
     return CGAL::apss_smooth_point_set<CGAL::Parallel_tag>(cloud, radius, np);
   return CGAL::apss_smooth_point_set<CGAL::Sequential_tag>(cloud, radius, np);
@@ -113,16 +114,18 @@ auto normal_parameters(const Scale& s, int fit, const Base& base)
                        P::automatic_scale(s.automatic_largest, P::neighbor_count(s.by_count ? s.k : 0, base)));
 }
 
-} // namespace
+}  // namespace
 
 std::size_t oriented_normals(Cloud& cloud, const Scale& s, int orientation, const double target[3], int fit,
                              bool parallel, const Callback& cb)
 {
   namespace P = CGAL::Point_set_curvatures::parameters;
-  const auto np = P::normal_orientation(normal_orientation(orientation, target),
-                    normal_parameters(s, fit, CGAL::parameters::point_map(CGAL::First_of_pair_property_map<Oriented>())
-                                                .normal_map(CGAL::Second_of_pair_property_map<Oriented>())
-                                                .callback(cb)));
+  const auto np =
+    P::normal_orientation(normal_orientation(orientation, target),
+                          normal_parameters(s, fit,
+                                            CGAL::parameters::point_map(CGAL::First_of_pair_property_map<Oriented>())
+                                              .normal_map(CGAL::Second_of_pair_property_map<Oriented>())
+                                              .callback(cb)));
   if(parallel)
     return s.by_count ? CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(cloud, np)
                       : CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(cloud, s.radius, np);
@@ -135,9 +138,9 @@ std::vector<Normal_record> normal_records(Cloud& cloud, const Scale& s, int fit,
 {
   namespace P = CGAL::Point_set_curvatures::parameters;
   namespace I = CGAL::Point_set_curvatures::internal;
-  const auto np = normal_parameters(
-    s, fit, P::tile(t.has ? t.tile : CGAL::Point_set_curvatures::Tile::whole_space(),
-                    CGAL::parameters::point_map(CGAL::First_of_pair_property_map<Oriented>())));
+  const auto np = normal_parameters(s, fit,
+                                    P::tile(t.has ? t.tile : CGAL::Point_set_curvatures::Tile::whole_space(),
+                                            CGAL::parameters::point_map(CGAL::First_of_pair_property_map<Oriented>())));
   bool cancelled = false;
   std::vector<Normal_record> records =
     parallel ? I::estimate_normal_records<CGAL::Parallel_tag>(cloud, !s.by_count, s.radius, np, cb, cancelled)
@@ -147,12 +150,12 @@ std::vector<Normal_record> normal_records(Cloud& cloud, const Scale& s, int fit,
   return records;
 }
 
-void orient_normal_records(const std::vector<Normal_record>& records, const std::vector<double>& xyz,
-                           int orientation, const double target[3], std::vector<double>& normals, const Callback& cb)
+void orient_normal_records(const std::vector<Normal_record>& records, const std::vector<double>& xyz, int orientation,
+                           const double target[3], std::vector<double>& normals, const Callback& cb)
 {
   if(!CGAL::Point_set_curvatures::internal::orient_normal_records(records, xyz, normal_orientation(orientation, target),
-                                                                   normals, cb))
+                                                                  normals, cb))
     throw Cancelled_error();
 }
 
-} // namespace psc_py
+}  // namespace psc_py

@@ -36,11 +36,11 @@ std::size_t oriented_normals(Cloud& cloud, const Scale&, int orientation, const 
 typedef CGAL::Point_set_curvatures::internal::Normal_record Normal_record;
 std::vector<Normal_record> normal_records(Cloud& cloud, const Scale&, int fit, const Tile_arg&, bool parallel,
                                           const Callback&);
-void orient_normal_records(const std::vector<Normal_record>& records, const std::vector<double>& xyz,
-                           int orientation, const double target[3], std::vector<double>& normals, const Callback&);
+void orient_normal_records(const std::vector<Normal_record>& records, const std::vector<double>& xyz, int orientation,
+                           const double target[3], std::vector<double>& normals, const Callback&);
 // CGAL::Point_set_curvatures::default_normal_neighbors() of a fit (0 plane, 1 quadric).
 std::size_t default_normal_neighbors(int fit);
 
-} // namespace psc_py
+}  // namespace psc_py
 
 #endif

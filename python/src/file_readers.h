@@ -123,6 +123,6 @@ inline py::dict las_point_layout_py(const std::string& path)
   return d;
 }
 
-} // namespace psc_py
+}  // namespace psc_py
 
 #endif

@@ -47,8 +47,7 @@ struct Row_reader
 {
   const char* data;
   py::ssize_t s0, s1;
-  explicit Row_reader(const py::array& a)
-    : data(static_cast<const char*>(a.data())), s0(a.strides(0)), s1(a.strides(1))
+  explicit Row_reader(const py::array& a) : data(static_cast<const char*>(a.data())), s0(a.strides(0)), s1(a.strides(1))
   {}
   void operator()(py::ssize_t i, double out[3]) const
   {
@@ -69,13 +68,21 @@ void for_each_row(const py::array& a, const F& f)
   {
     const Row_reader<double> r(a);
     double x[3];
-    for(py::ssize_t i = 0; i < n; ++i) { r(i, x); f(i, x); }
+    for(py::ssize_t i = 0; i < n; ++i)
+    {
+      r(i, x);
+      f(i, x);
+    }
   }
   else
   {
     const Row_reader<float> r(a);
     double x[3];
-    for(py::ssize_t i = 0; i < n; ++i) { r(i, x); f(i, x); }
+    for(py::ssize_t i = 0; i < n; ++i)
+    {
+      r(i, x);
+      f(i, x);
+    }
   }
 }
 
@@ -90,8 +97,8 @@ inline Cloud read_cloud(const py::handle& points, const py::handle& normals)
   {
     const py::ssize_t m = checked_rows(normals, "normals");
     if(m != n)
-      throw py::value_error("points and normals must have the same number of rows, got " + std::to_string(n) +
-                            " and " + std::to_string(m));
+      throw py::value_error("points and normals must have the same number of rows, got " + std::to_string(n) + " and " +
+                            std::to_string(m));
     for_each_row(py::reinterpret_borrow<py::array>(normals),
                  [&cloud](py::ssize_t i, const double* x) { cloud[i].second = K::Vector_3(x[0], x[1], x[2]); });
   }
@@ -139,11 +146,11 @@ inline Tile_arg read_tile(const py::object& tile)
   if(lo.size() != 3 || hi.size() != 3)
     throw py::value_error("tile: core_min and core_max must have 3 coordinates");
   t.has = true;
-  t.tile = CGAL::Point_set_curvatures::Tile(CGAL::Bbox_3(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]),
-                                            tu[2].cast<double>());
+  t.tile =
+    CGAL::Point_set_curvatures::Tile(CGAL::Bbox_3(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]), tu[2].cast<double>());
   return t;
 }
 
-} // namespace psc_py
+}  // namespace psc_py
 
 #endif

@@ -73,7 +73,8 @@ py::dict estimate_curvatures(const std::string& method, const py::handle& points
                              const py::object& progress, const Options& options, const py::object& tile,
                              const py::object& weights)
 {
-  const CGAL::Point_set_curvatures::Estimator_description* described = CGAL::Point_set_curvatures::find_estimator(method);
+  const CGAL::Point_set_curvatures::Estimator_description* described =
+    CGAL::Point_set_curvatures::find_estimator(method);
   if(!described)
     throw py::value_error("unknown method '" + method + "'");
   const Scale scale = read_scale(radius, neighbors, described->supports_automatic_scale);
@@ -114,8 +115,8 @@ py::dict sphere_features_py(const py::handle& points, const py::handle& normals,
   std::vector<double> given;
   const Options o = options_with_weights(options, weights, cloud.size(), given);
   std::vector<Features> result;
-  run([&](bool parallel, const Callback& cb) { result = sphere_features(cloud, scale, o, t, parallel, cb); },
-      progress, threads);
+  run([&](bool parallel, const Callback& cb) { result = sphere_features(cloud, scale, o, t, parallel, cb); }, progress,
+      threads);
   return features_to_dict({&result}, true);
 }
 
@@ -126,25 +127,24 @@ py::array_t<double> tangent_voronoi_areas_py(const py::handle& points, const py:
   const Scale scale = read_scale(radius, neighbors);
   Cloud cloud = read_cloud(points, normals);
   std::vector<double> areas;
-  run([&](bool parallel, const Callback& cb) {
-        if(!tangent_voronoi_areas(cloud, scale, accept_unnormalized_normals, parallel, cb, areas))
-          throw Cancelled_error();
-      },
-      progress, threads);
+  run(
+    [&](bool parallel, const Callback& cb) {
+      if(!tangent_voronoi_areas(cloud, scale, accept_unnormalized_normals, parallel, cb, areas))
+        throw Cancelled_error();
+    },
+    progress, threads);
   auto out = array_1<double>(areas.size());
   std::copy(areas.begin(), areas.end(), out.mutable_data());
   return out;
 }
 
-py::dict multiscale_features_py(const py::handle& points, const py::handle& normals,
-                                const std::vector<double>& radii, long long threads, const py::object& progress,
-                                const Options& options)
+py::dict multiscale_features_py(const py::handle& points, const py::handle& normals, const std::vector<double>& radii,
+                                long long threads, const py::object& progress, const Options& options)
 {
   const Cloud cloud = read_cloud(points, normals);
   std::vector<std::vector<Features> > result;
-  run([&](bool parallel, const Callback& cb) {
-        result = multiscale_sphere_features(cloud, radii, options, parallel, cb);
-      },
+  run([&](bool parallel,
+          const Callback& cb) { result = multiscale_sphere_features(cloud, radii, options, parallel, cb); },
       progress, threads);
   std::vector<const std::vector<Features>*> scales;
   for(const auto& r : result)
@@ -159,10 +159,11 @@ py::dict smooth_py(const py::handle& points, const py::handle& normals, double r
 {
   Cloud cloud = read_cloud(points, normals);
   std::vector<CGAL::Curvature_estimate_status> status;
-  run([&](bool parallel, const Callback& cb) {
-        status = smooth_point_set(cloud, radius, iterations, update_normals, options, parallel, cb);
-      },
-      progress, threads);
+  run(
+    [&](bool parallel, const Callback& cb) {
+      status = smooth_point_set(cloud, radius, iterations, update_normals, options, parallel, cb);
+    },
+    progress, threads);
   const std::size_t n = cloud.size();
   auto p = array_n3(n), v = array_n3(n);
   auto s = array_1<std::uint8_t>(n);
@@ -181,19 +182,19 @@ py::dict smooth_py(const py::handle& points, const py::handle& normals, double r
   return d;
 }
 
-py::tuple normals_py(const py::handle& points, const py::object& radius, const py::object& neighbors,
-                     int orientation, const std::vector<double>& target, int fit, long long threads,
-                     const py::object& progress)
+py::tuple normals_py(const py::handle& points, const py::object& radius, const py::object& neighbors, int orientation,
+                     const std::vector<double>& target, int fit, long long threads, const py::object& progress)
 {
   const Scale scale = read_scale(radius, neighbors, true);
   if(target.size() != 3)
     throw py::value_error("the orientation target must have 3 coordinates");
   Cloud cloud = read_cloud(points, py::none());
   std::size_t without = 0;
-  run([&](bool parallel, const Callback& cb) {
-        without = oriented_normals(cloud, scale, orientation, target.data(), fit, parallel, cb);
-      },
-      progress, threads);
+  run(
+    [&](bool parallel, const Callback& cb) {
+      without = oriented_normals(cloud, scale, orientation, target.data(), fit, parallel, cb);
+    },
+    progress, threads);
   auto v = array_n3(cloud.size());
   double* pv = v.mutable_data();
   for(std::size_t i = 0; i < cloud.size(); ++i)
@@ -201,7 +202,7 @@ py::tuple normals_py(const py::handle& points, const py::object& radius, const p
   return py::make_tuple(v, without);
 }
 
-} // namespace psc_py
+}  // namespace psc_py
 
 PYBIND11_MODULE(_core, m)
 {
@@ -213,7 +214,8 @@ PYBIND11_MODULE(_core, m)
 
   py::register_exception<Cancelled_error>(m, "Cancelled", PyExc_RuntimeError);
   // HaloTooSmall carries required_halo; the type lives as long as the interpreter.
-  static PyObject* halo_type = PyErr_NewException("point_set_curvatures._core.HaloTooSmall", PyExc_RuntimeError, nullptr);
+  static PyObject* halo_type =
+    PyErr_NewException("point_set_curvatures._core.HaloTooSmall", PyExc_RuntimeError, nullptr);
   m.attr("HaloTooSmall") = py::handle(halo_type);
   py::register_exception_translator([](std::exception_ptr p) {
     try
@@ -269,7 +271,9 @@ PYBIND11_MODULE(_core, m)
     py::arg("method"), py::arg("aso_variant"));
   m.def(
     "default_position_fit_blend",
-    [](int variant, bool normals_estimated) { return defaults::position_fit_blend(CGAL::Aso_variant(variant), normals_estimated); },
+    [](int variant, bool normals_estimated) {
+      return defaults::position_fit_blend(CGAL::Aso_variant(variant), normals_estimated);
+    },
     py::arg("aso_variant"), py::arg("normals_estimated"));
 
   // The per-point fields of the results (field_descriptions.h), for the Dask layouts.
@@ -290,8 +294,8 @@ PYBIND11_MODULE(_core, m)
   m.def(
     "halo_guess_for_count",
     [](const std::array<double, 3>& lo, const std::array<double, 3>& hi, std::size_t n, std::size_t k) {
-      return CGAL::Point_set_curvatures::halo_guess_for_count(CGAL::Bbox_3(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]),
-                                                              n, k);
+      return CGAL::Point_set_curvatures::halo_guess_for_count(CGAL::Bbox_3(lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]), n,
+                                                              k);
     },
     py::arg("box_min"), py::arg("box_max"), py::arg("points"), py::arg("neighbors"));
   m.def("next_halo", &CGAL::Point_set_curvatures::next_halo, py::arg("required"), py::arg("at_least"));
@@ -307,22 +311,20 @@ PYBIND11_MODULE(_core, m)
   m.def("sphere_features", &sphere_features_py, py::arg("points"), py::arg("normals"), py::arg("radius"),
         py::arg("neighbors"), py::arg("threads"), py::arg("progress"), py::arg("options"), py::arg("tile"),
         py::arg("weights"));
-  m.def("tangent_voronoi_areas", &tangent_voronoi_areas_py, py::arg("points"), py::arg("normals"),
-        py::arg("radius"), py::arg("neighbors"), py::arg("threads"), py::arg("progress"),
-        py::arg("accept_unnormalized_normals"));
-  m.def("multiscale_sphere_features", &multiscale_features_py, py::arg("points"), py::arg("normals"),
-        py::arg("radii"), py::arg("threads"), py::arg("progress"), py::arg("options"));
-  m.def("smooth_point_set", &smooth_py, py::arg("points"), py::arg("normals"), py::arg("radius"),
-        py::arg("iterations"), py::arg("update_normals"), py::arg("threads"), py::arg("progress"),
-        py::arg("options"));
+  m.def("tangent_voronoi_areas", &tangent_voronoi_areas_py, py::arg("points"), py::arg("normals"), py::arg("radius"),
+        py::arg("neighbors"), py::arg("threads"), py::arg("progress"), py::arg("accept_unnormalized_normals"));
+  m.def("multiscale_sphere_features", &multiscale_features_py, py::arg("points"), py::arg("normals"), py::arg("radii"),
+        py::arg("threads"), py::arg("progress"), py::arg("options"));
+  m.def("smooth_point_set", &smooth_py, py::arg("points"), py::arg("normals"), py::arg("radius"), py::arg("iterations"),
+        py::arg("update_normals"), py::arg("threads"), py::arg("progress"), py::arg("options"));
   m.def("estimate_normals", &normals_py, py::arg("points"), py::arg("radius"), py::arg("neighbors"),
         py::arg("orientation"), py::arg("target"), py::arg("fit"), py::arg("threads"), py::arg("progress"));
   m.attr("NORMAL_RECORD_DEGREE") = record_degree;
   m.def("normal_records", &normal_records_py, py::arg("points"), py::arg("radius"), py::arg("neighbors"),
         py::arg("fit"), py::arg("tile"), py::arg("threads"), py::arg("progress"));
-  m.def("orient_normal_records", &orient_normal_records_py, py::arg("normal"), py::arg("neighbor"),
-        py::arg("degree"), py::arg("status"), py::arg("xyz"), py::arg("orientation"), py::arg("target"),
-        py::arg("threads"), py::arg("progress"));
+  m.def("orient_normal_records", &orient_normal_records_py, py::arg("normal"), py::arg("neighbor"), py::arg("degree"),
+        py::arg("status"), py::arg("xyz"), py::arg("orientation"), py::arg("target"), py::arg("threads"),
+        py::arg("progress"));
 
   // The package's file readers (the tool's), for read_point_cloud() and the Dask driver.
   m.def("read_point_cloud", &read_point_cloud_py, py::arg("path"), py::arg("columns"), py::arg("attributes"),

@@ -78,8 +78,8 @@ inline py::array_t<double> orient_normal_records_py(const py::handle& normal, co
     throw py::value_error("orient_normal_records: arrays of numbers and a target of 3 coordinates expected");
   const py::ssize_t n = pn.ndim() == 2 ? pn.shape(0) : -1;
   if(n < 0 || pn.shape(1) != 3 || pe.ndim() != 2 || pe.shape(0) != n || pe.shape(1) != py::ssize_t(record_degree) ||
-     pd.ndim() != 1 || pd.shape(0) != n || ps.ndim() != 1 || ps.shape(0) != n || px.ndim() != 2 ||
-     px.shape(0) != n || px.shape(1) != 3)
+     pd.ndim() != 1 || pd.shape(0) != n || ps.ndim() != 1 || ps.shape(0) != n || px.ndim() != 2 || px.shape(0) != n ||
+     px.shape(1) != 3)
     throw py::value_error("orient_normal_records: expected normal (N, 3), neighbor (N, " +
                           std::to_string(record_degree) + "), degree (N,), status (N,) and xyz (N, 3)");
   std::vector<Normal_record> records(static_cast<std::size_t>(n));
@@ -108,13 +108,14 @@ inline py::array_t<double> orient_normal_records_py(const py::handle& normal, co
   }
   const std::vector<double> points(px.data(), px.data() + 3 * n);
   std::vector<double> normals;
-  run([&](bool, const Callback& cb) { orient_normal_records(records, points, orientation, target.data(), normals, cb); },
-      progress, threads);
+  run(
+    [&](bool, const Callback& cb) { orient_normal_records(records, points, orientation, target.data(), normals, cb); },
+    progress, threads);
   py::array_t<double> out = array_n3(std::size_t(n));
   std::copy(normals.begin(), normals.end(), out.mutable_data());
   return out;
 }
 
-} // namespace psc_py
+}  // namespace psc_py
 
 #endif

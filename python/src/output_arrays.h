@@ -194,6 +194,6 @@ inline py::dict features_to_dict(const std::vector<const std::vector<Features>*>
   return d;
 }
 
-} // namespace psc_py
+}  // namespace psc_py
 
 #endif

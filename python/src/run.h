@@ -174,6 +174,6 @@ void run(const F& f, const py::object& progress, long long threads)
     std::rethrow_exception(error);
 }
 
-} // namespace psc_py
+}  // namespace psc_py
 
 #endif

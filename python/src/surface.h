@@ -37,11 +37,11 @@ public:
     const CGAL::Apss_weight_kernel kernel =
       weight_kernel >= 0 ? CGAL::Apss_weight_kernel(weight_kernel) : CGAL::Apss_weight_kernel::SMOOTH;
     py::gil_scoped_release release;
-    m_surface = std::make_unique<APSS>(
-      cloud, radius,
-      CGAL::Point_set_curvatures::parameters::weight_kernel(
-        kernel, CGAL::parameters::point_map(CGAL::First_of_pair_property_map<Oriented>())
-                  .normal_map(CGAL::Second_of_pair_property_map<Oriented>())));
+    m_surface =
+      std::make_unique<APSS>(cloud, radius,
+                             CGAL::Point_set_curvatures::parameters::weight_kernel(
+                               kernel, CGAL::parameters::point_map(CGAL::First_of_pair_property_map<Oriented>())
+                                         .normal_map(CGAL::Second_of_pair_property_map<Oriented>())));
   }
 
   double radius() const { return m_surface->radius(); }
@@ -126,6 +126,6 @@ private:
   std::unique_ptr<APSS> m_surface;
 };
 
-} // namespace psc_py
+}  // namespace psc_py
 
 #endif

@@ -63,9 +63,8 @@ public:
     const py::array a = py::reinterpret_borrow<py::array>(points);
     auto out = array_1<std::int64_t>(static_cast<std::size_t>(a.shape(0)));
     std::int64_t* p = out.mutable_data();
-    for_each_row(a, [&](py::ssize_t i, const double* x) {
-      p[i] = static_cast<std::int64_t>(m_grid.tile_of(x[0], x[1], x[2]));
-    });
+    for_each_row(
+      a, [&](py::ssize_t i, const double* x) { p[i] = static_cast<std::int64_t>(m_grid.tile_of(x[0], x[1], x[2])); });
     return out;
   }
 
@@ -79,8 +78,7 @@ public:
     for_each_row(a, [&](py::ssize_t i, const double* x) {
       m_grid.for_each_tile_near(x[0], x[1], x[2], halo, [&](std::size_t t) { pairs.emplace_back(t, i); });
     });
-    std::stable_sort(pairs.begin(), pairs.end(),
-                     [](const auto& u, const auto& v) { return u.first < v.first; });
+    std::stable_sort(pairs.begin(), pairs.end(), [](const auto& u, const auto& v) { return u.first < v.first; });
     auto pi = array_1<std::int64_t>(pairs.size()), ti = array_1<std::int64_t>(pairs.size());
     for(std::size_t j = 0; j < pairs.size(); ++j)
     {
@@ -148,6 +146,6 @@ inline py::array_t<bool> tile_owns_py(const std::vector<double>& lo, const std::
   return for_each_row_of<bool>(points, [&tile](const double* x) { return tile.owns(x[0], x[1], x[2]); });
 }
 
-} // namespace psc_py
+}  // namespace psc_py
 
 #endif

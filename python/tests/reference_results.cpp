@@ -50,10 +50,11 @@ static void write_estimates(const std::string& name, const std::vector<Estimate>
   std::vector<double> v;
   for(const Estimate& x : e)
   {
-    const double r[16] = {x.normal.x(), x.normal.y(), x.normal.z(), x.min_curvature, x.max_curvature,
-                          x.mean_curvature, x.gaussian_curvature, x.min_direction.x(), x.min_direction.y(),
-                          x.min_direction.z(), x.max_direction.x(), x.max_direction.y(), x.max_direction.z(),
-                          x.normal_coherence, double(x.neighbor_count), double(int(x.status))};
+    const double r[16] = {
+      x.normal.x(),         x.normal.y(),         x.normal.z(),        x.min_curvature,     x.max_curvature,
+      x.mean_curvature,     x.gaussian_curvature, x.min_direction.x(), x.min_direction.y(), x.min_direction.z(),
+      x.max_direction.x(),  x.max_direction.y(),  x.max_direction.z(), x.normal_coherence,  double(x.neighbor_count),
+      double(int(x.status))};
     v.insert(v.end(), r, r + 16);
   }
   write(name, v);
@@ -92,31 +93,33 @@ int main(int argc, char** argv)
                     .normal_map(CGAL::Second_of_pair_property_map<Oriented>());
   // Default calls, as a user of the C++ API writes them.
   write_estimates("aso_r1.5", CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(cloud, 1.5, np));
-  write_estimates("aso_r1.5_callback", CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
-                                         cloud, 1.5, np.callback(std::function<bool(double)>([](double) { return true; }))));
+  write_estimates("aso_r1.5_callback",
+                  CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
+                    cloud, 1.5, np.callback(std::function<bool(double)>([](double) { return true; }))));
   write_estimates("aso_paper_r1.5", CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(
                                       cloud, 1.5, P::aso_variant(CGAL::Aso_variant::PAPER, np)));
-  write_estimates("aso_paper_blend_r1.5", CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
-                                            cloud, 1.5, P::aso_variant(CGAL::Aso_variant::PAPER,
-                                                          P::normal_field_blend(true, np))));
+  write_estimates("aso_paper_blend_r1.5",
+                  CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
+                    cloud, 1.5, P::aso_variant(CGAL::Aso_variant::PAPER, P::normal_field_blend(true, np))));
   write_estimates("aso_k30", CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(cloud, P::neighbor_count(30, np)));
   write_estimates("aso_k40_position_blend", CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
                                               cloud, P::neighbor_count(40, P::position_fit_blend(0.5, np))));
-  write_estimates("aso_quartic_authors_r1.5",
-                  CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
-                    cloud, 1.5, P::weight_kernel(CGAL::Apss_weight_kernel::SMOOTH_QUARTIC,
-                                  P::aso_projection(CGAL::Aso_projection::AUTHORS_IMPLEMENTATION,
-                                    P::min_neighbors(20, np)))));
+  write_estimates(
+    "aso_quartic_authors_r1.5",
+    CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
+      cloud, 1.5,
+      P::weight_kernel(CGAL::Apss_weight_kernel::SMOOTH_QUARTIC,
+                       P::aso_projection(CGAL::Aso_projection::AUTHORS_IMPLEMENTATION, P::min_neighbors(20, np)))));
   write_estimates("apss_r1.5", CGAL::estimate_apss_curvatures<CGAL::Parallel_tag>(cloud, 1.5, np));
   write_estimates("pss_r1.5", CGAL::estimate_pss_curvatures<CGAL::Parallel_tag>(cloud, 1.5, np));
-  write_estimates("jet_r1.5_d3", CGAL::estimate_jet_curvatures<CGAL::Parallel_tag>(
-                                   cloud, 1.5, np.degree_fitting(3).degree_monge(2)));
+  write_estimates("jet_r1.5_d3",
+                  CGAL::estimate_jet_curvatures<CGAL::Parallel_tag>(cloud, 1.5, np.degree_fitting(3).degree_monge(2)));
 
   std::vector<double> f;
   for(const auto& x : CGAL::estimate_algebraic_sphere_features<CGAL::Parallel_tag>(cloud, 1.5, np))
   {
-    const double r[6] = {x.u_c, x.u_q, x.anisotropy, x.geometric_variation, double(x.neighbor_count),
-                         double(int(x.status))};
+    const double r[6] = {
+      x.u_c, x.u_q, x.anisotropy, x.geometric_variation, double(x.neighbor_count), double(int(x.status))};
     f.insert(f.end(), r, r + 6);
   }
   write("features_r1.5", f);

@@ -28,8 +28,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   static const char* const extensions[4] = {".xyz", ".ply", ".off", ".csv"};
   const char* extension = data[0] & 8 ? ".las" : extensions[data[0] % 4];
   const std::string directory = access("/dev/shm", W_OK) == 0 ? "/dev/shm" : "/tmp";
-  const std::string path =
-    directory + "/psc_fuzz_" + std::to_string(getpid()) + extension;
+  const std::string path = directory + "/psc_fuzz_" + std::to_string(getpid()) + extension;
   std::FILE* f = std::fopen(path.c_str(), "wb");
   if(!f)
     return 0;

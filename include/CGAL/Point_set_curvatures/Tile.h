@@ -73,8 +73,8 @@ struct Tile
   /// a non-finite coordinate: such points are nobody's own, as for `Tile_grid::tile_of()`)
   bool owns(double x, double y, double z) const
   {
-    return x >= core.xmin() && x < core.xmax() && y >= core.ymin() && y < core.ymax() &&
-           z >= core.zmin() && z < core.zmax() && std::isfinite(x) && std::isfinite(y) && std::isfinite(z);
+    return x >= core.xmin() && x < core.xmax() && y >= core.ymin() && y < core.ymax() && z >= core.zmin() &&
+           z < core.zmax() && std::isfinite(x) && std::isfinite(y) && std::isfinite(z);
   }
 
   /// Euclidean distance from `(x, y, z)` to the core (0 inside; infinite only when the
@@ -103,8 +103,8 @@ struct Tile
   /// ball around it of radius `distance_inside_core() + halo` holds only points of the range.
   double distance_inside_core(double x, double y, double z) const
   {
-    return std::min({x - core.xmin(), core.xmax() - x, y - core.ymin(), core.ymax() - y,
-                     z - core.zmin(), core.zmax() - z});
+    return std::min(
+      {x - core.xmin(), core.xmax() - x, y - core.ymin(), core.ymax() - y, z - core.zmin(), core.zmax() - z});
   }
 };
 
@@ -122,9 +122,7 @@ struct Tile
 class Halo_too_small : public std::runtime_error
 {
 public:
-  Halo_too_small(double required, double given)
-    : std::runtime_error(message(required, given)), m_required(required)
-  {}
+  Halo_too_small(double required, double given) : std::runtime_error(message(required, given)), m_required(required) {}
   /// a halo with which the same tile gives exact results
   double required_halo() const { return m_required; }
 
@@ -133,8 +131,8 @@ private:
   {
     std::ostringstream s;
     s.precision(17);
-    s << "Point_set_curvatures: the tile's halo " << given
-      << " is too small for exact results; a halo of " << required << " suffices";
+    s << "Point_set_curvatures: the tile's halo " << given << " is too small for exact results; a halo of " << required
+      << " suffices";
     return s.str();
   }
   double m_required;
@@ -248,10 +246,7 @@ public:
   double halo(std::size_t finite_in_cloud) const { return halo_of_range(m_tile.halo, m_finite, finite_in_cloud); }
   /// `next_halo()` at the nearest point left out (or skipped), after the range's estimation
   /// threw `error`.
-  double retry_halo(const Halo_too_small& error) const
-  {
-    return next_halo(error.required_halo(), m_nearest_left_out);
-  }
+  double retry_halo(const Halo_too_small& error) const { return next_halo(error.required_halo(), m_nearest_left_out); }
 
 private:
   Tile m_tile;
@@ -362,8 +357,8 @@ public:
     for(int a = 0; a < 3; ++a)
     {
       // the extent of finite bounds may overflow (from -1e308 to 1e308): halved, it cannot
-      const double half = std::isfinite(box.min(a)) && std::isfinite(box.max(a))
-                            ? box.max(a) / 2 - box.min(a) / 2 : 0.0;
+      const double half =
+        std::isfinite(box.min(a)) && std::isfinite(box.max(a)) ? box.max(a) / 2 - box.min(a) / 2 : 0.0;
       const double c = half > 0 ? std::ceil(2 * (half / tile_side)) : 1.0;
       counts[a] = static_cast<std::size_t>(std::min(c, 1e6));
     }
@@ -382,8 +377,8 @@ public:
   Tile tile(std::size_t i, double halo) const
   {
     const std::size_t c[3] = {i % count(0), (i / count(0)) % count(1), i / (count(0) * count(1))};
-    return Tile(Bbox_3(m_boundaries[0][c[0]], m_boundaries[1][c[1]], m_boundaries[2][c[2]],
-                       m_boundaries[0][c[0] + 1], m_boundaries[1][c[1] + 1], m_boundaries[2][c[2] + 1]),
+    return Tile(Bbox_3(m_boundaries[0][c[0]], m_boundaries[1][c[1]], m_boundaries[2][c[2]], m_boundaries[0][c[0] + 1],
+                       m_boundaries[1][c[1] + 1], m_boundaries[2][c[2] + 1]),
                 halo);
   }
 
@@ -462,7 +457,7 @@ private:
   std::vector<double> m_boundaries[3];  // per axis: -inf, interior boundaries, +inf
 };
 
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
-#endif // CGAL_POINT_SET_CURVATURES_TILE_H
+#endif  // CGAL_POINT_SET_CURVATURES_TILE_H

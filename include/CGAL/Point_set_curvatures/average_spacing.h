@@ -115,7 +115,7 @@ double average_spacing(const PointRange& points, std::size_t k,
   return count ? sum / double(count) : 0;
 }
 
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
 #endif

@@ -38,7 +38,7 @@ constexpr unsigned principal_directions = 1u << 4;
 constexpr unsigned normal_coherence = 1u << 5;
 /// Everything the full tensor gives.
 constexpr unsigned tensor = normal | mean_curvature | gaussian_curvature | principal_curvatures | principal_directions;
-} // namespace estimate_fields
+}  // namespace estimate_fields
 
 /// \ingroup PkgPointSetCurvaturesRef
 /// The names of the values of an enumeration option, indexed by the enumerator's value (the
@@ -69,7 +69,8 @@ inline constexpr const char* sample_weights_names[] = {"uniform", "tangent_voron
 inline constexpr const char* aso_projection_names[] = {"corrected_normal", "authors_implementation"};
 
 // One name per value, each at its enumerator's value.
-static_assert(std::size(aso_variant_names) == 2 && std::string_view(aso_variant_names[int(Aso_variant::PAPER)]) == "paper" &&
+static_assert(std::size(aso_variant_names) == 2 &&
+              std::string_view(aso_variant_names[int(Aso_variant::PAPER)]) == "paper" &&
               std::string_view(aso_variant_names[int(Aso_variant::ROBUST)]) == "robust");
 static_assert(std::size(weight_kernel_names) == 4 &&
               std::string_view(weight_kernel_names[int(Apss_weight_kernel::SMOOTH)]) == "smooth" &&
@@ -78,7 +79,8 @@ static_assert(std::size(weight_kernel_names) == 4 &&
               std::string_view(weight_kernel_names[int(Apss_weight_kernel::SMOOTH_QUARTIC)]) == "smooth_quartic");
 static_assert(std::size(sample_weights_names) == 2 &&
               std::string_view(sample_weights_names[int(Sample_weights::UNIFORM)]) == "uniform" &&
-              std::string_view(sample_weights_names[int(Sample_weights::TANGENT_VORONOI_AREA)]) == "tangent_voronoi_area");
+              std::string_view(sample_weights_names[int(Sample_weights::TANGENT_VORONOI_AREA)]) ==
+                "tangent_voronoi_area");
 static_assert(std::size(aso_projection_names) == 2 &&
               std::string_view(aso_projection_names[int(Aso_projection::CORRECTED_NORMAL)]) == "corrected_normal" &&
               std::string_view(aso_projection_names[int(Aso_projection::AUTHORS_IMPLEMENTATION)]) ==
@@ -189,28 +191,42 @@ struct Supports
 };
 
 template <std::size_t N>
-constexpr Estimator_description described(const char* name, const char* function, const char* summary,
-                                          unsigned fields, std::size_t min_neighbors, std::size_t good_neighbors,
-                                          std::size_t paper_good, Supports supports,
-                                          const Estimator_option (&options)[N])
+constexpr Estimator_description described(const char* name, const char* function, const char* summary, unsigned fields,
+                                          std::size_t min_neighbors, std::size_t good_neighbors, std::size_t paper_good,
+                                          Supports supports, const Estimator_option (&options)[N])
 {
-  return Estimator_description{name,          function,       summary,        fields,
-                               min_neighbors, good_neighbors, paper_good,     supports.tiles,
-                               supports.automatic_scale,      options,        N,
+  return Estimator_description{name,
+                               function,
+                               summary,
+                               fields,
+                               min_neighbors,
+                               good_neighbors,
+                               paper_good,
+                               supports.tiles,
+                               supports.automatic_scale,
+                               options,
+                               N,
                                supports.whole_cloud_reason};
 }
 
-constexpr Estimator_description described(const char* name, const char* function, const char* summary,
-                                          unsigned fields, std::size_t min_neighbors, std::size_t good_neighbors,
-                                          Supports supports = {})
+constexpr Estimator_description described(const char* name, const char* function, const char* summary, unsigned fields,
+                                          std::size_t min_neighbors, std::size_t good_neighbors, Supports supports = {})
 {
-  return Estimator_description{name,          function,       summary,        fields,
-                               min_neighbors, good_neighbors, good_neighbors, supports.tiles,
-                               supports.automatic_scale,      nullptr,        0,
+  return Estimator_description{name,
+                               function,
+                               summary,
+                               fields,
+                               min_neighbors,
+                               good_neighbors,
+                               good_neighbors,
+                               supports.tiles,
+                               supports.automatic_scale,
+                               nullptr,
+                               0,
                                supports.whole_cloud_reason};
 }
 
-} // namespace internal
+}  // namespace internal
 
 /// \ingroup PkgPointSetCurvaturesRef
 /// Every curvature estimator of the package, the ASO first. The neighbour counts are measured
@@ -233,13 +249,12 @@ inline constexpr Estimator_description estimators[] = {
                       default_min_neighbors::pss, 20),
   internal::described("jet", "estimate_jet_curvatures", "baseline: osculating jet", estimate_fields::tensor,
                       default_min_neighbors::jet, 12, 12, internal::Supports{}, internal::jet_options),
-  internal::described("vcm", "estimate_vcm_curvatures", "baseline: Voronoi covariance measure",
-                      estimate_fields::normal | estimate_fields::principal_curvatures |
-                        estimate_fields::principal_directions,
-                      default_min_neighbors::vcm, 25, 25,
-                      internal::Supports{false, false,
-                                         "its Voronoi cells come from the Delaunay triangulation of every point"},
-                      internal::vcm_options),
+  internal::described(
+    "vcm", "estimate_vcm_curvatures", "baseline: Voronoi covariance measure",
+    estimate_fields::normal | estimate_fields::principal_curvatures | estimate_fields::principal_directions,
+    default_min_neighbors::vcm, 25, 25,
+    internal::Supports{false, false, "its Voronoi cells come from the Delaunay triangulation of every point"},
+    internal::vcm_options),
   internal::described("wavejet", "estimate_wavejet_curvatures", "baseline: wavejet", estimate_fields::tensor,
                       default_min_neighbors::wavejet, 12),
 };
@@ -254,7 +269,7 @@ constexpr bool whole_cloud_reasons_given()
   return true;
 }
 static_assert(whole_cloud_reasons_given(), "an estimator without tiles needs its whole_cloud_reason");
-} // namespace internal
+}  // namespace internal
 
 /// \ingroup PkgPointSetCurvaturesRef
 /// The defaults of the front ends (the command-line tool and the Python bindings), decided here
@@ -283,7 +298,7 @@ constexpr double position_fit_blend(Aso_variant variant, bool normals_estimated)
   return normals_estimated && variant == Aso_variant::ROBUST ? 0.5 : 0.0;
 }
 
-} // namespace front_end_defaults
+}  // namespace front_end_defaults
 
 /// \ingroup PkgPointSetCurvaturesRef
 /// The estimator named `name` in `estimators`, null if there is none.
@@ -295,7 +310,7 @@ constexpr const Estimator_description* find_estimator(std::string_view name)
   return nullptr;
 }
 
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
-#endif // CGAL_POINT_SET_CURVATURES_ESTIMATORS_H
+#endif  // CGAL_POINT_SET_CURVATURES_ESTIMATORS_H

@@ -23,8 +23,7 @@ namespace Point_set_curvatures {
 
 /// \ingroup PkgPointSetCurvaturesRef
 /// Where a field's value comes from in a `CGAL::Curvature_estimate` (`field_value()`).
-enum class Field_source
-{
+enum class Field_source {
   NORMAL,                ///< `normal` (a component)
   MIN_CURVATURE,         ///< `min_curvature`
   MAX_CURVATURE,         ///< `max_curvature`
@@ -41,8 +40,7 @@ enum class Field_source
 
 /// \ingroup PkgPointSetCurvaturesRef
 /// How a field is stored.
-enum class Field_type
-{
+enum class Field_type {
   REAL,   ///< a double (a float with the tool's `--float`)
   COUNT,  ///< a count: a 32-bit integer in files, 64-bit in Python
   FLAG    ///< a small unsigned integer (8 bits)
@@ -90,8 +88,8 @@ inline constexpr Field_description field_descriptions[] = {
    estimate_fields::principal_curvatures, false, true},
   {"mean", "", "mean", -1, "mean curvature (k_min+k_max)/2", Field_source::MEAN_CURVATURE, Field_type::REAL,
    estimate_fields::mean_curvature, false, true},
-  {"gaussian", "", "gaussian", -1, "Gaussian curvature k_min*k_max", Field_source::GAUSSIAN_CURVATURE,
-   Field_type::REAL, estimate_fields::gaussian_curvature, false, true},
+  {"gaussian", "", "gaussian", -1, "Gaussian curvature k_min*k_max", Field_source::GAUSSIAN_CURVATURE, Field_type::REAL,
+   estimate_fields::gaussian_curvature, false, true},
   {"dmin_x", "dmin", "min_direction", 0, "direction of k_min, x", Field_source::MIN_DIRECTION, Field_type::REAL,
    estimate_fields::principal_directions, false, false},
   {"dmin_y", "dmin", "min_direction", 1, "direction of k_min, y", Field_source::MIN_DIRECTION, Field_type::REAL,
@@ -148,8 +146,8 @@ constexpr bool field_descriptions_hold()
     if(f.component > 0)
     {
       const Field_description& p = field_descriptions[i - 1];
-      if(p.component != f.component - 1 || std::string_view(p.python_key ? p.python_key : "") !=
-                                              std::string_view(f.python_key ? f.python_key : "") ||
+      if(p.component != f.component - 1 ||
+         std::string_view(p.python_key ? p.python_key : "") != std::string_view(f.python_key ? f.python_key : "") ||
          p.source != f.source)
         return false;
     }
@@ -160,7 +158,7 @@ constexpr bool field_descriptions_hold()
 }
 static_assert(field_descriptions_hold(), "field_descriptions: a description longer than 31 characters, a name "
                                          "repeated, empty, longer than 32 or x y z, or a vector's components apart");
-} // namespace internal
+}  // namespace internal
 /// \endcond
 
 /// \ingroup PkgPointSetCurvaturesRef
@@ -191,7 +189,7 @@ double field_value(const Curvature_estimate<Kernel>& e, const Field_description&
   return std::numeric_limits<double>::quiet_NaN();
 }
 
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
 #endif

@@ -24,8 +24,7 @@ namespace CGAL {
 /// \ingroup PkgPointSetCurvaturesRef
 /// Tangent plane on which the Algebraic Shape Operator is projected (Equation 27 of
 /// Lejemble et al. 2021 leaves it implicit).
-enum class Aso_projection
-{
+enum class Aso_projection {
   /// The plane orthogonal to `grad f`, the corrected normal that is returned: `W` is the
   /// shape operator of the level set of the fitted field, directions are exactly tangent.
   /// Default.
@@ -44,7 +43,7 @@ enum aso_projection_t { aso_projection };
 enum neighbor_count_t { neighbor_count };
 enum automatic_scale_t { automatic_scale };
 
-} // namespace internal_np
+}  // namespace internal_np
 
 namespace parameters {
 
@@ -54,11 +53,10 @@ namespace parameters {
 /// `np`.
 template <class NamedParameters = CGAL::parameters::Default_named_parameters>
 CGAL::Named_function_parameters<Aso_projection, internal_np::aso_projection_t, NamedParameters>
-aso_projection(Aso_projection projection,
-               const NamedParameters& np = CGAL::parameters::default_values())
+aso_projection(Aso_projection projection, const NamedParameters& np = CGAL::parameters::default_values())
 {
-  return CGAL::Named_function_parameters<Aso_projection, internal_np::aso_projection_t,
-                                         NamedParameters>(projection, np);
+  return CGAL::Named_function_parameters<Aso_projection, internal_np::aso_projection_t, NamedParameters>(projection,
+                                                                                                         np);
 }
 
 /// \ingroup PkgPointSetCurvaturesRef
@@ -72,8 +70,7 @@ template <class NamedParameters = CGAL::parameters::Default_named_parameters>
 CGAL::Named_function_parameters<std::size_t, internal_np::neighbor_count_t, NamedParameters>
 neighbor_count(std::size_t k, const NamedParameters& np = CGAL::parameters::default_values())
 {
-  return CGAL::Named_function_parameters<std::size_t, internal_np::neighbor_count_t,
-                                         NamedParameters>(k, np);
+  return CGAL::Named_function_parameters<std::size_t, internal_np::neighbor_count_t, NamedParameters>(k, np);
 }
 
 /// Named parameter of `estimate_aso_curvatures()` (by count) and `estimate_oriented_normals()`
@@ -103,7 +100,7 @@ automatic_scale(std::size_t largest, const NamedParameters& np = CGAL::parameter
   return CGAL::Named_function_parameters<std::size_t, internal_np::automatic_scale_t, NamedParameters>(largest, np);
 }
 
-} // namespace parameters
+}  // namespace parameters
 
 /// \ingroup PkgPointSetCurvaturesRef
 /// The ladder of counts that the command-line tool's default scale (`--neighbors auto`) and
@@ -115,9 +112,9 @@ namespace automatic_scale_ladder {
 constexpr std::size_t smallest = 40;
 /// The largest count.
 constexpr std::size_t largest = 640;
-} // namespace automatic_scale_ladder
+}  // namespace automatic_scale_ladder
 
-} // namespace Point_set_curvatures
+}  // namespace Point_set_curvatures
 
 // ---- Validity and tiles: options of every per-point function ----
 namespace Point_set_curvatures {
@@ -127,7 +124,7 @@ enum min_neighbors_t { min_neighbors };
 enum accept_unnormalized_normals_t { accept_unnormalized_normals };
 enum tile_t { tile };
 
-} // namespace internal_np
+}  // namespace internal_np
 
 /// \ingroup PkgPointSetCurvaturesRef
 /// The default of `parameters::min_neighbors()` for each estimation function: its measured
@@ -155,7 +152,7 @@ constexpr std::size_t wavejet = 12;
 constexpr std::size_t pss = 15;
 /// `estimate_vcm_curvatures()`
 constexpr std::size_t vcm = 20;
-} // namespace default_min_neighbors
+}  // namespace default_min_neighbors
 
 namespace parameters {
 
@@ -172,8 +169,7 @@ template <class NamedParameters = CGAL::parameters::Default_named_parameters>
 CGAL::Named_function_parameters<std::size_t, internal_np::min_neighbors_t, NamedParameters>
 min_neighbors(std::size_t count, const NamedParameters& np = CGAL::parameters::default_values())
 {
-  return CGAL::Named_function_parameters<std::size_t, internal_np::min_neighbors_t,
-                                         NamedParameters>(count, np);
+  return CGAL::Named_function_parameters<std::size_t, internal_np::min_neighbors_t, NamedParameters>(count, np);
 }
 
 /// \ingroup PkgPointSetCurvaturesRef
@@ -186,8 +182,7 @@ template <class NamedParameters = CGAL::parameters::Default_named_parameters>
 CGAL::Named_function_parameters<bool, internal_np::accept_unnormalized_normals_t, NamedParameters>
 accept_unnormalized_normals(bool accept, const NamedParameters& np = CGAL::parameters::default_values())
 {
-  return CGAL::Named_function_parameters<bool, internal_np::accept_unnormalized_normals_t,
-                                         NamedParameters>(accept, np);
+  return CGAL::Named_function_parameters<bool, internal_np::accept_unnormalized_normals_t, NamedParameters>(accept, np);
 }
 
 /// \ingroup PkgPointSetCurvaturesRef
@@ -208,16 +203,15 @@ tile(const Tile& t, const NamedParameters& np = CGAL::parameters::default_values
   return CGAL::Named_function_parameters<Tile, internal_np::tile_t, NamedParameters>(t, np);
 }
 
-} // namespace parameters
-} // namespace Point_set_curvatures
+}  // namespace parameters
+}  // namespace Point_set_curvatures
 // ---- end of the validity and tile options ----
 
 // ---- Beyond the paper: sample weights, robust orientation, refinement, variants ----
 
 /// \ingroup PkgPointSetCurvaturesRef
 /// Quadrature weights of the samples in the sums of the sphere fit and of the ASO.
-enum class Sample_weights
-{
+enum class Sample_weights {
   /// Every neighbour counts once (the paper).
   UNIFORM,
   /// Every neighbour's kernel weight is multiplied by the area of its Voronoi cell taken in
@@ -232,8 +226,7 @@ enum class Sample_weights
 /// \ingroup PkgPointSetCurvaturesRef
 /// A preset of the options of `estimate_aso_curvatures()` (see
 /// `CGAL::Point_set_curvatures::parameters::aso_variant()`); explicit options override it.
-enum class Aso_variant
-{
+enum class Aso_variant {
   /// The estimator of Lejemble et al. 2021: kernel `(1 - d²/r²)²`, uniform sample weights,
   /// input normals used as given, no normal-field blend. With `aso_projection(Aso_projection::AUTHORS_IMPLEMENTATION)`
   /// it reproduces the authors' published values.
@@ -255,7 +248,7 @@ enum normal_field_blend_t { normal_field_blend };
 enum sample_weight_map_t { sample_weight_map };
 enum position_fit_blend_t { position_fit_blend };
 
-} // namespace internal_np
+}  // namespace internal_np
 
 namespace parameters {
 
@@ -267,8 +260,7 @@ template <class NamedParameters = CGAL::parameters::Default_named_parameters>
 CGAL::Named_function_parameters<Sample_weights, internal_np::sample_weights_t, NamedParameters>
 sample_weights(Sample_weights weights, const NamedParameters& np = CGAL::parameters::default_values())
 {
-  return CGAL::Named_function_parameters<Sample_weights, internal_np::sample_weights_t,
-                                         NamedParameters>(weights, np);
+  return CGAL::Named_function_parameters<Sample_weights, internal_np::sample_weights_t, NamedParameters>(weights, np);
 }
 
 /// \ingroup PkgPointSetCurvaturesRef
@@ -301,8 +293,7 @@ template <class NamedParameters = CGAL::parameters::Default_named_parameters>
 CGAL::Named_function_parameters<bool, internal_np::robust_orientation_t, NamedParameters>
 robust_orientation(bool robust, const NamedParameters& np = CGAL::parameters::default_values())
 {
-  return CGAL::Named_function_parameters<bool, internal_np::robust_orientation_t,
-                                         NamedParameters>(robust, np);
+  return CGAL::Named_function_parameters<bool, internal_np::robust_orientation_t, NamedParameters>(robust, np);
 }
 
 /// \ingroup PkgPointSetCurvaturesRef
@@ -364,8 +355,8 @@ template <class NamedParameters = CGAL::parameters::Default_named_parameters>
 CGAL::Named_function_parameters<std::size_t, internal_np::normal_refinement_t, NamedParameters>
 normal_refinement(std::size_t iterations, const NamedParameters& np = CGAL::parameters::default_values())
 {
-  return CGAL::Named_function_parameters<std::size_t, internal_np::normal_refinement_t,
-                                         NamedParameters>(iterations, np);
+  return CGAL::Named_function_parameters<std::size_t, internal_np::normal_refinement_t, NamedParameters>(iterations,
+                                                                                                         np);
 }
 
 /// \ingroup PkgPointSetCurvaturesRef
@@ -380,8 +371,8 @@ aso_variant(Aso_variant variant, const NamedParameters& np = CGAL::parameters::d
   return CGAL::Named_function_parameters<Aso_variant, internal_np::aso_variant_t, NamedParameters>(variant, np);
 }
 
-} // namespace parameters
-} // namespace Point_set_curvatures
+}  // namespace parameters
+}  // namespace Point_set_curvatures
 // ---- end of the options beyond the paper ----
 
 // ---- Baseline estimators: options of estimate_vcm_curvatures() ----
@@ -390,7 +381,7 @@ namespace internal_np {
 
 enum vcm_offset_radius_t { vcm_offset_radius };
 
-} // namespace internal_np
+}  // namespace internal_np
 
 namespace parameters {
 
@@ -402,15 +393,13 @@ namespace parameters {
 /// use `R = 0.5 r`. Chains with CGAL named parameters passed as `np`.
 template <class NamedParameters = CGAL::parameters::Default_named_parameters>
 CGAL::Named_function_parameters<double, internal_np::vcm_offset_radius_t, NamedParameters>
-vcm_offset_radius(double offset_radius,
-                  const NamedParameters& np = CGAL::parameters::default_values())
+vcm_offset_radius(double offset_radius, const NamedParameters& np = CGAL::parameters::default_values())
 {
-  return CGAL::Named_function_parameters<double, internal_np::vcm_offset_radius_t,
-                                         NamedParameters>(offset_radius, np);
+  return CGAL::Named_function_parameters<double, internal_np::vcm_offset_radius_t, NamedParameters>(offset_radius, np);
 }
 
-} // namespace parameters
-} // namespace Point_set_curvatures
+}  // namespace parameters
+}  // namespace Point_set_curvatures
 // ---- end of the baseline estimators' options ----
 
 // ---- Algebraic sphere features, projection and flow: weight kernel, normals ----
@@ -419,8 +408,7 @@ vcm_offset_radius(double offset_radius,
 /// a neighbour at distance `d` from the evaluation point and a radius `r`; also that of the
 /// ASO, which fits the same sphere (the name is the paper's). `SMOOTH` is the paper's kernel,
 /// the least smooth of the three polynomial ones at `d = r`.
-enum class Apss_weight_kernel
-{
+enum class Apss_weight_kernel {
   /// `(1 - d²/r²)²` for `d < r`: the kernel of the paper, differentiable (the Algebraic
   /// Shape Operator needs it; its scale derivatives are exact on the samples). Default of the
   /// APSS functions and of `Aso_variant::PAPER`.
@@ -445,7 +433,7 @@ namespace internal_np {
 enum weight_kernel_t { weight_kernel };
 enum update_normals_t { update_normals };
 
-} // namespace internal_np
+}  // namespace internal_np
 
 namespace parameters {
 
@@ -456,14 +444,12 @@ namespace parameters {
 /// named parameters passed as `np`.
 template <class NamedParameters = CGAL::parameters::Default_named_parameters>
 CGAL::Named_function_parameters<Apss_weight_kernel, internal_np::weight_kernel_t, NamedParameters>
-weight_kernel(Apss_weight_kernel kernel,
-              const NamedParameters& np = CGAL::parameters::default_values())
+weight_kernel(Apss_weight_kernel kernel, const NamedParameters& np = CGAL::parameters::default_values())
 {
-  return CGAL::Named_function_parameters<Apss_weight_kernel, internal_np::weight_kernel_t,
-                                         NamedParameters>(kernel, np);
+  return CGAL::Named_function_parameters<Apss_weight_kernel, internal_np::weight_kernel_t, NamedParameters>(kernel, np);
 }
 
-} // namespace parameters
+}  // namespace parameters
 
 /// \ingroup PkgPointSetCurvaturesRef
 /// The options that a variant of `estimate_aso_curvatures()` (`CGAL::Aso_variant`) uses
@@ -495,7 +481,7 @@ namespace internal_np {
 
 enum aso_options_t { aso_options };
 
-} // namespace internal_np
+}  // namespace internal_np
 
 namespace parameters {
 
@@ -516,11 +502,10 @@ template <class NamedParameters = CGAL::parameters::Default_named_parameters>
 CGAL::Named_function_parameters<Aso_variant_options, internal_np::aso_options_t, NamedParameters>
 aso_options(const Aso_variant_options& options, const NamedParameters& np = CGAL::parameters::default_values())
 {
-  return CGAL::Named_function_parameters<Aso_variant_options, internal_np::aso_options_t, NamedParameters>(options,
-                                                                                                           np);
+  return CGAL::Named_function_parameters<Aso_variant_options, internal_np::aso_options_t, NamedParameters>(options, np);
 }
 
-} // namespace parameters
+}  // namespace parameters
 
 namespace internal {
 
@@ -540,11 +525,11 @@ inline int kernel_exponent(Apss_weight_kernel k)
 template <class NamedParameters>
 Apss_weight_kernel weight_kernel_parameter(const NamedParameters& np)
 {
-  return CGAL::parameters::choose_parameter(
-    CGAL::parameters::get_parameter(np, internal_np::weight_kernel), Apss_weight_kernel::SMOOTH);
+  return CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::weight_kernel),
+                                            Apss_weight_kernel::SMOOTH);
 }
 
-} // namespace internal
+}  // namespace internal
 
 namespace parameters {
 
@@ -557,13 +542,12 @@ template <class NamedParameters = CGAL::parameters::Default_named_parameters>
 CGAL::Named_function_parameters<bool, internal_np::update_normals_t, NamedParameters>
 update_normals(bool update, const NamedParameters& np = CGAL::parameters::default_values())
 {
-  return CGAL::Named_function_parameters<bool, internal_np::update_normals_t, NamedParameters>(
-    update, np);
+  return CGAL::Named_function_parameters<bool, internal_np::update_normals_t, NamedParameters>(update, np);
 }
 
-} // namespace parameters
-} // namespace Point_set_curvatures
+}  // namespace parameters
+}  // namespace Point_set_curvatures
 // ---- end of the algebraic sphere features' options ----
-} // namespace CGAL
+}  // namespace CGAL
 
 #endif

@@ -39,7 +39,7 @@ inline bool is_near_vertical(double nx, double ny, double nz)
   return l2 > 0 && nz * nz >= 0.25 * l2;
 }
 
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
 #endif

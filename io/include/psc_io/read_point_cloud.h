@@ -70,30 +70,52 @@ struct Attribute
 
 // The standard fields of LAS point records, as read_las.cpp names them (the attributes'
 // las_field).
-enum Las_field
-{
-  LAS_INTENSITY, LAS_RETURN_NUMBER, LAS_NUMBER_OF_RETURNS, LAS_SCAN_DIRECTION, LAS_EDGE, LAS_CLASSIFICATION,
-  LAS_SYNTHETIC, LAS_KEY_POINT, LAS_WITHHELD, LAS_OVERLAP, LAS_SCANNER_CHANNEL, LAS_SCAN_ANGLE, LAS_USER_DATA,
-  LAS_POINT_SOURCE, LAS_GPS_TIME, LAS_RED, LAS_GREEN, LAS_BLUE, LAS_NIR, LAS_WAVE_DESCRIPTOR, LAS_WAVE_OFFSET,
-  LAS_WAVE_SIZE, LAS_WAVE_LOCATION, LAS_WAVE_X_T, LAS_WAVE_Y_T, LAS_WAVE_Z_T, LAS_FIELD_COUNT
+enum Las_field {
+  LAS_INTENSITY,
+  LAS_RETURN_NUMBER,
+  LAS_NUMBER_OF_RETURNS,
+  LAS_SCAN_DIRECTION,
+  LAS_EDGE,
+  LAS_CLASSIFICATION,
+  LAS_SYNTHETIC,
+  LAS_KEY_POINT,
+  LAS_WITHHELD,
+  LAS_OVERLAP,
+  LAS_SCANNER_CHANNEL,
+  LAS_SCAN_ANGLE,
+  LAS_USER_DATA,
+  LAS_POINT_SOURCE,
+  LAS_GPS_TIME,
+  LAS_RED,
+  LAS_GREEN,
+  LAS_BLUE,
+  LAS_NIR,
+  LAS_WAVE_DESCRIPTOR,
+  LAS_WAVE_OFFSET,
+  LAS_WAVE_SIZE,
+  LAS_WAVE_LOCATION,
+  LAS_WAVE_X_T,
+  LAS_WAVE_Y_T,
+  LAS_WAVE_Z_T,
+  LAS_FIELD_COUNT
 };
 
 // What a LAS input's output in LAS needs besides the points (write_las.cpp): the header,
 // the variable length records, where the extended ones are.
 struct Las_source
 {
-  std::string header;           // the public header block as read (its header size, at most 375 bytes kept)
-  int minor = 0, format = 0;    // version 1.minor, point data record format
+  std::string header;         // the public header block as read (its header size, at most 375 bytes kept)
+  int minor = 0, format = 0;  // version 1.minor, point data record format
   double scale[3] = {1, 1, 1}, offset[3] = {0, 0, 0};
   struct Vlr
   {
-    std::string user_id;        // 16 characters, NUL-padded
+    std::string user_id;  // 16 characters, NUL-padded
     int record_id = 0;
-    std::string description;    // 32 characters, NUL-padded
+    std::string description;  // 32 characters, NUL-padded
     std::string payload;
   };
-  std::vector<Vlr> vlrs;        // in file order (every one, the extra bytes' included)
-  bool vlrs_complete = true;    // false: the records between the header and the points did not parse
+  std::vector<Vlr> vlrs;      // in file order (every one, the extra bytes' included)
+  bool vlrs_complete = true;  // false: the records between the header and the points did not parse
   // the extended variable length records (LAS 1.4; the waveform record of LAS 1.3), as
   // (offset, size with their 60-byte header) in the input file
   std::vector<std::pair<std::uint64_t, std::uint64_t>> evlrs;
@@ -102,11 +124,11 @@ struct Las_source
 
 struct Point_cloud
 {
-  std::vector<double> xyz;      // 3 per point, in file order
-  std::vector<double> normals;  // 3 per point, or empty when the file has none
-  std::string normals_source;   // where the normals came from, for messages
-  std::vector<Attribute> attributes;  // empty unless Read_options::keep_attributes
-  std::vector<std::string> warnings;  // file problems that do not prevent reading it
+  std::vector<double> xyz;                // 3 per point, in file order
+  std::vector<double> normals;            // 3 per point, or empty when the file has none
+  std::string normals_source;             // where the normals came from, for messages
+  std::vector<Attribute> attributes;      // empty unless Read_options::keep_attributes
+  std::vector<std::string> warnings;      // file problems that do not prevent reading it
   std::shared_ptr<const Las_source> las;  // a LAS input's header and records, else null
   // With Read_options::chunk: the input index of the first point held (the points before it
   // were handed over); 0 otherwise.
@@ -157,14 +179,14 @@ Point_cloud read_point_cloud(const std::string& path, const Read_options& option
 struct Ply_vertex_layout
 {
   bool big_endian = false;
-  std::uint64_t offset = 0;       // of the first vertex, in bytes from the start of the file
-  std::uint64_t count = 0;        // vertices
-  std::size_t record_size = 0;    // bytes of one vertex
+  std::uint64_t offset = 0;     // of the first vertex, in bytes from the start of the file
+  std::uint64_t count = 0;      // vertices
+  std::size_t record_size = 0;  // bytes of one vertex
   struct Property
   {
     std::string name;
     Scalar_type type;
-    std::size_t offset;           // in the record
+    std::size_t offset;  // in the record
   };
   std::vector<Property> properties;  // in record order
   // the properties of x y z and of the normals (nx ny nz or normal_x normal_y normal_z; -1
@@ -192,6 +214,6 @@ struct Las_point_layout
 // Throws Error for what read_point_cloud() refuses in the header, or a file too short.
 Las_point_layout las_point_layout(const std::string& path);
 
-} // namespace psc_tool
+}  // namespace psc_tool
 
 #endif

@@ -56,10 +56,7 @@ std::string cat(const T&... t)
 }
 
 // "1 point", "2 points": a count and its noun.
-inline std::string plural(std::size_t n, const std::string& noun)
-{
-  return cat(n, " ", noun, n == 1 ? "" : "s");
-}
+inline std::string plural(std::size_t n, const std::string& noun) { return cat(n, " ", noun, n == 1 ? "" : "s"); }
 
 // part / all in percent to one decimal ("98.7"), never "100" unless part == all and never "0"
 // unless part == 0; "0" when all is 0.
@@ -122,6 +119,6 @@ inline std::string lower_extension(const std::string& path)
   return lower_case(path.substr(dot));
 }
 
-} // namespace psc_tool
+}  // namespace psc_tool
 
 #endif

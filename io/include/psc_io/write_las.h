@@ -41,10 +41,10 @@ namespace psc_tool {
 
 struct Las_output_options
 {
-  std::shared_ptr<const Las_source> source;  // a LAS input's header and records, else null
-  std::string input_path;                    // where the extended VLRs are copied from
+  std::shared_ptr<const Las_source> source;     // a LAS input's header and records, else null
+  std::string input_path;                       // where the extended VLRs are copied from
   double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};  // the bounds of the input's finite points
-  bool drop_attributes = false;              // --drop-attributes
+  bool drop_attributes = false;                 // --drop-attributes
 };
 
 // The size of write_las()'s output (an upper bound when the input has an extra-bytes EVLR,
@@ -61,6 +61,6 @@ std::vector<std::string> write_las(std::FILE* f, const Las_output_options& optio
                                    std::size_t n, const std::function<void(std::size_t, Output_row&)>& row,
                                    const Progress& progress);
 
-} // namespace psc_tool
+}  // namespace psc_tool
 
 #endif

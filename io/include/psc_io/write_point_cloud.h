@@ -60,7 +60,7 @@ constexpr int count_fields()
   for_each_tool_field([&n](const CGAL::Point_set_curvatures::Field_description&) { ++n; });
   return n;
 }
-} // namespace output_values
+}  // namespace output_values
 constexpr int output_value_count = 3 + output_values::count_fields();
 
 // The index in Output_row::value of the field named `name` ("x", "y", "z" 0 to 2), or -1.
@@ -132,9 +132,9 @@ struct Output_field
 struct Output_layout
 {
   enum Format { BINARY_PLY, ASCII_PLY, CSV } format = BINARY_PLY;
-  std::vector<Output_field> fields;                  // the columns, in order (output_fields())
+  std::vector<Output_field> fields;                    // the columns, in order (output_fields())
   const std::vector<Attribute>* attributes = nullptr;  // for Output_field::ATTRIBUTE + j
-  std::vector<std::string> comments;                 // PLY header comments
+  std::vector<std::string> comments;                   // PLY header comments
   // --ply-names scalar: PLY properties other than x y z nx ny nz red green blue are named
   // scalar_NAME, the names CloudCompare loads as scalar fields NAME (ply_property_names()).
   bool scalar_prefix = false;
@@ -172,6 +172,6 @@ std::uint64_t output_size_bound(const Output_layout& layout, std::size_t n);
 void write_point_cloud(std::FILE* f, const Output_layout& layout, std::size_t n,
                        const std::function<void(std::size_t, Output_row&)>& row, const Progress& progress);
 
-} // namespace psc_tool
+}  // namespace psc_tool
 
 #endif

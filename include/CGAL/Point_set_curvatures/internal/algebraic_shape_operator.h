@@ -100,11 +100,15 @@ struct Aso_first_order_sums
 template <bool Oriented>
 inline void neighbor_normal(const Neighborhood& nb, std::size_t i, const double ref[3], double n[3])
 {
-  n[0] = nb.nx[i]; n[1] = nb.ny[i]; n[2] = nb.nz[i];
+  n[0] = nb.nx[i];
+  n[1] = nb.ny[i];
+  n[2] = nb.nz[i];
   if constexpr(Oriented)
   {
     const double side = n[0] * ref[0] + n[1] * ref[1] + n[2] * ref[2] < 0 ? -1.0 : 1.0;
-    n[0] *= side; n[1] *= side; n[2] *= side;
+    n[0] *= side;
+    n[1] *= side;
+    n[2] *= side;
   }
 }
 
@@ -229,9 +233,8 @@ inline Sums_adjoint u_c_adjoint(const Aso_first_order_sums& m)
 // With Fit, the same loop also accumulates the normal-field fit (normal_field_fit.h) in the
 // tangent basis (t1, t2), with the fit's weights.
 template <class Kernel, bool Weighted, bool Oriented, bool Fit = false>
-inline void aso_second_pass(const Neighborhood& nb, const Sums_adjoint& F, const double ref[3],
-                            double hessian[6], const double* t1 = nullptr,
-                            const double* t2 = nullptr, Normal_field_sums* fit = nullptr)
+inline void aso_second_pass(const Neighborhood& nb, const Sums_adjoint& F, const double ref[3], double hessian[6],
+                            const double* t1 = nullptr, const double* t2 = nullptr, Normal_field_sums* fit = nullptr)
 {
   double gxx = 0, gxy = 0, gxz = 0, gyy = 0, gyz = 0, gzz = 0, gt = 0;
   // the fit's sums (Normal_field_sums), in locals so that the compiler keeps them in registers
@@ -243,9 +246,8 @@ inline void aso_second_pass(const Neighborhood& nb, const Sums_adjoint& F, const
     neighbor_normal<Oriented>(nb, i, ref, n);
     const double s = qx * qx + qy * qy + qz * qz;
     const double t = Kernel::t_of(s);
-    double gamma = F.A + F.B[0] * qx + F.B[1] * qy + F.B[2] * qz + F.C[0] * n[0] +
-                   F.C[1] * n[1] + F.C[2] * n[2] + F.D * (qx * n[0] + qy * n[1] + qz * n[2]) +
-                   F.E * s;
+    double gamma = F.A + F.B[0] * qx + F.B[1] * qy + F.B[2] * qz + F.C[0] * n[0] + F.C[1] * n[1] + F.C[2] * n[2] +
+                   F.D * (qx * n[0] + qy * n[1] + qz * n[2]) + F.E * s;
     if constexpr(Weighted)
       gamma *= nb.sample_weight[i];
     if constexpr(Fit)
@@ -256,13 +258,27 @@ inline void aso_second_pass(const Neighborhood& nb, const Sums_adjoint& F, const
       const double u = qx * t1[0] + qy * t1[1] + qz * t1[2], v = qx * t2[0] + qy * t2[1] + qz * t2[2];
       const double a = n[0] * t1[0] + n[1] * t1[1] + n[2] * t1[2], b = n[0] * t2[0] + n[1] * t2[1] + n[2] * t2[2];
       const double wu = w * u, wv = w * v;
-      fw += w; fu += wu; fv += wv; fuu += wu * u; fuv += wu * v; fvv += wv * v;
-      fa += w * a; fb += w * b; fau += wu * a; fav += wv * a; fbu += wu * b; fbv += wv * b;
+      fw += w;
+      fu += wu;
+      fv += wv;
+      fuu += wu * u;
+      fuv += wu * v;
+      fvv += wv * v;
+      fa += w * a;
+      fb += w * b;
+      fau += wu * a;
+      fav += wv * a;
+      fbu += wu * b;
+      fbv += wv * b;
     }
     const double gh = gamma * Kernel::hessian_weight(t);
     const double gx = gh * qx, gy = gh * qy, gz = gh * qz;
-    gxx += gx * qx; gxy += gx * qy; gxz += gx * qz;
-    gyy += gy * qy; gyz += gy * qz; gzz += gz * qz;
+    gxx += gx * qx;
+    gxy += gx * qy;
+    gxz += gx * qz;
+    gyy += gy * qy;
+    gyz += gy * qz;
+    gzz += gz * qz;
     gt += gamma * Kernel::gradient_weight(t);
   }
   if constexpr(Fit)
@@ -279,12 +295,10 @@ constexpr std::size_t aso_min_neighbors = 3;
 
 // The authors' projection: W = B^T (Hess / |g| - N N^T Hess) B, with B an orthonormal basis
 // of the plane orthogonal to u_l, symmetrised (their code, include/AlgebraicShapeOperator.h).
-inline bool set_authors_shape_operator(const double gradient[3], const double hessian[6],
-                                       const double u_l[3], double inverse_length_unit,
-                                       Local_estimate& e)
+inline bool set_authors_shape_operator(const double gradient[3], const double hessian[6], const double u_l[3],
+                                       double inverse_length_unit, Local_estimate& e)
 {
-  const double g = std::sqrt(gradient[0] * gradient[0] + gradient[1] * gradient[1] +
-                             gradient[2] * gradient[2]);
+  const double g = std::sqrt(gradient[0] * gradient[0] + gradient[1] * gradient[1] + gradient[2] * gradient[2]);
   const double l = std::sqrt(u_l[0] * u_l[0] + u_l[1] * u_l[1] + u_l[2] * u_l[2]);
   if(!(g > 1e-12) || !(l > 1e-12) || !std::isfinite(g) || !std::isfinite(l))
     return false;
@@ -312,8 +326,7 @@ inline bool set_authors_shape_operator(const double gradient[3], const double he
         s += u[i] * M[i][j] * v[j];
     return s * inverse_length_unit;
   };
-  set_principal_curvatures(form(t1, t1), 0.5 * (form(t1, t2) + form(t2, t1)), form(t2, t2),
-                           t1, t2, e);
+  set_principal_curvatures(form(t1, t1), 0.5 * (form(t1, t2) + form(t2, t1)), form(t2, t2), t1, t2, e);
   return std::isfinite(e.k_min) && std::isfinite(e.k_max);
 }
 
@@ -321,7 +334,7 @@ inline bool set_authors_shape_operator(const double gradient[3], const double he
 struct Aso_settings
 {
   Aso_projection projection = Aso_projection::CORRECTED_NORMAL;
-  int kernel_exponent = 2;       // P of (1 - d^2/r^2)^P: 2, 3 or 4
+  int kernel_exponent = 2;        // P of (1 - d^2/r^2)^P: 2, 3 or 4
   bool orient_neighbors = false;  // flip neighbour normals against the majority
   // blend in the normal-field fit where the neighbourhood is one-sided (normal_field_fit.h);
   // with the CORRECTED_NORMAL projection only
@@ -335,8 +348,8 @@ struct Aso_settings
 // The ASO from the first-pass sums `m` of a neighbourhood (normals flipped against `ref` if
 // Oriented), with a kernel and a variant fixed at compile time.
 template <class Kernel, bool Weighted, bool Oriented>
-inline Local_estimate aso_from_first_pass(const Neighborhood& nb, const Aso_first_order_sums& m,
-                                          const double ref[3], const Aso_settings& settings)
+inline Local_estimate aso_from_first_pass(const Neighborhood& nb, const Aso_first_order_sums& m, const double ref[3],
+                                          const Aso_settings& settings)
 {
   // Degenerate fit: the weighted variance of the positions, (A E - B.B) / A^2, vanishes
   // when the neighbours coincide (relative to r^2, as q is scaled by 1/r); neighbours
@@ -414,8 +427,7 @@ inline Local_estimate aso_from_first_pass(const Neighborhood& nb, const Aso_firs
     for(int j = i; j < 3; ++j)
     {
       const int k = sym_index(i, j);
-      hessian[k] = u_c.h[k] + linear_part[k] + u_l[i].g[j] + u_l[j].g[i] +
-                   (i == j ? 2.0 * u_q.v : 0.0);
+      hessian[k] = u_c.h[k] + linear_part[k] + u_l[i].g[j] + u_l[j].g[i] + (i == j ? 2.0 * u_q.v : 0.0);
     }
 
   // Equations 27 and 31-35; derivatives are per unit of the scaled frame, hence 1/r.
@@ -479,8 +491,7 @@ inline Local_estimate aso_with_kernel(const Neighborhood& nb, const Aso_settings
     {
       if(!majority_orientation<Kernel>(nb, ref))
         return Local_estimate::invalid(Curvature_estimate_status::TWO_SHEETS);
-      return aso_from_first_pass<Kernel, Weighted, true>(nb, aso_first_pass<Kernel, Weighted, true>(nb, ref),
-                                                          ref, s);
+      return aso_from_first_pass<Kernel, Weighted, true>(nb, aso_first_pass<Kernel, Weighted, true>(nb, ref), ref, s);
     }
   }
   return aso_from_first_pass<Kernel, Weighted, false>(nb, m, none, s);
@@ -515,8 +526,8 @@ inline Local_estimate algebraic_shape_operator(const Neighborhood& nb,
   return algebraic_shape_operator(nb, s);
 }
 
-} // namespace internal
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace internal
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
 #endif

@@ -38,13 +38,21 @@ struct Algebraic_sphere_sums
     const double w = WeightKernel::weight(1.0 - s);
     ++count;
     A += w;
-    B[0] += w * qx; B[1] += w * qy; B[2] += w * qz;
-    C[0] += w * nx; C[1] += w * ny; C[2] += w * nz;
+    B[0] += w * qx;
+    B[1] += w * qy;
+    B[2] += w * qz;
+    C[0] += w * nx;
+    C[1] += w * ny;
+    C[2] += w * nz;
     D += w * (qx * nx + qy * ny + qz * nz);
     E += w * s;
     const double wx = w * qx, wy = w * qy, wz = w * qz;
-    qq[0] += wx * qx; qq[1] += wx * qy; qq[2] += wx * qz;
-    qq[3] += wy * qy; qq[4] += wy * qz; qq[5] += wz * qz;
+    qq[0] += wx * qx;
+    qq[1] += wx * qy;
+    qq[2] += wx * qz;
+    qq[3] += wy * qy;
+    qq[4] += wy * qz;
+    qq[5] += wz * qz;
   }
 
   // Whole neighbourhood at once; local accumulators so that the compiler keeps them in
@@ -72,27 +80,47 @@ private:
       if constexpr(Oriented)
       {
         const double side = nx * ref[0] + ny * ref[1] + nz * ref[2] < 0 ? -1.0 : 1.0;
-        nx *= side; ny *= side; nz *= side;
+        nx *= side;
+        ny *= side;
+        nz *= side;
       }
       const double s = qx * qx + qy * qy + qz * qz;
       double w = WeightKernel::weight(1.0 - s);
       if constexpr(Weighted)
         w *= nb.sample_weight[i];
       a += w;
-      b0 += w * qx; b1 += w * qy; b2 += w * qz;
-      c0 += w * nx; c1 += w * ny; c2 += w * nz;
+      b0 += w * qx;
+      b1 += w * qy;
+      b2 += w * qz;
+      c0 += w * nx;
+      c1 += w * ny;
+      c2 += w * nz;
       d += w * (qx * nx + qy * ny + qz * nz);
       e += w * s;
       const double wx = w * qx, wy = w * qy, wz = w * qz;
-      xx += wx * qx; xy += wx * qy; xz += wx * qz; yy += wy * qy; yz += wy * qz; zz += wz * qz;
+      xx += wx * qx;
+      xy += wx * qy;
+      xz += wx * qz;
+      yy += wy * qy;
+      yz += wy * qz;
+      zz += wz * qz;
     }
     count += nb.size;
     A += a;
-    B[0] += b0; B[1] += b1; B[2] += b2;
-    C[0] += c0; C[1] += c1; C[2] += c2;
+    B[0] += b0;
+    B[1] += b1;
+    B[2] += b2;
+    C[0] += c0;
+    C[1] += c1;
+    C[2] += c2;
     D += d;
     E += e;
-    qq[0] += xx; qq[1] += xy; qq[2] += xz; qq[3] += yy; qq[4] += yz; qq[5] += zz;
+    qq[0] += xx;
+    qq[1] += xy;
+    qq[2] += xz;
+    qq[3] += yy;
+    qq[4] += yz;
+    qq[5] += zz;
   }
 };
 
@@ -124,24 +152,20 @@ Algebraic_sphere fit_algebraic_sphere(const Algebraic_sphere_sums<WeightKernel>&
   sphere.u_q = 0.5 * (s.A * s.D - BC) / den;
   for(int i = 0; i < 3; ++i)
     sphere.u_l[i] = (s.C[i] - 2.0 * sphere.u_q * s.B[i]) / s.A;
-  sphere.u_c = -(sphere.u_l[0] * s.B[0] + sphere.u_l[1] * s.B[1] + sphere.u_l[2] * s.B[2] +
-                 sphere.u_q * s.E) / s.A;
-  const double ll = sphere.u_l[0] * sphere.u_l[0] + sphere.u_l[1] * sphere.u_l[1] +
-                    sphere.u_l[2] * sphere.u_l[2];
+  sphere.u_c = -(sphere.u_l[0] * s.B[0] + sphere.u_l[1] * s.B[1] + sphere.u_l[2] * s.B[2] + sphere.u_q * s.E) / s.A;
+  const double ll = sphere.u_l[0] * sphere.u_l[0] + sphere.u_l[1] * sphere.u_l[1] + sphere.u_l[2] * sphere.u_l[2];
   const double pratt2 = ll - 4.0 * sphere.u_c * sphere.u_q;
   sphere.pratt_norm = std::sqrt(pratt2);
   // Neighbours without spread in two tangent directions (one scan line, a planar curve)
   // fit a sphere whose curvature across them is not measured but assumed: not a fit of
   // the surface (this also guards the features, the projection and the flow).
-  sphere.valid = (pratt2 > 1e-24) && (ll > 1e-24) && std::isfinite(pratt2) &&
-                 !lacks_tangent_spread(s.qq, s.C);
+  sphere.valid = (pratt2 > 1e-24) && (ll > 1e-24) && std::isfinite(pratt2) && !lacks_tangent_spread(s.qq, s.C);
   return sphere;
 }
 
 // APSS normal and mean curvature (Equations 7-8), other fields NaN.
 template <class WeightKernel>
-Local_estimate algebraic_sphere_estimate(const Algebraic_sphere_sums<WeightKernel>& s,
-                                         double radius)
+Local_estimate algebraic_sphere_estimate(const Algebraic_sphere_sums<WeightKernel>& s, double radius)
 {
   if(s.count < apss_min_neighbors)
     return Local_estimate::invalid(Curvature_estimate_status::TOO_FEW_NEIGHBORS);
@@ -149,8 +173,8 @@ Local_estimate algebraic_sphere_estimate(const Algebraic_sphere_sums<WeightKerne
   if(!sphere.valid)
     return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
   Local_estimate e;
-  const double ul = std::sqrt(sphere.u_l[0] * sphere.u_l[0] + sphere.u_l[1] * sphere.u_l[1] +
-                              sphere.u_l[2] * sphere.u_l[2]);
+  const double ul =
+    std::sqrt(sphere.u_l[0] * sphere.u_l[0] + sphere.u_l[1] * sphere.u_l[1] + sphere.u_l[2] * sphere.u_l[2]);
   for(int i = 0; i < 3; ++i)
     e.normal[i] = sphere.u_l[i] / ul;
   // H = 2 u_q / p in the scaled frame, divided by r to return to input units.
@@ -160,8 +184,8 @@ Local_estimate algebraic_sphere_estimate(const Algebraic_sphere_sums<WeightKerne
   return e;
 }
 
-} // namespace internal
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace internal
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
 #endif

@@ -193,15 +193,23 @@ Sphere_sums scale_derivative_sums(const Neighborhood& nb)
     if(nb.sample_weight)
       w *= nb.sample_weight[i];
     a += w;
-    b0 += w * qx; b1 += w * qy; b2 += w * qz;
-    c0 += w * nx; c1 += w * ny; c2 += w * nz;
+    b0 += w * qx;
+    b1 += w * qy;
+    b2 += w * qz;
+    c0 += w * nx;
+    c1 += w * ny;
+    c2 += w * nz;
     d += w * (qx * nx + qy * ny + qz * nz);
     e += w * s;
   }
   Sphere_sums ds;
   ds.A = a;
-  ds.B[0] = b0; ds.B[1] = b1; ds.B[2] = b2;
-  ds.C[0] = c0; ds.C[1] = c1; ds.C[2] = c2;
+  ds.B[0] = b0;
+  ds.B[1] = b1;
+  ds.B[2] = b2;
+  ds.C[0] = c0;
+  ds.C[1] = c1;
+  ds.C[2] = c2;
   ds.D = d;
   ds.E = e;
   return ds;
@@ -227,9 +235,8 @@ struct Local_sphere_features
 // Features of the sphere fitted to sums `s`, with scale derivative sums `ds`; TOO_FEW_NEIGHBORS
 // below `min_count` neighbours (never below the fit's own minimum).
 template <class WeightKernel>
-Local_sphere_features sphere_features(const Algebraic_sphere_sums<WeightKernel>& s,
-                                      const Sphere_sums& ds, double radius,
-                                      std::size_t min_count = apss_min_neighbors)
+Local_sphere_features sphere_features(const Algebraic_sphere_sums<WeightKernel>& s, const Sphere_sums& ds,
+                                      double radius, std::size_t min_count = apss_min_neighbors)
 {
   Local_sphere_features f;
   f.neighbor_count = s.count;
@@ -290,11 +297,10 @@ Local_sphere_features sphere_features(const Neighborhood& nb, std::size_t min_co
 // u_q = 0 (where |g| = p and it is x - f g / |g|^2) and continuous in between. `normal` gets
 // the unit normal of the sphere at the projection, g / |g| (same ray from the centre).
 // Returns false if x is the centre of the sphere (every point of it is then closest).
-inline bool project_on_sphere(const Algebraic_sphere& s, const double x[3], double projected[3],
-                              double normal[3])
+inline bool project_on_sphere(const Algebraic_sphere& s, const double x[3], double projected[3], double normal[3])
 {
-  const double f = s.u_c + s.u_l[0] * x[0] + s.u_l[1] * x[1] + s.u_l[2] * x[2] +
-                   s.u_q * (x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+  const double f =
+    s.u_c + s.u_l[0] * x[0] + s.u_l[1] * x[1] + s.u_l[2] * x[2] + s.u_q * (x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
   double g[3];
   for(int i = 0; i < 3; ++i)
     g[i] = s.u_l[i] + 2.0 * s.u_q * x[i];
@@ -328,8 +334,7 @@ public:
     m_order.resize(radii.size());
     for(std::size_t k = 0; k < radii.size(); ++k)
       m_order[k] = k;
-    std::stable_sort(m_order.begin(), m_order.end(),
-                     [&](std::size_t a, std::size_t b) { return radii[a] < radii[b]; });
+    std::stable_sort(m_order.begin(), m_order.end(), [&](std::size_t a, std::size_t b) { return radii[a] < radii[b]; });
     m_radii = radii;
     m_max_radius = radii.empty() ? 0.0 : radii[m_order.back()];
     m_bound.resize(radii.size());
@@ -367,13 +372,21 @@ public:
       const double qn = qx * nx + qy * ny + qz * nz;
       Moments& m = m_buckets[j];
       ++m.count;
-      m.QQ[0] += qx * qx; m.QQ[1] += qx * qy; m.QQ[2] += qx * qz;
-      m.QQ[3] += qy * qy; m.QQ[4] += qy * qz; m.QQ[5] += qz * qz;
+      m.QQ[0] += qx * qx;
+      m.QQ[1] += qx * qy;
+      m.QQ[2] += qx * qz;
+      m.QQ[3] += qy * qy;
+      m.QQ[4] += qy * qz;
+      m.QQ[5] += qz * qz;
       for(int k = 0; k <= degree; ++k)
       {
         m.P[k] += s[k];
-        m.Q[0][k] += s[k] * qx; m.Q[1][k] += s[k] * qy; m.Q[2][k] += s[k] * qz;
-        m.N[0][k] += s[k] * nx; m.N[1][k] += s[k] * ny; m.N[2][k] += s[k] * nz;
+        m.Q[0][k] += s[k] * qx;
+        m.Q[1][k] += s[k] * qy;
+        m.Q[2][k] += s[k] * qz;
+        m.N[0][k] += s[k] * nx;
+        m.N[1][k] += s[k] * ny;
+        m.N[2][k] += s[k] * nz;
         m.QN[k] += s[k] * qn;
       }
       m.P[degree + 1] += s[degree + 1];
@@ -432,8 +445,8 @@ private:
 
   // Sums of Equations 2-4 at the radius R / lambda for the weight sum_{j <= degree} c_j s^j
   // with s = lambda^2 sigma, in the frame of that radius (q_k = lambda q).
-  static void combine(const Moments& m, double lambda, int degree, const double c[kernel_degree + 1],
-                      double& A, double B[3], double C[3], double& D, double& E)
+  static void combine(const Moments& m, double lambda, int degree, const double c[kernel_degree + 1], double& A,
+                      double B[3], double C[3], double& D, double& E)
   {
     const double l2 = lambda * lambda;
     double w[kernel_degree + 1];
@@ -467,8 +480,8 @@ private:
   std::vector<Moments> m_buckets;
 };
 
-} // namespace internal
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace internal
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
 #endif

@@ -178,8 +178,7 @@ constexpr double separated_noise_misfit_factor = 8;
 // `airborne10` at range noise 0.3 spacings: the normals' mean error 3.25 -> 1.73 degrees, but
 // 5.5% of a clean random terrain's points climbed past the first rung instead of 2.6%; with 4
 // and 8 the same normals, and 3.1% and 2.7% climbed.)
-inline double separated_noise(double residual_small, double radius_small, double residual_large,
-                              double radius_large)
+inline double separated_noise(double residual_small, double radius_small, double residual_large, double radius_large)
 {
   const double growth = std::pow(radius_large / radius_small, 6);
   if(!(growth > 1.01) || residual_large > separated_noise_misfit_factor * growth * residual_small)
@@ -202,7 +201,7 @@ struct Sub_neighborhood
   std::vector<double> qx, qy, qz, nx, ny, nz, weight;
   std::vector<std::uint32_t> index;
   std::vector<std::uint32_t> taken;  // the positions in `whole` of the points of take()
-  std::vector<double> frame;  // the fit's frame cache (Quadric_fit::frame_cache)
+  std::vector<double> frame;         // the fit's frame cache (Quadric_fit::frame_cache)
   Neighborhood nb;
 
   // The positions of the points of `whole` closer than `radius` (in whole's scaled units), in
@@ -456,8 +455,7 @@ struct Scale_ladder
   // lie along one line, or, for the mean curvature, where its fit can hardly tell it
   // (curvature_untold()).
   static Rung_fit fit_rung(const Neighborhood& whole, const std::vector<double>& d2, Distance_ranks& ranks,
-                           std::size_t k, const double reference[3], Statistic statistic,
-                           Sub_neighborhood& target)
+                           std::size_t k, const double reference[3], Statistic statistic, Sub_neighborhood& target)
   {
     Rung_fit rung;
     const double r2 = ranks.kth(k);
@@ -492,8 +490,7 @@ struct Scale_ladder
     Cubic_height_fit cubic;
     // (by pairs of neighbours; outside the kernel the weight and the values are 0: nothing added)
     for(std::size_t b = 0; b + 7 < frame.size(); b += 8)
-      cubic.add(load_lanes(&frame[b + 2]), load_lanes(&frame[b + 4]), load_lanes(&frame[b + 6]),
-                load_lanes(&frame[b]));
+      cubic.add(load_lanes(&frame[b + 2]), load_lanes(&frame[b + 4]), load_lanes(&frame[b + 6]), load_lanes(&frame[b]));
     double sigma2;
     if(!cubic.residual_variance(gate_cubic_least_pivot, sigma2))
       return std::numeric_limits<double>::quiet_NaN();
@@ -600,10 +597,10 @@ struct Scale_ladder
     // residual variances in input units (both fits are in the frame scaled by nb.radius)
     const double r = nb.radius;
     const double residual = ss_all / double(n - quadratic_height_coefficients) * r * r;
-    const double noise2 =
-      inner_fitted ? separated_noise(ss_inner / double(n_inner - quadratic_height_coefficients) * r * r,
-                                     half_ratio * r, residual, r)
-                   : std::numeric_limits<double>::quiet_NaN();
+    const double noise2 = inner_fitted
+                            ? separated_noise(ss_inner / double(n_inner - quadratic_height_coefficients) * r * r,
+                                              half_ratio * r, residual, r)
+                            : std::numeric_limits<double>::quiet_NaN();
     c.found = true;
     c.count = n;
     bool kept = noise2 < automatic_scale_shared_frame_gate_share * residual;  // (NaN: not kept)
@@ -791,9 +788,8 @@ struct Scale_ladder
       {
         const Rung_fit rung = fit_rung(whole, d2, ranks, half, reference, statistic, trial);
         // (along one line, or where it can hardly tell the curvature, it tells nothing of the noise)
-        kept_noise2 = rung.outcome == Rung_fit::FITTED
-                        ? separated_noise(rung.residual, rung.radius, residual0, radius0)
-                        : std::numeric_limits<double>::quiet_NaN();
+        kept_noise2 = rung.outcome == Rung_fit::FITTED ? separated_noise(rung.residual, rung.radius, residual0, radius0)
+                                                       : std::numeric_limits<double>::quiet_NaN();
         kept = kept_noise2 < automatic_scale_gate_share * residual0;
       }
       if(kept)
@@ -848,9 +844,8 @@ struct Automatic_scale_estimator : Estimator_base
   Scale_ladder ladder;
 
   Automatic_scale_estimator(const Scale_estimators<Estimator>& e, const Sphere& s, const Scale_ladder& l)
-    : Estimator_base(e.estimator), estimators(e), sphere(s), ladder(l)
-  {
-  }
+      : Estimator_base(e.estimator), estimators(e), sphere(s), ladder(l)
+  {}
 
   Local_estimate operator()(const Neighborhood& nb) const
   {
@@ -989,7 +984,7 @@ auto estimate_at_automatic_scale(const PointRange& points, const NamedParameters
   typedef decltype(estimate_at_every_point<ConcurrencyTag>(points, false, 0.0, np, estimators.estimator,
                                                            function_name)) Results;
   typedef typename Results::value_type Estimate;
-  Area_cache areas;       // (the same in every pass)
+  Area_cache areas;      // (the same in every pass)
   Knn_search_cache knn;  // (the search's tree: the same in every pass)
   const auto run = [&](const Scale_ladder& l, const std::vector<char>* visit,
                        const Automatic_scale_progress::Callbacks& progress, bool& cancelled) {
@@ -1001,9 +996,8 @@ auto estimate_at_automatic_scale(const PointRange& points, const NamedParameters
     pass.progress = progress.points;
     pass.area_progress = progress.areas;
     pass.cancelled = &cancelled;
-    return estimate_at_every_point<ConcurrencyTag>(points, false, 0.0, np,
-                                                   Automatic_scale_estimator<Estimator, Sphere>(estimators, sphere, l),
-                                                   function_name, pass);
+    return estimate_at_every_point<ConcurrencyTag>(
+      points, false, 0.0, np, Automatic_scale_estimator<Estimator, Sphere>(estimators, sphere, l), function_name, pass);
   };
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -1015,8 +1009,8 @@ auto estimate_at_automatic_scale(const PointRange& points, const NamedParameters
                                   choose_parameter(get_parameter(np, internal_np::tile), Tile::whole_space()))
              : 0;
   return automatic_scale_passes<Estimate>(
-    first_pass_points, ladder, run,
-    [](const Estimate& e) { return e.is_valid() ? e.neighbor_count : std::size_t(0); }, callback);
+    first_pass_points, ladder, run, [](const Estimate& e) { return e.is_valid() ? e.neighbor_count : std::size_t(0); },
+    callback);
 }
 
 // The largest count of the named parameter automatic_scale, 0 without it. Throws
@@ -1041,8 +1035,8 @@ std::size_t automatic_scale_parameter(const NamedParameters& np, bool radius_giv
   throw std::invalid_argument(msg.str());
 }
 
-} // namespace internal
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace internal
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
 #endif

@@ -69,7 +69,7 @@ public:
   // `callback`: the caller's (may be empty: nothing is reported); `now`: seconds from any
   // origin (empty: the steady clock).
   explicit Automatic_scale_progress(std::function<bool(double)> callback, std::function<double()> now = {})
-    : m_callback(std::move(callback)), m_now(now ? std::move(now) : std::function<double()>(&steady_seconds))
+      : m_callback(std::move(callback)), m_now(now ? std::move(now) : std::function<double()>(&steady_seconds))
   {}
 
   Automatic_scale_progress(const Automatic_scale_progress&) = delete;
@@ -176,8 +176,8 @@ private:
   std::atomic<std::size_t> m_sent_on{0};
 };
 
-} // namespace internal
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace internal
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
-#endif // CGAL_POINT_SET_CURVATURES_INTERNAL_AUTOMATIC_SCALE_PROGRESS_H
+#endif  // CGAL_POINT_SET_CURVATURES_INTERNAL_AUTOMATIC_SCALE_PROGRESS_H

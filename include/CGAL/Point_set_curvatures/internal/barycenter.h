@@ -58,8 +58,8 @@ inline Local_estimate barycenter_mean_curvature(const Neighborhood& nb)
   return e;
 }
 
-} // namespace internal
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace internal
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
 #endif

@@ -172,8 +172,8 @@ std::size_t repair_by_crossing_parity(const std::vector<std::uint32_t>& part, co
       x /= l;
     const double t2[3] = {v[1] * t1[2] - v[2] * t1[1], v[2] * t1[0] - v[0] * t1[2], v[0] * t1[1] - v[1] * t1[0]};
     const double r = parity_splat * scale[k];
-    static const double disc[9][2] = {{0, 0},      {1, 0},       {-1, 0},     {0, 1},      {0, -1},
-                                       {0.7, 0.7}, {-0.7, 0.7}, {0.7, -0.7}, {-0.7, -0.7}};
+    static const double disc[9][2] = {{0, 0},     {1, 0},      {-1, 0},     {0, 1},      {0, -1},
+                                      {0.7, 0.7}, {-0.7, 0.7}, {0.7, -0.7}, {-0.7, -0.7}};
     for(const auto& uv : disc)
     {
       const double q[3] = {p[0] + r * (uv[0] * t1[0] + uv[1] * t2[0]), p[1] + r * (uv[0] * t1[1] + uv[1] * t2[1]),
@@ -254,8 +254,8 @@ std::size_t repair_by_crossing_parity(const std::vector<std::uint32_t>& part, co
   return total;
 }
 
-} // namespace internal
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace internal
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
 #endif

@@ -65,14 +65,13 @@ struct Area_at_point
 // core plus its neighbourhood's radius; 0 for unusable points): the area is the whole-cloud
 // one wherever that reach is within the halo.
 template <class ConcurrencyTag, class PointRange, class PointMap, class NormalMap>
-std::vector<double> tangent_voronoi_areas(const PointRange& points, bool radius_given, double radius,
-                                          std::size_t k, PointMap point_map, NormalMap normal_map,
-                                          const Neighborhood_options& options, const Tile* tile = nullptr,
-                                          std::vector<double>* reach = nullptr)
+std::vector<double> tangent_voronoi_areas(const PointRange& points, bool radius_given, double radius, std::size_t k,
+                                          PointMap point_map, NormalMap normal_map, const Neighborhood_options& options,
+                                          const Tile* tile = nullptr, std::vector<double>* reach = nullptr)
 {
-  const std::vector<Area_record> records = evaluate_with_maps<Area_record, ConcurrencyTag>(
-    points, radius_given, 0.5 * radius, std::max<std::size_t>(6, k / 4), point_map, normal_map, options,
-    Area_at_point{tile});
+  const std::vector<Area_record> records =
+    evaluate_with_maps<Area_record, ConcurrencyTag>(points, radius_given, 0.5 * radius, std::max<std::size_t>(6, k / 4),
+                                                    point_map, normal_map, options, Area_at_point{tile});
   std::vector<double> areas(records.size());
   for(std::size_t i = 0; i < records.size(); ++i)
     areas[i] = records[i].status == Curvature_estimate_status::VALID ? records[i].value : 0.0;
@@ -95,8 +94,7 @@ constexpr bool has_sample_weight_map()
 // The weights of the named parameter sample_weight_map, in range order (empty without it).
 // Throws std::invalid_argument for a weight that is not finite and non-negative.
 template <class PointRange, class NamedParameters>
-std::vector<double> given_sample_weights(const PointRange& points, const NamedParameters& np,
-                                         const char* function_name)
+std::vector<double> given_sample_weights(const PointRange& points, const NamedParameters& np, const char* function_name)
 {
   std::vector<double> weights;
   if constexpr(has_sample_weight_map<NamedParameters>())
@@ -108,8 +106,8 @@ std::vector<double> given_sample_weights(const PointRange& points, const NamedPa
       if(!(a >= 0) || !std::isfinite(a))
       {
         std::ostringstream msg;
-        msg << function_name << ": parameter 'sample_weight_map': the weight of point " << weights.size()
-            << " is " << a << ", weights must be finite and non-negative";
+        msg << function_name << ": parameter 'sample_weight_map': the weight of point " << weights.size() << " is " << a
+            << ", weights must be finite and non-negative";
         throw std::invalid_argument(msg.str());
       }
       weights.push_back(a);
@@ -126,8 +124,7 @@ public:
   {
     double current = m_value.load();
     while(v > current && !m_value.compare_exchange_weak(current, v))
-    {
-    }
+    {}
   }
   double value() const { return m_value.load(); }
 
@@ -139,13 +136,11 @@ private:
 // one (the ASO: its APSS sphere with the wider kernel), else the estimator itself.
 template <class Estimator, class = void>
 struct Has_refinement_fit : std::false_type
-{
-};
+{};
 template <class Estimator>
 struct Has_refinement_fit<Estimator, std::void_t<decltype(std::declval<const Estimator&>().refinement_fit(
-                                         std::declval<const Neighborhood&>()))> > : std::true_type
-{
-};
+                                       std::declval<const Neighborhood&>()))> > : std::true_type
+{};
 template <class Estimator>
 Local_estimate refinement_estimate(const Estimator& estimator, const Neighborhood& nb)
 {
@@ -281,11 +276,10 @@ void check_area_halo(const PointRange& points, const PointMap& point_map, const 
 // not reached are NOT_COMPUTED, as in a single pass.
 template <class Estimate, class Geom_traits, class ConcurrencyTag, class PointRange, class PointMap, class NormalMap,
           class OptionsOf, class Evaluation>
-std::vector<Estimate> estimation_after_refinements(const PointRange& points, bool radius_given, double radius,
-                                                   std::size_t k, const PointMap& point_map,
-                                                   const NormalMap& normal_map, std::size_t refinements,
-                                                   const OptionsOf& options_of, const Evaluation& evaluation,
-                                                   const bool& cancelled)
+std::vector<Estimate>
+estimation_after_refinements(const PointRange& points, bool radius_given, double radius, std::size_t k,
+                             const PointMap& point_map, const NormalMap& normal_map, std::size_t refinements,
+                             const OptionsOf& options_of, const Evaluation& evaluation, const bool& cancelled)
 {
   typedef std::pair<typename Geom_traits::Point_3, typename Geom_traits::Vector_3> Oriented;
   std::vector<Estimate> result;
@@ -328,11 +322,10 @@ std::vector<Estimate> estimation_after_refinements(const PointRange& points, boo
 // cancelled before the estimation pass, every point is NOT_COMPUTED (a refinement pass's
 // values are not the estimator's).
 template <class ConcurrencyTag, class PointRange, class NamedParameters, class Estimator>
-std::vector<Curvature_estimate<
-  typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
-estimate_at_every_point(const PointRange& points, bool radius_given, double radius,
-                        const NamedParameters& np, const Estimator& estimator,
-                        const char* function_name, const Pass_options& pass = Pass_options())
+std::vector<Curvature_estimate<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
+estimate_at_every_point(const PointRange& points, bool radius_given, double radius, const NamedParameters& np,
+                        const Estimator& estimator, const char* function_name,
+                        const Pass_options& pass = Pass_options())
 {
   typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
   typedef typename NP_helper::Geom_traits Geom_traits;
@@ -374,12 +367,12 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
     options.point_weights = &given_weights;
   const bool area_pass = estimator.area_weights && !weights_given;
   if(!area_pass && estimator.normal_refinements == 0)
-    return evaluate_with_maps<Estimate, ConcurrencyTag>(points, radius_given, radius, visit_k, point_map,
-                                                        normal_map, options, evaluation(false));
+    return evaluate_with_maps<Estimate, ConcurrencyTag>(points, radius_given, radius, visit_k, point_map, normal_map,
+                                                        options, evaluation(false));
 
   if(options.has_tile && estimator.normal_refinements > 0)
     throw std::invalid_argument(std::string(function_name) + ": parameter 'tile' is not supported with "
-                                "normal_refinement");
+                                                             "normal_refinement");
   Area_cache own_areas;
   Area_cache& cache = pass.areas ? *pass.areas : own_areas;
   const bool compute_areas = area_pass && !cache.filled;
@@ -395,7 +388,8 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
     Neighborhood_options o = options;
     if(callback)
       o.callback = [&callback, &cancelled, &shares, p](double f) {
-        const bool go_on = callback(p + 1 == shares.start.size() && f == 1.0 ? 1.0 : shares.start[p] + shares.size[p] * f);
+        const bool go_on =
+          callback(p + 1 == shares.start.size() && f == 1.0 ? 1.0 : shares.start[p] + shares.size[p] * f);
         cancelled = cancelled || !go_on;
         return go_on;
       };
@@ -471,8 +465,8 @@ estimate_at_every_point(const PointRange& points, bool radius_given, double radi
   return result;
 }
 
-} // namespace internal
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace internal
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
 #endif

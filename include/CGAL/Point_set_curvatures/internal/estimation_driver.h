@@ -153,9 +153,8 @@ Curvature_estimate<GeomTraits> to_curvature_estimate(const Local_estimate& e, st
   r.status = e.status;
   // NaN marks a quantity the estimator does not provide; an infinite value is an overflow
   // (e.g. K = k_min k_max for curvatures near 1e160): never hand it out as valid.
-  const double fields[] = {e.normal[0], e.normal[1], e.normal[2], e.mean, e.gaussian, e.k_min,
-                           e.k_max, e.d_min[0], e.d_min[1], e.d_min[2], e.d_max[0], e.d_max[1],
-                           e.d_max[2]};
+  const double fields[] = {e.normal[0], e.normal[1], e.normal[2], e.mean,     e.gaussian, e.k_min,   e.k_max,
+                           e.d_min[0],  e.d_min[1],  e.d_min[2],  e.d_max[0], e.d_max[1], e.d_max[2]};
   for(double f : fields)
     if(std::isinf(f))
       r.status = Curvature_estimate_status::DEGENERATE_FIT;
@@ -178,10 +177,10 @@ struct Knn_search_cache;
 // Options of the driver (for_each_neighborhood(), for_each_neighborhood_knn()).
 struct Neighborhood_options
 {
-  bool normalize_normals = true;             // hand unit normals to the visitor
+  bool normalize_normals = true;  // hand unit normals to the visitor
   // normals of length outside [1e-3, 1e3] are INVALID_NORMAL (accept_unnormalized_normals)
   bool check_normal_length = true;
-  std::function<bool(double)> callback;      // progress in [0,1]; false cancels
+  std::function<bool(double)> callback;                // progress in [0,1]; false cancels
   const char* function_name = "Point_set_curvatures";  // for error messages
   // A tile (Tile.h): only its own points are visited; `halo_radii` is how far, in radii, an
   // estimate depends on other points (1: its neighbourhood), which the halo must cover.
@@ -245,9 +244,9 @@ void for_index_chunks(std::size_t n, const Function& f, std::size_t grain = 4096
 // with Parallel_tag; the result does not depend on the tag (ties in the sort are broken by
 // input position).
 template <class ConcurrencyTag, class PointRange, class PointMap, class NormalMap>
-void read_and_sort(const PointRange& points, PointMap point_map, NormalMap normal_map,
-                   double radius, const Neighborhood_options& options,
-                   std::vector<Curvature_estimate_status>& status, Sorted_cloud& cloud)
+void read_and_sort(const PointRange& points, PointMap point_map, NormalMap normal_map, double radius,
+                   const Neighborhood_options& options, std::vector<Curvature_estimate_status>& status,
+                   Sorted_cloud& cloud)
 {
   const bool normalize_normals = options.normalize_normals;
   typedef typename PointRange::const_iterator Iterator;
@@ -270,7 +269,9 @@ void read_and_sort(const PointRange& points, PointMap point_map, NormalMap norma
   };
   auto coordinates = [&](std::size_t i, double x[3]) {
     const auto& p = get(point_map, item(i));
-    x[0] = CGAL::to_double(p.x()); x[1] = CGAL::to_double(p.y()); x[2] = CGAL::to_double(p.z());
+    x[0] = CGAL::to_double(p.x());
+    x[1] = CGAL::to_double(p.y());
+    x[2] = CGAL::to_double(p.z());
   };
 
   // Pass 1: usable points and their bounding box.
@@ -346,7 +347,8 @@ void read_and_sort(const PointRange& points, PointMap point_map, NormalMap norma
     // the sort's chunks are few and large: one per task
     sort_by_key_then_index(keyed, scratch, [](std::size_t chunks, const auto& f) {
       for_index_chunks<ConcurrencyTag>(
-        chunks, [&f](std::size_t first, std::size_t last) {
+        chunks,
+        [&f](std::size_t first, std::size_t last) {
           for(std::size_t c = first; c < last; ++c)
             f(c);
         },
@@ -371,11 +373,15 @@ void read_and_sort(const PointRange& points, PointMap point_map, NormalMap norma
       coordinates(i, &cloud.position[3 * k]);
       const auto& v = get(normal_map, item(i));
       double* nv = &cloud.normal[3 * k];
-      nv[0] = CGAL::to_double(v.x()); nv[1] = CGAL::to_double(v.y()); nv[2] = CGAL::to_double(v.z());
+      nv[0] = CGAL::to_double(v.x());
+      nv[1] = CGAL::to_double(v.y());
+      nv[2] = CGAL::to_double(v.z());
       if(normalize_normals)
       {
         const double inv = 1.0 / std::sqrt(nv[0] * nv[0] + nv[1] * nv[1] + nv[2] * nv[2]);
-        nv[0] *= inv; nv[1] *= inv; nv[2] *= inv;
+        nv[0] *= inv;
+        nv[1] *= inv;
+        nv[2] *= inv;
       }
     }
   });
@@ -423,8 +429,8 @@ void process_in_parallel(bool parallel, std::size_t begin, std::size_t end, cons
 #ifdef CGAL_LINKED_WITH_TBB
   if(parallel && end - begin > 1)
   {
-    const std::size_t grain =
-      std::max<std::size_t>(1, (end - begin) / (64 * std::size_t(std::max(1, tbb::this_task_arena::max_concurrency()))));
+    const std::size_t grain = std::max<std::size_t>(
+      1, (end - begin) / (64 * std::size_t(std::max(1, tbb::this_task_arena::max_concurrency()))));
     tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end, grain),
                       [&](const tbb::blocked_range<std::size_t>& r) {
                         process(static_cast<std::uint32_t>(r.begin()), static_cast<std::uint32_t>(r.end()));
@@ -474,8 +480,7 @@ private:
 // NOT_COMPUTED.
 template <class Process, class Finish>
 void for_each_batch(bool parallel, const Sorted_cloud& cloud, const std::function<bool(double)>& callback,
-                    std::vector<Curvature_estimate_status>& status, Process process,
-                    Finish finish)
+                    std::vector<Curvature_estimate_status>& status, Process process, Finish finish)
 {
   typedef std::chrono::steady_clock Clock;
   const std::size_t n_points = cloud.grid.number_of_points();
@@ -531,9 +536,8 @@ inline void check_tile_halo(const Neighborhood_options& options, double radius)
   {
     std::ostringstream msg;
     msg.precision(17);
-    msg << options.function_name << ": parameter 'tile': the halo " << options.tile.halo
-        << " must be at least " << options.halo_radii * radius << " (" << options.halo_radii
-        << " times the radius) for exact results";
+    msg << options.function_name << ": parameter 'tile': the halo " << options.tile.halo << " must be at least "
+        << options.halo_radii * radius << " (" << options.halo_radii << " times the radius) for exact results";
     throw std::invalid_argument(msg.str());
   }
 }
@@ -545,8 +549,7 @@ template <class Visitor, class = void>
 struct Has_end_of_range : std::false_type
 {};
 template <class Visitor>
-struct Has_end_of_range<Visitor, std::void_t<decltype(std::declval<Visitor&>().end_of_range())> >
-  : std::true_type
+struct Has_end_of_range<Visitor, std::void_t<decltype(std::declval<Visitor&>().end_of_range())> > : std::true_type
 {};
 template <class Visitor>
 void end_of_range(Visitor& visit)
@@ -562,8 +565,8 @@ void end_of_range(Visitor& visit)
 // the same visitor type shares this code, whatever its ranges, maps and named parameters.
 template <class Visitor>
 void visit_sorted_cloud(const Sorted_cloud& cloud, double radius, bool parallel,
-                        const std::function<bool(double)>& callback,
-                        std::vector<Curvature_estimate_status>& status, const Visitor& visit)
+                        const std::function<bool(double)>& callback, std::vector<Curvature_estimate_status>& status,
+                        const Visitor& visit)
 {
   Per_thread<Neighbor_buffer> buffers(parallel);
   for_each_batch(
@@ -585,9 +588,9 @@ void visit_sorted_cloud(const Sorted_cloud& cloud, double radius, bool parallel,
 // Throws std::invalid_argument for a radius that is not positive and finite, or a tile
 // whose halo is smaller than the radius.
 template <class ConcurrencyTag, class PointRange, class PointMap, class NormalMap, class Visitor>
-std::vector<Curvature_estimate_status>
-for_each_neighborhood(const PointRange& points, PointMap point_map, NormalMap normal_map,
-                      double radius, const Neighborhood_options& options, const Visitor& visit)
+std::vector<Curvature_estimate_status> for_each_neighborhood(const PointRange& points, PointMap point_map,
+                                                             NormalMap normal_map, double radius,
+                                                             const Neighborhood_options& options, const Visitor& visit)
 {
   check_concurrency_tag<ConcurrencyTag>();
   check_radius(radius, options.function_name);
@@ -603,8 +606,8 @@ for_each_neighborhood(const PointRange& points, PointMap point_map, NormalMap no
   return status;
 }
 
-} // namespace internal
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace internal
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
 #endif

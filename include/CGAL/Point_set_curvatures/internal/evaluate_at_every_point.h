@@ -27,21 +27,24 @@ namespace internal {
 
 // True for CGAL named parameter packs (to tell the overloads without radius apart).
 template <class T>
-struct is_named_parameters : std::false_type {};
+struct is_named_parameters : std::false_type
+{};
 template <class T, class Tag, class Base>
-struct is_named_parameters<CGAL::Named_function_parameters<T, Tag, Base> > : std::true_type {};
+struct is_named_parameters<CGAL::Named_function_parameters<T, Tag, Base> > : std::true_type
+{};
 
 // Result type `std::vector<Result<Geom_traits> >` of the overloads without radius; no `type`
 // unless NamedParameters is a named parameter pack, so that a call with a radius does not
 // consider them (SFINAE).
 template <template <class> class Result, class PointRange, class NamedParameters,
           bool = is_named_parameters<NamedParameters>::value>
-struct Results_without_radius {};
+struct Results_without_radius
+{};
 template <template <class> class Result, class PointRange, class NamedParameters>
 struct Results_without_radius<Result, PointRange, NamedParameters, true>
 {
-  typedef std::vector<Result<
-    typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> > type;
+  typedef std::vector<Result<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
+    type;
 };
 template <class PointRange, class NamedParameters>
 using Estimates_without_radius = Results_without_radius<Curvature_estimate, PointRange, NamedParameters>;
@@ -49,18 +52,15 @@ using Estimates_without_radius = Results_without_radius<Curvature_estimate, Poin
 // Driver options of a public function: its name (for messages), whether its estimator wants
 // unit normals, and the named parameters `callback`, `accept_unnormalized_normals` and `tile`.
 template <class NamedParameters>
-Neighborhood_options neighborhood_options(const NamedParameters& np, const char* function_name,
-                                          bool normalize_normals)
+Neighborhood_options neighborhood_options(const NamedParameters& np, const char* function_name, bool normalize_normals)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   Neighborhood_options options;
   options.normalize_normals = normalize_normals;
-  options.callback = choose_parameter(get_parameter(np, CGAL::internal_np::callback),
-                                      std::function<bool(double)>());
+  options.callback = choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
   options.function_name = function_name;
-  options.check_normal_length =
-    !choose_parameter(get_parameter(np, internal_np::accept_unnormalized_normals), false);
+  options.check_normal_length = !choose_parameter(get_parameter(np, internal_np::accept_unnormalized_normals), false);
   // a tile whose core is all of space is the whole cloud: no tile
   options.tile = choose_parameter(get_parameter(np, internal_np::tile), Tile::whole_space());
   options.has_tile = !options.tile.is_whole_space();
@@ -72,8 +72,8 @@ Neighborhood_options neighborhood_options(const NamedParameters& np, const char*
 template <class NamedParameters>
 std::size_t min_neighbors_parameter(const NamedParameters& np, std::size_t estimator_default)
 {
-  return CGAL::parameters::choose_parameter(
-    CGAL::parameters::get_parameter(np, internal_np::min_neighbors), estimator_default);
+  return CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::min_neighbors),
+                                            estimator_default);
 }
 
 // The visitor of evaluate_with_maps(): stores evaluate(nb) at the point's input index. A
@@ -116,16 +116,15 @@ struct Store_results
 // The body of evaluate_at_every_point() below, with the maps and the scale given: balls of
 // `radius` if `radius_given`, else the `k` nearest.
 template <class Result, class ConcurrencyTag, class PointRange, class PointMap, class NormalMap, class Evaluate>
-std::vector<Result> evaluate_with_maps(const PointRange& points, bool radius_given, double radius,
-                                       std::size_t k, PointMap point_map, NormalMap normal_map,
-                                       const Neighborhood_options& options, const Evaluate& evaluate)
+std::vector<Result> evaluate_with_maps(const PointRange& points, bool radius_given, double radius, std::size_t k,
+                                       PointMap point_map, NormalMap normal_map, const Neighborhood_options& options,
+                                       const Evaluate& evaluate)
 {
   std::vector<Result> results(static_cast<std::size_t>(std::distance(points.begin(), points.end())));
   const Store_results<Result, Evaluate> visit{&results, &evaluate};
   const std::vector<Curvature_estimate_status> status =
-    radius_given
-      ? for_each_neighborhood<ConcurrencyTag>(points, point_map, normal_map, radius, options, visit)
-      : for_each_neighborhood_knn<ConcurrencyTag>(points, point_map, normal_map, k, options, visit);
+    radius_given ? for_each_neighborhood<ConcurrencyTag>(points, point_map, normal_map, radius, options, visit)
+                 : for_each_neighborhood_knn<ConcurrencyTag>(points, point_map, normal_map, k, options, visit);
   for(std::size_t i = 0; i < results.size(); ++i)
     if(status[i] != Curvature_estimate_status::VALID)
       results[i].status = status[i];  // unusable or not reached: NaN fields, count 0
@@ -142,8 +141,7 @@ std::size_t checked_scale(double radius, bool radius_given, const NamedParameter
                 "Error: no normal map. Pass CGAL::parameters::normal_map(...): the estimators "
                 "of this package need oriented normals.");
   const std::size_t k = CGAL::parameters::choose_parameter(
-    CGAL::parameters::get_parameter(np, Point_set_curvatures::internal_np::neighbor_count),
-    std::size_t(0));
+    CGAL::parameters::get_parameter(np, Point_set_curvatures::internal_np::neighbor_count), std::size_t(0));
   check_scale(radius, k, !radius_given, function_name);
   return k;
 }
@@ -156,9 +154,8 @@ std::size_t checked_scale(double radius, bool radius_given, const NamedParameter
 // others (unusable, or not reached after cancellation). Result needs a `status` member;
 // `evaluate` must be copyable and callable from several threads at once.
 template <class Result, class ConcurrencyTag, class PointRange, class NamedParameters, class Evaluate>
-std::vector<Result> evaluate_at_every_point(const PointRange& points, bool radius_given,
-                                            double radius, const NamedParameters& np,
-                                            const Neighborhood_options& options,
+std::vector<Result> evaluate_at_every_point(const PointRange& points, bool radius_given, double radius,
+                                            const NamedParameters& np, const Neighborhood_options& options,
                                             const Evaluate& evaluate)
 {
   typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
@@ -169,8 +166,8 @@ std::vector<Result> evaluate_at_every_point(const PointRange& points, bool radiu
                                                     NP_helper::get_normal_map(points, np), options, evaluate);
 }
 
-} // namespace internal
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace internal
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
-#endif // CGAL_POINT_SET_CURVATURES_INTERNAL_EVALUATE_AT_EVERY_POINT_H
+#endif  // CGAL_POINT_SET_CURVATURES_INTERNAL_EVALUATE_AT_EVERY_POINT_H

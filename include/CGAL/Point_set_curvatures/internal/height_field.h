@@ -271,23 +271,21 @@ struct Cubic_height_fit
 
 // The gradient and Hessian (packed xx xy xz yy yz zz) of F(y) = n.y - h(t1.y, t2.y) at
 // u = v = 0, for the graph of h (coefficients `a`) over the frame (t1, t2, n).
-inline void height_field_gradient_hessian(const double a[6], const double t1[3], const double t2[3],
-                                          const double n[3], double gradient[3], double hessian[6])
+inline void height_field_gradient_hessian(const double a[6], const double t1[3], const double t2[3], const double n[3],
+                                          double gradient[3], double hessian[6])
 {
   for(int i = 0; i < 3; ++i)
     gradient[i] = n[i] - a[1] * t1[i] - a[2] * t2[i];
   for(int i = 0; i < 3; ++i)
     for(int j = i; j < 3; ++j)
-      hessian[sym_index(i, j)] = -(2.0 * a[3] * t1[i] * t1[j] +
-                                   a[4] * (t1[i] * t2[j] + t2[i] * t1[j]) +
-                                   2.0 * a[5] * t2[i] * t2[j]);
+      hessian[sym_index(i, j)] =
+        -(2.0 * a[3] * t1[i] * t1[j] + a[4] * (t1[i] * t2[j] + t2[i] * t1[j]) + 2.0 * a[5] * t2[i] * t2[j]);
 }
 
 // Normal, principal curvatures and directions of the graph of h (coefficients `a`) over
 // the frame (t1, t2, n) at u = v = 0, in 1/length with `inverse_length_unit` = 1/r for
 // coefficients fitted in the scaled frame. Returns false if the result is not finite.
-inline bool set_height_field_curvatures(const double a[6], const double t1[3],
-                                        const double t2[3], const double n[3],
+inline bool set_height_field_curvatures(const double a[6], const double t1[3], const double t2[3], const double n[3],
                                         double inverse_length_unit, Local_estimate& e)
 {
   double gradient[3], hessian[6];
@@ -295,8 +293,8 @@ inline bool set_height_field_curvatures(const double a[6], const double t1[3],
   return set_shape_operator(gradient, hessian, inverse_length_unit, e);
 }
 
-} // namespace internal
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace internal
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
 #endif

@@ -103,7 +103,7 @@ inline double knn_neighborhood(const Point_kd_tree& tree, const double* x, std::
       if(c.first > 0)
         d2_k = std::min(d2_k, c.first);
     if(d2_k == std::numeric_limits<double>::infinity())
-      return 1.0;  // every usable point is at x
+      return 1.0;        // every usable point is at x
     ties_beyond = true;  // the ball may hold more copies than were listed
   }
   const double radius = knn_radius_factor * std::sqrt(d2_k);
@@ -236,8 +236,7 @@ private:
 // bins over [0, s2) finds the bin holding it, then a selection within that bin only (about
 // 16 times fewer values than a selection over all of them, for points on a surface). At
 // scales where 32 / s2 overflows, a selection over all of them.
-inline double kth_smallest(const double* d2, std::size_t c, std::size_t k, double s2,
-                           std::vector<double>& bin_values)
+inline double kth_smallest(const double* d2, std::size_t c, std::size_t k, double s2, std::vector<double>& bin_values)
 {
   constexpr int bins = 32;
   const double scale = bins / s2;
@@ -267,9 +266,8 @@ inline double kth_smallest(const double* d2, std::size_t c, std::size_t k, doubl
 // [first, last) whose neighbourhood lies within the 27 cells around them, flags the others in
 // `deferred`.
 template <class Visitor>
-void visit_points_knn(const Sorted_cloud& cloud, std::size_t k, std::uint32_t first,
-                      std::uint32_t last, Knn_scratch& scratch, std::vector<char>& deferred,
-                      Halo_requirement& halo, Visitor& visit)
+void visit_points_knn(const Sorted_cloud& cloud, std::size_t k, std::uint32_t first, std::uint32_t last,
+                      Knn_scratch& scratch, std::vector<char>& deferred, Halo_requirement& halo, Visitor& visit)
 {
   if(first >= last)
     return;
@@ -421,9 +419,9 @@ double knn_grid_side(const Point_kd_tree& tree, const Point_at& point_at, std::s
 // `status`; throws Halo_too_small if a tile's halo does not cover the neighbourhoods.
 // Templated on the visitor only, like visit_sorted_cloud().
 template <class Visitor>
-void visit_cloud_knn(const Sorted_cloud& cloud, const Point_kd_tree& tree, std::size_t k, bool use_grid,
-                     bool parallel, const Neighborhood_options& options,
-                     std::vector<Curvature_estimate_status>& status, const Visitor& visit)
+void visit_cloud_knn(const Sorted_cloud& cloud, const Point_kd_tree& tree, std::size_t k, bool use_grid, bool parallel,
+                     const Neighborhood_options& options, std::vector<Curvature_estimate_status>& status,
+                     const Visitor& visit)
 {
   const std::size_t m = cloud.input_index.size();
   std::vector<char> deferred(m, 0);
@@ -495,8 +493,8 @@ struct Knn_search_cache
 // Throws std::invalid_argument if k is 0.
 template <class ConcurrencyTag, class PointRange, class PointMap, class NormalMap, class Visitor>
 std::vector<Curvature_estimate_status>
-for_each_neighborhood_knn(const PointRange& points, PointMap point_map, NormalMap normal_map,
-                          std::size_t k, const Neighborhood_options& options, const Visitor& visit)
+for_each_neighborhood_knn(const PointRange& points, PointMap point_map, NormalMap normal_map, std::size_t k,
+                          const Neighborhood_options& options, const Visitor& visit)
 {
   check_concurrency_tag<ConcurrencyTag>();
   if(k == 0)
@@ -528,8 +526,8 @@ for_each_neighborhood_knn(const PointRange& points, PointMap point_map, NormalMa
     read_options.has_tile = false;
     read_options.visit = nullptr;
     Sorted_cloud input;
-    read_and_sort<ConcurrencyTag>(points, point_map, normal_map, std::numeric_limits<double>::max(),
-                                  read_options, status, input);
+    read_and_sort<ConcurrencyTag>(points, point_map, normal_map, std::numeric_limits<double>::max(), read_options,
+                                  status, input);
     if(input.input_index.empty())
       return status;
     cache.tree.build<ConcurrencyTag>(input.position.data(), input.input_index.size());
@@ -550,7 +548,9 @@ for_each_neighborhood_knn(const PointRange& points, PointMap point_map, NormalMa
     else
     {
       const auto& p = get(point_map, *std::next(points.begin(), cache.usable[u]));
-      x[0] = CGAL::to_double(p.x()); x[1] = CGAL::to_double(p.y()); x[2] = CGAL::to_double(p.z());
+      x[0] = CGAL::to_double(p.x());
+      x[1] = CGAL::to_double(p.y());
+      x[2] = CGAL::to_double(p.z());
     }
   };
   if(options.has_tile && k > m && options.tile.halo != std::numeric_limits<double>::infinity())
@@ -616,8 +616,8 @@ for_each_neighborhood_knn(const PointRange& points, PointMap point_map, NormalMa
   return status;
 }
 
-} // namespace internal
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace internal
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
 #endif

@@ -69,8 +69,8 @@ inline Lane_pair load_pair(const double* values, std::size_t i, std::size_t size
   return lanes(values[i], i + 1 < size ? values[i + 1] : pad);
 }
 
-} // namespace internal
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace internal
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
 #endif

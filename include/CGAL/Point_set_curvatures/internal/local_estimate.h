@@ -39,8 +39,8 @@ struct Neighborhood
   const double* nx = nullptr;
   const double* ny = nullptr;
   const double* nz = nullptr;
-  double radius = 1;               // r, to convert curvatures back to input units
-  double center[3] = {0, 0, 0};    // x, absolute coordinates of the evaluation point
+  double radius = 1;             // r, to convert curvatures back to input units
+  double center[3] = {0, 0, 0};  // x, absolute coordinates of the evaluation point
   double query_normal[3] = {0, 0, 0};
   // Which input points the neighbours are, when the cloud drivers gather them (else null):
   // neighbour i is element input_index[index[i]] of the input range. For estimators that
@@ -107,7 +107,9 @@ inline bool majority_orientation(const Neighborhood& nb, double ref[3])
     if(nb.sample_weight)
       w *= nb.sample_weight[i];
     const double n[3] = {nb.nx[i], nb.ny[i], nb.nz[i]};
-    m[0] += w * n[0]; m[1] += w * n[1]; m[2] += w * n[2];
+    m[0] += w * n[0];
+    m[1] += w * n[1];
+    m[2] += w * n[2];
     const int g = n[0] * up[0] + n[1] * up[1] + n[2] * up[2] < 0 ? 1 : 0;
     const double l2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
     const double inv = l2 > 0 ? 1.0 / std::sqrt(l2) : 0.0;
@@ -117,8 +119,12 @@ inline bool majority_orientation(const Neighborhood& nb, double ref[3])
       N[g][a] += w * n[a] * inv;
       Q[g][a] += w * q[a];
     }
-    QQ[g][0] += w * q[0] * q[0]; QQ[g][1] += w * q[0] * q[1]; QQ[g][2] += w * q[0] * q[2];
-    QQ[g][3] += w * q[1] * q[1]; QQ[g][4] += w * q[1] * q[2]; QQ[g][5] += w * q[2] * q[2];
+    QQ[g][0] += w * q[0] * q[0];
+    QQ[g][1] += w * q[0] * q[1];
+    QQ[g][2] += w * q[0] * q[2];
+    QQ[g][3] += w * q[1] * q[1];
+    QQ[g][4] += w * q[1] * q[2];
+    QQ[g][5] += w * q[2] * q[2];
   }
   orientation_reference(m, nb.query_normal, ref);
   if(!(W[1] > 0.1 * (W[0] + W[1])) || !(W[0] > 0.1 * (W[0] + W[1])))
@@ -130,8 +136,8 @@ inline bool majority_orientation(const Neighborhood& nb, double ref[3])
       mean[g][a] = N[g][a] / W[g];
     length[g] = std::sqrt(mean[g][0] * mean[g][0] + mean[g][1] * mean[g][1] + mean[g][2] * mean[g][2]);
   }
-  const double cosine = (mean[0][0] * mean[1][0] + mean[0][1] * mean[1][1] + mean[0][2] * mean[1][2]) /
-                        (length[0] * length[1]);
+  const double cosine =
+    (mean[0][0] * mean[1][0] + mean[0][1] * mean[1][1] + mean[0][2] * mean[1][2]) / (length[0] * length[1]);
   if(!(length[0] >= 0.7 && length[1] >= 0.7 && cosine < -0.7))
     return true;  // normals pointing anywhere, or not opposite: not two sheets
   double axis[3] = {mean[0][0] - mean[1][0], mean[0][1] - mean[1][1], mean[0][2] - mean[1][2]};
@@ -145,7 +151,8 @@ inline bool majority_orientation(const Neighborhood& nb, double ref[3])
     const double* M = QQ[g];
     const double second = (axis[0] * (M[0] * axis[0] + M[1] * axis[1] + M[2] * axis[2]) +
                            axis[1] * (M[1] * axis[0] + M[3] * axis[1] + M[4] * axis[2]) +
-                           axis[2] * (M[2] * axis[0] + M[4] * axis[1] + M[5] * axis[2])) / W[g];
+                           axis[2] * (M[2] * axis[0] + M[4] * axis[1] + M[5] * axis[2])) /
+                          W[g];
     spread[g] = std::sqrt(std::max(0.0, second - offset[g] * offset[g]));
   }
   const double separation = std::abs(offset[1] - offset[0]);
@@ -204,15 +211,18 @@ inline void tangent_basis(const double n[3], double t1[3], double t2[3])
   const double sign = std::copysign(1.0, n[2]);
   const double a = -1.0 / (sign + n[2]);
   const double b = n[0] * n[1] * a;
-  t1[0] = 1.0 + sign * n[0] * n[0] * a; t1[1] = sign * b;               t1[2] = -sign * n[0];
-  t2[0] = b;                            t2[1] = sign + n[1] * n[1] * a; t2[2] = -n[1];
+  t1[0] = 1.0 + sign * n[0] * n[0] * a;
+  t1[1] = sign * b;
+  t1[2] = -sign * n[0];
+  t2[0] = b;
+  t2[1] = sign + n[1] * n[1] * a;
+  t2[2] = -n[1];
 }
 
 // u^T M v for a symmetric 3x3 matrix M packed xx xy xz yy yz zz (second moments, Hessians).
 inline double symmetric_form(const double M[6], const double u[3], const double v[3])
 {
-  return u[0] * (M[0] * v[0] + M[1] * v[1] + M[2] * v[2]) +
-         u[1] * (M[1] * v[0] + M[3] * v[1] + M[4] * v[2]) +
+  return u[0] * (M[0] * v[0] + M[1] * v[1] + M[2] * v[2]) + u[1] * (M[1] * v[0] + M[3] * v[1] + M[4] * v[2]) +
          u[2] * (M[2] * v[0] + M[4] * v[1] + M[5] * v[2]);
 }
 
@@ -243,8 +253,15 @@ inline bool neighborhood_lacks_tangent_spread(const Neighborhood& nb)
   for(std::size_t i = 0; i < nb.size; ++i)
   {
     const double x = nb.qx[i], y = nb.qy[i], z = nb.qz[i];
-    M[0] += x * x; M[1] += x * y; M[2] += x * z; M[3] += y * y; M[4] += y * z; M[5] += z * z;
-    n[0] += nb.nx[i]; n[1] += nb.ny[i]; n[2] += nb.nz[i];
+    M[0] += x * x;
+    M[1] += x * y;
+    M[2] += x * z;
+    M[3] += y * y;
+    M[4] += y * z;
+    M[5] += z * z;
+    n[0] += nb.nx[i];
+    n[1] += nb.ny[i];
+    n[2] += nb.nz[i];
   }
   return lacks_tangent_spread(M, n);
 }
@@ -252,8 +269,7 @@ inline bool neighborhood_lacks_tangent_spread(const Neighborhood& nb)
 // Principal curvatures and directions of the 2x2 symmetric tensor [[a, b], [b, c]]
 // written in the tangent basis (t1, t2). Fills k_min <= k_max, mean, gaussian and unit,
 // orthogonal, tangent directions.
-inline void set_principal_curvatures(double a, double b, double c,
-                                     const double t1[3], const double t2[3],
+inline void set_principal_curvatures(double a, double b, double c, const double t1[3], const double t2[3],
                                      Local_estimate& e)
 {
   const double half_sum = 0.5 * (a + c);
@@ -278,8 +294,7 @@ inline void set_principal_curvatures(double a, double b, double c,
 // gradient's length, or 0 when the gradient vanishes or is not finite (no frame).
 inline double gradient_frame(const double gradient[3], double normal[3], double t1[3], double t2[3])
 {
-  const double norm = std::sqrt(gradient[0] * gradient[0] + gradient[1] * gradient[1] +
-                                gradient[2] * gradient[2]);
+  const double norm = std::sqrt(gradient[0] * gradient[0] + gradient[1] * gradient[1] + gradient[2] * gradient[2]);
   if(!(norm > 1e-12) || !std::isfinite(norm))
     return 0;
   for(int i = 0; i < 3; ++i)
@@ -291,9 +306,8 @@ inline double gradient_frame(const double gradient[3], double normal[3], double 
 // The shape operator W = P Hess P / |grad| of a field in the tangent basis (t1, t2) of its
 // gradient_frame(), which also gives `gradient_norm`: W = [[W[0], W[1]], [W[1], W[2]]], times
 // `inverse_length_unit`.
-inline void shape_operator_in_basis(double gradient_norm, const double hessian[6],
-                                    double inverse_length_unit, const double t1[3],
-                                    const double t2[3], double W[3])
+inline void shape_operator_in_basis(double gradient_norm, const double hessian[6], double inverse_length_unit,
+                                    const double t1[3], const double t2[3], double W[3])
 {
   const double s = inverse_length_unit / gradient_norm;
   W[0] = s * symmetric_form(hessian, t1, t1);
@@ -305,8 +319,8 @@ inline void shape_operator_in_basis(double gradient_norm, const double hessian[6
 // Lejemble et al. 2021): W = P Hess P / |grad|, with P the projection on the plane
 // orthogonal to grad. `hessian` is packed xx xy xz yy yz zz. Returns false when the
 // gradient vanishes (no normal, no tensor).
-inline bool set_shape_operator(const double gradient[3], const double hessian[6],
-                               double inverse_length_unit, Local_estimate& e)
+inline bool set_shape_operator(const double gradient[3], const double hessian[6], double inverse_length_unit,
+                               Local_estimate& e)
 {
   double t1[3], t2[3], W[3];
   const double norm = gradient_frame(gradient, e.normal, t1, t2);
@@ -317,8 +331,8 @@ inline bool set_shape_operator(const double gradient[3], const double hessian[6]
   return std::isfinite(e.k_min) && std::isfinite(e.k_max);
 }
 
-} // namespace internal
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace internal
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
 #endif

@@ -26,9 +26,8 @@ public:
   typedef typename GeomTraits::Point_3 Point_3;
   typedef typename GeomTraits::Vector_3 Vector_3;
 
-  Local_frame(const Point_3& evaluation_point, double radius, const char* class_name,
-              bool normalize_normals = true)
-    : m_radius(radius), m_normalize_normals(normalize_normals)
+  Local_frame(const Point_3& evaluation_point, double radius, const char* class_name, bool normalize_normals = true)
+      : m_radius(radius), m_normalize_normals(normalize_normals)
   {
     check_radius(radius, class_name);
     m_center[0] = CGAL::to_double(evaluation_point.x());
@@ -75,8 +74,8 @@ private:
   bool m_normalize_normals;
 };
 
-} // namespace internal
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace internal
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
 #endif

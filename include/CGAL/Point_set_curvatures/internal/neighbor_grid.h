@@ -63,12 +63,11 @@ inline double grid_cell_coordinate(double x, double side)
 // from the origin (where cell coordinates would lose their exactness); `dims` receives the
 // counts per axis. Extents that overflow (coordinates near +-1e308) give an infinite side:
 // one cell holds everything.
-inline double grid_cell_size(const double lo[3], const double hi[3], double radius,
-                             double extra_cells, double dims[3])
+inline double grid_cell_size(const double lo[3], const double hi[3], double radius, double extra_cells, double dims[3])
 {
   double side = radius;
-  if(!(std::isfinite(hi[0] - lo[0]) && std::isfinite(hi[1] - lo[1]) &&
-       std::isfinite(hi[2] - lo[2]) && std::isfinite(radius)))
+  if(!(std::isfinite(hi[0] - lo[0]) && std::isfinite(hi[1] - lo[1]) && std::isfinite(hi[2] - lo[2]) &&
+       std::isfinite(radius)))
     side = std::numeric_limits<double>::infinity();
   constexpr double max_cell = 1125899906842624.0;  // 2^50
   for(;;)
@@ -144,8 +143,7 @@ public:
   // The cell holding the point at position p of the sorted order (p < number_of_points()).
   std::size_t cell_of_point(std::uint32_t p) const
   {
-    return static_cast<std::size_t>(std::upper_bound(m_start.begin(), m_start.end() - 1, p) -
-                                    m_start.begin()) - 1;
+    return static_cast<std::size_t>(std::upper_bound(m_start.begin(), m_start.end() - 1, p) - m_start.begin()) - 1;
   }
 
   // Visits the cells [first_cell, last_cell) in order. For each cell, `visit(cell_points,
@@ -166,8 +164,7 @@ public:
     std::size_t cursor[9];
     const Key k0 = m_keys[first_cell];
     for(int r = 0; r < 9; ++r)
-      cursor[r] = std::lower_bound(m_keys.begin(), m_keys.end(), k0 + offset[r] - 1 - shift) -
-                  m_keys.begin();
+      cursor[r] = std::lower_bound(m_keys.begin(), m_keys.end(), k0 + offset[r] - 1 - shift) - m_keys.begin();
 
     const std::size_t n_cells = m_keys.size();
     Index_range rows[9];
@@ -268,8 +265,8 @@ void sort_by_key_then_index(std::vector<Keyed>& v, std::vector<Keyed>& scratch,
   }
 }
 
-} // namespace internal
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace internal
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
 #endif

@@ -123,7 +123,7 @@ template <int P>
 inline double tangential_axis_ratio(const Neighborhood& nb)
 {
   const double l = std::sqrt(nb.query_normal[0] * nb.query_normal[0] + nb.query_normal[1] * nb.query_normal[1] +
-                              nb.query_normal[2] * nb.query_normal[2]);
+                             nb.query_normal[2] * nb.query_normal[2]);
   if(!(l > 0))
     return 0;
   const double n[3] = {nb.query_normal[0] / l, nb.query_normal[1] / l, nb.query_normal[2] / l};
@@ -184,8 +184,8 @@ struct Normal_field_sums
   }
 };
 
-} // namespace internal
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace internal
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
 #endif

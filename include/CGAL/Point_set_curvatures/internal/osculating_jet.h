@@ -23,7 +23,8 @@
 #define CGAL_POINT_SET_CURVATURES_INTERNAL_OSCULATING_JET_H
 
 #ifndef CGAL_EIGEN3_ENABLED
-#error "CGAL::estimate_jet_curvatures() needs Eigen 3 (CGAL::Monge_via_jet_fitting solves with CGAL::Eigen_svd): in CMake, find_package(Eigen3 3.3 REQUIRED), include(CGAL_Eigen3_support) and link CGAL::Eigen3_support."
+#error                                                                                                                 \
+  "CGAL::estimate_jet_curvatures() needs Eigen 3 (CGAL::Monge_via_jet_fitting solves with CGAL::Eigen_svd): in CMake, find_package(Eigen3 3.3 REQUIRED), include(CGAL_Eigen3_support) and link CGAL::Eigen3_support."
 #endif
 
 #include <CGAL/Point_set_curvatures/internal/local_estimate.h>
@@ -86,13 +87,11 @@ inline Local_estimate osculating_jet_estimate(const Neighborhood& nb, const Jet_
   }
 
   Fitter fitter;
-  typename Fitter::Monge_form monge =
-    fitter(points.begin(), points.end(), degrees.fitting, degrees.monge);
+  typename Fitter::Monge_form monge = fitter(points.begin(), points.end(), degrees.fitting, degrees.monge);
   const double condition = fitter.condition_number();
   if(!(condition < jet_max_condition_number))  // also NaN
     return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
-  monge.comply_wrt_given_normal(
-    K::Vector_3(nb.query_normal[0], nb.query_normal[1], nb.query_normal[2]));
+  monge.comply_wrt_given_normal(K::Vector_3(nb.query_normal[0], nb.query_normal[1], nb.query_normal[2]));
 
   const double inv_r = 1.0 / nb.radius;
   const K::Vector_3 n = monge.normal_direction();
@@ -111,16 +110,15 @@ inline Local_estimate osculating_jet_estimate(const Neighborhood& nb, const Jet_
   }
   bool finite = std::isfinite(e.k_min) && std::isfinite(e.k_max);
   for(int i = 0; i < 3; ++i)
-    finite = finite && std::isfinite(e.normal[i]) && std::isfinite(e.d_min[i]) &&
-             std::isfinite(e.d_max[i]);
+    finite = finite && std::isfinite(e.normal[i]) && std::isfinite(e.d_min[i]) && std::isfinite(e.d_max[i]);
   if(!finite)
     return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
   e.status = Curvature_estimate_status::VALID;
   return e;
 }
 
-} // namespace internal
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace internal
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
 #endif

@@ -54,8 +54,12 @@ struct Neighborhood_pca
     for(std::size_t i = 0; i < nb.size; ++i)
     {
       const double d[3] = {nb.qx[i] - centroid[0], nb.qy[i] - centroid[1], nb.qz[i] - centroid[2]};
-      cov[0] += d[0] * d[0]; cov[1] += d[0] * d[1]; cov[2] += d[0] * d[2];
-      cov[3] += d[1] * d[1]; cov[4] += d[1] * d[2]; cov[5] += d[2] * d[2];
+      cov[0] += d[0] * d[0];
+      cov[1] += d[0] * d[1];
+      cov[2] += d[0] * d[2];
+      cov[3] += d[1] * d[1];
+      cov[4] += d[1] * d[2];
+      cov[5] += d[2] * d[2];
     }
     for(double& c : cov)
       c *= inv;
@@ -79,8 +83,7 @@ inline Local_estimate pca_plane_mean_curvature(const Neighborhood& nb)
     return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
   const double* n = pca.vectors[0];
   // distance from the query (the origin) to the plane through the centroid, over r
-  const double distance =
-    std::abs(n[0] * pca.centroid[0] + n[1] * pca.centroid[1] + n[2] * pca.centroid[2]);
+  const double distance = std::abs(n[0] * pca.centroid[0] + n[1] * pca.centroid[1] + n[2] * pca.centroid[2]);
   Local_estimate e;
   orient_like(n, nb.query_normal, e.normal);
   e.mean = 4.0 * distance / nb.radius;  // |H| = 4 d / r², d = distance * r
@@ -88,8 +91,8 @@ inline Local_estimate pca_plane_mean_curvature(const Neighborhood& nb)
   return e;
 }
 
-} // namespace internal
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace internal
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
 #endif

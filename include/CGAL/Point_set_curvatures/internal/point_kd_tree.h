@@ -136,8 +136,7 @@ private:
   }
 
   template <class ConcurrencyTag>
-  void build_node(std::uint32_t node, std::uint32_t begin, std::uint32_t end, std::vector<Item>& items,
-                  int depth)
+  void build_node(std::uint32_t node, std::uint32_t begin, std::uint32_t end, std::vector<Item>& items, int depth)
   {
     Node& nd = m_nodes[node];
     nd.begin = begin;
@@ -264,8 +263,8 @@ private:
   std::vector<Node> m_nodes;
 };
 
-} // namespace internal
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace internal
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
 #endif

@@ -139,12 +139,12 @@ private:
   double m_radius = 1, m_cell = 1;
   double m_base[3] = {0, 0, 0};  // lattice cell coordinate of the grid's first cell
   double m_dim[3] = {1, 1, 1};
-  std::vector<Key> m_keys;            // sorted keys of the non-empty cells
-  std::vector<std::size_t> m_start;   // first point of each cell, plus the total
+  std::vector<Key> m_keys;           // sorted keys of the non-empty cells
+  std::vector<std::size_t> m_start;  // first point of each cell, plus the total
 };
 
-} // namespace internal
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace internal
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
 #endif

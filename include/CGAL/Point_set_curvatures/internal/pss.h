@@ -79,12 +79,15 @@ inline Local_estimate pss_estimate(const Neighborhood& nb)
       const double d[3] = {nb.qx[i] - c[0], nb.qy[i] - c[1], nb.qz[i] - c[2]};
       const double w = pss_weight(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
       sum_w += w;
-      cov[0] += w * d[0] * d[0]; cov[1] += w * d[0] * d[1]; cov[2] += w * d[0] * d[2];
-      cov[3] += w * d[1] * d[1]; cov[4] += w * d[1] * d[2]; cov[5] += w * d[2] * d[2];
+      cov[0] += w * d[0] * d[0];
+      cov[1] += w * d[0] * d[1];
+      cov[2] += w * d[0] * d[2];
+      cov[3] += w * d[1] * d[1];
+      cov[4] += w * d[1] * d[2];
+      cov[5] += w * d[2] * d[2];
     }
     double values[3], vectors[3][3];
-    if(!(sum_w > 0) || !symmetric_eigen_3(cov, values, vectors) || !(values[2] > 0) ||
-       !(values[1] > 1e-12 * values[2]))
+    if(!(sum_w > 0) || !symmetric_eigen_3(cov, values, vectors) || !(values[2] > 0) || !(values[1] > 1e-12 * values[2]))
       return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
     orient_like(vectors[0], up, n);
     // t: weighted mean height of the neighbours above x along n (same weights)
@@ -92,8 +95,7 @@ inline Local_estimate pss_estimate(const Neighborhood& nb)
     for(std::size_t i = 0; i < nb.size; ++i)
     {
       const double d[3] = {nb.qx[i] - c[0], nb.qy[i] - c[1], nb.qz[i] - c[2]};
-      t += pss_weight(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) *
-           (n[0] * nb.qx[i] + n[1] * nb.qy[i] + n[2] * nb.qz[i]);
+      t += pss_weight(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) * (n[0] * nb.qx[i] + n[1] * nb.qy[i] + n[2] * nb.qz[i]);
     }
     t /= sum_w;
     double moved = 0;
@@ -126,8 +128,8 @@ inline Local_estimate pss_estimate(const Neighborhood& nb)
   return e;
 }
 
-} // namespace internal
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace internal
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
 #endif

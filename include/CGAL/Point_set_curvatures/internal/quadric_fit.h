@@ -95,9 +95,15 @@ struct Weighted_covariance
                               load_pair(nb.qz, i, nb.size, 0.0)};
       const Lane_pair w = pss_weight(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
       sums[0] += w;
-      sums[1] += w * q[0]; sums[2] += w * q[1]; sums[3] += w * q[2];
-      sums[4] += w * q[0] * q[0]; sums[5] += w * q[0] * q[1]; sums[6] += w * q[0] * q[2];
-      sums[7] += w * q[1] * q[1]; sums[8] += w * q[1] * q[2]; sums[9] += w * q[2] * q[2];
+      sums[1] += w * q[0];
+      sums[2] += w * q[1];
+      sums[3] += w * q[2];
+      sums[4] += w * q[0] * q[0];
+      sums[5] += w * q[0] * q[1];
+      sums[6] += w * q[0] * q[2];
+      sums[7] += w * q[1] * q[1];
+      sums[8] += w * q[1] * q[2];
+      sums[9] += w * q[2] * q[2];
     }
     const double sw = fold(sums[0]);
     double c[3], cov[6];
@@ -122,8 +128,7 @@ struct Weighted_covariance
 // (weighted_line_spread_ratio).
 inline bool spreads_along_one_line(const double values[3])
 {
-  return !(values[2] > 0) ||
-         !(values[1] >= weighted_line_spread_ratio * weighted_line_spread_ratio * values[2]);
+  return !(values[2] > 0) || !(values[1] >= weighted_line_spread_ratio * weighted_line_spread_ratio * values[2]);
 }
 
 // True if a covariance of positions whose eigenvalues are `values` (ascending) spreads in
@@ -135,8 +140,8 @@ inline bool spreads_in_two_directions(const double values[3])
 
 struct Quadric_fit
 {
-  double t1[3], t2[3], n0[3];  // the frame of the fit, n0 oriented like the query's normal
-  double a[6];                 // the height field's coefficients (scaled frame)
+  double t1[3], t2[3], n0[3];      // the frame of the fit, n0 oriented like the query's normal
+  double a[6];                     // the height field's coefficients (scaled frame)
   Quadratic_height_fit equations;  // the weighted normal equations solved, penalty included
 
   // Neighbours i and i + 1 (lane_pair.h; one outside the kernel where i + 1 is past the end) in
@@ -270,7 +275,7 @@ public:
   bool variance_factors(const Neighborhood& nb, const double (*g)[6], int count, double* factor, double& sigma2) const
   {
     double b[6][6] = {};
-    Lane_pair sums[2] = {};  // sum w, sum w e²
+    Lane_pair sums[2] = {};                  // sum w, sum w e²
     Quadratic_sums<Lane_pair> squared_sums;  // the moments with weights w²
     const double* cache =
       frame_cache && frame_cache->size() == frame_cache_size(nb.size) ? frame_cache->data() : nullptr;
@@ -350,8 +355,8 @@ public:
   }
 };
 
-} // namespace internal
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace internal
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
 #endif

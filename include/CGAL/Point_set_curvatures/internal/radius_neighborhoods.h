@@ -45,8 +45,7 @@ public:
     const std::size_t stride = cap + 8;
     std::vector<double> grown(columns * stride);
     for(int a = 0; a < columns; ++a)
-      std::copy(m_data.begin() + a * m_stride, m_data.begin() + a * m_stride + m_size,
-                grown.begin() + a * stride);
+      std::copy(m_data.begin() + a * m_stride, m_data.begin() + a * m_stride + m_size, grown.begin() + a * stride);
     m_data.swap(grown);
     m_index.resize(cap);
     m_capacity = cap;
@@ -70,16 +69,16 @@ private:
 struct Sorted_cloud
 {
   Neighbor_grid grid;
-  std::vector<std::uint32_t> input_index;  // grid order -> position in the input range
-  std::vector<double> position;            // xyz per point, grid order
-  std::vector<double> normal;              // normal per point (unit if asked), grid order
+  std::vector<std::uint32_t> input_index;       // grid order -> position in the input range
+  std::vector<double> position;                 // xyz per point, grid order
+  std::vector<double> normal;                   // normal per point (unit if asked), grid order
   double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};  // bounding box of the usable points
   // With a tile: own[k] != 0 for the tile's own points (the only ones estimated), grid order.
   // Empty without a tile: every point is estimated.
   std::vector<char> own;
-  std::size_t own_count = 0;  // points estimated (own points, or every usable point)
+  std::size_t own_count = 0;          // points estimated (own points, or every usable point)
   std::vector<double> sample_weight;  // per point, grid order; empty: equal weights
-  std::vector<double> reach;  // per point, grid order (Neighborhood_options::point_reach); empty: none
+  std::vector<double> reach;          // per point, grid order (Neighborhood_options::point_reach); empty: none
 
   bool is_own(std::size_t k) const { return own.empty() || own[k] != 0; }
 };
@@ -99,9 +98,8 @@ inline std::size_t prepare_for_candidates(Neighbor_buffer& buffer, const Index_r
 // Fills the buffer's columns with the points `index[0..size)` of `cloud` in the scaled
 // centred frame of point `query` and radius `radius`, and calls visit(input_index, nb).
 template <class Visitor>
-void visit_neighborhood(const Sorted_cloud& cloud, std::uint32_t query, double radius,
-                        const std::uint32_t* index, std::size_t size, Neighbor_buffer& buffer,
-                        Visitor& visit)
+void visit_neighborhood(const Sorted_cloud& cloud, std::uint32_t query, double radius, const std::uint32_t* index,
+                        std::size_t size, Neighbor_buffer& buffer, Visitor& visit)
 {
   const double* position = cloud.position.data();
   const double* normal = cloud.normal.data();
@@ -113,8 +111,12 @@ void visit_neighborhood(const Sorted_cloud& cloud, std::uint32_t query, double r
   {
     const double* p = position + 3 * std::size_t(index[s]);
     const double* n = normal + 3 * std::size_t(index[s]);
-    qx[s] = (p[0] - x[0]) * inv_r; qy[s] = (p[1] - x[1]) * inv_r; qz[s] = (p[2] - x[2]) * inv_r;
-    nx[s] = n[0]; ny[s] = n[1]; nz[s] = n[2];
+    qx[s] = (p[0] - x[0]) * inv_r;
+    qy[s] = (p[1] - x[1]) * inv_r;
+    qz[s] = (p[2] - x[2]) * inv_r;
+    nx[s] = n[0];
+    ny[s] = n[1];
+    nz[s] = n[2];
   }
   const double* sample_weight = nullptr;
   if(!cloud.sample_weight.empty())
@@ -127,10 +129,16 @@ void visit_neighborhood(const Sorted_cloud& cloud, std::uint32_t query, double r
   buffer.set_size(size);
   Neighborhood nb;
   nb.size = size;
-  nb.qx = qx; nb.qy = qy; nb.qz = qz;
-  nb.nx = nx; nb.ny = ny; nb.nz = nz;
+  nb.qx = qx;
+  nb.qy = qy;
+  nb.qz = qz;
+  nb.nx = nx;
+  nb.ny = ny;
+  nb.nz = nz;
   nb.radius = radius;
-  nb.center[0] = x[0]; nb.center[1] = x[1]; nb.center[2] = x[2];
+  nb.center[0] = x[0];
+  nb.center[1] = x[1];
+  nb.center[2] = x[2];
   for(int a = 0; a < 3; ++a)
     nb.query_normal[a] = normal[3 * std::size_t(query) + a];
   nb.index = index;
@@ -156,8 +164,8 @@ inline void sort_in_lattice_order(const Sorted_cloud& cloud, double side, std::u
 // them into `buffer` (scaled centred frame) and calls visit(input_index, nb). A range may
 // start or end inside a cell, so that a cell holding many points is shared between tasks.
 template <class Visitor>
-void visit_points(const Sorted_cloud& cloud, double radius, std::uint32_t first,
-                  std::uint32_t last, Neighbor_buffer& buffer, Visitor& visit)
+void visit_points(const Sorted_cloud& cloud, double radius, std::uint32_t first, std::uint32_t last,
+                  Neighbor_buffer& buffer, Visitor& visit)
 {
   if(first >= last)
     return;
@@ -177,8 +185,7 @@ void visit_points(const Sorted_cloud& cloud, double radius, std::uint32_t first,
     {
       if(!cloud.is_own(query))
         continue;
-      const double x0 = position[3 * query], x1 = position[3 * query + 1],
-                   x2 = position[3 * query + 2];
+      const double x0 = position[3 * query], x1 = position[3 * query + 1], x2 = position[3 * query + 2];
       // 1. select: branch-free, the index is always written and kept if inside the ball
       std::size_t k = 0;
       for(int r = 0; r < 9; ++r)
@@ -198,8 +205,8 @@ void visit_points(const Sorted_cloud& cloud, double radius, std::uint32_t first,
   });
 }
 
-} // namespace internal
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace internal
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
 #endif

@@ -18,23 +18,24 @@ namespace internal {
 // Index of the symmetric 3x3 entry (i, j) in the packed order xx xy xz yy yz zz.
 inline constexpr int sym_index(int i, int j)
 {
-  return (i <= j) ? (i == 0 ? j : (i == 1 ? 2 + j : 5))
-                  : (j == 0 ? i : (j == 1 ? 2 + i : 5));
+  return (i <= j) ? (i == 0 ? j : (i == 1 ? 2 + j : 5)) : (j == 0 ? i : (j == 1 ? 2 + i : 5));
 }
 
 struct Second_order_jet
 {
-  double v = 0;       // value
-  double g[3] = {};   // gradient
-  double h[6] = {};   // Hessian, packed xx xy xz yy yz zz
+  double v = 0;      // value
+  double g[3] = {};  // gradient
+  double h[6] = {};  // Hessian, packed xx xy xz yy yz zz
 };
 
 inline Second_order_jet operator+(const Second_order_jet& a, const Second_order_jet& b)
 {
   Second_order_jet r;
   r.v = a.v + b.v;
-  for(int i = 0; i < 3; ++i) r.g[i] = a.g[i] + b.g[i];
-  for(int i = 0; i < 6; ++i) r.h[i] = a.h[i] + b.h[i];
+  for(int i = 0; i < 3; ++i)
+    r.g[i] = a.g[i] + b.g[i];
+  for(int i = 0; i < 6; ++i)
+    r.h[i] = a.h[i] + b.h[i];
   return r;
 }
 
@@ -42,8 +43,10 @@ inline Second_order_jet operator-(const Second_order_jet& a, const Second_order_
 {
   Second_order_jet r;
   r.v = a.v - b.v;
-  for(int i = 0; i < 3; ++i) r.g[i] = a.g[i] - b.g[i];
-  for(int i = 0; i < 6; ++i) r.h[i] = a.h[i] - b.h[i];
+  for(int i = 0; i < 3; ++i)
+    r.g[i] = a.g[i] - b.g[i];
+  for(int i = 0; i < 6; ++i)
+    r.h[i] = a.h[i] - b.h[i];
   return r;
 }
 
@@ -51,8 +54,10 @@ inline Second_order_jet operator*(double s, const Second_order_jet& a)
 {
   Second_order_jet r;
   r.v = s * a.v;
-  for(int i = 0; i < 3; ++i) r.g[i] = s * a.g[i];
-  for(int i = 0; i < 6; ++i) r.h[i] = s * a.h[i];
+  for(int i = 0; i < 3; ++i)
+    r.g[i] = s * a.g[i];
+  for(int i = 0; i < 6; ++i)
+    r.h[i] = s * a.h[i];
   return r;
 }
 
@@ -61,7 +66,8 @@ inline Second_order_jet operator*(const Second_order_jet& a, const Second_order_
 {
   Second_order_jet r;
   r.v = a.v * b.v;
-  for(int i = 0; i < 3; ++i) r.g[i] = a.v * b.g[i] + b.v * a.g[i];
+  for(int i = 0; i < 3; ++i)
+    r.g[i] = a.v * b.g[i] + b.v * a.g[i];
   for(int i = 0; i < 3; ++i)
     for(int j = i; j < 3; ++j)
     {
@@ -77,7 +83,8 @@ inline Second_order_jet reciprocal(const Second_order_jet& b)
   const double iv = 1.0 / b.v, iv2 = iv * iv, two_iv3 = 2.0 * iv2 * iv;
   Second_order_jet r;
   r.v = iv;
-  for(int i = 0; i < 3; ++i) r.g[i] = -iv2 * b.g[i];
+  for(int i = 0; i < 3; ++i)
+    r.g[i] = -iv2 * b.g[i];
   for(int i = 0; i < 3; ++i)
     for(int j = i; j < 3; ++j)
     {
@@ -87,8 +94,8 @@ inline Second_order_jet reciprocal(const Second_order_jet& b)
   return r;
 }
 
-} // namespace internal
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace internal
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
 #endif

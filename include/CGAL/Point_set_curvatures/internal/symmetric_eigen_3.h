@@ -22,8 +22,7 @@ inline bool symmetric_eigen_3(const double packed[6], double values[3], double v
 
 // Matrices whose largest entry is subnormal: multiply by 2^600 first (exact), divide the
 // eigenvalues back.
-inline bool symmetric_eigen_3_rescaled(const double packed[6], double scale, double values[3],
-                                       double vectors[3][3])
+inline bool symmetric_eigen_3_rescaled(const double packed[6], double scale, double values[3], double vectors[3][3])
 {
   const double up = std::ldexp(1.0, 600);
   double scaled[6];
@@ -94,9 +93,12 @@ inline bool symmetric_eigen_3(const double packed[6], double values[3], double v
     }
   }
   int order[3] = {0, 1, 2};
-  if(a[order[0]][order[0]] > a[order[1]][order[1]]) std::swap(order[0], order[1]);
-  if(a[order[1]][order[1]] > a[order[2]][order[2]]) std::swap(order[1], order[2]);
-  if(a[order[0]][order[0]] > a[order[1]][order[1]]) std::swap(order[0], order[1]);
+  if(a[order[0]][order[0]] > a[order[1]][order[1]])
+    std::swap(order[0], order[1]);
+  if(a[order[1]][order[1]] > a[order[2]][order[2]])
+    std::swap(order[1], order[2]);
+  if(a[order[0]][order[0]] > a[order[1]][order[1]])
+    std::swap(order[0], order[1]);
   for(int k = 0; k < 3; ++k)
   {
     values[k] = a[order[k]][order[k]] * scale;
@@ -106,8 +108,8 @@ inline bool symmetric_eigen_3(const double packed[6], double values[3], double v
   return true;
 }
 
-} // namespace internal
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace internal
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
 #endif

@@ -165,10 +165,7 @@ struct Tangent_cell_scratch
   struct Projected
   {
     double d2, u, v;
-    bool operator<(const Projected& o) const
-    {
-      return d2 < o.d2 || (d2 == o.d2 && (u < o.u || (u == o.u && v < o.v)));
-    }
+    bool operator<(const Projected& o) const { return d2 < o.d2 || (d2 == o.d2 && (u < o.u || (u == o.u && v < o.v))); }
   };
   std::vector<Projected> projected;
 };
@@ -236,8 +233,8 @@ inline double tangent_voronoi_area(const Neighborhood& nb, double bound, Tangent
   return cell.area_in_disk(bound) * nb.radius * nb.radius / double(1 + copies);
 }
 
-} // namespace internal
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace internal
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
 #endif

@@ -280,10 +280,9 @@ bool vcm_cell_covariances(const std::vector<CGAL::Epick::Point_3>& vcm_points, c
 // radii), the VCM of the usable points (Delaunay triangulation, cells, convolution), then one
 // diagonalisation per point.
 template <class ConcurrencyTag, class PointRange, class NamedParameters>
-std::vector<Curvature_estimate<
-  typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
-estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double radius,
-                            const NamedParameters& np, const char* function_name)
+std::vector<Curvature_estimate<typename Point_set_processing_3_np_helper<PointRange, NamedParameters>::Geom_traits> >
+estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double radius, const NamedParameters& np,
+                            const char* function_name)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -292,15 +291,15 @@ estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double 
   typedef CGAL::Epick::Point_3 Vcm_point;
 
   const bool by_count = !radius_given;
-  const bool offset_given = !CGAL::parameters::is_default_parameter<
-    NamedParameters, Point_set_curvatures::internal_np::vcm_offset_radius_t>::value;
-  const double offset_parameter = choose_parameter(
-    get_parameter(np, Point_set_curvatures::internal_np::vcm_offset_radius), 0.0);
+  const bool offset_given =
+    !CGAL::parameters::is_default_parameter<NamedParameters,
+                                            Point_set_curvatures::internal_np::vcm_offset_radius_t>::value;
+  const double offset_parameter =
+    choose_parameter(get_parameter(np, Point_set_curvatures::internal_np::vcm_offset_radius), 0.0);
   if(offset_given && (!(offset_parameter > 0) || !std::isfinite(offset_parameter)))
   {
     std::ostringstream msg;
-    msg << function_name << ": parameter 'vcm_offset_radius' must be positive and finite, got "
-        << offset_parameter;
+    msg << function_name << ": parameter 'vcm_offset_radius' must be positive and finite, got " << offset_parameter;
     throw std::invalid_argument(msg.str());
   }
   const std::function<bool(double)> callback =
@@ -314,8 +313,7 @@ estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double 
   // approximated.
   if(!choose_parameter(get_parameter(np, internal_np::tile), Tile::whole_space()).is_whole_space())
     throw std::invalid_argument(std::string(function_name) + ": parameter 'tile' is not supported by VCM");
-  const std::size_t min_count =
-    (std::max)(vcm_min_neighbors, min_neighbors_parameter(np, default_min_neighbors::vcm));
+  const std::size_t min_count = (std::max)(vcm_min_neighbors, min_neighbors_parameter(np, default_min_neighbors::vcm));
   Neighborhood_options options;  // the callback reports the VCM steps below, not this pass
   options.normalize_normals = false;
   options.function_name = function_name;
@@ -398,10 +396,11 @@ estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double 
   // < its own radius, as for the other estimators), summed in the order of the input index.
   typedef CGAL::Simple_cartesian<double>::Point_3 Search_point;
   std::vector<Search_point> search_points;
-  typedef boost::iterator_property_map<const Search_point*,
-                                       boost::typed_identity_property_map<std::uint32_t> > Search_map;
+  typedef boost::iterator_property_map<const Search_point*, boost::typed_identity_property_map<std::uint32_t> >
+    Search_map;
   typedef CGAL::Search_traits_adapter<std::uint32_t, Search_map,
-                                      CGAL::Search_traits_3<CGAL::Simple_cartesian<double> > > Search_traits;
+                                      CGAL::Search_traits_3<CGAL::Simple_cartesian<double> > >
+    Search_traits;
   typedef CGAL::Kd_tree<Search_traits> Tree;
   typedef CGAL::Fuzzy_sphere<Search_traits> Ball;
   std::unique_ptr<Tree> tree;
@@ -462,8 +461,8 @@ estimate_vcm_at_every_point(const PointRange& points, bool radius_given, double 
   return results;
 }
 
-} // namespace internal
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace internal
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
 #endif

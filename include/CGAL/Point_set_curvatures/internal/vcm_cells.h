@@ -47,7 +47,7 @@ namespace internal {
 // orientation), in coordinates centred at the cell's point.
 struct Vcm_polytope
 {
-  std::vector<double> xyz;             // the faces' vertices, one after the other
+  std::vector<double> xyz;              // the faces' vertices, one after the other
   std::vector<std::uint32_t> begin{0};  // face f holds vertices begin[f] to begin[f + 1] - 1
 
   std::size_t faces() const { return begin.size() - 1; }
@@ -72,8 +72,8 @@ struct Vcm_polytope
 struct Vcm_cell_scratch
 {
   Vcm_polytope cell, next;
-  std::vector<double> side;                          // per vertex of `cell`: n.x - c
-  std::vector<std::array<double, 3> > section;       // the points of the cut
+  std::vector<double> side;                                          // per vertex of `cell`: n.x - c
+  std::vector<std::array<double, 3> > section;                       // the points of the cut
   std::vector<std::tuple<double, double, double, double> > ordered;  // (angle, x, y, z)
 };
 
@@ -140,8 +140,8 @@ inline bool clip_vcm_cell(const double n[3], double c, Vcm_cell_scratch& s)
     const double nn = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     const double m[3] = {n[0] / nn, n[1] / nn, n[2] / nn};
     const int k = std::abs(m[0]) <= std::abs(m[1]) && std::abs(m[0]) <= std::abs(m[2]) ? 0
-                  : std::abs(m[1]) <= std::abs(m[2])                                  ? 1
-                                                                                      : 2;
+                  : std::abs(m[1]) <= std::abs(m[2])                                   ? 1
+                                                                                       : 2;
     double u[3] = {0, 0, 0};
     u[k] = 1;
     const double d = u[0] * m[0] + u[1] * m[1] + u[2] * m[2];
@@ -155,8 +155,8 @@ inline bool clip_vcm_cell(const double n[3], double c, Vcm_cell_scratch& s)
     for(const auto& p : s.section)
     {
       const double r[3] = {p[0] - centre[0], p[1] - centre[1], p[2] - centre[2]};
-      s.ordered.emplace_back(std::atan2(r[0] * w[0] + r[1] * w[1] + r[2] * w[2], r[0] * u[0] + r[1] * u[1] + r[2] * u[2]),
-                             p[0], p[1], p[2]);
+      s.ordered.emplace_back(
+        std::atan2(r[0] * w[0] + r[1] * w[1] + r[2] * w[2], r[0] * u[0] + r[1] * u[1] + r[2] * u[2]), p[0], p[1], p[2]);
     }
     std::sort(s.ordered.begin(), s.ordered.end());
     for(const auto& o : s.ordered)
@@ -181,12 +181,10 @@ inline void vcm_ball_polytope(double R, Vcm_cell_scratch& s)
   P.clear();
   const double h = 2 * R;
   // the cube's six faces, counter-clockwise seen from outside
-  static const int corners[6][4][3] = {{{-1, -1, -1}, {-1, -1, 1}, {-1, 1, 1}, {-1, 1, -1}},
-                                       {{1, -1, -1}, {1, 1, -1}, {1, 1, 1}, {1, -1, 1}},
-                                       {{-1, -1, -1}, {1, -1, -1}, {1, -1, 1}, {-1, -1, 1}},
-                                       {{-1, 1, -1}, {-1, 1, 1}, {1, 1, 1}, {1, 1, -1}},
-                                       {{-1, -1, -1}, {-1, 1, -1}, {1, 1, -1}, {1, -1, -1}},
-                                       {{-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}}};
+  static const int corners[6][4][3] = {
+    {{-1, -1, -1}, {-1, -1, 1}, {-1, 1, 1}, {-1, 1, -1}}, {{1, -1, -1}, {1, 1, -1}, {1, 1, 1}, {1, -1, 1}},
+    {{-1, -1, -1}, {1, -1, -1}, {1, -1, 1}, {-1, -1, 1}}, {{-1, 1, -1}, {-1, 1, 1}, {1, 1, 1}, {1, 1, -1}},
+    {{-1, -1, -1}, {-1, 1, -1}, {1, 1, -1}, {1, -1, -1}}, {{-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}}};
   for(const auto& face : corners)
   {
     for(const auto& c : face)
@@ -255,8 +253,8 @@ inline std::array<double, 6> vcm_covariance(const Vcm_polytope& ball, const doub
   return vcm_cell_covariance(s);
 }
 
-} // namespace internal
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace internal
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
-#endif // CGAL_POINT_SET_CURVATURES_INTERNAL_VCM_CELLS_H
+#endif  // CGAL_POINT_SET_CURVATURES_INTERNAL_VCM_CELLS_H

@@ -48,8 +48,8 @@ constexpr std::size_t wavejet_min_neighbors = quadratic_height_coefficients;
 
 // Least-squares order-2 wavejet of the neighbourhood over the frame (t1, t2, n) at x, as
 // the coefficients of the equivalent quadratic. False if the system is singular.
-inline bool fit_order2_wavejet(const Neighborhood& nb, const double t1[3], const double t2[3],
-                               const double n[3], double a[6])
+inline bool fit_order2_wavejet(const Neighborhood& nb, const double t1[3], const double t2[3], const double n[3],
+                               double a[6])
 {
   Quadratic_height_fit fit;
   for(std::size_t i = 0; i < nb.size; ++i)
@@ -92,15 +92,14 @@ inline Local_estimate wavejet_estimate(const Neighborhood& nb)
 
   // 4. refit in the corrected frame, curvatures of the fitted graph above x
   Local_estimate e;
-  if(!fit_order2_wavejet(nb, t1, t2, nc, a) ||
-     !set_height_field_curvatures(a, t1, t2, nc, 1.0 / nb.radius, e))
+  if(!fit_order2_wavejet(nb, t1, t2, nc, a) || !set_height_field_curvatures(a, t1, t2, nc, 1.0 / nb.radius, e))
     return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
   e.status = Curvature_estimate_status::VALID;
   return e;
 }
 
-} // namespace internal
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace internal
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
 #endif

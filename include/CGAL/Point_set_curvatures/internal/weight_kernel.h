@@ -91,8 +91,8 @@ decltype(auto) with_weight_kernel(Apss_weight_kernel kernel, Function&& f)
   }
 }
 
-} // namespace internal
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace internal
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
 #endif

@@ -64,8 +64,8 @@ private:
   double m_first_time = -1, m_first_fraction = 0;
 };
 
-} // namespace internal
-} // namespace Point_set_curvatures
-} // namespace CGAL
+}  // namespace internal
+}  // namespace Point_set_curvatures
+}  // namespace CGAL
 
-#endif // CGAL_POINT_SET_CURVATURES_INTERNAL_WORK_RATE_H
+#endif  // CGAL_POINT_SET_CURVATURES_INTERNAL_WORK_RATE_H
