@@ -112,6 +112,50 @@ public:
            s(b[0], e[1], b[2]) + s(e[0], b[1], b[2]) - s(b[0], b[1], b[2]);
   }
 
+  // The first halo of a tile by count: the smallest h of the ladder start, 1.25 start, ... such
+  // that around every occupied cell of the box [b, e] (a tile's core, clamped to the bounds) the
+  // cell grown by h meets cells holding at least `count` points. A guess, not a bound: at_most()
+  // counts every cell the grown box meets, and a point's neighbourhood is a ball (see
+  // tile_first_halo() for the margins).
+  double halo_for_count(const double b[3], const double e[3], double count, double start) const
+  {
+    std::size_t cb[3], ce[3];
+    for(int a = 0; a < 3; ++a)
+    {
+      cb[a] = cell(a, b[a]);
+      ce[a] = cell(a, e[a]);
+    }
+    count = std::min(count, double(m_sum.back()));  // (at most every point: a halo over the grid)
+    double halo = start;
+    for(std::size_t z = cb[2]; z <= ce[2]; ++z)
+      for(std::size_t y = cb[1]; y <= ce[1]; ++y)
+        for(std::size_t x = cb[0]; x <= ce[0]; ++x)
+        {
+          if(m_count[x + m_dims[0] * (y + m_dims[1] * z)] == 0)
+            continue;
+          const std::size_t i[3] = {x, y, z};
+          double l[3], h[3];
+          for(int a = 0; a < 3; ++a)
+          {
+            l[a] = 2 * (m_lo[a] + m_cell[a] * double(i[a]));
+            h[a] = 2 * (m_lo[a] + m_cell[a] * double(i[a] + 1));
+          }
+          // (the halo only grows: a cell that the current one serves costs one count)
+          for(int step = 0; step < 200; ++step, halo *= 1.25)
+          {
+            double gl[3], gh[3];
+            for(int a = 0; a < 3; ++a)
+            {
+              gl[a] = l[a] - halo;
+              gh[a] = h[a] + halo;
+            }
+            if(double(at_most(gl, gh)) >= count || !std::isfinite(halo))
+              break;
+          }
+        }
+    return halo;
+  }
+
 private:
   // the cell of coordinate v along axis a, clamped (monotonic in v; v not NaN)
   std::size_t cell(int a, double v) const
@@ -136,6 +180,42 @@ void tile_box(const PSC::Tile_grid& grid, std::size_t t, const double lo[3], con
     b[a] = std::max(tile.core.min(a), lo[a]) - halo;
     e[a] = std::min(tile.core.max(a), hi[a]) + halo;
   }
+}
+
+// How much more than the count k of a tiling by count a tile's first halo asks of the density
+// grid around each occupied cell of its core, and the factor on the halo found
+// (Density_grid::halo_for_count()): a neighbourhood is a ball where the grid counts boxes of
+// whole cells (4 / pi as many points in a square as in its disc), and with sample weights the
+// estimation needs the neighbours' own neighbours too. Against the halo of the cloud's mean
+// density for every tile (--orient +z, 2 cores, two alternating runs each, 2026-12-01):
+// lone-star.las (a terrestrial scan whose density varies a hundredfold) with --neighbors 40
+// under 50M 13.7-16.6 s -> 10.4-12.8 s (tiles read again 69 -> 40), under 150M 9.6-10.2 ->
+// 7.5-8.3 s (26 -> 9), the default scale under 50M 96.8 -> 87.1 s (336 -> 187, one run);
+// hexbin-crop.las under 5M 11.2-12.7 -> 9.4-9.9 s (292 tiles, the largest range 6723 -> 3922
+// points), under 20M within 2%; sample_c.las under 5M 2.9-3.1 -> 2.6-2.8 s; the same peaks
+// within 5%. Every output bitwise the in-memory one, as before. Tried:
+// count factor 8 (halo factor 1.15) cut lone-star's default re-reads to 38 (78 s) but made
+// the small airborne files' halos 3 times the needed ones (hexbin-crop under 5M 13.4 s); 1.27
+// left hexbin-crop 212 re-reads; halos grown from the previous tile's re-read made lone-star's
+// ranges 142K points against 88K.
+constexpr double first_halo_count_factor = 2;
+constexpr double first_halo_factor = 1.3;
+
+// The first halo of tile t of `grid` by count (`k` neighbours): first_halo_factor times the
+// halo that Density_grid::halo_for_count() finds around the tile's core from `least` up. A
+// tile asks for a larger halo when its estimation needs one (Halo_too_small), after work that
+// a first halo large enough saves; any halo gives the same estimates.
+double tile_first_halo(const PSC::Tile_grid& grid, std::size_t t, const Density_grid& density, const double lo[3],
+                       const double hi[3], std::size_t k, double least)
+{
+  const PSC::Tile tile = grid.tile(t, 0.0);
+  double b[3], e[3];
+  for(int a = 0; a < 3; ++a)
+  {
+    b[a] = std::max(tile.core.min(a), lo[a]);
+    e[a] = std::min(tile.core.max(a), hi[a]);
+  }
+  return first_halo_factor * density.halo_for_count(b, e, first_halo_count_factor * double(k), least);
 }
 
 // The most points of one tile with its halo, bounded from the density grid.
@@ -586,7 +666,11 @@ Tiled_report visit_tiles(const std::string& path, const Read_options& options, c
   {
     const std::size_t t = visited[v];
     const std::string name = cat("tile ", t + 1, "/", grid.size());
-    double halo = first_halo;  // each tile grows its own (by count: an outlier needs a large one)
+    // each tile grows its own (by count: an outlier needs a large one; the first from the
+    // density around its core)
+    double halo = tiling.neighbors > 0 && std::isfinite(first_halo)
+                    ? tile_first_halo(grid, t, density, lo, hi, tiling.neighbors, first_halo / 8)
+                    : first_halo;
     for(;;)
     {
       const PSC::Tile tile = grid.tile(t, halo);
