@@ -208,13 +208,8 @@ constexpr double first_halo_factor = 1.3;
 double tile_first_halo(const PSC::Tile_grid& grid, std::size_t t, const Density_grid& density, const double lo[3],
                        const double hi[3], std::size_t k, double least)
 {
-  const PSC::Tile tile = grid.tile(t, 0.0);
   double b[3], e[3];
-  for(int a = 0; a < 3; ++a)
-  {
-    b[a] = std::max(tile.core.min(a), lo[a]);
-    e[a] = std::min(tile.core.max(a), hi[a]);
-  }
+  tile_box(grid, t, lo, hi, 0.0, b, e);  // (the core, clamped to the tiles' box)
   return first_halo_factor * density.halo_for_count(b, e, first_halo_count_factor * double(k), least);
 }
 

@@ -61,9 +61,10 @@ struct Scanned_input
 // spanning tree; with the automatic scale 500, with or without normals; the user manual).
 double bytes_per_point(std::size_t attributes, bool automatic_scale = false, bool spanning_tree = false);
 
-// The first halo for neighbourhoods of `k` nearest: the library's guess
+// The halo of neighbourhoods of `k` nearest at the cloud's mean density: the library's guess
 // (PSC::halo_guess_for_count) on the box of the 0.1% to 99.9% quantiles of the sample (the
-// box of the tiles).
+// box of the tiles). The tiles' grid is chosen with it; each tile by count then starts with
+// the halo of the density around its core (tile_first_halo() in tiled_run.cpp).
 double density_halo(const Scanned_input& input, std::size_t k);
 
 // Reads `path` in chunks; keeps the points as long as their estimated memory
@@ -79,7 +80,7 @@ struct Tiling
 {
   double memory_limit = 0;    // bytes
   double halo = 0;            // the halo of the tiles by radius
-  std::size_t neighbors = 0;  // by count (halo unused): the tiles start with density_halo()
+  std::size_t neighbors = 0;  // by count (halo unused): the first halos from the density
   // (a tile's halo grows when the estimator throws Halo_too_small)
   std::string temporary_prefix;  // the rows' temporary file is named prefix + "tiles-XXXXXX"
   // starts a progress phase (the density pass; the pass over the tiles, named estimate_phase)
