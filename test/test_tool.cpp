@@ -714,66 +714,25 @@ TEST_CASE("tool: --ply-names scalar names every property but x y z, normals and 
     const Run r = run_tool(q(input) + " " + q(scalar) + args + " --ply-names scalar");
     INFO(r.err);
     REQUIRE(r.status == 0);
-    const std::vector<std::string> expected_plain = {"x",
-                                                     "y",
-                                                     "z",
-                                                     "nx",
-                                                     "ny",
-                                                     "nz",
-                                                     "k_min",
-                                                     "k_max",
-                                                     "mean",
-                                                     "gaussian",
-                                                     "dmin_x",
-                                                     "dmin_y",
-                                                     "dmin_z",
-                                                     "dmax_x",
-                                                     "dmax_y",
-                                                     "dmax_z",
-                                                     "normal_coherence",
-                                                     "neighbors",
-                                                     "valid",
-                                                     "red",
-                                                     "green",
-                                                     "blue",
-                                                     "input_red",
-                                                     "intensity",
-                                                     "input_k_min",
-                                                     "scalar_Intensity",
-                                                     "scalar_mean"};
+    // clang-format off
+    const std::vector<std::string> expected_plain = {
+      "x", "y", "z", "nx", "ny", "nz", "k_min", "k_max", "mean", "gaussian", "dmin_x", "dmin_y", "dmin_z",
+      "dmax_x", "dmax_y", "dmax_z", "normal_coherence", "neighbors", "valid", "red", "green", "blue",
+      "input_red", "intensity", "input_k_min", "scalar_Intensity", "scalar_mean"};
+    // clang-format on
     // readers that look for mean, k_min, ... find them without the option
     CHECK(ply_property_names(plain) == expected_plain);
     // x y z, the normals and --color's colours keep their names (CloudCompare loads them as
     // such); every other property gets scalar_, but for a name that has it already
     // (CloudCompare's own scalar_Intensity stays the field Intensity) unless the name is
     // taken: the input's scalar_mean becomes scalar_scalar_mean, the tool's mean scalar_mean.
-    const std::vector<std::string> expected_scalar = {"x",
-                                                      "y",
-                                                      "z",
-                                                      "nx",
-                                                      "ny",
-                                                      "nz",
-                                                      "scalar_k_min",
-                                                      "scalar_k_max",
-                                                      "scalar_mean",
-                                                      "scalar_gaussian",
-                                                      "scalar_dmin_x",
-                                                      "scalar_dmin_y",
-                                                      "scalar_dmin_z",
-                                                      "scalar_dmax_x",
-                                                      "scalar_dmax_y",
-                                                      "scalar_dmax_z",
-                                                      "scalar_normal_coherence",
-                                                      "scalar_neighbors",
-                                                      "scalar_valid",
-                                                      "red",
-                                                      "green",
-                                                      "blue",
-                                                      "scalar_input_red",
-                                                      "scalar_intensity",
-                                                      "scalar_input_k_min",
-                                                      "scalar_Intensity",
-                                                      "scalar_scalar_mean"};
+    // clang-format off
+    const std::vector<std::string> expected_scalar = {
+      "x", "y", "z", "nx", "ny", "nz", "scalar_k_min", "scalar_k_max", "scalar_mean", "scalar_gaussian",
+      "scalar_dmin_x", "scalar_dmin_y", "scalar_dmin_z", "scalar_dmax_x", "scalar_dmax_y", "scalar_dmax_z",
+      "scalar_normal_coherence", "scalar_neighbors", "scalar_valid", "red", "green", "blue",
+      "scalar_input_red", "scalar_intensity", "scalar_input_k_min", "scalar_Intensity", "scalar_scalar_mean"};
+    // clang-format on
     CHECK(ply_property_names(scalar) == expected_scalar);
     // only the names differ: the types, the comments and every byte of the data are the same
     const std::string a = read_text(plain), b = read_text(scalar);
@@ -886,33 +845,12 @@ TEST_CASE("tool: CloudCompare loads every estimate and attribute of a --ply-name
   std::string header;
   std::getline(lines, header);
   // the names CloudCompare 2.11.3 gives the fields
-  const std::vector<std::string> expected = {"//X",
-                                             "Y",
-                                             "Z",
-                                             "R",
-                                             "G",
-                                             "B",
-                                             "k_min",
-                                             "k_max",
-                                             "mean",
-                                             "gaussian",
-                                             "dmin_x",
-                                             "dmin_y",
-                                             "dmin_z",
-                                             "dmax_x",
-                                             "dmax_y",
-                                             "dmax_z",
-                                             "normal_coherence",
-                                             "neighbors",
-                                             "valid",
-                                             "input_red",
-                                             "intensity",
-                                             "input_k_min",
-                                             "Intensity",
-                                             "scalar_mean",
-                                             "Nx",
-                                             "Ny",
-                                             "Nz"};
+  // clang-format off
+  const std::vector<std::string> expected = {
+    "//X", "Y", "Z", "R", "G", "B", "k_min", "k_max", "mean", "gaussian", "dmin_x", "dmin_y", "dmin_z",
+    "dmax_x", "dmax_y", "dmax_z", "normal_coherence", "neighbors", "valid", "input_red", "intensity",
+    "input_k_min", "Intensity", "scalar_mean", "Nx", "Ny", "Nz"};
+  // clang-format on
   std::istringstream words(header);
   std::vector<std::string> columns;
   for(std::string w; words >> w;)
@@ -1285,8 +1223,7 @@ TEST_CASE("tool: invalid rows are NaN with valid = 0, in PLY and CSV, with --nei
   CHECK(finite_mean == 2000);  // the sphere; radius 0.4 leaves the isolated point alone
 }
 
-TEST_CASE("tool: --neighbors K on a cloud with density varying 1:10 gives every point at "
-          "least K neighbours")
+TEST_CASE("tool: --neighbors K on a cloud with density varying 1:10 gives every point at least K neighbours")
 {
   const std::vector<Oriented_point> pts = varying_density(5000, 11);
   const std::string input = file("varying.xyz");
@@ -2498,6 +2435,7 @@ TEST_CASE("tool: readers accept trailing comments, a count before a header, OFF 
 // PLY, 19 identical points without normals (once a crash), neighbor_count(SIZE_MAX).
 TEST_CASE("tool and library: BOM, integer PLY coordinates, identical points, neighbor_count(SIZE_MAX)")
 {
+  // (the literal split where a hex escape would take the digit that follows)
   write_text(file("bom.xyz"), "\xEF\xBB\xBF"
                               "0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n");
   CHECK(run_tool(q(file("bom.xyz")) + " " + q(file("bom.csv")) + " --quiet --min-neighbors 3").status == 0);

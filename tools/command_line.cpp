@@ -176,9 +176,8 @@ void parse_radius(const std::string& text, Estimation_settings& scale)
   const bool multiple = !text.empty() && (text.back() == 'x' || text.back() == 'X');
   double value = 0;
   if(!parse_double(multiple ? text.substr(0, text.size() - 1) : text, value))
-    throw Error(cat("--radius expects a positive length or a multiple of the average spacing "
-                    "such as 4x, got ",
-                    in_quotes(text)));
+    throw Error(
+      cat("--radius expects a positive length or a multiple of the average spacing such as 4x, got ", in_quotes(text)));
   if(!(value > 0))
     throw Error(cat("--radius must be positive, got ", in_quotes(text)));
   scale.by_count = false;
@@ -409,7 +408,8 @@ const std::vector<Option_spec>& option_table()
                  "bounded memory (--radius as a length; without normals, they are",
                  "estimated in tiles first; a spanning tree (mst, auto but on LAS",
                  "files with pulses) orients them over the whole cloud in memory,",
-                 "about 450 bytes a point; not --method vcm,", "which needs every point; the automatic scale's halos",
+                 "about 450 bytes a point; not --method vcm,",
+                 "which needs every point; the automatic scale's halos",
                  cat("reach ", automatic_largest, " neighbours). A limit that makes more than 500 tiles, or"),
                  "above the machine's RAM, is warned of"}),
      [](Options& o, S, S v) {
@@ -551,14 +551,12 @@ Options parse_command_line(int argc, char** argv)
   if(o.scale.automatic_largest == 0)
     for_each_tool_field([&o](const CGAL::Point_set_curvatures::Field_description& f) {
       if(f.automatic_scale_only && std::find(o.fields.begin(), o.fields.end(), f.name) != o.fields.end())
-        throw Error(cat("--fields: ", f.name,
-                        " comes with the automatic scale only: add --neighbors auto, or leave it "
-                        "out"));
+        throw Error(
+          cat("--fields: ", f.name, " comes with the automatic scale only: add --neighbors auto, or leave it out"));
     });
   if(o.normal_fit == CGAL::Normal_fit::QUADRIC && o.normal_neighbors != 0 && o.normal_neighbors < 6)
     throw Error(cat("--normal-neighbors ", o.normal_neighbors,
-                    " is below the 6 points a quadric needs: use "
-                    "--normal-neighbors 6 or more, or --normal-fit plane"));
+                    " is below the 6 points a quadric needs: use --normal-neighbors 6 or more, or --normal-fit plane"));
   const std::size_t least = o.scale.min_neighbors ? o.scale.min_neighbors : o.method->min_neighbors;
   if(o.scale.by_count && o.scale.neighbors < least)
     throw Error(cat("--neighbors ", o.scale.neighbors, " is below the ", least, " neighbours of a valid ",

@@ -249,8 +249,7 @@ Error Temporary_output::reservation_error(int e, std::uint64_t bytes, const std:
   }
   if(e == EDQUOT)
     return Error(cat("output ", in_quotes(m_output), " needs up to ", needs,
-                     ", beyond your disk quota; free some "
-                     "space or write OUTPUT elsewhere"));
+                     ", beyond your disk quota; free some space or write OUTPUT elsewhere"));
   if(e == EFBIG)
     return Error(cat("output ", in_quotes(m_output), " needs up to ", needs,
                      ", more than the largest file allowed "

@@ -176,8 +176,7 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
   const auto slow_tiling = [&](const char* makes, std::size_t tiles, std::size_t few_grid, double few_points) {
     return cat(
       "--memory-limit ", size_text(memory_limit), makes, tiles,
-      " tiles, each read again from the input "
-      "with its halo: slow; --memory-limit ",
+      " tiles, each read again from the input with its halo: slow; --memory-limit ",
       memory_argument(few_points * tiling.point_bytes + (with_normals ? 0.0 : gathered_normal_bytes * double(n))),
       " gives at most ", plural(few_grid, "tile"));
   };
@@ -211,9 +210,8 @@ int run_tiled_input(const Run_context& c, Temporary_output& output, const Read_o
     }
     catch(const std::invalid_argument& e)
     {
-      throw Error(cat(e.what(), " (", too_large,
-                      ", so it is estimated in tiles: give --radius, or raise "
-                      "--memory-limit)"));
+      throw Error(
+        cat(e.what(), " (", too_large, ", so it is estimated in tiles: give --radius, or raise --memory-limit)"));
     }
     if(interrupted)
       throw Cancelled();
@@ -263,8 +261,7 @@ int run(const Options& o)
   const bool las_output = out_ext == ".las";
   if(las_output && !o.color.empty())
     throw Error(cat("--color ", o.color,
-                    ": a .las output holds no colours of the estimates (LAS viewers colour by "
-                    "a field: choose ",
+                    ": a .las output holds no colours of the estimates (LAS viewers colour by a field: choose ",
                     o.color, "); drop --color, or write .ply"));
   if(las_output && o.ascii)
     throw Error("--ascii: a .las output is binary; drop --ascii, or write .ply or .csv");

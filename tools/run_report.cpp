@@ -84,9 +84,7 @@ std::string small_neighborhood_warning(const Method& m, const Estimation_setting
   if(!too_small.empty())
     return too_small + invalid;
   return cat("the median neighbourhood holds ", plural(std::size_t(median), "point"), ", fewer than the ", good,
-             " from which ", m.name,
-             "'s errors stay within twice those at 40 neighbours (measured, see the "
-             "manual)",
+             " from which ", m.name, "'s errors stay within twice those at 40 neighbours (measured, see the manual)",
              invalid, ". For about 40 neighbours, try ", suggested_scale(m, scale, median));
 }
 

@@ -55,8 +55,7 @@ Tiled_normals estimate_tiled_normals(const std::string& path, const Read_options
   if(global && input.points > std::numeric_limits<std::uint32_t>::max())
     throw Error(cat("a spanning tree orients at most ", std::numeric_limits<std::uint32_t>::max(), " points (",
                     in_quotes(path), " holds ", input.points,
-                    "): orient them locally, --orient +z (airborne scans), "
-                    "another axis, or viewpoint:X,Y,Z"));
+                    "): orient them locally, --orient +z (airborne scans), another axis, or viewpoint:X,Y,Z"));
   Tiled_normals result;
   std::vector<Normal_record> records(global ? n : 0);
   std::vector<double> xyz(global ? 3 * n : 0, std::numeric_limits<double>::quiet_NaN());

@@ -86,14 +86,12 @@ void experiment_convergence(Context& ctx)
   if(!domain_check.empty())
   {
     Table c;
-    c.header = {"estimator",
-                "N",
-                "H error, whole surface",
-                "H error, domain",
-                "normal error, whole surface",
-                "normal error, domain",
-                "k_max error, whole surface",
-                "k_max error, domain"};
+    // clang-format off
+    c.header = {"estimator", "N",
+                "H error, whole surface", "H error, domain",
+                "normal error, whole surface", "normal error, domain",
+                "k_max error, whole surface", "k_max error, domain"};
+    // clang-format on
     for(const Domain_check& d : domain_check)
       c.rows.push_back({d.estimator, format_count(d.n), format(d.whole.H), format(d.domain.H), format(d.whole.normal),
                         format(d.domain.normal), format(d.whole.kmax), format(d.domain.kmax)});

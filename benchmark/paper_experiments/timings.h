@@ -106,16 +106,13 @@ void experiment_timings(Context& ctx)
           << r.estimator << "," << r.execution << "," << format(r.seconds, 6) << ","
           << format(r.seconds / aso_seconds(r), 4) << "," << r.note << "\n";
   }
-  ctx.report.text("Same radius for every estimator: bunny r = " + format(bunny_r) +
-                  ", Goursat r = " + format(goursat_r, 4) +
-                  " (40 expected neighbours). Seconds for the whole cloud (input to results, neighbour search "
-                  "included), best of up to 3 runs while they take under " +
-                  format(ctx.options.quick ? 2 : 10) +
-                  " s in all; parallel = CGAL::Parallel_tag "
-                  "on " +
-                  std::to_string(threads) +
-                  " hardware threads (the parallel rows are meaningful "
-                  "only if no other job used the cores: the last table gives the speed-ups measured).\n");
+  ctx.report.text(
+    "Same radius for every estimator: bunny r = " + format(bunny_r) + ", Goursat r = " + format(goursat_r, 4) +
+    " (40 expected neighbours). Seconds for the whole cloud (input to results, neighbour search "
+    "included), best of up to 3 runs while they take under " +
+    format(ctx.options.quick ? 2 : 10) + " s in all; parallel = CGAL::Parallel_tag on " + std::to_string(threads) +
+    " hardware threads (the parallel rows are meaningful "
+    "only if no other job used the cores: the last table gives the speed-ups measured).\n");
   Table t;
   t.header = {"data", "execution"};
   for(const Estimator& e : ctx.estimators)

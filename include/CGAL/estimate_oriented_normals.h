@@ -851,8 +851,7 @@ std::size_t estimate_oriented_normals(PointRange& points, bool radius_given, dou
   typedef typename NP_helper::Geom_traits Geom_traits;
   typedef typename Geom_traits::Vector_3 Vector_3;
   static_assert(NP_helper::has_normal_map(),
-                "Error: no normal map. Pass CGAL::parameters::normal_map(...): the normals are "
-                "written there.");
+                "Error: no normal map. Pass CGAL::parameters::normal_map(...): the normals are written there.");
   // (its exceptions first, as before the split)
   const bool automatic = normal_scale_ladder(np, radius_given, radius).largest > 0;
   const Normal_orientation orientation = chosen_normal_orientation(np);

@@ -274,8 +274,7 @@ void read_vlrs(Byte_source& bytes, const Las_header& l, const std::string& path,
       {
         source.vlrs_complete = false;
         warnings.push_back(cat(in_quotes(path), ": the header declares ", vlr_count, " variable length records, ", k,
-                               " fit before the point data: the others are "
-                               "not read"));
+                               " fit before the point data: the others are not read"));
         break;
       }
       Las_source::Vlr v;
@@ -379,17 +378,14 @@ std::vector<Extra_field> extra_fields(const Las_source& source, const Las_header
     else
     {
       cloud.warnings.push_back(cat(in_quotes(path), ": extra bytes field ", in_quotes(name),
-                                   " has the reserved "
-                                   "data type ",
-                                   data_type, ": it and the extra bytes after it are not read"));
+                                   " has the reserved data type ", data_type,
+                                   ": it and the extra bytes after it are not read"));
       break;
     }
     if(size > record_length - at)
     {
       cloud.warnings.push_back(cat(in_quotes(path), ": the extra-bytes VLR describes more bytes than the ",
-                                   record_length - format_size[format],
-                                   " extra bytes of the records: "
-                                   "from field ",
+                                   record_length - format_size[format], " extra bytes of the records: from field ",
                                    in_quotes(name), " on, they are not read"));
       break;
     }
@@ -434,11 +430,10 @@ std::vector<Extra_field> extra_fields(const Las_source& source, const Las_header
     cloud.warnings.push_back(cat(in_quotes(path), ": extra bytes fields not read: ", list));
   }
   if(at < record_length && keep_attributes)
-    cloud.warnings.push_back(cat(in_quotes(path), ": ", record_length - at, " extra bytes per point record ",
-                                 described ? "beyond those the extra-bytes VLR describes"
-                                           : "without an extra-bytes VLR "
-                                             "describing them",
-                                 " are not read"));
+    cloud.warnings.push_back(
+      cat(in_quotes(path), ": ", record_length - at, " extra bytes per point record ",
+          described ? "beyond those the extra-bytes VLR describes" : "without an extra-bytes VLR describing them",
+          " are not read"));
   return extras;
 }
 
@@ -568,32 +563,13 @@ std::shared_ptr<Las_source> header_source(Byte_source& bytes, const Las_header& 
 void add_las_fields(int format, bool keep_attributes, Point_cloud& cloud, bool present[LAS_FIELD_COUNT],
                     int column_of[LAS_FIELD_COUNT])
 {
-  static const char* const names[LAS_FIELD_COUNT] = {"intensity",
-                                                     "return_number",
-                                                     "number_of_returns",
-                                                     "scan_direction_flag",
-                                                     "edge_of_flight_line",
-                                                     "classification",
-                                                     "synthetic",
-                                                     "key_point",
-                                                     "withheld",
-                                                     "overlap",
-                                                     "scanner_channel",
-                                                     "scan_angle",
-                                                     "user_data",
-                                                     "point_source_id",
-                                                     "gps_time",
-                                                     "red",
-                                                     "green",
-                                                     "blue",
-                                                     "nir",
-                                                     "wave_descriptor",
-                                                     "wave_data_offset",
-                                                     "wave_packet_size",
-                                                     "wave_return_location",
-                                                     "wave_x_t",
-                                                     "wave_y_t",
-                                                     "wave_z_t"};
+  // clang-format off
+  static const char* const names[LAS_FIELD_COUNT] = {
+    "intensity", "return_number", "number_of_returns", "scan_direction_flag", "edge_of_flight_line",
+    "classification", "synthetic", "key_point", "withheld", "overlap", "scanner_channel", "scan_angle",
+    "user_data", "point_source_id", "gps_time", "red", "green", "blue", "nir", "wave_descriptor",
+    "wave_data_offset", "wave_packet_size", "wave_return_location", "wave_x_t", "wave_y_t", "wave_z_t"};
+  // clang-format on
   static const Scalar_type types[LAS_FIELD_COUNT] = {
     Scalar_type::UINT16,  Scalar_type::UINT8,   Scalar_type::UINT8,   Scalar_type::UINT8,   Scalar_type::UINT8,
     Scalar_type::UINT8,   Scalar_type::UINT8,   Scalar_type::UINT8,   Scalar_type::UINT8,   Scalar_type::UINT8,

@@ -212,8 +212,7 @@ Point_cloud read_xyz(Byte_source& bytes, const std::string& path, const Read_opt
           const std::string problem = layout_problem(roles);
           if(!problem.empty())
             fail(cat("the header line ", problem,
-                     ": give --columns to name the columns (for example "
-                     "--columns x,y,z,nx,ny,nz)"));
+                     ": give --columns to name the columns (for example --columns x,y,z,nx,ny,nz)"));
           layout_origin = "the header line";
           name_attributes(header);
         }

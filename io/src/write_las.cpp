@@ -452,8 +452,7 @@ std::uint64_t copy_las_evlrs(std::FILE* f, const Las_output_options& options, co
     std::FILE* in = std::fopen(options.input_path.c_str(), "rb");
     if(!in)
       throw Error(cat("cannot open input ", in_quotes(options.input_path),
-                      " again to copy its extended variable "
-                      "length records"));
+                      " again to copy its extended variable length records"));
     std::vector<char> buffer(1 << 20);
     for(const auto& e : source->evlrs)
     {
