@@ -387,6 +387,67 @@ TEST_CASE("neighbor_count: the neighbourhood of each point is the ball of radius
   CHECK(wrong_members == 0);
 }
 
+// The automatic scale's rungs (automatic_scale.h) are taken from the neighbourhood of a larger
+// count; each must be the neighbourhood the driver gives for the rung's count, bit for bit, so
+// that an estimate at a rung is the one a run at that count would give (grid and tree, ties).
+TEST_CASE("automatic scale: a rung is bit for bit the driver's neighbourhood of its count")
+{
+  std::vector<Oriented_point> pts = varying_density(1500);
+  for(std::size_t i = 0; i < 20; ++i)
+    pts.push_back(pts[37 * i]);  // exact duplicates
+  for(int i = 0; i < 5; ++i)     // isolated points: the k-d tree serves them
+    pts.insert(pts.begin() + 100 * i, Oriented_point(Point(30 + 7 * i, -20, 5 * i), Vector(0, 0, 1)));
+  for(int i = 0; i < 30; ++i)  // a regular grid: equidistant neighbours, ties at the k-th
+    for(int j = 0; j < 30; ++j)
+      pts.emplace_back(Point(-20 + 0.1 * i, 0.1 * j, 0), Vector(0, 0, 1));
+  struct Seen
+  {
+    double radius = 0;
+    std::vector<double> q;
+    std::vector<std::uint32_t> input;
+  };
+  const auto record = [](Seen& s, const PSC::internal::Neighborhood& nb) {
+    s.radius = nb.radius;
+    for(std::size_t j = 0; j < nb.size; ++j)
+    {
+      s.q.insert(s.q.end(), {nb.qx[j], nb.qy[j], nb.qz[j]});
+      s.input.push_back(nb.input_index[nb.index[j]]);
+    }
+  };
+  for(std::size_t k : {20, 40})
+  {
+    std::vector<Seen> direct(pts.size()), rung(pts.size());
+    PSC::internal::for_each_neighborhood_knn<CGAL::Parallel_tag>(
+      pts, Point_map(), Normal_map(), k, PSC::internal::Neighborhood_options(),
+      [&](std::size_t i, const PSC::internal::Neighborhood& nb) { record(direct[i], nb); });
+    PSC::internal::for_each_neighborhood_knn<CGAL::Parallel_tag>(
+      pts, Point_map(), Normal_map(), 8 * k, PSC::internal::Neighborhood_options(),
+      [&](std::size_t i, const PSC::internal::Neighborhood& whole) {
+        PSC::internal::Neighbor_offsets offsets;
+        offsets.assign(whole);
+        PSC::internal::Distance_ranks ranks;
+        ranks.assign(offsets.d2, 1.0 / (offsets.limit * offsets.limit));
+        const double d2_k = ranks.kth(k);
+        if(d2_k == 0)
+          return;  // (copies: the ladder has no rung there)
+        PSC::internal::Sub_neighborhood sub;
+        sub.take(whole, PSC::internal::Scale_ladder::rung_radius(offsets, d2_k), offsets);
+        sub.take_attributes(whole);
+        record(rung[i], sub.nb);
+      });
+    std::size_t compared = 0, differ = 0;
+    for(std::size_t i = 0; i < pts.size(); ++i)
+      if(!rung[i].input.empty())
+      {
+        ++compared;
+        differ += rung[i].radius != direct[i].radius || rung[i].q != direct[i].q || rung[i].input != direct[i].input;
+      }
+    INFO("k = " << k);
+    CHECK(compared > pts.size() - 100);
+    CHECK(differ == 0);
+  }
+}
+
 TEST_CASE("neighbor_count: ties, k above the number of points, coincident points")
 {
   const auto count_of = [](const std::vector<Oriented_point>& pts, std::size_t k) {

@@ -8,7 +8,8 @@
 //
 // The driver hands the estimator the neighbourhood of the largest count. On each rung j, the
 // k_j nearest of it (with the driver's rule for ties: every point closer than
-// (1 + 2^-20) d_{k_j}) are fitted with the weighted quadric of positions of quadric_fit.h
+// (1 + 2^-20) d_{k_j}; taken from the cloud's positions as the driver takes them, so that a
+// rung is bit for bit the neighbourhood the driver gives for its count k_j) are fitted with the weighted quadric of positions of quadric_fit.h
 // (without its anisotropy penalty), which gives the statistic the rungs are compared by (the
 // mean curvature H_j for curvatures; for normals, the normal's two components in the first
 // rung's tangent frame) and, by the sandwich formula of weighted least squares, its variance
@@ -186,13 +187,49 @@ inline double separated_noise(double residual_small, double radius_small, double
   return std::clamp((growth * residual_small - residual_large) / (growth - 1), 0.0, residual_small);
 }
 
-// The squared distances of a neighbourhood's points to the query (its scaled units), in its order.
-inline void squared_distances(const Neighborhood& whole, std::vector<double>& d2)
+// The offsets of a neighbourhood's points from the query (p - x) and their squared distances, in
+// its order. In input units (`unit` 1) from the cloud's positions where the driver gave them
+// (Neighborhood::position), with the driver's arithmetic, so that a rung taken from them
+// (Sub_neighborhood::take()) is bit for bit the neighbourhood the driver gives for the rung's
+// count: the same points, in the same order, with the same scaled positions and radius. Else (a
+// neighbourhood built by hand, or offsets whose squares overflow a double) its scaled positions
+// (`unit` its radius). `limit`: the neighbourhood's radius in the offsets' unit.
+struct Neighbor_offsets
 {
-  d2.resize(whole.size);
-  for(std::size_t i = 0; i < whole.size; ++i)
-    d2[i] = whole.qx[i] * whole.qx[i] + whole.qy[i] * whole.qy[i] + whole.qz[i] * whole.qz[i];
-}
+  std::vector<double> x, y, z, d2;
+  double unit = 1, limit = 1;
+
+  void assign(const Neighborhood& whole)
+  {
+    const std::size_t n = whole.size;
+    for(auto* v : {&x, &y, &z, &d2})
+      v->resize(n);
+    bool finite = whole.position && whole.index && std::isfinite(whole.radius);
+    if(finite)
+    {
+      for(std::size_t i = 0; i < n; ++i)
+      {
+        const double* p = whole.position + 3 * std::size_t(whole.index[i]);
+        x[i] = p[0] - whole.center[0];
+        y[i] = p[1] - whole.center[1];
+        z[i] = p[2] - whole.center[2];
+        d2[i] = x[i] * x[i] + y[i] * y[i] + z[i] * z[i];
+      }
+      for(std::size_t i = 0; i < n; ++i)
+        finite = finite && std::isfinite(d2[i]);
+    }
+    unit = finite ? 1.0 : whole.radius;
+    limit = finite ? whole.radius : 1.0;
+    if(!finite)
+      for(std::size_t i = 0; i < n; ++i)
+      {
+        x[i] = whole.qx[i];
+        y[i] = whole.qy[i];
+        z[i] = whole.qz[i];
+        d2[i] = x[i] * x[i] + y[i] * y[i] + z[i] * z[i];
+      }
+  }
+};
 
 // A neighbourhood of the first points of another, in its own scaled frame: the positions for
 // the rungs' fits, the other fields only for the neighbourhood that an estimator reads.
@@ -204,14 +241,15 @@ struct Sub_neighborhood
   std::vector<double> frame;         // the fit's frame cache (Quadric_fit::frame_cache)
   Neighborhood nb;
 
-  // The positions of the points of `whole` closer than `radius` (in whole's scaled units), in
-  // whole's order, scaled by `radius`; nb's other per-point fields are null until
-  // take_attributes(). `d2`: whole's squared distances to the query (squared_distances()). The
-  // points inside are listed without branches (every index written at the place of the next one
-  // inside, which overwrites it where it lies outside), then only they are copied.
-  void take(const Neighborhood& whole, double radius, const std::vector<double>& d2)
+  // The points of `whole` closer than `radius` (the unit of `offsets`, whole's, assigned), in
+  // whole's order, their positions scaled by 1 / radius as the driver scales a neighbourhood of
+  // that radius; nb's other per-point fields are null until take_attributes(). The points inside
+  // are listed without branches (every index written at the place of the next one inside, which
+  // overwrites it where it lies outside), then only they are copied.
+  void take(const Neighborhood& whole, double radius, const Neighbor_offsets& offsets)
   {
     const double r2 = radius * radius, inverse = 1.0 / radius;
+    const double* d2 = offsets.d2.data();
     taken.resize(whole.size);
     std::size_t n = 0;  // (at most i: the writes stay within whole.size)
     for(std::size_t i = 0; i < whole.size; ++i)
@@ -224,9 +262,9 @@ struct Sub_neighborhood
     for(std::size_t j = 0; j < n; ++j)
     {
       const std::uint32_t i = taken[j];
-      qx[j] = whole.qx[i] * inverse;
-      qy[j] = whole.qy[i] * inverse;
-      qz[j] = whole.qz[i] * inverse;
+      qx[j] = offsets.x[i] * inverse;
+      qy[j] = offsets.y[i] * inverse;
+      qz[j] = offsets.z[i] * inverse;
     }
     taken.resize(n);
     nb = whole;
@@ -238,7 +276,7 @@ struct Sub_neighborhood
     nb.sample_weight = nullptr;
     nb.index = nullptr;
     nb.plain_quadric = nullptr;
-    nb.radius = whole.radius * radius;
+    nb.radius = offsets.unit == 1 ? radius : offsets.unit * radius;
   }
 
   // After take(whole, radius): the normals, sample weights and indices of the same points.
@@ -269,8 +307,8 @@ struct Sub_neighborhood
   }
 };
 
-// The k-th smallest squared distance of a neighbourhood's points to the query (its scaled units:
-// below 1 but for rounding) for the rungs' counts k: the values bucketed once into equal
+// The k-th smallest squared distance of a neighbourhood's points to the query for the rungs'
+// counts k: the values, times `scale` (below 1 but for rounding), bucketed once into equal
 // intervals of [0, 1) by a counting sort, then each k-th selected within its bucket alone (about
 // 10 values of 640 on a surface, where a selection among all the values above the previous rung's
 // for each rung was 10% of a run of the automatic scale). The same values as nth_element's.
@@ -287,11 +325,11 @@ struct Distance_ranks
     return x >= 0 && x < bins ? static_cast<int>(x) : (x < 0 ? 0 : bins - 1);
   }
 
-  void assign(const std::vector<double>& d2)
+  void assign(const std::vector<double>& d2, double scale = 1.0)
   {
     std::uint32_t count[bins] = {};
     for(double v : d2)
-      ++count[bucket(v)];
+      ++count[bucket(v * scale)];
     start[0] = 0;
     for(int b = 0; b < bins; ++b)
       start[b + 1] = start[b] + count[b];
@@ -299,7 +337,7 @@ struct Distance_ranks
     std::copy(start, start + bins, next);
     values.resize(d2.size());
     for(double v : d2)
-      values[next[bucket(v)]++] = v;
+      values[next[bucket(v * scale)]++] = v;
   }
 
   // The k-th smallest, 1 <= k <= the count of values.
@@ -316,7 +354,7 @@ struct Distance_ranks
 // `chosen`.
 struct Ladder_scratch
 {
-  std::vector<double> d2;
+  Neighbor_offsets offsets;
   Distance_ranks ranks;
   Sub_neighborhood chosen, trial;
   std::vector<double> gate_frame;  // Scale_ladder::choose_in_shared_frame(): u, v, h, inner
@@ -447,14 +485,21 @@ struct Scale_ladder
     return statistic == Statistic::NORMAL ? Combinations{normal, 2} : Combinations{mean, 1};
   }
 
-  // Fits the k nearest of `whole` (`d2`: their squared distances, squared_distances()) with
-  // the driver's radius rule (the k nearest and those tied with the k-th: the k-th smallest of
-  // `ranks`) in `target`, the fit oriented by `reference`,
+  // The radius of the driver's neighbourhood whose k-th nearest point lies at squared distance
+  // `d2_k` > 0, within the whole's (in the unit of `offsets`).
+  static double rung_radius(const Neighbor_offsets& offsets, double d2_k)
+  {
+    return std::min(knn_radius_factor * std::sqrt(d2_k), offsets.limit);
+  }
+
+  // Fits the k nearest of `whole` (`offsets`: whole's, assigned) with the driver's radius rule
+  // (the k nearest and those tied with the k-th: the k-th smallest of `ranks`, its squared
+  // distances) in `target`, the fit oriented by `reference`,
   // with the variance factors of `statistic` (its coefficient combinations: combinations()).
   // NO_RUNG where the k-th nearest is at the query (copies of it); LINE where the rung's points
   // lie along one line, or, for the mean curvature, where its fit can hardly tell it
   // (curvature_untold()).
-  static Rung_fit fit_rung(const Neighborhood& whole, const std::vector<double>& d2, Distance_ranks& ranks,
+  static Rung_fit fit_rung(const Neighborhood& whole, const Neighbor_offsets& offsets, Distance_ranks& ranks,
                            std::size_t k, const double reference[3], Statistic statistic, Sub_neighborhood& target)
   {
     Rung_fit rung;
@@ -464,7 +509,7 @@ struct Scale_ladder
       rung.outcome = Rung_fit::NO_RUNG;
       return rung;
     }
-    target.take(whole, std::min(knn_radius_factor * std::sqrt(r2), 1.0), d2);
+    target.take(whole, rung_radius(offsets, r2), offsets);
     std::copy(reference, reference + 3, target.nb.query_normal);
     rung.fit.anisotropy_penalty = 0;
     rung.fit.frame_cache = &target.frame;
@@ -507,29 +552,30 @@ struct Scale_ladder
   // has no mean_error (the normals do not read it).
   Scale_choice choose_in_shared_frame(const Neighborhood& whole, Ladder_scratch& scratch) const
   {
-    std::vector<double>& d2 = scratch.d2;
+    Neighbor_offsets& offsets = scratch.offsets;
     Sub_neighborhood& chosen = scratch.chosen;
     Scale_choice c;
     const std::size_t k = std::min(smallest, whole.size);
     if(k == 0)
       return c;
-    squared_distances(whole, d2);
+    offsets.assign(whole);
     Distance_ranks& ranks = scratch.ranks;
-    ranks.assign(d2);
+    ranks.assign(offsets.d2, 1.0 / (offsets.limit * offsets.limit));
     const double rung2 = ranks.kth(k);
     if(rung2 == 0)
       return c;  // (the k nearest at the query: no rung)
-    const double radius = std::min(knn_radius_factor * std::sqrt(rung2), 1.0);
-    // the nearest half's radius, relative to the rung's (0: none)
+    const double radius = rung_radius(offsets, rung2);
+    // the nearest half's radius (input units) and its ratio to the rung's (0: none)
     const std::size_t half = smallest / 2;
-    double half_ratio = 0;
+    double half_radius = 0;
     if(half >= gate_least_half && half <= k)
     {
       const double half2 = ranks.kth(half);
       if(half2 > 0)
-        half_ratio = std::min(knn_radius_factor * std::sqrt(half2), 1.0) / radius;
+        half_radius = rung_radius(offsets, half2);
     }
-    chosen.take(whole, radius, d2);
+    const double half_ratio = half_radius / radius;
+    chosen.take(whole, radius, offsets);
     const Neighborhood& nb = chosen.nb;
     const std::size_t n = nb.size;
     const auto as_first_rung = [&]() {
@@ -557,7 +603,7 @@ struct Scale_ladder
     Quadratic_height_fit all, inner;
     std::vector<double>& frame = scratch.gate_frame;
     frame.resize(4 * n);
-    const double inner2 = half_ratio * half_ratio;
+    const double inner2 = half_radius * half_radius;
     std::size_t n_inner = 0;
     for(std::size_t i = 0; i < n; ++i)
     {
@@ -567,7 +613,7 @@ struct Scale_ladder
       f[0] = axes[2][0] * p[0] + axes[2][1] * p[1] + axes[2][2] * p[2];
       f[1] = axes[1][0] * p[0] + axes[1][1] * p[1] + axes[1][2] * p[2];
       f[2] = axes[0][0] * p[0] + axes[0][1] * p[1] + axes[0][2] * p[2];
-      f[3] = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] < inner2 ? 1.0 : 0.0;
+      f[3] = offsets.d2[chosen.taken[i]] < inner2 ? 1.0 : 0.0;
       all.add(f[0], f[1], f[2], 1.0);
       if(f[3] > 0)
       {
@@ -633,13 +679,13 @@ struct Scale_ladder
   {
     if(gate && statistic == Statistic::NORMAL)
       return choose_in_shared_frame(whole, scratch);
-    std::vector<double>& d2 = scratch.d2;
+    Neighbor_offsets& offsets = scratch.offsets;
     Sub_neighborhood &chosen = scratch.chosen, &trial = scratch.trial;
     constexpr double inf = std::numeric_limits<double>::infinity();
     Scale_choice c;
-    squared_distances(whole, d2);
+    offsets.assign(whole);
     Distance_ranks& ranks = scratch.ranks;
-    ranks.assign(d2);
+    ranks.assign(offsets.d2, 1.0 / (offsets.limit * offsets.limit));
     const bool by_normal = statistic == Statistic::NORMAL;
     const int m = combinations(statistic).m;
     double lo[2] = {-inf, -inf}, hi[2] = {inf, inf};
@@ -659,7 +705,7 @@ struct Scale_ladder
     std::size_t k = std::min(smallest, whole.size);
     for(std::size_t j = 0; k > 0 && k <= whole.size && j < rungs(); ++j, k *= 2)
     {
-      Rung_fit rung = fit_rung(whole, d2, ranks, k, reference, statistic, c.found ? trial : chosen);
+      Rung_fit rung = fit_rung(whole, offsets, ranks, k, reference, statistic, c.found ? trial : chosen);
       if(rung.outcome == Rung_fit::NO_RUNG)
         continue;
       if(rung.outcome == Rung_fit::LINE)
@@ -786,7 +832,7 @@ struct Scale_ladder
       bool kept = kept_noise2 < automatic_scale_gate_cubic_share * residual0;
       if(!kept)
       {
-        const Rung_fit rung = fit_rung(whole, d2, ranks, half, reference, statistic, trial);
+        const Rung_fit rung = fit_rung(whole, offsets, ranks, half, reference, statistic, trial);
         // (along one line, or where it can hardly tell the curvature, it tells nothing of the noise)
         kept_noise2 = rung.outcome == Rung_fit::FITTED ? separated_noise(rung.residual, rung.radius, residual0, radius0)
                                                        : std::numeric_limits<double>::quiet_NaN();

@@ -47,6 +47,10 @@ struct Neighborhood
   // need the neighbourhood graph (normal orientation).
   const std::uint32_t* index = nullptr;
   const std::uint32_t* input_index = nullptr;
+  // With `index`, where the cloud drivers gather the neighbours: the cloud's positions, neighbour
+  // i at position + 3 index[i] (absolute coordinates, as `center`), from which the automatic
+  // scale takes its rungs as the driver takes a neighbourhood (automatic_scale.h); else null.
+  const double* position = nullptr;
   // Per-neighbour sample weights (quadrature weights such as tangent Voronoi areas), or null
   // for equal weights: the estimators that support them multiply each neighbour's kernel
   // weight by it.

@@ -143,6 +143,7 @@ void visit_neighborhood(const Sorted_cloud& cloud, std::uint32_t query, double r
     nb.query_normal[a] = normal[3 * std::size_t(query) + a];
   nb.index = index;
   nb.input_index = cloud.input_index.data();
+  nb.position = position;
   nb.sample_weight = sample_weight;
   visit(std::size_t(cloud.input_index[query]), static_cast<const Neighborhood&>(nb));
 }
