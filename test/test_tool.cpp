@@ -448,6 +448,65 @@ TEST_CASE("automatic scale: a rung is bit for bit the driver's neighbourhood of 
   }
 }
 
+// parameters::scale_choices: the normals' automatic scale records the curvatures' choices where it
+// climbs, and the curvatures estimate those points from the neighbourhood of their count; the
+// estimates must be the ladder's, bit for bit (a noisy scan, where most points climb; the
+// position fit blended in or not; a point whose normal is unusable, so that its neighbours'
+// records do not fit their neighbourhoods and the ladder decides there).
+TEST_CASE("automatic scale: the curvatures from the normals' scale choices are the ladder's, bit for bit")
+{
+  namespace P = PSC::parameters;
+  scan::Noise noise;
+  noise.range_sigma = 0.03;
+  Point_set ps;
+  ps.add_normal_map();
+  for(const scan::Sample& s : scan::airborne_lines(scan::wavy_terrain(), 4, 0.1, 0.25, noise))
+    ps.insert(s.p);
+  PSC::Scale_choices choices;
+  CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
+    ps,
+    P::neighbor_count(40, P::automatic_scale(640, P::normal_orientation(CGAL::Normal_orientation::along_vector(0, 0, 1),
+                                                                        P::scale_choices(choices)))));
+  REQUIRE(choices.size() == ps.size());
+  std::size_t recorded = 0;
+  for(std::size_t i = 0; i < ps.size(); ++i)
+    recorded += choices.records().of(i) && choices.records().of(i)->count > 0 ? 1 : 0;
+  INFO(recorded << " of " << ps.size() << " points with a choice");
+  CHECK(recorded > ps.size() / 2);
+  const auto same = [](double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); };
+  const auto same_vector = [&](const Vector& a, const Vector& b) {
+    return same(a.x(), b.x()) && same(a.y(), b.y()) && same(a.z(), b.z());
+  };
+  for(int unusable = 0; unusable < 2; ++unusable)
+    for(double blend : {0.0, 0.5})
+    {
+      if(unusable)
+        ps.normal(*(ps.begin() + 1234)) = CGAL::NULL_VECTOR;
+      INFO("position blend " << blend << (unusable ? ", a point without a usable normal" : ""));
+      const auto np = P::neighbor_count(40, P::automatic_scale(640, P::position_fit_blend(blend)));
+      const std::vector<Estimate> ladder = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(ps, np);
+      const std::vector<Estimate> chosen =
+        CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(ps, P::scale_choices(choices, np));
+      const std::vector<Estimate> sequential =
+        CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(ps, P::scale_choices(choices, np));
+      std::size_t differ = 0, climbed = 0;
+      for(std::size_t i = 0; i < ps.size(); ++i)
+        for(const std::vector<Estimate>* e : {&chosen, &sequential})
+        {
+          const Estimate &a = ladder[i], &b = (*e)[i];
+          differ += !(a.status == b.status && a.neighbor_count == b.neighbor_count &&
+                      same(a.mean_curvature, b.mean_curvature) && same(a.min_curvature, b.min_curvature) &&
+                      same(a.max_curvature, b.max_curvature) && same(a.gaussian_curvature, b.gaussian_curvature) &&
+                      same(a.mean_curvature_error, b.mean_curvature_error) &&
+                      same(a.normal_coherence, b.normal_coherence) && same_vector(a.normal, b.normal) &&
+                      same_vector(a.min_direction, b.min_direction) && same_vector(a.max_direction, b.max_direction));
+          climbed += a.neighbor_count > 40 ? 1 : 0;
+        }
+      CHECK(climbed > ps.size() / 2);
+      CHECK(differ == 0);
+    }
+}
+
 TEST_CASE("neighbor_count: ties, k above the number of points, coincident points")
 {
   const auto count_of = [](const std::vector<Oriented_point>& pts, std::size_t k) {

@@ -55,15 +55,16 @@ namespace {
 // The named parameters of the normals' estimation as the options say, oriented by `orientation`.
 template <class Callback>
 auto normal_parameters(const Options& o, const CGAL::Normal_orientation& orientation, const PSC::Tile& tile,
-                       const Callback& progress)
+                       const Callback& progress, PSC::Scale_choices* choices = nullptr)
 {
   return PSC::parameters::neighbor_count(
     normal_neighbor_count(o),
     PSC::parameters::automatic_scale(
       normal_automatic_largest(o),
-      PSC::parameters::normal_fit(o.normal_fit,
-                                  PSC::parameters::normal_orientation(
-                                    orientation, PSC::parameters::tile(tile, CGAL::parameters::callback(progress))))));
+      PSC::parameters::normal_fit(
+        o.normal_fit, PSC::parameters::normal_orientation(
+                        orientation, PSC::parameters::tile(tile, PSC::parameters::scale_choices(
+                                                                   choices, CGAL::parameters::callback(progress)))))));
 }
 
 }  // namespace
@@ -99,12 +100,12 @@ std::string automatic_orientation_text(const Vertical_count& c)
 }
 
 std::size_t estimate_normals(Point_set& ps, const Options& o, Orientation_choice& choice, const Progress& progress,
-                             const PSC::Tile& tile)
+                             const PSC::Tile& tile, PSC::Scale_choices* choices)
 {
   if(!ps.has_normal_map())
     ps.add_normal_map();
-  const std::size_t without =
-    CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(ps, normal_parameters(o, choice.orientation, tile, progress));
+  const std::size_t without = CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
+    ps, normal_parameters(o, choice.orientation, tile, progress, choices));
   if(interrupted)
     throw Cancelled();
   if(choice.orientation.kind == CGAL::Normal_orientation::AUTOMATIC)

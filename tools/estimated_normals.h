@@ -79,9 +79,11 @@ std::string automatic_orientation_text(const Vertical_count& count);
 // text completed for the automatic orientation): of every point, or of the tile's own points
 // (the others get a zero normal; the tile needs an orientation along a vector). Returns the
 // number of points left without a normal. Throws Cancelled when interrupted,
-// CGAL::Point_set_curvatures::Halo_too_small when the tile's halo is too small.
+// CGAL::Point_set_curvatures::Halo_too_small when the tile's halo is too small. With `choices`,
+// the automatic scale's passes record there the curvatures' choices (parameters::scale_choices).
 std::size_t estimate_normals(Point_set& ps, const Options& o, Orientation_choice& choice, const Progress& progress,
-                             const CGAL::Point_set_curvatures::Tile& tile);
+                             const CGAL::Point_set_curvatures::Tile& tile,
+                             CGAL::Point_set_curvatures::Scale_choices* choices = nullptr);
 
 // The first step of estimate_normals() alone, for an orientation over the whole cloud gathered
 // from tiles (tiled_normals.h): the unoriented normals and nearest neighbours (indices of `ps`)

@@ -32,7 +32,8 @@ namespace PSC = CGAL::Point_set_curvatures;
           scale.min_neighbors ? scale.min_neighbors : PSC::default_min_neighbors::NAME,         \
           PSC::parameters::aso_variant(scale.variant, PSC::parameters::position_fit_blend(      \
             scale.position_fit_blend, PSC::parameters::automatic_scale(scale.automatic_largest, \
-            PSC::parameters::tile(tile, CGAL::parameters::callback(callback))))));              \
+            PSC::parameters::tile(tile, PSC::parameters::scale_choices(scale.choices,           \
+            CGAL::parameters::callback(callback)))))));                                          \
         if(scale.by_count)                                                                      \
           return CGAL::estimate_##NAME##_curvatures<CGAL::Parallel_tag>(                       \
             points, PSC::parameters::neighbor_count(scale.neighbors, np));                      \

@@ -65,6 +65,8 @@ struct Estimation_settings
   double position_fit_blend = 0;                          // --position-blend (aso)
   // --neighbors auto (aso): the automatic scale's largest count, `neighbors` its smallest; 0: off
   std::size_t automatic_largest = 0;
+  // with it, the choices that the normals' passes made for the curvatures (null: none)
+  CGAL::Point_set_curvatures::Scale_choices* choices = nullptr;
   // the largest neighbourhood a point's estimate reads, by count
   std::size_t largest_count() const { return automatic_largest > 0 ? automatic_largest : neighbors; }
 };

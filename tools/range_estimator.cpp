@@ -32,7 +32,11 @@ Estimates Range_estimator::estimate(Point_set& ps, const PSC::Tile& tile, const 
     const auto start = std::chrono::steady_clock::now();
     try
     {
-      estimate_normals(ps, m_o, m_orientation, phase("normals"), tile);
+      // (with the automatic scale of both, the curvatures then skip the ladder where the
+      // normals' passes chose their count: parameters::scale_choices)
+      const bool share = m_scale.by_count && m_scale.automatic_largest > 0;
+      estimate_normals(ps, m_o, m_orientation, phase("normals"), tile, share ? &m_choices : nullptr);
+      m_scale.choices = share ? &m_choices : nullptr;
     }
     catch(const std::invalid_argument& e)
     {
@@ -57,6 +61,8 @@ Estimates Range_estimator::estimate(Point_set& ps, const PSC::Tile& tile, const 
     m_normals_seconds += seconds_since(start);
   }
   Estimates estimates = m_o.method->run(ps, m_scale, phase("curvatures"), tile);
+  m_choices.clear();
+  m_scale.choices = nullptr;
   m_undirected += undirected;
   return estimates;
 }

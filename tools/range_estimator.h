@@ -55,7 +55,9 @@ public:
 
 private:
   const Options& m_o;
-  const Estimation_settings m_scale;
+  Estimation_settings m_scale;
+  // the curvatures' choices that the normals' automatic scale makes over the whole cloud
+  CGAL::Point_set_curvatures::Scale_choices m_choices;
   Orientation_choice& m_orientation;
   const bool m_with_normals;
   std::size_t m_undirected = 0;

@@ -7,6 +7,7 @@
 #include <CGAL/Curvature_estimate.h>
 #include <CGAL/Algebraic_shape_operator_fit.h>
 #include <CGAL/Point_set_curvatures/parameters.h>
+#include <CGAL/Point_set_curvatures/scale_choices.h>
 #include <CGAL/Point_set_curvatures/internal/algebraic_shape_operator.h>
 #include <CGAL/Point_set_curvatures/internal/automatic_scale.h>
 #include <CGAL/Point_set_curvatures/internal/estimate_at_every_point.h>
@@ -311,7 +312,11 @@ estimate_aso_curvatures(const PointRange& points, const NamedParameters& np)
     estimators.where_even.settings.kernel_exponent = quartic;
     estimators.narrower_where_even = true;
   }
-  return I::estimate_at_automatic_scale<ConcurrencyTag>(points, np, estimators, sphere, ladder, name);
+  Point_set_curvatures::Scale_choices* choices = CGAL::parameters::choose_parameter(
+    CGAL::parameters::get_parameter(np, Point_set_curvatures::internal_np::scale_choices),
+    static_cast<Point_set_curvatures::Scale_choices*>(nullptr));
+  return I::estimate_at_automatic_scale<ConcurrencyTag>(points, np, estimators, sphere, ladder, name,
+                                                        choices ? &choices->records() : nullptr);
 }
 
 /// \ingroup PkgPointSetCurvaturesRef

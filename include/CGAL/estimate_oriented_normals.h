@@ -15,6 +15,7 @@
 #include <CGAL/Point_set_curvatures/internal/pca_plane.h>
 #include <CGAL/Point_set_curvatures/internal/quadric_fit.h>
 #include <CGAL/Point_set_curvatures/parameters.h>
+#include <CGAL/Point_set_curvatures/scale_choices.h>
 #include <CGAL/Point_set_curvatures/vertical_normals.h>
 
 #include <CGAL/property_map.h>
@@ -165,6 +166,9 @@ struct Normal_at_point
 {
   Normal_fit fit;
   Scale_ladder ladder;  // ladder.largest 0: the driver's neighbourhood; else the automatic scale
+  // With the automatic scale, in the pass after the first: the curvatures' choices to record
+  // (curvature_scale_record(), by input position), or null.
+  Curvature_scale_records* curvatures = nullptr;
   Normal_record operator()(const Neighborhood& nb) const;
 };
 
@@ -181,19 +185,30 @@ inline Normal_record Normal_at_point::operator()(const Neighborhood& nb) const
   if(ladder.largest > 0)
   {
     thread_local Ladder_scratch scratch;
+    thread_local Rung_cache cache;  // (the rungs' fits, for the curvatures' rule)
+    cache.clear();
+    scratch.cache = curvatures ? &cache : nullptr;
     Quadric_fit quadric;  // with the penalty that scan lines need
     const Scale_choice c = ladder.choose(nb, scratch);
     r.count = c.count;
-    if(ladder.climbs(c))
+    const bool climbs = ladder.climbs(c);
+    // (as_first_rung: the ladder's plain quadric failed there, the penalised one may not, as
+    // with a fixed count)
+    found = !climbs && (c.found || c.as_first_rung) && quadric.compute(scratch.chosen.nb) && quadric.normal(r.normal);
+    if(curvatures)
+    {
+      // (the same scratch: its offsets and ranks are the neighbourhood's; its rungs not needed any more)
+      scratch.same_neighborhood = true;
+      *curvatures->of(nb.query_index) = curvature_scale_record(ladder, nb, scratch);
+      scratch.same_neighborhood = false;
+    }
+    if(climbs)
     {
       ladder.count_sent_on();
       // a provisional record (no normal, no neighbours), replaced by the next pass's
       r.status = Curvature_estimate_status::VALID;
       return r;
     }
-    // (as_first_rung: the ladder's plain quadric failed there, the penalised one may not, as
-    // with a fixed count)
-    found = (c.found || c.as_first_rung) && quadric.compute(scratch.chosen.nb) && quadric.normal(r.normal);
   }
   else if(fit == Normal_fit::QUADRIC)
   {
@@ -776,6 +791,20 @@ std::vector<Normal_record> estimate_normal_records(PointRange& points, bool radi
   {
     const std::function<bool(double)> one_pass_callback = options.callback;  // (sets `cancelled`)
     Knn_search_cache knn;  // (the search's tree: the same in every pass)
+    // the curvatures' choices, in the pass after the first (the pass that climbs from the
+    // smallest rung, as the curvatures' second pass does), over the whole range
+    Scale_choices* choices =
+      choose_parameter(get_parameter(np, internal_np::scale_choices), static_cast<Scale_choices*>(nullptr));
+    Curvature_scale_records* curvature_records = nullptr;
+    if(choices && !options.has_tile && ladder.rungs() > 1)
+    {
+      curvature_records = &choices->records();
+      curvature_records->smallest = ladder.smallest;
+      curvature_records->largest = ladder.largest;
+      curvature_records->slot.clear();  // (until the second pass: none)
+      curvature_records->records.clear();
+    }
+    const std::size_t second_largest = std::min(ladder.largest, automatic_scale_pass_growth * ladder.smallest);
     const auto run = [&](const Scale_ladder& l, const std::vector<char>* visit,
                          const Automatic_scale_progress::Callbacks& progress, bool& pass_cancelled) {
       Neighborhood_options o = options;
@@ -783,8 +812,14 @@ std::vector<Normal_record> estimate_normal_records(PointRange& points, bool radi
       o.knn_cache = &knn;
       // (the passes' progress, mapped by automatic_scale_passes(), on to one_pass_callback)
       o.callback = progress.points;
+      Normal_at_point at_point{fit, l};
+      if(curvature_records && visit && !l.gate && l.largest == second_largest)
+      {
+        curvature_records->assign_slots(*visit);
+        at_point.curvatures = curvature_records;
+      }
       std::vector<Normal_record> r = evaluate_with_maps<Normal_record, ConcurrencyTag>(
-        points, radius_given, radius, l.largest, point_map, no_normal, o, Normal_at_point{fit, l});
+        points, radius_given, radius, l.largest, point_map, no_normal, o, at_point);
       pass_cancelled = cancelled;
       return r;
     };

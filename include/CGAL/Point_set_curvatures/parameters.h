@@ -37,11 +37,15 @@ enum class Aso_projection {
 };
 
 namespace Point_set_curvatures {
+
+class Scale_choices;
+
 namespace internal_np {
 
 enum aso_projection_t { aso_projection };
 enum neighbor_count_t { neighbor_count };
 enum automatic_scale_t { automatic_scale };
+enum scale_choices_t { scale_choices };
 
 }  // namespace internal_np
 
@@ -98,6 +102,29 @@ CGAL::Named_function_parameters<std::size_t, internal_np::automatic_scale_t, Nam
 automatic_scale(std::size_t largest, const NamedParameters& np = CGAL::parameters::default_values())
 {
   return CGAL::Named_function_parameters<std::size_t, internal_np::automatic_scale_t, NamedParameters>(largest, np);
+}
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// Named parameter of `estimate_oriented_normals()` and `estimate_aso_curvatures()` with
+/// `automatic_scale`: the normals' passes record in `choices` the count the curvatures' rule
+/// chooses at each point they climb for (the rule fits the same rungs of the same
+/// neighbourhoods), and the curvatures read it, searching each such point's neighbourhood once,
+/// at its count, instead of the ladder's (the same estimates, bit for bit; see
+/// `Scale_choices`). The tool passes it whenever it estimates the normals in memory.
+template <class NamedParameters = CGAL::parameters::Default_named_parameters>
+CGAL::Named_function_parameters<Scale_choices*, internal_np::scale_choices_t, NamedParameters>
+scale_choices(Scale_choices& choices, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return CGAL::Named_function_parameters<Scale_choices*, internal_np::scale_choices_t, NamedParameters>(&choices, np);
+}
+
+/// \ingroup PkgPointSetCurvaturesRef
+/// `scale_choices` by pointer: null for none.
+template <class NamedParameters = CGAL::parameters::Default_named_parameters>
+CGAL::Named_function_parameters<Scale_choices*, internal_np::scale_choices_t, NamedParameters>
+scale_choices(Scale_choices* choices, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  return CGAL::Named_function_parameters<Scale_choices*, internal_np::scale_choices_t, NamedParameters>(choices, np);
 }
 
 }  // namespace parameters

@@ -350,10 +350,48 @@ struct Distance_ranks
   }
 };
 
+// The rungs' fits of one neighbourhood, kept by a pass of the normals' automatic scale so that
+// the curvatures' rule, run on the same neighbourhood (curvature_scale_record()), fits each rung
+// once: a rung's fit depends on the statistic by its variance factors only (all three are kept)
+// and on the reference by its side only (Quadric_fit::orient_like_reference()).
+struct Rung_cache
+{
+  struct Entry
+  {
+    std::size_t k = 0;
+    bool fitted = false;  // compute() and variance_factors() succeeded
+    Quadric_fit fit;
+    double factor[3] = {0, 0, 0};  // those of H and of the normal's two slopes (scaled frame)
+    double sigma2 = 0;             // the residual variance (scaled frame)
+    std::size_t size = 0;          // the rung's point count
+    std::vector<double> frame;     // its frame cache where kept (the smallest rung: the gate's cubic)
+  };
+  std::vector<Entry> entries;
+  std::size_t used = 0;
+
+  void clear() { used = 0; }
+  Entry* find(std::size_t k)
+  {
+    for(std::size_t i = 0; i < used; ++i)
+      if(entries[i].k == k)
+        return &entries[i];
+    return nullptr;
+  }
+  Entry& add()
+  {
+    if(used == entries.size())
+      entries.emplace_back();
+    return entries[used++];
+  }
+};
+
 // One thread's scratch of Scale_ladder::choose(); the chosen rung's neighbourhood is left in
 // `chosen`.
 struct Ladder_scratch
 {
+  Rung_cache* cache = nullptr;  // the rungs' fits to keep and reuse (null: none)
+  // The neighbourhood is the previous call's: `offsets` and `ranks` are its already.
+  bool same_neighborhood = false;
   Neighbor_offsets offsets;
   Distance_ranks ranks;
   Sub_neighborhood chosen, trial;
@@ -383,6 +421,14 @@ struct Scale_choice
   // With Scale_ladder::gate: noise may dominate, the next pass decides (`count` is then twice
   // the smallest count, the neighbourhood that pass gives).
   bool climb = false;
+  // The chosen rung (found or as_first_rung): the neighbour count that gives its neighbourhood
+  // and that neighbourhood's radius (input units); the query normal its fit was oriented by
+  // (`reference`: the neighbourhood's own where `reference_is_start`, else a lower rung's n0),
+  // and the n0 of the first rung kept (`anchor`), which tells the side of `mean`.
+  std::size_t k = 0;
+  double radius = 0;
+  double reference[3] = {0, 0, 0}, anchor[3] = {0, 0, 0};
+  bool reference_is_start = true;
 };
 
 // The ladder's settings: the smallest and the largest neighbour count.
@@ -431,6 +477,9 @@ struct Scale_ladder
   // choice is thus the ladder's whatever the estimator would have said at that rung (an
   // invalid estimate there, two_sheets, used to stop it).
   bool final_pass = true;
+
+  // Only the choice, without the neighbourhood for an estimate (curvature_scale_record()).
+  bool record_only = false;
 
   // The least chosen count that goes on to the next pass (automatic_scale_passes()): the
   // gate's points ask for the next rung, the others kept the top rung of their pass.
@@ -500,7 +549,8 @@ struct Scale_ladder
   // lie along one line, or, for the mean curvature, where its fit can hardly tell it
   // (curvature_untold()).
   static Rung_fit fit_rung(const Neighborhood& whole, const Neighbor_offsets& offsets, Distance_ranks& ranks,
-                           std::size_t k, const double reference[3], Statistic statistic, Sub_neighborhood& target)
+                           std::size_t k, const double reference[3], Statistic statistic, Sub_neighborhood& target,
+                           Rung_cache* cache = nullptr, bool keep_frame = false)
   {
     Rung_fit rung;
     const double r2 = ranks.kth(k);
@@ -509,14 +559,65 @@ struct Scale_ladder
       rung.outcome = Rung_fit::NO_RUNG;
       return rung;
     }
-    target.take(whole, rung_radius(offsets, r2), offsets);
-    std::copy(reference, reference + 3, target.nb.query_normal);
-    rung.fit.anisotropy_penalty = 0;
-    rung.fit.frame_cache = &target.frame;
-    double sigma2 = 0;
-    const Combinations c = combinations(statistic);
-    if(rung.fit.compute(target.nb) && rung.fit.variance_factors(target.nb, c.g, c.m, rung.factor, sigma2))
+    const double radius = rung_radius(offsets, r2);
+    // the mean curvature's combination, then the normal's two (a cache keeps all three)
+    static constexpr double all[3][6] = {{0, 0, 0, 1, 0, 1}, {0, 1, 0, 0, 0, 0}, {0, 0, 1, 0, 0, 0}};
+    double factor[3] = {0, 0, 0}, sigma2 = 0;
+    bool fitted = false;
+    Rung_cache::Entry* kept = cache ? cache->find(k) : nullptr;
+    if(kept)
     {
+      // (its points are not taken again: a record reads their count only)
+      rung.fit = kept->fit;
+      target.frame = kept->frame;
+      if(rung.fit.orient_like_reference(reference))
+        for(std::size_t b = 0; b + 7 < target.frame.size(); b += 8)
+        {
+          target.frame[b + 6] = -target.frame[b + 6];
+          target.frame[b + 7] = -target.frame[b + 7];
+        }
+      target.nb.size = kept->size;
+      target.nb.radius = offsets.unit == 1 ? radius : offsets.unit * radius;  // (as take() sets it)
+      std::copy(reference, reference + 3, target.nb.query_normal);
+      fitted = kept->fitted;
+      std::copy(kept->factor, kept->factor + 3, factor);
+      sigma2 = kept->sigma2;
+    }
+    else
+    {
+      target.take(whole, radius, offsets);
+      std::copy(reference, reference + 3, target.nb.query_normal);
+      rung.fit.anisotropy_penalty = 0;
+      rung.fit.frame_cache = &target.frame;
+      const Combinations c = cache ? Combinations{all, 3} : combinations(statistic);
+      double* out = cache || statistic == Statistic::MEAN_CURVATURE ? factor : factor + 1;
+      fitted = rung.fit.compute(target.nb) && rung.fit.variance_factors(target.nb, c.g, c.m, out, sigma2);
+      if(cache)
+      {
+        Rung_cache::Entry& e = cache->add();
+        e.k = k;
+        e.fitted = fitted;
+        e.fit = rung.fit;
+        e.fit.frame_cache = nullptr;
+        std::copy(factor, factor + 3, e.factor);
+        e.sigma2 = sigma2;
+        e.size = target.nb.size;
+        if(keep_frame)
+          e.frame = target.frame;
+        else
+          e.frame.clear();
+      }
+    }
+    rung.fit.frame_cache = &target.frame;
+    if(fitted)
+    {
+      if(statistic == Statistic::MEAN_CURVATURE)
+        rung.factor[0] = factor[0];
+      else
+      {
+        rung.factor[0] = factor[1];
+        rung.factor[1] = factor[2];
+      }
       const bool line = rung.fit.weighted_line || (statistic == Statistic::MEAN_CURVATURE &&
                                                    curvature_untold(rung.factor[0], sigma2, target.nb.size));
       rung.outcome = line ? Rung_fit::LINE : Rung_fit::FITTED;
@@ -558,9 +659,12 @@ struct Scale_ladder
     const std::size_t k = std::min(smallest, whole.size);
     if(k == 0)
       return c;
-    offsets.assign(whole);
     Distance_ranks& ranks = scratch.ranks;
-    ranks.assign(offsets.d2, 1.0 / (offsets.limit * offsets.limit));
+    if(!scratch.same_neighborhood)
+    {
+      offsets.assign(whole);
+      ranks.assign(offsets.d2, 1.0 / (offsets.limit * offsets.limit));
+    }
     const double rung2 = ranks.kth(k);
     if(rung2 == 0)
       return c;  // (the k nearest at the query: no rung)
@@ -683,9 +787,12 @@ struct Scale_ladder
     Sub_neighborhood &chosen = scratch.chosen, &trial = scratch.trial;
     constexpr double inf = std::numeric_limits<double>::infinity();
     Scale_choice c;
-    offsets.assign(whole);
     Distance_ranks& ranks = scratch.ranks;
-    ranks.assign(offsets.d2, 1.0 / (offsets.limit * offsets.limit));
+    if(!scratch.same_neighborhood)
+    {
+      offsets.assign(whole);
+      ranks.assign(offsets.d2, 1.0 / (offsets.limit * offsets.limit));
+    }
     const bool by_normal = statistic == Statistic::NORMAL;
     const int m = combinations(statistic).m;
     double lo[2] = {-inf, -inf}, hi[2] = {inf, inf};
@@ -699,13 +806,15 @@ struct Scale_ladder
     // a larger rung may spread in two directions; taken where the rung above it cannot be fitted
     // (a lone noisy line, whose longer neighbourhoods are thinner)
     Rung_fit passed;
-    std::size_t passed_rank = 0;
-    bool fitted = false;  // scratch.chosen_fit is the chosen rung's
+    std::size_t passed_rank = 0, passed_k = 0;
+    bool fitted = false;    // scratch.chosen_fit is the chosen rung's
+    bool kept_one = false;  // a rung was kept: `reference` is no longer the neighbourhood's
     // (a cloud of fewer points than the smallest count: every point, as with neighbor_count)
     std::size_t k = std::min(smallest, whole.size);
     for(std::size_t j = 0; k > 0 && k <= whole.size && j < rungs(); ++j, k *= 2)
     {
-      Rung_fit rung = fit_rung(whole, offsets, ranks, k, reference, statistic, c.found ? trial : chosen);
+      Rung_fit rung =
+        fit_rung(whole, offsets, ranks, k, reference, statistic, c.found ? trial : chosen, scratch.cache, j == 0);
       if(rung.outcome == Rung_fit::NO_RUNG)
         continue;
       if(rung.outcome == Rung_fit::LINE)
@@ -718,6 +827,7 @@ struct Scale_ladder
         {
           passed = rung;
           passed_rank = j;
+          passed_k = k;
           std::swap(chosen, trial);
           continue;
         }
@@ -733,6 +843,8 @@ struct Scale_ladder
           {
             c.as_first_rung = true;
             c.count = chosen.nb.size;
+            c.k = k;
+            c.radius = chosen.nb.radius;
           }
           break;
         }
@@ -813,6 +925,13 @@ struct Scale_ladder
       c.rung = rank;
       c.mean = v[0];
       c.count = chosen.nb.size;  // (after the swap: target is the rung given up)
+      c.k = fallback ? passed_k : k;
+      c.radius = r;
+      std::copy(reference, reference + 3, c.reference);
+      c.reference_is_start = !kept_one;
+      if(!kept_one)
+        std::copy(fit.n0, fit.n0 + 3, c.anchor);
+      kept_one = true;
       scratch.chosen_fit = fit;
       scratch.chosen_fit.frame_cache = nullptr;  // (a cache of `trial`'s or `chosen`'s)
       fitted = true;
@@ -832,7 +951,7 @@ struct Scale_ladder
       bool kept = kept_noise2 < automatic_scale_gate_cubic_share * residual0;
       if(!kept)
       {
-        const Rung_fit rung = fit_rung(whole, offsets, ranks, half, reference, statistic, trial);
+        const Rung_fit rung = fit_rung(whole, offsets, ranks, half, reference, statistic, trial, scratch.cache);
         // (along one line, or where it can hardly tell the curvature, it tells nothing of the noise)
         kept_noise2 = rung.outcome == Rung_fit::FITTED ? separated_noise(rung.residual, rung.radius, residual0, radius0)
                                                        : std::numeric_limits<double>::quiet_NaN();
@@ -847,12 +966,106 @@ struct Scale_ladder
       send_on(c);  // (too few points for either test)
     if(gate && !c.found && !c.as_first_rung && passed.outcome == Rung_fit::LINE && !final_pass)
       send_on(c);
-    if((c.found || c.as_first_rung) && !climbs(c))
+    if((c.found || c.as_first_rung) && !climbs(c) && !record_only)
     {
       chosen.take_attributes(whole);
       chosen.nb.plain_quadric = fitted && !c.climb ? &scratch.chosen_fit : nullptr;
     }
     return c;
+  }
+};
+
+// The curvatures' choice of scale at one point, made by a pass of the normals' automatic scale
+// over the same neighbourhood (curvature_scale_record()), so that the curvatures' passes estimate
+// the point at its chosen count directly: a neighbourhood search of that count instead of the
+// ladder's passes (Known_scale_estimator). The fields of Scale_choice that the estimate reads;
+// `mean` and `reference` with the side of `anchor`.
+struct Curvature_scale_record
+{
+  enum Flags : std::uint8_t { FOUND = 1, AS_FIRST_RUNG = 2, NOISE_CLIMB = 4, REFERENCE_IS_START = 8 };
+  double radius = 0, mean = 0, mean_error = 0;
+  double reference[3] = {0, 0, 0}, anchor[3] = {0, 0, 0};
+  std::uint32_t count = 0;  // the neighbour count of the chosen rung (0: no record)
+  std::uint32_t size = 0;   // its neighbourhood's size
+  std::uint8_t rung = 0, flags = 0;
+};
+
+// The curvatures' choice (Scale_ladder::Statistic::MEAN_CURVATURE) on `whole`, the neighbourhood
+// of the pass after the first one of the same ladder, `pass` (the normals' ladder of that pass,
+// whose smallest and largest counts the curvatures' share): the first pass's test on the smallest
+// rung (its neighbourhood is bit for bit the first pass's), then, where that sends the point on,
+// the rule on the rungs of `pass`; the fits are those the normals' rule left in `scratch.cache`
+// where it made them. A record with count 0 where the choice is not made in this pass (the top
+// rung of a pass that is not the last one) or no rung can be fitted.
+inline Curvature_scale_record curvature_scale_record(const Scale_ladder& pass, const Neighborhood& whole,
+                                                     Ladder_scratch& scratch)
+{
+  typedef Curvature_scale_record Record;
+  Scale_ladder ladder = pass;
+  ladder.statistic = Scale_ladder::Statistic::MEAN_CURVATURE;
+  ladder.sent_on = nullptr;
+  ladder.record_only = true;
+  Scale_ladder first = ladder;
+  first.largest = first.smallest;
+  first.gate = true;
+  first.final_pass = false;
+  Scale_choice c = first.choose(whole, scratch);
+  Record r;
+  if(c.climb)
+  {
+    ladder.gate = false;
+    c = ladder.choose(whole, scratch);
+    if(ladder.climbs(c))
+      return r;
+  }
+  if(!c.found && !c.as_first_rung)
+    return r;
+  r.count = static_cast<std::uint32_t>(c.k);
+  r.size = static_cast<std::uint32_t>(c.count);
+  r.radius = c.radius;
+  r.mean = c.mean;
+  r.mean_error = c.mean_error;
+  std::copy(c.reference, c.reference + 3, r.reference);
+  std::copy(c.anchor, c.anchor + 3, r.anchor);
+  r.rung = static_cast<std::uint8_t>(c.rung);
+  r.flags = static_cast<std::uint8_t>((c.found ? Record::FOUND : 0) | (c.as_first_rung ? Record::AS_FIRST_RUNG : 0) |
+                                      (c.noise_climb ? Record::NOISE_CLIMB : 0) |
+                                      (c.reference_is_start ? Record::REFERENCE_IS_START : 0));
+  return r;
+}
+
+// The records of curvature_scale_record() for a range and the ladder's counts they were made with:
+// point i's is records[slot[i]] (no_slot: none), the points of the pass that makes them in input
+// order (most points of a clean cloud never climb: 4 bytes each).
+struct Curvature_scale_records
+{
+  static constexpr std::uint32_t no_slot = std::numeric_limits<std::uint32_t>::max();
+  std::size_t smallest = 0, largest = 0;
+  std::vector<std::uint32_t> slot;
+  std::vector<Curvature_scale_record> records;
+
+  bool fit(const Scale_ladder& ladder, std::size_t points) const
+  {
+    return smallest == ladder.smallest && largest == ladder.largest && slot.size() == points;
+  }
+  // A slot for each point of `visit` (the pass's mask), the others none.
+  void assign_slots(const std::vector<char>& visit)
+  {
+    slot.assign(visit.size(), no_slot);
+    std::uint32_t next = 0;
+    for(std::size_t i = 0; i < visit.size(); ++i)
+      if(visit[i])
+        slot[i] = next++;
+    records.assign(next, Curvature_scale_record());
+  }
+  // Point i's record, or null.
+  const Curvature_scale_record* of(std::size_t i) const
+  {
+    return i < slot.size() && slot[i] != no_slot ? &records[slot[i]] : nullptr;
+  }
+  Curvature_scale_record* of(std::size_t i)
+  {
+    return i < slot.size() && slot[i] != no_slot ? &records[slot[i]] : nullptr;
   }
 };
 
@@ -897,14 +1110,7 @@ struct Automatic_scale_estimator : Estimator_base
   {
     thread_local Ladder_scratch scratch;
     const Scale_choice c = ladder.choose(nb, scratch);
-    const Sub_neighborhood& chosen = scratch.chosen;
-    if(c.as_first_rung)
-    {
-      Local_estimate e = estimators.estimator(chosen.nb);
-      e.neighbor_count = c.count;
-      return e;
-    }
-    if(!c.found)
+    if(!c.found && !c.as_first_rung)
       return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
     if(ladder.climbs(c))
     {
@@ -915,15 +1121,27 @@ struct Automatic_scale_estimator : Estimator_base
       provisional.neighbor_count = c.count;
       return provisional;
     }
-    Local_estimate e = c.noise_climb ? estimators.at_noise_scale(chosen.nb)
-                       : estimators.narrower_where_even && spreads_evenly(chosen.nb) ? estimators.where_even(chosen.nb)
-                                                                                     : estimators.estimator(chosen.nb);
+    return at_choice(c, scratch.chosen.nb);
+  }
+
+  // The estimate at the rung `c` chose (found or as_first_rung), whose neighbourhood is `chosen`.
+  Local_estimate at_choice(const Scale_choice& c, const Neighborhood& chosen) const
+  {
+    if(c.as_first_rung)
+    {
+      Local_estimate e = estimators.estimator(chosen);
+      e.neighbor_count = c.count;
+      return e;
+    }
+    Local_estimate e = c.noise_climb                                              ? estimators.at_noise_scale(chosen)
+                       : estimators.narrower_where_even && spreads_evenly(chosen) ? estimators.where_even(chosen)
+                                                                                  : estimators.estimator(chosen);
     if(e.status == Curvature_estimate_status::VALID && c.rung > 0)
     {
       // the sphere's mean curvature where it agrees with the chosen rung's quadric (elsewhere
       // the sphere is biased: strongly anisotropic shapes at large scales)
       double mean = e.mean;
-      const Local_estimate s = sphere(chosen.nb);
+      const Local_estimate s = sphere(chosen);
       if(s.status == Curvature_estimate_status::VALID && std::isfinite(s.mean) &&
          std::abs(s.mean - c.mean) <= automatic_scale_kappa * c.mean_error)
         mean = s.mean;
@@ -936,6 +1154,47 @@ struct Automatic_scale_estimator : Estimator_base
     e.neighbor_count = c.count;
     e.mean_error = c.mean_error;
     return e;
+  }
+};
+
+// The estimate of Automatic_scale_estimator at a point whose choice its record holds
+// (curvature_scale_record()), from the neighbourhood of the record's count: the chosen rung's
+// neighbourhood, bit for bit, where its size and radius are the record's; elsewhere (a point
+// that the normals' cloud held and this one does not: an unusable normal) an estimate with
+// status NOT_COMPUTED, for the ladder's passes to make. The record's side is turned to that of
+// the point's normal: the ladder's first rung kept is oriented like it (orient_like()).
+template <class Estimator, class Sphere>
+struct Known_scale_estimator : Estimator_base
+{
+  const Automatic_scale_estimator<Estimator, Sphere>* automatic;
+  const Curvature_scale_records* records;
+
+  Known_scale_estimator(const Automatic_scale_estimator<Estimator, Sphere>& a, const Curvature_scale_records& r)
+      : Estimator_base(a), automatic(&a), records(&r)
+  {}
+
+  Local_estimate operator()(const Neighborhood& nb) const
+  {
+    typedef Curvature_scale_record Record;
+    const Record& r = *records->of(nb.query_index);  // (the pass visits the points with one)
+    if(nb.size != r.size || nb.radius != r.radius)
+      return Local_estimate::invalid(Curvature_estimate_status::NOT_COMPUTED);
+    Scale_choice c;
+    c.found = (r.flags & Record::FOUND) != 0;
+    c.as_first_rung = (r.flags & Record::AS_FIRST_RUNG) != 0;
+    c.noise_climb = (r.flags & Record::NOISE_CLIMB) != 0;
+    c.rung = r.rung;
+    c.count = r.size;
+    c.mean_error = r.mean_error;
+    double side[3];
+    orient_like(r.anchor, nb.query_normal, side);
+    const double s = side[0] == r.anchor[0] && side[1] == r.anchor[1] && side[2] == r.anchor[2] ? 1.0 : -1.0;
+    c.mean = s * r.mean;
+    Neighborhood chosen = nb;
+    if(!(r.flags & Record::REFERENCE_IS_START))
+      for(int a = 0; a < 3; ++a)
+        chosen.query_normal[a] = s * r.reference[a];
+    return automatic->at_choice(c, chosen);
   }
 };
 
@@ -958,10 +1217,13 @@ struct Automatic_scale_estimator : Estimator_base
 // `points`: the number of points the first pass estimates (points_to_estimate(), for the
 // progress; 0 without a callback).
 // Cancelled, the points without their final estimate are a default Result (NOT_COMPUTED).
+//
+// `settled`, if given, is read after the first pass: the points whose estimate that pass made
+// final whatever its count (the points that run() estimated from their records).
 template <class Result, class Run, class Chosen_count>
-std::vector<Result> automatic_scale_passes(std::size_t points, const Scale_ladder& ladder, const Run& run,
-                                           const Chosen_count& chosen_count,
-                                           const std::function<bool(double)>& callback)
+std::vector<Result>
+automatic_scale_passes(std::size_t points, const Scale_ladder& ladder, const Run& run, const Chosen_count& chosen_count,
+                       const std::function<bool(double)>& callback, const std::vector<char>* settled = nullptr)
 {
   Automatic_scale_progress progress(callback);
   Scale_ladder pass = ladder;
@@ -974,12 +1236,13 @@ std::vector<Result> automatic_scale_passes(std::size_t points, const Scale_ladde
   bool cancelled = false;
   std::vector<Result> result = run(pass, nullptr, progress.start_pass(points, !more_passes), cancelled);
   std::vector<char> climb(result.size(), 0);
+  const auto is_settled = [settled](std::size_t i) { return settled && !settled->empty() && (*settled)[i]; };
   while(!cancelled && ladder.rungs() > pass.rungs())
   {
     std::size_t climbing = 0;
     for(std::size_t i = 0; i < result.size(); ++i)
     {
-      climb[i] = chosen_count(result[i]) >= pass.climb_count() ? 1 : 0;
+      climb[i] = !is_settled(i) && chosen_count(result[i]) >= pass.climb_count() ? 1 : 0;
       climbing += climb[i];
     }
     if(climbing == 0)
@@ -998,9 +1261,9 @@ std::vector<Result> automatic_scale_passes(std::size_t points, const Scale_ladde
   }
   // cancelled: the points that would have climbed further have no final estimate either
   if(cancelled && ladder.rungs() > pass.rungs())
-    for(Result& r : result)
-      if(chosen_count(r) >= pass.climb_count())
-        r = Result();
+    for(std::size_t i = 0; i < result.size(); ++i)
+      if(!is_settled(i) && chosen_count(result[i]) >= pass.climb_count())
+        result[i] = Result();
   return result;
 }
 
@@ -1021,42 +1284,124 @@ std::size_t points_to_estimate(const PointRange& points, const PointMap& point_m
 }
 
 // The automatic scale of the estimators (automatic_scale_passes() on estimate_at_every_point();
-// Automatic_scale_estimator).
+// Automatic_scale_estimator). With `records` made for this ladder and range (the normals' passes
+// with the named parameter scale_choices), the first pass estimates the points that have one
+// from the neighbourhood of its count (Known_scale_estimator: a pass per count), the same
+// estimate bit for bit, and the ladder's passes the others; not with a tile (whose halo would
+// have to cover the ladder's neighbourhoods all the same), a refinement of the normals, or an
+// estimator that tests the tangent spread of the neighbourhood the driver gives it.
 template <class ConcurrencyTag, class PointRange, class NamedParameters, class Estimator, class Sphere>
 auto estimate_at_automatic_scale(const PointRange& points, const NamedParameters& np,
                                  const Scale_estimators<Estimator>& estimators, const Sphere& sphere,
-                                 const Scale_ladder& ladder, const char* function_name)
+                                 const Scale_ladder& ladder, const char* function_name,
+                                 const Curvature_scale_records* records = nullptr)
 {
   typedef decltype(estimate_at_every_point<ConcurrencyTag>(points, false, 0.0, np, estimators.estimator,
                                                            function_name)) Results;
   typedef typename Results::value_type Estimate;
-  Area_cache areas;      // (the same in every pass)
-  Knn_search_cache knn;  // (the search's tree: the same in every pass)
-  const auto run = [&](const Scale_ladder& l, const std::vector<char>* visit,
-                       const Automatic_scale_progress::Callbacks& progress, bool& cancelled) {
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const Tile tile = choose_parameter(get_parameter(np, internal_np::tile), Tile::whole_space());
+  const std::size_t n = std::size_t(std::distance(points.begin(), points.end()));
+  const std::size_t min_neighbors = min_neighbors_parameter(np, estimators.estimator.min_neighbors);
+  // the points estimated from their records, by count
+  std::vector<std::size_t> counts;
+  std::vector<std::uint32_t> count_of(n, 0);
+  if(records && records->fit(ladder, n) && tile.is_whole_space() && estimators.estimator.normal_refinements == 0 &&
+     !estimators.estimator.check_tangent_spread)
+  {
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const Curvature_scale_record* r = records->of(i);
+      if(r && r->count > 0 && r->size >= min_neighbors)
+      {
+        count_of[i] = r->count;
+        counts.push_back(r->count);
+      }
+    }
+    std::sort(counts.begin(), counts.end());
+    counts.erase(std::unique(counts.begin(), counts.end()), counts.end());
+  }
+  std::vector<char> settled;  // the points their records estimated
+  Area_cache areas;           // (the same in every pass)
+  Knn_search_cache knn;       // (the search's tree: the same in every pass)
+  const auto estimate = [&](const auto& estimator, std::size_t k, const std::vector<char>* visit,
+                            const std::function<bool(double)>& progress,
+                            const std::function<bool(double)>& area_progress, bool& cancelled) {
     Pass_options pass;
     pass.areas = &areas;
     pass.knn = &knn;
-    pass.visit_k = l.largest;
+    pass.visit_k = k;
     pass.visit = visit;
-    pass.progress = progress.points;
-    pass.area_progress = progress.areas;
+    pass.progress = progress;
+    pass.area_progress = area_progress;
     pass.cancelled = &cancelled;
-    return estimate_at_every_point<ConcurrencyTag>(
-      points, false, 0.0, np, Automatic_scale_estimator<Estimator, Sphere>(estimators, sphere, l), function_name, pass);
+    return estimate_at_every_point<ConcurrencyTag>(points, false, 0.0, np, estimator, function_name, pass);
   };
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
+  const auto run = [&](const Scale_ladder& l, const std::vector<char>* visit,
+                       const Automatic_scale_progress::Callbacks& progress, bool& cancelled) {
+    const Automatic_scale_estimator<Estimator, Sphere> automatic(estimators, sphere, l);
+    if(counts.empty() || visit)
+      return estimate(automatic, l.largest, visit, progress.points, progress.areas, cancelled);
+    // the first pass: the points with a record at their count, then the others on the first rung
+    std::size_t done = 0;
+    // (each pass's share of the first pass's progress by its points)
+    const auto share = [&](std::size_t points) -> std::function<bool(double)> {
+      if(!progress.points)
+        return {};
+      const double from = double(done) / double(n), size = double(points) / double(n);
+      return [f = progress.points, from, size](double x) { return f(from + size * x); };
+    };
+    const Known_scale_estimator<Estimator, Sphere> from_record(automatic, *records);
+    Results result(n);
+    std::vector<char> mask(n, 0);
+    settled.assign(n, 0);
+    bool first = true;
+    for(std::size_t k : counts)
+    {
+      std::size_t points = 0;
+      for(std::size_t i = 0; i < n; ++i)
+      {
+        mask[i] = count_of[i] == k ? 1 : 0;
+        points += mask[i];
+      }
+      Results part = estimate(from_record, k, &mask, share(points),
+                              first ? progress.areas : std::function<bool(double)>(), cancelled);
+      first = false;
+      done += points;
+      if(cancelled)
+        return result;
+      for(std::size_t i = 0; i < n; ++i)
+        if(mask[i] && part[i].status != Curvature_estimate_status::NOT_COMPUTED)
+        {
+          result[i] = part[i];
+          settled[i] = 1;
+        }
+    }
+    std::size_t others = 0;
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      mask[i] = settled[i] ? 0 : 1;
+      others += mask[i];
+    }
+    if(others > 0)
+    {
+      Results part = estimate(automatic, l.largest, &mask, share(others),
+                              first ? progress.areas : std::function<bool(double)>(), cancelled);
+      for(std::size_t i = 0; i < n; ++i)
+        if(mask[i])
+          result[i] = part[i];
+    }
+    return result;
+  };
   const std::function<bool(double)> callback =
     choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
   typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
   const std::size_t first_pass_points =
-    callback ? points_to_estimate(points, NP_helper::get_const_point_map(points, np),
-                                  choose_parameter(get_parameter(np, internal_np::tile), Tile::whole_space()))
-             : 0;
+    callback ? points_to_estimate(points, NP_helper::get_const_point_map(points, np), tile) : 0;
   return automatic_scale_passes<Estimate>(
     first_pass_points, ladder, run, [](const Estimate& e) { return e.is_valid() ? e.neighbor_count : std::size_t(0); },
-    callback);
+    callback, &settled);
 }
 
 // The largest count of the named parameter automatic_scale, 0 without it. Throws

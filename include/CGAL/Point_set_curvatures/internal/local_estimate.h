@@ -51,6 +51,8 @@ struct Neighborhood
   // i at position + 3 index[i] (absolute coordinates, as `center`), from which the automatic
   // scale takes its rungs as the driver takes a neighbourhood (automatic_scale.h); else null.
   const double* position = nullptr;
+  // The query's position in the input range, where the cloud drivers gather the neighbourhood.
+  std::size_t query_index = 0;
   // Per-neighbour sample weights (quadrature weights such as tangent Voronoi areas), or null
   // for equal weights: the estimators that support them multiply each neighbour's kernel
   // weight by it.

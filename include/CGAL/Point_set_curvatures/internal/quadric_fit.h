@@ -141,6 +141,7 @@ inline bool spreads_in_two_directions(const double values[3])
 struct Quadric_fit
 {
   double t1[3], t2[3], n0[3];      // the frame of the fit, n0 oriented like the query's normal
+  double axis[3];                  // n0 before it was oriented
   double a[6];                     // the height field's coefficients (scaled frame)
   Quadratic_height_fit equations;  // the weighted normal equations solved, penalty included
 
@@ -208,6 +209,7 @@ struct Quadric_fit
     orient_like(vectors[0], nb.query_normal, n0);
     for(int i = 0; i < 3; ++i)
     {
+      axis[i] = vectors[0][i];
       t1[i] = vectors[2][i];
       t2[i] = vectors[1][i];
     }
@@ -240,6 +242,24 @@ struct Quadric_fit
     fourth_moment = moments.fourth();
     add_penalty(anisotropy_penalty);
     return fit.solve(a);
+  }
+
+  // After compute(): the fit that compute() gives on the same neighbourhood with a query normal
+  // `reference`, bit for bit: the same frame and weights, the heights negated where n0 turns
+  // over, so that n0, the coefficients and the normal equations' right-hand side are negated.
+  // True if n0 turned over.
+  bool orient_like_reference(const double reference[3])
+  {
+    double n[3];
+    orient_like(axis, reference, n);
+    if(n[0] == n0[0] && n[1] == n0[1] && n[2] == n0[2])
+      return false;
+    std::copy(n, n + 3, n0);
+    for(double& c : a)
+      c = -c;
+    for(double& b : equations.atb)
+      b = -b;
+    return true;
   }
 
   // After compute() with anisotropy_penalty 0 (the automatic scale's rungs): the fit that

@@ -144,6 +144,7 @@ void visit_neighborhood(const Sorted_cloud& cloud, std::uint32_t query, double r
   nb.index = index;
   nb.input_index = cloud.input_index.data();
   nb.position = position;
+  nb.query_index = cloud.input_index[query];
   nb.sample_weight = sample_weight;
   visit(std::size_t(cloud.input_index[query]), static_cast<const Neighborhood&>(nb));
 }
