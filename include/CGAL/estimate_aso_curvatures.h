@@ -9,7 +9,7 @@
 #include <CGAL/Point_set_curvatures/parameters.h>
 #include <CGAL/Point_set_curvatures/scale_choices.h>
 #include <CGAL/Point_set_curvatures/internal/algebraic_shape_operator.h>
-#include <CGAL/Point_set_curvatures/internal/automatic_scale.h>
+#include <CGAL/Point_set_curvatures/internal/automatic_scale_estimation.h>
 #include <CGAL/Point_set_curvatures/internal/estimate_at_every_point.h>
 #include <CGAL/estimate_apss_curvatures.h>
 

@@ -9,7 +9,7 @@
 #ifndef CGAL_ESTIMATE_ORIENTED_NORMALS_H
 #define CGAL_ESTIMATE_ORIENTED_NORMALS_H
 
-#include <CGAL/Point_set_curvatures/internal/automatic_scale.h>
+#include <CGAL/Point_set_curvatures/internal/automatic_scale_estimation.h>
 #include <CGAL/Point_set_curvatures/internal/crossing_parity.h>
 #include <CGAL/Point_set_curvatures/internal/evaluate_at_every_point.h>
 #include <CGAL/Point_set_curvatures/internal/pca_plane.h>

@@ -6,7 +6,7 @@
 #ifndef CGAL_POINT_SET_CURVATURES_SCALE_CHOICES_H
 #define CGAL_POINT_SET_CURVATURES_SCALE_CHOICES_H
 
-#include <CGAL/Point_set_curvatures/internal/automatic_scale.h>
+#include <CGAL/Point_set_curvatures/internal/automatic_scale_estimation.h>
 
 #include <cstddef>
 
