@@ -804,7 +804,7 @@ std::vector<Normal_record> estimate_normal_records(PointRange& points, bool radi
       curvature_records->slot.clear();  // (until the second pass: none)
       curvature_records->records.clear();
     }
-    const std::size_t second_largest = std::min(ladder.largest, automatic_scale_pass_growth * ladder.smallest);
+    const std::size_t second_largest = next_pass_largest(ladder, ladder.smallest);
     const auto run = [&](const Scale_ladder& l, const std::vector<char>* visit,
                          const Automatic_scale_progress::Callbacks& progress, bool& pass_cancelled) {
       Neighborhood_options o = options;

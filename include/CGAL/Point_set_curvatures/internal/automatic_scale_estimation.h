@@ -274,6 +274,12 @@ struct Known_scale_estimator : Estimator_base
   }
 };
 
+// The largest count of the pass after one whose largest count is `previous`, on `ladder`.
+inline std::size_t next_pass_largest(const Scale_ladder& ladder, std::size_t previous)
+{
+  return std::min(ladder.largest, automatic_scale_pass_growth * previous);
+}
+
 // The passes of the automatic scale: every point on the ladder's first rung with the test of
 // Scale_ladder::gate (the neighbourhood of k); then the points it sends on, on the rungs k, 2 k,
 // ..., 16 k (the neighbourhood of 16 k, automatic_scale_pass_growth k, or of `largest` if smaller);
@@ -327,7 +333,7 @@ automatic_scale_passes(std::size_t points, const Scale_ladder& ladder, const Run
       break;
     }
     pass.gate = false;
-    pass.largest = std::min(ladder.largest, automatic_scale_pass_growth * pass.largest);
+    pass.largest = next_pass_largest(ladder, pass.largest);
     const bool last = ladder.rungs() == pass.rungs();
     pass.final_pass = last;
     const std::vector<Result> more = run(pass, &climb, progress.start_pass(climbing, last), cancelled);
@@ -382,10 +388,11 @@ auto estimate_at_automatic_scale(const PointRange& points, const NamedParameters
   const std::size_t min_neighbors = min_neighbors_parameter(np, estimators.estimator.min_neighbors);
   // the points estimated from their records, by count
   std::vector<std::size_t> counts;
-  std::vector<std::uint32_t> count_of(n, 0);
+  std::vector<std::uint32_t> count_of;  // (empty without records)
   if(records && records->fit(ladder, n) && tile.is_whole_space() && estimators.estimator.normal_refinements == 0 &&
      !estimators.estimator.check_tangent_spread)
   {
+    count_of.assign(n, 0);
     for(std::size_t i = 0; i < n; ++i)
     {
       const Curvature_scale_record* r = records->of(i);
@@ -421,11 +428,12 @@ auto estimate_at_automatic_scale(const PointRange& points, const NamedParameters
       return estimate(automatic, l.largest, visit, progress.points, progress.areas, cancelled);
     // the first pass: the points with a record at their count, then the others on the first rung
     std::size_t done = 0;
-    // (each pass's share of the first pass's progress by its points)
+    // (each pass's share of the first pass's progress by its points; the ladder's pass, the last,
+    // takes the rest, which the points whose record did not fit would otherwise overrun)
     const auto share = [&](std::size_t points) -> std::function<bool(double)> {
       if(!progress.points)
         return {};
-      const double from = double(done) / double(n), size = double(points) / double(n);
+      const double from = double(done) / double(n), size = double(std::min(points, n - done)) / double(n);
       return [f = progress.points, from, size](double x) { return f(from + size * x); };
     };
     const Known_scale_estimator<Estimator, Sphere> from_record(automatic, *records);
