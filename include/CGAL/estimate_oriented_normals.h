@@ -238,6 +238,9 @@ inline Normal_record Normal_at_point::operator()(const Neighborhood& nb) const
     const double d2 = nb.qx[i] * nb.qx[i] + nb.qy[i] * nb.qy[i] + nb.qz[i] * nb.qz[i];
     if(d2 == 0)
       continue;  // the point itself, or a copy of it: no orientation to learn from it
+    // (the distance first: the index, two reads away, only where it may decide)
+    if(degree == normal_graph_degree && d2 > nearest[degree - 1].first)
+      continue;
     const std::pair<double, std::uint32_t> candidate(d2, nb.input_index[nb.index[i]]);
     if(degree == normal_graph_degree && !(candidate < nearest[degree - 1]))
       continue;

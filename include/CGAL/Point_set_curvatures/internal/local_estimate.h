@@ -102,24 +102,49 @@ inline bool has_disagreeing_normal(const Neighborhood& nb, const double ref[3])
 template <class Kernel>
 inline bool majority_orientation(const Neighborhood& nb, double ref[3])
 {
-  // per group (0: with the query's normal, 1: against it): weight, sum w n, sum w q, sum w q q^T
-  double W[2] = {0, 0}, N[2][3] = {}, Q[2][3] = {}, QQ[2][6] = {};
-  double m[3] = {0, 0, 0};  // sum w n
   const double* up = nb.query_normal;
+  const auto weight = [&nb](std::size_t i) {
+    const double q2 = nb.qx[i] * nb.qx[i] + nb.qy[i] * nb.qy[i] + nb.qz[i] * nb.qz[i];
+    const double w = Kernel::weight(1.0 - q2);
+    return nb.sample_weight ? w * nb.sample_weight[i] : w;
+  };
+  const auto group = [&nb, up](std::size_t i) {
+    return nb.nx[i] * up[0] + nb.ny[i] * up[1] + nb.nz[i] * up[2] < 0 ? 1 : 0;
+  };
+  // first the weighted sum of the normals and each group's weight (0: with the query's normal,
+  // 1: against it), with a register each: the groups' moments only where both weigh (most
+  // neighbourhoods have one group: a pass without them is several times cheaper)
+  double m[3] = {0, 0, 0};  // sum w n
+  double W[2] = {0, 0};
+  {
+    double w0 = 0, w1 = 0;
+    for(std::size_t i = 0; i < nb.size; ++i)
+    {
+      const double w = weight(i);
+      m[0] += w * nb.nx[i];
+      m[1] += w * nb.ny[i];
+      m[2] += w * nb.nz[i];
+      // (adding 0 leaves a sum as it is: each group's sum is the one of its points, in order)
+      const bool against = group(i) == 1;
+      w0 += against ? 0.0 : w;
+      w1 += against ? w : 0.0;
+    }
+    W[0] = w0;
+    W[1] = w1;
+  }
+  orientation_reference(m, nb.query_normal, ref);
+  if(!(W[1] > 0.1 * (W[0] + W[1])) || !(W[0] > 0.1 * (W[0] + W[1])))
+    return true;
+  // per group: sum w n / |n|, sum w q, sum w q qᵀ
+  double N[2][3] = {}, Q[2][3] = {}, QQ[2][6] = {};
   for(std::size_t i = 0; i < nb.size; ++i)
   {
     const double q[3] = {nb.qx[i], nb.qy[i], nb.qz[i]};
-    double w = Kernel::weight(1.0 - (q[0] * q[0] + q[1] * q[1] + q[2] * q[2]));
-    if(nb.sample_weight)
-      w *= nb.sample_weight[i];
+    const double w = weight(i);
     const double n[3] = {nb.nx[i], nb.ny[i], nb.nz[i]};
-    m[0] += w * n[0];
-    m[1] += w * n[1];
-    m[2] += w * n[2];
-    const int g = n[0] * up[0] + n[1] * up[1] + n[2] * up[2] < 0 ? 1 : 0;
+    const int g = group(i);
     const double l2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
     const double inv = l2 > 0 ? 1.0 / std::sqrt(l2) : 0.0;
-    W[g] += w;
     for(int a = 0; a < 3; ++a)
     {
       N[g][a] += w * n[a] * inv;
@@ -132,9 +157,6 @@ inline bool majority_orientation(const Neighborhood& nb, double ref[3])
     QQ[g][4] += w * q[1] * q[2];
     QQ[g][5] += w * q[2] * q[2];
   }
-  orientation_reference(m, nb.query_normal, ref);
-  if(!(W[1] > 0.1 * (W[0] + W[1])) || !(W[0] > 0.1 * (W[0] + W[1])))
-    return true;
   double mean[2][3], length[2];
   for(int g = 0; g < 2; ++g)
   {
