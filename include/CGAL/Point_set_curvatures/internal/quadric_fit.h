@@ -175,6 +175,11 @@ struct Quadric_fit
   std::vector<double>* frame_cache = nullptr;
   static std::size_t frame_cache_size(std::size_t neighbors) { return 8 * ((neighbors + 1) / 2); }
 
+  // Set by compute() with a frame cache: the moments with weights w² that variance_factors()
+  // reads, summed in compute()'s pass (the same values in the same order as a pass over the
+  // cache would add: one pass fewer over the neighbours).
+  Quadratic_moments squared_moments;
+
   // Fits the neighbourhood; false if its neighbours do not spread in two directions or the
   // fit has no solution. Where the neighbourhood carries the automatic scale's plain quadric of
   // its points (Neighborhood::plain_quadric) and no frame cache is asked for, that fit with
@@ -216,7 +221,7 @@ struct Quadric_fit
 
     Quadratic_height_fit& fit = equations;
     fit = Quadratic_height_fit();
-    Quadratic_sums<Lane_pair> sums;
+    Quadratic_sums<Lane_pair> sums, squared_sums;
     double* cache = nullptr;
     if(frame_cache)
     {
@@ -234,9 +239,12 @@ struct Quadric_fit
         store_lanes(block + 2, u);
         store_lanes(block + 4, v);
         store_lanes(block + 6, h);
+        squared_sums.add(u, v, w * w);
       }
       sums.add(u, v, h, w);
     }
+    if(cache)
+      squared_moments = Quadratic_moments(squared_sums);
     const Quadratic_moments moments(sums);
     moments.fill(fit.ata, fit.atb);
     fourth_moment = moments.fourth();
@@ -296,7 +304,7 @@ public:
   {
     double b[6][6] = {};
     Lane_pair sums[2] = {};                  // sum w, sum w e²
-    Quadratic_sums<Lane_pair> squared_sums;  // the moments with weights w²
+    Quadratic_sums<Lane_pair> squared_sums;  // the moments with weights w² (without a cache)
     const double* cache =
       frame_cache && frame_cache->size() == frame_cache_size(nb.size) ? frame_cache->data() : nullptr;
     Lane_pair A[6];
@@ -318,10 +326,11 @@ public:
       e = e - (A[0] + A[1] * u + A[2] * v + A[3] * (u * u) + A[4] * (u * v) + A[5] * (v * v));
       sums[0] += w;
       sums[1] += w * e * e;
-      squared_sums.add(u, v, w * w);
+      if(!cache)
+        squared_sums.add(u, v, w * w);
     }
     const double sw = fold(sums[0]), ssr = fold(sums[1]);
-    const Quadratic_moments squared(squared_sums);
+    const Quadratic_moments squared = cache ? squared_moments : Quadratic_moments(squared_sums);
     squared.fill(b);
     const double sw2 = squared.s[0];
     const double n_eff = sw2 > 0 ? sw * sw / sw2 : 0.0;
