@@ -15,7 +15,13 @@ Environment:
                                         build_ext --parallel N too)
   POINT_SET_CURVATURES_CMAKE_BUILD_DIR  an already configured CMake build tree of this
                                         repository to build the target in instead of a fresh
-                                        one (it must use the same Python interpreter)
+                                        one (it must use the same Python interpreter); "fresh"
+                                        for a fresh one always
+
+Without it, the README's build tree (build/ beside this file) is reused where it is a Release
+build, without sanitizers, of the same interpreter (a venv of it counts): after the README's
+second command the extension is already built there, and pip takes it instead of compiling
+everything again (minutes).
 """
 
 import os
@@ -41,6 +47,40 @@ def cmake_project_version():
     return m.group(1)
 
 
+def cmake_cache(build_dir):
+    """The entries NAME:TYPE=VALUE of a build tree's CMakeCache.txt, {} without one."""
+    entries = {}
+    try:
+        with open(os.path.join(build_dir, "CMakeCache.txt"), encoding="utf-8", errors="replace") as f:
+            for line in f:
+                m = re.match(r"([A-Za-z0-9_]+):[A-Z]+=(.*)$", line.rstrip("\n"))
+                if m:
+                    entries[m.group(1)] = m.group(2)
+    except OSError:
+        pass
+    return entries
+
+
+def reusable_build_tree(root=ROOT, interpreter=None):
+    """root/build where pip can build the extension in it (see the module's docstring), else
+    None; `interpreter`: the one running this build (default: this one's, a venv's base)."""
+    build_dir = os.path.join(root, "build")
+    cache = cmake_cache(build_dir)
+    if not cache or cache.get("CMAKE_BUILD_TYPE") != "Release" or cache.get("POINT_SET_CURVATURES_SANITIZE"):
+        return None
+    if cache.get("POINT_SET_CURVATURES_BUILD_PYTHON") != "ON" or not cache.get("Python3_EXECUTABLE"):
+        return None
+    home = cache.get("CMAKE_HOME_DIRECTORY")
+    if not home or os.path.realpath(home) != os.path.realpath(root):
+        return None
+    # the interpreter the tree was configured for against this one (a venv's: its base interpreter)
+    if interpreter is None:
+        interpreter = getattr(sys, "_base_executable", None) or sys.executable
+    if os.path.realpath(cache["Python3_EXECUTABLE"]) != os.path.realpath(interpreter):
+        return None
+    return build_dir
+
+
 class CMakeBuildExt(build_ext):
     """build_ext for one extension built by CMake (its sources are CMake's, not setuptools')."""
 
@@ -50,6 +90,14 @@ class CMakeBuildExt(build_ext):
             raise RuntimeError("point_set_curvatures: CMake is needed to build the extension "
                                "(Debian: apt-get install cmake g++ libcgal-dev libeigen3-dev libtbb-dev)")
         build_dir = os.environ.get("POINT_SET_CURVATURES_CMAKE_BUILD_DIR")
+        if build_dir == "fresh":
+            build_dir = None
+        elif not build_dir:
+            build_dir = reusable_build_tree()
+            if build_dir:
+                print(f"point_set_curvatures: reusing the build tree {build_dir} (CMake builds the extension there "
+                      "if it is not up to date; POINT_SET_CURVATURES_CMAKE_BUILD_DIR=fresh for a fresh build)",
+                      flush=True)
         if build_dir:
             build_dir = os.path.abspath(build_dir)
             if not os.path.exists(os.path.join(build_dir, "CMakeCache.txt")):
@@ -88,15 +136,17 @@ class CMakeBuildExt(build_ext):
         subprocess.run(args, check=True)
 
 
-setup(
-    version=cmake_project_version(),
-    package_dir={"": "python"},
-    packages=["point_set_curvatures"],
-    package_data={"point_set_curvatures": ["*.pyi", "py.typed"]},
-    zip_safe=False,
-    # no sources: CMake compiles them (the Extension makes the wheel platform-specific)
-    ext_modules=[Extension("point_set_curvatures._core", sources=[])],
-    cmdclass={"build_ext": CMakeBuildExt},
-    # setuptools' own build files under build/pip, apart from a CMake build tree in build/
-    options={"build": {"build_base": os.path.join("build", "pip")}},
-)
+# (setuptools runs this file as __main__; python/tests/test_packaging.py imports it for its functions)
+if __name__ == "__main__":
+    setup(
+        version=cmake_project_version(),
+        package_dir={"": "python"},
+        packages=["point_set_curvatures"],
+        package_data={"point_set_curvatures": ["*.pyi", "py.typed"]},
+        zip_safe=False,
+        # no sources: CMake compiles them (the Extension makes the wheel platform-specific)
+        ext_modules=[Extension("point_set_curvatures._core", sources=[])],
+        cmdclass={"build_ext": CMakeBuildExt},
+        # setuptools' own build files under build/pip, apart from a CMake build tree in build/
+        options={"build": {"build_base": os.path.join("build", "pip")}},
+    )
