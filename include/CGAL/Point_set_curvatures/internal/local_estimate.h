@@ -115,23 +115,19 @@ inline bool majority_orientation(const Neighborhood& nb, double ref[3])
   // 1: against it), with a register each: the groups' moments only where both weigh (most
   // neighbourhoods have one group: a pass without them is several times cheaper)
   double m[3] = {0, 0, 0};  // sum w n
-  double W[2] = {0, 0};
+  double w0 = 0, w1 = 0;
+  for(std::size_t i = 0; i < nb.size; ++i)
   {
-    double w0 = 0, w1 = 0;
-    for(std::size_t i = 0; i < nb.size; ++i)
-    {
-      const double w = weight(i);
-      m[0] += w * nb.nx[i];
-      m[1] += w * nb.ny[i];
-      m[2] += w * nb.nz[i];
-      // (adding 0 leaves a sum as it is: each group's sum is the one of its points, in order)
-      const bool against = group(i) == 1;
-      w0 += against ? 0.0 : w;
-      w1 += against ? w : 0.0;
-    }
-    W[0] = w0;
-    W[1] = w1;
+    const double w = weight(i);
+    m[0] += w * nb.nx[i];
+    m[1] += w * nb.ny[i];
+    m[2] += w * nb.nz[i];
+    // (adding 0 leaves a sum as it is: each group's sum is the one of its points, in order)
+    const bool against = group(i) == 1;
+    w0 += against ? 0.0 : w;
+    w1 += against ? w : 0.0;
   }
+  const double W[2] = {w0, w1};
   orientation_reference(m, nb.query_normal, ref);
   if(!(W[1] > 0.1 * (W[0] + W[1])) || !(W[0] > 0.1 * (W[0] + W[1])))
     return true;

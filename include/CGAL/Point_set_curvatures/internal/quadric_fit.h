@@ -175,10 +175,12 @@ struct Quadric_fit
   std::vector<double>* frame_cache = nullptr;
   static std::size_t frame_cache_size(std::size_t neighbors) { return 8 * ((neighbors + 1) / 2); }
 
-  // Set by compute() with a frame cache: the moments with weights w² that variance_factors()
-  // reads, summed in compute()'s pass (the same values in the same order as a pass over the
-  // cache would add: one pass fewer over the neighbours).
+  // Set by compute() with a frame cache (`has_squared_moments`): the moments with weights w²
+  // that variance_factors() reads, summed in compute()'s pass (the same values in the same order
+  // as a pass over the cache would add: one pass fewer over the neighbours). Without them (a
+  // cache this fit did not fill), variance_factors() sums them from the cache.
   Quadratic_moments squared_moments;
+  bool has_squared_moments = false;
 
   // Fits the neighbourhood; false if its neighbours do not spread in two directions or the
   // fit has no solution. Where the neighbourhood carries the automatic scale's plain quadric of
@@ -193,6 +195,7 @@ struct Quadric_fit
       return refit_with_penalty(penalty);
     }
     weighted_line = false;
+    has_squared_moments = false;
     if(nb.size < quadratic_height_coefficients)
       return false;
     // the frame: the eigenvectors of the weighted covariance, or of the unweighted one where
@@ -244,7 +247,10 @@ struct Quadric_fit
       sums.add(u, v, h, w);
     }
     if(cache)
+    {
       squared_moments = Quadratic_moments(squared_sums);
+      has_squared_moments = true;
+    }
     const Quadratic_moments moments(sums);
     moments.fill(fit.ata, fit.atb);
     fourth_moment = moments.fourth();
@@ -304,9 +310,10 @@ public:
   {
     double b[6][6] = {};
     Lane_pair sums[2] = {};                  // sum w, sum w e²
-    Quadratic_sums<Lane_pair> squared_sums;  // the moments with weights w² (without a cache)
+    Quadratic_sums<Lane_pair> squared_sums;  // the moments with weights w², unless compute() summed them
     const double* cache =
       frame_cache && frame_cache->size() == frame_cache_size(nb.size) ? frame_cache->data() : nullptr;
+    const bool summed = cache && has_squared_moments;
     Lane_pair A[6];
     for(int j = 0; j < 6; ++j)
       A[j] = broadcast(a[j]);
@@ -326,11 +333,11 @@ public:
       e = e - (A[0] + A[1] * u + A[2] * v + A[3] * (u * u) + A[4] * (u * v) + A[5] * (v * v));
       sums[0] += w;
       sums[1] += w * e * e;
-      if(!cache)
+      if(!summed)
         squared_sums.add(u, v, w * w);
     }
     const double sw = fold(sums[0]), ssr = fold(sums[1]);
-    const Quadratic_moments squared = cache ? squared_moments : Quadratic_moments(squared_sums);
+    const Quadratic_moments squared = summed ? squared_moments : Quadratic_moments(squared_sums);
     squared.fill(b);
     const double sw2 = squared.s[0];
     const double n_eff = sw2 > 0 ? sw * sw / sw2 : 0.0;
