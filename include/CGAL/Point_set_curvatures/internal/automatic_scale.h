@@ -72,6 +72,13 @@ namespace internal {
 
 // The half-width of the confidence intervals, in standard errors (see the header comment).
 constexpr double automatic_scale_kappa = 3.0;
+// Above the first rung the APSS sphere's mean curvature replaces the wrapped estimator's only
+// where the two differ by at most this many standard errors (those of the rung's quadric's H),
+// or where the neighbours' normals, which the wrapped estimator differentiates, agree less than
+// automatic_scale_sphere_coherence (its normal_coherence; see automatic_scale_estimation.h).
+constexpr double automatic_scale_sphere_agreement = 4.0;
+constexpr double automatic_scale_sphere_coherence = 0.95;
+constexpr double automatic_scale_sphere_told = 0.05;
 // The least share of the smallest scale's residual variance that must be noise for a larger
 // scale to be considered (see the header comment).
 constexpr double automatic_scale_noise_share = 0.5;
