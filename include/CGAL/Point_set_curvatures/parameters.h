@@ -87,7 +87,9 @@ neighbor_count(std::size_t k, const NamedParameters& np = CGAL::parameters::defa
 /// rule). Without noise (less than half of the smallest count's residuals) the smallest
 /// count is kept and the estimate is that of `neighbor_count(k)`. Where a larger count is
 /// chosen, the mean curvature is that of the APSS sphere on its neighbourhood when it agrees
-/// with the quadric's, the difference of the principal curvatures and the directions the
+/// with the quadric's (three standard errors) and with the ASO's (four; not required where the
+/// ASO's normals disagree, `normal_coherence` below 0.95, or its standard error times the
+/// radius exceeds 0.05), the difference of the principal curvatures and the directions the
 /// ASO's, computed there without `position_fit_blend` and with the quartic kernel in place of the
 /// cubic one (the rule tolerates a bias of about one standard error, which both reduce on
 /// simulated noisy scans). `Curvature_estimate::neighbor_count` is then the chosen count and

@@ -9,11 +9,13 @@
 // to 4 times more robust to position noise than estimators that differentiate a tensor) if it
 // lies within kappa standard errors of the rung's quadric (strongly anisotropic shapes bias
 // the sphere at large scales) and within automatic_scale_sphere_agreement standard errors of
-// the wrapped estimator's (where the two disagree by more, one is biased, and on the simulated scans it was
-// the sphere: over airborne scan lines under noise they differ by 9 standard errors at the
-// median and the sphere's error is 2.5 times the ASO's; on terrestrial scans, where the sphere
-// is the better one, by about one), and the anisotropic part (k_max - k_min, the directions) is
-// the wrapped estimator's. Where the rule climbed because noise dominates (Scale_choice::noise_climb),
+// the wrapped estimator's (where the two disagree by more, one is biased, and on the simulated
+// scans it was the sphere: over airborne scan lines under noise they differ by 9 standard errors
+// at the median and the sphere's error is 2.5 times the ASO's; on terrestrial scans, where the
+// sphere is the better one, by about one) unless the wrapped estimator's is poorly told (its
+// normal_coherence below automatic_scale_sphere_coherence, or the standard error times the
+// radius above automatic_scale_sphere_told: a real ground point among vegetation), and the
+// anisotropic part (k_max - k_min, the directions) is the wrapped estimator's. Where the rule climbed because noise dominates (Scale_choice::noise_climb),
 // the wrapped estimator is the caller's `at_noise_scale` (for the ASO: without the position fit,
 // whose bias at those scales exceeds what it saves, and with the quartic kernel in place of the
 // cubic one: the rule tolerates a bias of about one standard error, which the narrower kernel
@@ -218,13 +220,13 @@ struct Automatic_scale_estimator : Estimator_base
                                                                                   : estimators.estimator(chosen);
     if(e.status == Curvature_estimate_status::VALID && c.rung > 0)
     {
-      // the sphere's mean curvature where it agrees with the chosen rung's quadric and with the
-      // wrapped estimator (elsewhere the sphere is biased: strongly anisotropic shapes at large
-      // scales, scan lines under noise)
+      // the sphere's mean curvature where it agrees with the chosen rung's quadric and, where the
+      // wrapped estimator's is well told, with it (elsewhere the sphere is biased: strongly
+      // anisotropic shapes at large scales, scan lines under noise)
       double mean = e.mean;
       const Local_estimate s = sphere(chosen);
       const bool told = c.mean_error * c.radius <= automatic_scale_sphere_told &&
-                        !(e.normal_coherence < automatic_scale_sphere_coherence);
+                        e.normal_coherence >= automatic_scale_sphere_coherence;  // (NaN: not told)
       if(s.status == Curvature_estimate_status::VALID && std::isfinite(s.mean) &&
          std::abs(s.mean - c.mean) <= automatic_scale_kappa * c.mean_error &&
          (!told || std::abs(s.mean - mean) <= automatic_scale_sphere_agreement * c.mean_error))
