@@ -1,7 +1,7 @@
 // Copyright (c) 2026 The Point_set_curvatures authors.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// An independent LAS 1.4 reader for the tests of the tool's LAS output (test_tool.cpp),
+// An independent LAS 1.4 reader for the tests of the tool's LAS output (test_tool_las.cpp),
 // written from the ASPRS LAS 1.4 R15 specification with its byte offsets, sharing no code
 // with the tool (io/src/read_las.cpp, io/src/write_las.cpp): the public header block, the
 // variable length records (54-byte headers), the extended ones (60-byte headers), the

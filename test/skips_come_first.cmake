@@ -1,11 +1,12 @@
-# A test case that skips (skip_test() of test_tool.cpp prints PSC_TEST_SKIPPED, which CTest
+# A test case that skips (skip_test() of test_tool_support.h prints PSC_TEST_SKIPPED, which CTest
 # turns into a skip and then ignores the exit status) must not have asserted anything before:
 # a failure before the skip would be hidden. Checked here on the source, for every test case
-# of SOURCES (a ';'-separated list) that calls skip_test("..."): no CHECK, REQUIRE, SUCCEED or
+# of SOURCES (a '|'-separated list) that calls skip_test("..."): no CHECK, REQUIRE, SUCCEED or
 # FAIL macro before its first call (the helpers it calls before are not looked into: they
 # must not assert either, as the comment on skip_test() says).
 #
-#   cmake -DSOURCES=test/test_tool.cpp -P test/skips_come_first.cmake
+#   cmake "-DSOURCES=test/test_tool.cpp|test/test_tool_tiles.cpp" -P test/skips_come_first.cmake
+string(REPLACE "|" ";" SOURCES "${SOURCES}")
 foreach(source IN LISTS SOURCES)
   file(READ "${source}" text)
   set(offenders "")
