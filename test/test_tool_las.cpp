@@ -614,14 +614,25 @@ TEST_CASE("tool: LAS output is LAS 1.4 with the estimates as extra bytes, per an
   ::unsetenv("SOURCE_DATE_EPOCH");
 }
 
+namespace {
+
+// 1,500 points of a sphere of radius 2 about (1e6 + 3, 2e6 + 4, 105), as LiDAR coordinates are.
+std::vector<Oriented_point> sphere_in_lidar_coordinates()
+{
+  std::vector<Oriented_point> pts;
+  for(const Oriented_point& p : sphere(1500, 2.0))
+    pts.emplace_back(Point(p.first.x() + 1e6 + 3, p.first.y() + 2e6 + 4, p.first.z() + 105), p.second);
+  return pts;
+}
+
+}  // namespace
+
 TEST_CASE("tool: LAS extra bytes are read in their types (float Amplitude, int16 Reflectance with a scale, uint16 "
           "Deviation) and carried to PLY and CSV, deprecated and undocumented ones are warned of")
 {
   using namespace psc_las_test;
   const double offset[3] = {1e6, 2e6, 100};
-  std::vector<Oriented_point> pts;
-  for(const Oriented_point& p : sphere(1500, 2.0))
-    pts.emplace_back(Point(p.first.x() + 1e6 + 3, p.first.y() + 2e6 + 4, p.first.z() + 105), p.second);
+  const std::vector<Oriented_point> pts = sphere_in_lidar_coordinates();
   write_text(file("eb2.las"), las_with_extra_bytes(pts, offset, nullptr));
   const Run r = run_tool(q(file("eb2.las")) + " " + q(file("eb2.ply")) + " --radius 0.5 --orient +z");
   INFO(r.err);
@@ -674,9 +685,7 @@ TEST_CASE("tool: a geographic LAS (GeoTIFF key, WKT GEOGCS, or x y like degrees)
 {
   using namespace psc_las_test;
   const double offset[3] = {1e6, 2e6, 100};
-  std::vector<Oriented_point> pts;
-  for(const Oriented_point& p : sphere(1500, 2.0))
-    pts.emplace_back(Point(p.first.x() + 1e6 + 3, p.first.y() + 2e6 + 4, p.first.z() + 105), p.second);
+  const std::vector<Oriented_point> pts = sphere_in_lidar_coordinates();
   const std::string base = las_file(pts, 1, 2, 0.001, offset);
   const std::string wkt = "GEOGCS[\"WGS 84\",DATUM[\"WGS_1984\"],UNIT[\"degree\",0.0174532925199433]]";
   // a lon/lat terrain: 0.01 degree wide, 30 m high

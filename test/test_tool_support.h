@@ -151,11 +151,12 @@ struct Run
   std::string out, err;
 };
 
-// Runs the tool with `args` (already quoted where needed).
-inline Run run_tool(const std::string& args)
+// Runs the tool with `args` (already quoted where needed), `prefix` put before the tool's path
+// in the shell command (NAME=value ..., or a command such as timeout).
+inline Run run_tool_after(const std::string& prefix, const std::string& args)
 {
   const std::string out = file("stdout.txt"), err = file("stderr.txt");
-  const std::string command = std::string("'") + PSC_TOOL_PATH + "' " + args + " > '" + out + "' 2> '" + err + "'";
+  const std::string command = prefix + "'" + PSC_TOOL_PATH + "' " + args + " > '" + out + "' 2> '" + err + "'";
   const int raw = std::system(command.c_str());
   Run r;
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
@@ -163,6 +164,9 @@ inline Run run_tool(const std::string& args)
   r.err = read_text(err);
   return r;
 }
+
+// Runs the tool with `args` (already quoted where needed).
+inline Run run_tool(const std::string& args) { return run_tool_after("", args); }
 
 inline std::string q(const std::string& path) { return "'" + path + "'"; }
 

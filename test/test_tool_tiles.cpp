@@ -165,15 +165,7 @@ namespace {
 // up the suite; `env` is put before the command (NAME=value ...).
 Run run_tool_within(int seconds, const std::string& args, const std::string& env = "")
 {
-  const std::string out = file("stdout.txt"), err = file("stderr.txt");
-  const std::string command = env + " timeout -k 5 " + std::to_string(seconds) + " '" + PSC_TOOL_PATH + "' " + args +
-                              " > '" + out + "' 2> '" + err + "'";
-  const int raw = std::system(command.c_str());
-  Run r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  r.out = read_text(out);
-  r.err = read_text(err);
-  return r;
+  return run_tool_after(env + " timeout -k 5 " + std::to_string(seconds) + " ", args);
 }
 
 // Runs `input` whole, then in tiles at each memory limit: the same exit status (0, or 3 when
