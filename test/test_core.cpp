@@ -2332,6 +2332,54 @@ TEST_CASE("Automatic scale: over noisy airborne scan lines the sphere's H only w
   CHECK(error / double(n) < 0.5 * sphere_error / double(n));
 }
 
+TEST_CASE("Automatic scale: the quadric's H where the ASO's disagrees with it by far (a mobile scan's edge)",
+          "[aso][automatic_scale]")
+{
+  // A mobile profiler over the wavy terrain (H* within +-0.166), range noise 0.3 times the
+  // spacing, normals estimated as the tool does without normals. At the first and last profiles
+  // the estimated normals bend, and the ASO, which differentiates them, reads a curvature of 0.5
+  // where the truth is 0.003; the rung's quadric of positions does not. Where the ASO's H lies
+  // more than automatic_scale_normals_disagree (30) standard errors from the quadric's, the
+  // estimate is the quadric's (benchmark/scan_experiments `mobile`, 122,760 points: 8.64e-3 ->
+  // 3.26e-3; the other eleven patterns within 1%).
+  namespace scan = psc_test::scan;
+  const scan::Height_field terrain = scan::wavy_terrain();
+  const double half_width = 2;
+  scan::Noise noise;
+  noise.range_sigma = 0.3 * scan::median_spacing(scan::mobile_profiles(terrain, half_width));
+  const std::vector<scan::Sample> samples = scan::mobile_profiles(terrain, half_width, 0.1, 0.0035, noise);
+  const std::vector<Oriented_point> cloud = with_estimated_normals(scan::with_true_normals(samples), 640);
+  const auto e = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
+    cloud, PSC::parameters::neighbor_count(
+             40, PSC::parameters::automatic_scale(640, PSC::parameters::position_fit_blend(0.5, maps()))));
+  double error = 0, edge_error = 0, worst_edge = 0;
+  std::size_t n = 0, edge = 0;
+  for(std::size_t i = 0; i < samples.size(); ++i)
+  {
+    REQUIRE(e[i].is_valid());
+    const double d = std::abs(e[i].mean_curvature - samples[i].truth.mean);
+    error += d;
+    ++n;
+    if(half_width - std::abs(samples[i].p.y()) < 0.3)
+    {
+      edge_error += d;
+      worst_edge = std::max(worst_edge, d);
+      ++edge;
+    }
+  }
+  measured("noisy mobile profiles, estimated normals: points", double(n));
+  measured("  within 0.3 of the first or last profile", double(edge));
+  measured("  mean |H - H*|", error / double(n));
+  measured("  mean |H - H*| within 0.3 of the edge", edge_error / double(edge));
+  measured("  largest |H - H*| there", worst_edge);
+  REQUIRE(edge > 100);
+  // (measured on these 19,500 points: 0.0213 within 0.3 of the edge and 0.0062 in all, against
+  // 0.108 and 0.0194 without the quadric's H; one point at the very edge, kept at 40 neighbours,
+  // is off by 2.8 with a standard error of 0.73 either way)
+  CHECK(edge_error / double(edge) < 0.035);
+  CHECK(error / double(n) < 0.0085);
+}
+
 TEST_CASE("Automatic scale: the quartic kernel where a count is kept without noise over evenly spread neighbours",
           "[aso][automatic_scale]")
 {
@@ -2688,6 +2736,105 @@ TEST_CASE("Automatic scale: sequential == parallel, tiles == whole, normals too"
   }
   CHECK(differ == 0);
   CHECK(up >= 0.99 * double(a.size()));
+}
+
+// An estimator of the automatic scale's branch test: the same estimate at every neighbourhood.
+struct Fixed_estimator : PSC::internal::Estimator_base
+{
+  PSC::internal::Local_estimate e;
+  PSC::internal::Local_estimate operator()(const PSC::internal::Neighborhood&) const { return e; }
+};
+
+TEST_CASE("Automatic scale: the mean curvature at a rung above the first, branch by branch", "[automatic_scale]")
+{
+  // Automatic_scale_estimator::at_choice() with fixed estimates, on a paraboloid cap
+  // z = -(x^2 + y^2) / 2 (radius 1, normal +z: H = 1 for the quadric). The rung's quadric says
+  // H = 1.0 with a standard error of 0.01 (radius 1).
+  namespace I = PSC::internal;
+  std::vector<double> qx, qy, qz, up, one;
+  for(int i = -6; i <= 6; ++i)
+    for(int j = -6; j <= 6; ++j)
+    {
+      const double x = i / 7.0, y = j / 7.0;
+      if(x * x + y * y >= 1)
+        continue;
+      qx.push_back(x);
+      qy.push_back(y);
+      qz.push_back(-0.5 * (x * x + y * y));
+      up.push_back(0);
+      one.push_back(1);
+    }
+  I::Neighborhood nb;
+  nb.size = qx.size();
+  nb.qx = qx.data();
+  nb.qy = qy.data();
+  nb.qz = qz.data();
+  nb.nx = nb.ny = up.data();
+  nb.nz = one.data();
+  nb.query_normal[2] = 1;
+  I::Scale_choice c;
+  c.found = c.noise_climb = true;
+  c.rung = 2;
+  c.count = c.k = 160;
+  c.radius = 1;
+  c.mean = 1.0;
+  c.mean_error = 0.01;
+  const auto estimate = [&](double aso, double sphere, double coherence, const I::Scale_choice& choice) {
+    I::Scale_estimators<Fixed_estimator> estimators;
+    Fixed_estimator& a = estimators.at_noise_scale;
+    a.e.status = CGAL::Curvature_estimate_status::VALID;
+    a.e.normal[0] = a.e.normal[1] = 0;
+    a.e.normal[2] = 1;
+    a.e.mean = aso;
+    a.e.k_min = aso - 0.2;
+    a.e.k_max = aso + 0.2;
+    a.e.normal_coherence = coherence;
+    estimators.estimator = estimators.where_even = a;
+    Fixed_estimator s;
+    s.e = a.e;
+    s.e.mean = sphere;
+    I::Scale_ladder ladder;
+    const I::Automatic_scale_estimator<Fixed_estimator, Fixed_estimator> automatic(estimators, s, ladder);
+    return automatic.at_choice(choice, nb);
+  };
+  // the sphere where it agrees with the quadric (3 standard errors) and the ASO (4)
+  I::Local_estimate e = estimate(1.01, 0.98, 0.99, c);
+  CHECK(e.mean == 0.98);
+  CHECK(e.k_max - e.k_min == Approx(0.4));
+  CHECK(e.mean_error == 0.01);
+  CHECK(e.neighbor_count == 160);
+  // the ASO where the sphere disagrees with it by more than 4 and the ASO is well told
+  CHECK(estimate(1.03, 0.98, 0.99, c).mean == 1.03);
+  // the sphere again where the ASO's normals disagree (coherence below 0.95, or not computed)...
+  CHECK(estimate(1.03, 0.98, 0.9, c).mean == 0.98);
+  CHECK(estimate(1.03, 0.98, std::numeric_limits<double>::quiet_NaN(), c).mean == 0.98);
+  // ...or its standard error times the radius exceeds 0.05
+  I::Scale_choice noisy = c;
+  noisy.mean_error = 0.06;
+  CHECK(estimate(1.25, 0.9, 0.99, noisy).mean == 0.9);
+  CHECK(estimate(1.25, 0.9, 0.99, c).mean == 1.25);  // (0.01: the ASO)
+  // the ASO where the sphere is more than 3 from the quadric and the ASO within 30
+  e = estimate(1.2, 0.5, 0.99, c);
+  CHECK(e.mean == 1.2);
+  CHECK(e.k_max - e.k_min == Approx(0.4));
+  // the quadric where the ASO lies more than 30 from it: its H, its umbilic shape operator
+  e = estimate(1.5, 0.5, 0.99, c);
+  REQUIRE(e.status == CGAL::Curvature_estimate_status::VALID);
+  CHECK(e.mean == 1.0);
+  CHECK(e.k_min == Approx(1.0).margin(1e-9));
+  CHECK(e.k_max == Approx(1.0).margin(1e-9));
+  CHECK(e.gaussian == Approx(1.0).margin(1e-9));
+  CHECK(e.normal[2] == 1);
+  CHECK(e.mean_error == 0.01);
+  // not where the rung was reached past line rungs without noise: the ASO's
+  I::Scale_choice lines = c;
+  lines.noise_climb = false;
+  CHECK(estimate(1.5, 0.5, 0.99, lines).mean == 1.5);
+  // on the first rung the wrapped estimator's, whatever the others say
+  I::Scale_choice first = c;
+  first.rung = 0;
+  first.noise_climb = false;
+  CHECK(estimate(1.5, 0.5, 0.99, first).mean == 1.5);
 }
 
 // The first pass's tests (Scale_ladder::gate) on the 40 nearest of points of a terrain at random

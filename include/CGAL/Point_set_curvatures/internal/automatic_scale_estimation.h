@@ -15,7 +15,12 @@
 // sphere is the better one, by about one) unless the wrapped estimator's is poorly told (its
 // normal_coherence below automatic_scale_sphere_coherence, or the standard error times the
 // radius above automatic_scale_sphere_told: a real ground point among vegetation), and the
-// anisotropic part (k_max - k_min, the directions) is the wrapped estimator's. Where the rule climbed because noise dominates (Scale_choice::noise_climb),
+// anisotropic part (k_max - k_min, the directions) is the wrapped estimator's. Where the rule
+// climbed for noise, the sphere is not taken and the wrapped estimator's H lies more than
+// automatic_scale_normals_disagree standard errors from the quadric's, the estimate is the
+// quadric's (quadric_estimate(): its H, its anisotropic part in the estimate's tangent plane):
+// the normals the wrapped estimator differentiates disagree with the positions there (estimated
+// normals bend at a scan's edge). Where the rule climbed because noise dominates (Scale_choice::noise_climb),
 // the wrapped estimator is the caller's `at_noise_scale` (for the ASO: without the position fit,
 // whose bias at those scales exceeds what it saves, and with the quartic kernel in place of the
 // cubic one: the rule tolerates a bias of about one standard error, which the narrower kernel
@@ -175,6 +180,22 @@ inline bool spreads_evenly(const Neighborhood& nb)
   return tangential_axis_ratio<4>(nb) >= normal_field_anisotropy_start;
 }
 
+// The curvatures of the plain quadric of positions (the rungs' fit, without its anisotropy
+// penalty) on `nb` with mean curvature `mean` (the rung's), its shape operator taken in the
+// tangent plane of e.normal, written into `e` (its normal kept); false where it cannot be fitted.
+inline bool quadric_estimate(const Neighborhood& nb, double mean, Local_estimate& e)
+{
+  Quadric_fit fit;
+  fit.anisotropy_penalty = 0;
+  double t1[3], t2[3], W[3];
+  tangent_basis(e.normal, t1, t2);
+  if(!fit.compute(nb) || !fit.shape_operator_in(e.normal, t1, t2, 1.0 / nb.radius, W))
+    return false;
+  const double shift = mean - 0.5 * (W[0] + W[2]);
+  set_principal_curvatures(W[0] + shift, W[1], W[2] + shift, t1, t2, e);
+  return std::isfinite(e.k_min) && std::isfinite(e.k_max);
+}
+
 // The automatic scale around an estimator (see the header comment), with the estimators of
 // Scale_estimators.
 template <class Estimator, class Sphere>
@@ -231,6 +252,16 @@ struct Automatic_scale_estimator : Estimator_base
          std::abs(s.mean - c.mean) <= automatic_scale_kappa * c.mean_error &&
          (!told || std::abs(s.mean - mean) <= automatic_scale_sphere_agreement * c.mean_error))
         mean = s.mean;
+      else if(c.noise_climb && !(std::abs(e.mean - c.mean) <= automatic_scale_normals_disagree * c.mean_error))
+      {
+        // the normals the wrapped estimator differentiates disagree with the positions (an
+        // estimated normal field bent at a scan's edge): the rung's quadric of positions
+        if(!quadric_estimate(chosen, c.mean, e))
+          return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
+        e.neighbor_count = c.count;
+        e.mean_error = c.mean_error;
+        return e;
+      }
       const double half = 0.5 * (e.k_max - e.k_min);
       e.mean = mean;
       e.k_min = mean - half;
