@@ -2337,10 +2337,10 @@ TEST_CASE("Automatic scale: the quadric's H where the ASO's disagrees with it by
 {
   // A mobile profiler over the wavy terrain (H* within +-0.166), range noise 0.3 times the
   // spacing, normals estimated as the tool does without normals. At the first and last profiles
-  // the estimated normals bend, and the ASO, which differentiates them, reads a curvature of 0.5
-  // where the truth is 0.003; the rung's quadric of positions does not. Where the ASO's H lies
-  // more than automatic_scale_normals_disagree (30) standard errors from the quadric's, the
-  // estimate is the quadric's (benchmark/scan_experiments `mobile`, 122,760 points: 8.64e-3 ->
+  // (one-sided neighbourhoods, where the estimated normals bend) the ASO reads H = -0.57 where
+  // the truth is 0.003; the rung's quadric of positions does not. Where the ASO's H lies
+  // more than automatic_scale_quadric_agreement (30) standard errors from the quadric's, the
+  // curvatures are the quadric's (benchmark/scan_experiments `mobile`, 122,760 points: 8.64e-3 ->
   // 3.26e-3; the other eleven patterns within 1%).
   namespace scan = psc_test::scan;
   const scan::Height_field terrain = scan::wavy_terrain();
@@ -2747,9 +2747,9 @@ struct Fixed_estimator : PSC::internal::Estimator_base
 
 TEST_CASE("Automatic scale: the mean curvature at a rung above the first, branch by branch", "[automatic_scale]")
 {
-  // Automatic_scale_estimator::at_choice() with fixed estimates, on a paraboloid cap
-  // z = -(x^2 + y^2) / 2 (radius 1, normal +z: H = 1 for the quadric). The rung's quadric says
-  // H = 1.0 with a standard error of 0.01 (radius 1).
+  // Automatic_scale_estimator::at_choice() with fixed estimates, on the cap z = -(x^2 + 2 y^2) / 2
+  // (radius 1, normal +z: principal curvatures 1 along x and 2 along y, H = 1.5). The rung's
+  // quadric says H = 1.5 with a standard error of 0.01 (radius 1).
   namespace I = PSC::internal;
   std::vector<double> qx, qy, qz, up, one;
   for(int i = -6; i <= 6; ++i)
@@ -2760,7 +2760,7 @@ TEST_CASE("Automatic scale: the mean curvature at a rung above the first, branch
         continue;
       qx.push_back(x);
       qy.push_back(y);
-      qz.push_back(-0.5 * (x * x + y * y));
+      qz.push_back(-0.5 * (x * x + 2 * y * y));
       up.push_back(0);
       one.push_back(1);
     }
@@ -2777,14 +2777,16 @@ TEST_CASE("Automatic scale: the mean curvature at a rung above the first, branch
   c.rung = 2;
   c.count = c.k = 160;
   c.radius = 1;
-  c.mean = 1.0;
+  c.mean = 1.5;
   c.mean_error = 0.01;
-  const auto estimate = [&](double aso, double sphere, double coherence, const I::Scale_choice& choice) {
+  // the ASO's estimate (k_max - k_min 0.4) with its normal along +z (`normal_z` 1) or -z, the sphere's H
+  const auto estimate = [&](double aso, double sphere, double coherence, const I::Scale_choice& choice,
+                            double normal_z = 1) {
     I::Scale_estimators<Fixed_estimator> estimators;
     Fixed_estimator& a = estimators.at_noise_scale;
     a.e.status = CGAL::Curvature_estimate_status::VALID;
     a.e.normal[0] = a.e.normal[1] = 0;
-    a.e.normal[2] = 1;
+    a.e.normal[2] = normal_z;
     a.e.mean = aso;
     a.e.k_min = aso - 0.2;
     a.e.k_max = aso + 0.2;
@@ -2798,43 +2800,54 @@ TEST_CASE("Automatic scale: the mean curvature at a rung above the first, branch
     return automatic.at_choice(choice, nb);
   };
   // the sphere where it agrees with the quadric (3 standard errors) and the ASO (4)
-  I::Local_estimate e = estimate(1.01, 0.98, 0.99, c);
-  CHECK(e.mean == 0.98);
+  I::Local_estimate e = estimate(1.51, 1.48, 0.99, c);
+  CHECK(e.mean == 1.48);
   CHECK(e.k_max - e.k_min == Approx(0.4));
   CHECK(e.mean_error == 0.01);
   CHECK(e.neighbor_count == 160);
   // the ASO where the sphere disagrees with it by more than 4 and the ASO is well told
-  CHECK(estimate(1.03, 0.98, 0.99, c).mean == 1.03);
+  CHECK(estimate(1.53, 1.48, 0.99, c).mean == 1.53);
   // the sphere again where the ASO's normals disagree (coherence below 0.95, or not computed)...
-  CHECK(estimate(1.03, 0.98, 0.9, c).mean == 0.98);
-  CHECK(estimate(1.03, 0.98, std::numeric_limits<double>::quiet_NaN(), c).mean == 0.98);
+  CHECK(estimate(1.53, 1.48, 0.9, c).mean == 1.48);
+  CHECK(estimate(1.53, 1.48, std::numeric_limits<double>::quiet_NaN(), c).mean == 1.48);
   // ...or its standard error times the radius exceeds 0.05
   I::Scale_choice noisy = c;
   noisy.mean_error = 0.06;
-  CHECK(estimate(1.25, 0.9, 0.99, noisy).mean == 0.9);
-  CHECK(estimate(1.25, 0.9, 0.99, c).mean == 1.25);  // (0.01: the ASO)
+  CHECK(estimate(1.75, 1.4, 0.99, noisy).mean == 1.4);
+  CHECK(estimate(1.75, 1.4, 0.99, c).mean == 1.75);  // (0.01: the ASO)
   // the ASO where the sphere is more than 3 from the quadric and the ASO within 30
-  e = estimate(1.2, 0.5, 0.99, c);
-  CHECK(e.mean == 1.2);
+  e = estimate(1.7, 1.0, 0.99, c);
+  CHECK(e.mean == 1.7);
   CHECK(e.k_max - e.k_min == Approx(0.4));
-  // the quadric where the ASO lies more than 30 from it: its H, its umbilic shape operator
-  e = estimate(1.5, 0.5, 0.99, c);
+  // the quadric where the ASO lies more than 30 from it: its H, its principal curvatures and
+  // directions, the ASO's normal
+  e = estimate(2.0, 1.0, 0.99, c);
   REQUIRE(e.status == CGAL::Curvature_estimate_status::VALID);
-  CHECK(e.mean == 1.0);
+  CHECK(e.mean == 1.5);
   CHECK(e.k_min == Approx(1.0).margin(1e-9));
-  CHECK(e.k_max == Approx(1.0).margin(1e-9));
-  CHECK(e.gaussian == Approx(1.0).margin(1e-9));
+  CHECK(e.k_max == Approx(2.0).margin(1e-9));
+  CHECK(e.gaussian == Approx(2.0).margin(1e-9));
+  CHECK(std::abs(e.d_max[1]) == Approx(1.0).margin(1e-9));
+  CHECK(std::abs(e.d_min[0]) == Approx(1.0).margin(1e-9));
   CHECK(e.normal[2] == 1);
   CHECK(e.mean_error == 0.01);
+  // the ASO's normal against the point's (its neighbours' side): the quadric compared on that side
+  CHECK(estimate(-1.55, 0.0, 0.99, c, -1).mean == -1.55);
+  e = estimate(-1.0, 0.0, 0.99, c, -1);
+  CHECK(e.mean == -1.5);
+  CHECK(e.k_min == Approx(-2.0).margin(1e-9));
+  CHECK(e.k_max == Approx(-1.0).margin(1e-9));
+  // the sphere, close to the quadric, before the quadric where the ASO is poorly told
+  CHECK(estimate(2.0, 1.49, 0.9, c).mean == 1.49);
   // not where the rung was reached past line rungs without noise: the ASO's
   I::Scale_choice lines = c;
   lines.noise_climb = false;
-  CHECK(estimate(1.5, 0.5, 0.99, lines).mean == 1.5);
+  CHECK(estimate(2.0, 1.0, 0.99, lines).mean == 2.0);
   // on the first rung the wrapped estimator's, whatever the others say
   I::Scale_choice first = c;
   first.rung = 0;
   first.noise_climb = false;
-  CHECK(estimate(1.5, 0.5, 0.99, first).mean == 1.5);
+  CHECK(estimate(2.0, 1.0, 0.99, first).mean == 2.0);
 }
 
 // The first pass's tests (Scale_ladder::gate) on the 40 nearest of points of a terrain at random

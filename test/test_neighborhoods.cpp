@@ -157,55 +157,73 @@ TEST_CASE("automatic scale: a rung is bit for bit the driver's neighbourhood of 
 TEST_CASE("automatic scale: the curvatures from the normals' scale choices are the ladder's, bit for bit")
 {
   namespace P = PSC::parameters;
-  scan::Noise noise;
-  noise.range_sigma = 0.03;
-  Point_set ps;
-  ps.add_normal_map();
-  for(const scan::Sample& s : scan::airborne_lines(scan::wavy_terrain(), 4, 0.1, 0.25, noise))
-    ps.insert(s.p);
-  PSC::Scale_choices choices;
-  CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
-    ps,
-    P::neighbor_count(40, P::automatic_scale(640, P::normal_orientation(CGAL::Normal_orientation::along_vector(0, 0, 1),
-                                                                        P::scale_choices(choices)))));
-  REQUIRE(choices.size() == ps.size());
-  std::size_t recorded = 0;
-  for(std::size_t i = 0; i < ps.size(); ++i)
-    recorded += choices.records().of(i) && choices.records().of(i)->count > 0 ? 1 : 0;
-  INFO(recorded << " of " << ps.size() << " points with a choice");
-  CHECK(recorded > ps.size() / 2);
-  const auto same = [](double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); };
-  const auto same_vector = [&](const Vector& a, const Vector& b) {
-    return same(a.x(), b.x()) && same(a.y(), b.y()) && same(a.z(), b.z());
-  };
-  for(int unusable = 0; unusable < 2; ++unusable)
-    for(double blend : {0.0, 0.5})
+  // the airborne lines with each setting; a noisy mobile scan, whose first and last profiles take
+  // the quadric's curvatures (automatic_scale_quadric_agreement), with the tool's blend
+  for(int cloud = 0; cloud < 2; ++cloud)
+  {
+    scan::Noise noise;
+    std::vector<scan::Sample> samples;
+    if(cloud == 0)
     {
-      if(unusable)
-        ps.normal(*(ps.begin() + 1234)) = CGAL::NULL_VECTOR;
-      INFO("position blend " << blend << (unusable ? ", a point without a usable normal" : ""));
-      const auto np = P::neighbor_count(40, P::automatic_scale(640, P::position_fit_blend(blend)));
-      const std::vector<Estimate> ladder = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(ps, np);
-      const std::vector<Estimate> chosen =
-        CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(ps, P::scale_choices(choices, np));
-      const std::vector<Estimate> sequential =
-        CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(ps, P::scale_choices(choices, np));
-      std::size_t differ = 0, climbed = 0;
-      for(std::size_t i = 0; i < ps.size(); ++i)
-        for(const std::vector<Estimate>* e : {&chosen, &sequential})
-        {
-          const Estimate &a = ladder[i], &b = (*e)[i];
-          differ += !(a.status == b.status && a.neighbor_count == b.neighbor_count &&
-                      same(a.mean_curvature, b.mean_curvature) && same(a.min_curvature, b.min_curvature) &&
-                      same(a.max_curvature, b.max_curvature) && same(a.gaussian_curvature, b.gaussian_curvature) &&
-                      same(a.mean_curvature_error, b.mean_curvature_error) &&
-                      same(a.normal_coherence, b.normal_coherence) && same_vector(a.normal, b.normal) &&
-                      same_vector(a.min_direction, b.min_direction) && same_vector(a.max_direction, b.max_direction));
-          climbed += a.neighbor_count > 40 ? 1 : 0;
-        }
-      CHECK(climbed > ps.size() / 2);
-      CHECK(differ == 0);
+      noise.range_sigma = 0.03;
+      samples = scan::airborne_lines(scan::wavy_terrain(), 4, 0.1, 0.25, noise);
     }
+    else
+    {
+      noise.range_sigma = 0.3 * scan::median_spacing(scan::mobile_profiles(scan::wavy_terrain(), 1.5));
+      samples = scan::mobile_profiles(scan::wavy_terrain(), 1.5, 0.1, 0.0035, noise);
+    }
+    INFO((cloud == 0 ? "airborne lines" : "mobile profiles"));
+    Point_set ps;
+    ps.add_normal_map();
+    for(const scan::Sample& s : samples)
+      ps.insert(s.p);
+    PSC::Scale_choices choices;
+    CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
+      ps, P::neighbor_count(
+            40, P::automatic_scale(640, P::normal_orientation(CGAL::Normal_orientation::along_vector(0, 0, 1),
+                                                              P::scale_choices(choices)))));
+    REQUIRE(choices.size() == ps.size());
+    std::size_t recorded = 0;
+    for(std::size_t i = 0; i < ps.size(); ++i)
+      recorded += choices.records().of(i) && choices.records().of(i)->count > 0 ? 1 : 0;
+    INFO(recorded << " of " << ps.size() << " points with a choice");
+    CHECK(recorded > ps.size() / 2);
+    const auto same = [](double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); };
+    const auto same_vector = [&](const Vector& a, const Vector& b) {
+      return same(a.x(), b.x()) && same(a.y(), b.y()) && same(a.z(), b.z());
+    };
+    for(int unusable = 0; unusable < 2; ++unusable)
+      for(double blend : {0.0, 0.5})
+      {
+        if(cloud == 1 && (unusable || blend == 0.0))
+          continue;
+        if(unusable)
+          ps.normal(*(ps.begin() + 1234)) = CGAL::NULL_VECTOR;
+        INFO("position blend " << blend << (unusable ? ", a point without a usable normal" : ""));
+        const auto np = P::neighbor_count(40, P::automatic_scale(640, P::position_fit_blend(blend)));
+        const std::vector<Estimate> ladder = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(ps, np);
+        const std::vector<Estimate> chosen =
+          CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(ps, P::scale_choices(choices, np));
+        const std::vector<Estimate> sequential =
+          CGAL::estimate_aso_curvatures<CGAL::Sequential_tag>(ps, P::scale_choices(choices, np));
+        std::size_t differ = 0, climbed = 0;
+        for(std::size_t i = 0; i < ps.size(); ++i)
+          for(const std::vector<Estimate>* e : {&chosen, &sequential})
+          {
+            const Estimate &a = ladder[i], &b = (*e)[i];
+            differ += !(a.status == b.status && a.neighbor_count == b.neighbor_count &&
+                        same(a.mean_curvature, b.mean_curvature) && same(a.min_curvature, b.min_curvature) &&
+                        same(a.max_curvature, b.max_curvature) && same(a.gaussian_curvature, b.gaussian_curvature) &&
+                        same(a.mean_curvature_error, b.mean_curvature_error) &&
+                        same(a.normal_coherence, b.normal_coherence) && same_vector(a.normal, b.normal) &&
+                        same_vector(a.min_direction, b.min_direction) && same_vector(a.max_direction, b.max_direction));
+            climbed += a.neighbor_count > 40 ? 1 : 0;
+          }
+        CHECK(climbed > ps.size() / 2);
+        CHECK(differ == 0);
+      }
+  }
 }
 
 TEST_CASE("neighbor_count: ties, k above the number of points, coincident points")

@@ -92,10 +92,12 @@ neighbor_count(std::size_t k, const NamedParameters& np = CGAL::parameters::defa
 /// radius exceeds 0.05), the difference of the principal curvatures and the directions the
 /// ASO's, computed there without `position_fit_blend` and with the quartic kernel in place of the
 /// cubic one (the rule tolerates a bias of about one standard error, which both reduce on
-/// simulated noisy scans); where the sphere is not taken and the ASO's mean curvature lies more
-/// than 30 standard errors from the quadric's (normals that disagree with the positions, as
-/// estimated normals do at a scan's edge), the curvatures are the quadric's. `Curvature_estimate::neighbor_count` is then the chosen count and
-/// `Curvature_estimate::mean_curvature_error` the standard error of the mean curvature there.
+/// simulated noisy scans); where a count was chosen for noise, the sphere is not taken and the
+/// ASO's mean curvature lies more than 30 standard errors from the quadric's (the first and last
+/// profiles of a scan: one-sided neighbourhoods, estimated normals that bend), the curvatures
+/// are the quadric's, the normal the ASO's. `Curvature_estimate::neighbor_count` is then the
+/// chosen count and `Curvature_estimate::mean_curvature_error` the standard error of the mean
+/// curvature there.
 /// The counts are climbed in passes (2k for every point, then 4k, 8k, ... only where the
 /// previous pass kept its largest): a point pays at most twice the neighbourhood it ends
 /// with. Default: none (the scale of `neighbor_count`); 0 is none too. Not supported with a

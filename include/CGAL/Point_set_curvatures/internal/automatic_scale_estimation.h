@@ -17,15 +17,16 @@
 // radius above automatic_scale_sphere_told: a real ground point among vegetation), and the
 // anisotropic part (k_max - k_min, the directions) is the wrapped estimator's. Where the rule
 // climbed for noise, the sphere is not taken and the wrapped estimator's H lies more than
-// automatic_scale_normals_disagree standard errors from the quadric's, the estimate is the
-// quadric's (quadric_estimate(): its H, its anisotropic part in the estimate's tangent plane):
-// the normals the wrapped estimator differentiates disagree with the positions there (estimated
-// normals bend at a scan's edge). Where the rule climbed because noise dominates (Scale_choice::noise_climb),
-// the wrapped estimator is the caller's `at_noise_scale` (for the ASO: without the position fit,
-// whose bias at those scales exceeds what it saves, and with the quartic kernel in place of the
-// cubic one: the rule tolerates a bias of about one standard error, which the narrower kernel
-// reduces). Where the rule kept a rung without noise and its neighbours spread evenly around
-// the point (spreads_evenly(), in the plane of the rung's reference normal), the wrapped
+// automatic_scale_quadric_agreement standard errors from the quadric's, the curvatures are the
+// quadric's (its H, its shape operator in the estimate's tangent plane; the normal stays the
+// estimator's): there the estimator's H is far from what the positions say (the first and last
+// profiles of a scan, where the neighbourhood is one-sided and estimated normals bend). Where
+// the rule climbed because noise dominates (Scale_choice::noise_climb), the wrapped estimator
+// is the caller's `at_noise_scale` (for the ASO: without the position fit, whose bias at those
+// scales exceeds what it saves, and with the quartic kernel in place of the cubic one: the rule
+// tolerates a bias of about one standard error, which the narrower kernel reduces). Where the
+// rule kept a rung without noise and its neighbours spread evenly around the point
+// (spreads_evenly(), in the plane of the rung's reference normal), the wrapped
 // estimator is the caller's `where_even` if it gives one (for the ASO: the quartic kernel too,
 // where the kernel is the robust variant's cubic; without noise the narrower kernel's lesser
 // bias is all gain, but where scan lines lie far apart for the neighbourhood it sees fewer of
@@ -180,20 +181,21 @@ inline bool spreads_evenly(const Neighborhood& nb)
   return tangential_axis_ratio<4>(nb) >= normal_field_anisotropy_start;
 }
 
-// The curvatures of the plain quadric of positions (the rungs' fit, without its anisotropy
-// penalty) on `nb` with mean curvature `mean` (the rung's), its shape operator taken in the
-// tangent plane of e.normal, written into `e` (its normal kept); false where it cannot be fitted.
-inline bool quadric_estimate(const Neighborhood& nb, double mean, Local_estimate& e)
+// The principal curvatures and directions of the plain quadric of positions (the rungs' fit,
+// without its anisotropy penalty) on `nb`, its shape operator taken in the tangent plane of
+// e.normal, into `e` (its normal kept); `e` unchanged where the quadric cannot be fitted.
+inline void set_quadric_curvatures(const Neighborhood& nb, Local_estimate& e)
 {
   Quadric_fit fit;
   fit.anisotropy_penalty = 0;
   double t1[3], t2[3], W[3];
   tangent_basis(e.normal, t1, t2);
   if(!fit.compute(nb) || !fit.shape_operator_in(e.normal, t1, t2, 1.0 / nb.radius, W))
-    return false;
-  const double shift = mean - 0.5 * (W[0] + W[2]);
-  set_principal_curvatures(W[0] + shift, W[1], W[2] + shift, t1, t2, e);
-  return std::isfinite(e.k_min) && std::isfinite(e.k_max);
+    return;
+  Local_estimate q = e;
+  set_principal_curvatures(W[0], W[1], W[2], t1, t2, q);
+  if(std::isfinite(q.k_min) && std::isfinite(q.k_max))
+    e = q;
 }
 
 // The automatic scale around an estimator (see the header comment), with the estimators of
@@ -243,24 +245,27 @@ struct Automatic_scale_estimator : Estimator_base
     {
       // the sphere's mean curvature where it agrees with the chosen rung's quadric and, where the
       // wrapped estimator's is well told, with it (elsewhere the sphere is biased: strongly
-      // anisotropic shapes at large scales, scan lines under noise)
+      // anisotropic shapes at large scales, scan lines under noise); the quadric's H turned to
+      // the side of the estimate's normal (the quadric is oriented by the point's normal, the
+      // sphere and the ASO by their neighbours')
+      const double* up = chosen.query_normal;
+      const double along = up[0] * e.normal[0] + up[1] * e.normal[1] + up[2] * e.normal[2];
+      const double quadric_mean = along < 0 ? -c.mean : c.mean;
       double mean = e.mean;
       const Local_estimate s = sphere(chosen);
       const bool told = c.mean_error * c.radius <= automatic_scale_sphere_told &&
                         e.normal_coherence >= automatic_scale_sphere_coherence;  // (NaN: not told)
       if(s.status == Curvature_estimate_status::VALID && std::isfinite(s.mean) &&
-         std::abs(s.mean - c.mean) <= automatic_scale_kappa * c.mean_error &&
+         std::abs(s.mean - quadric_mean) <= automatic_scale_kappa * c.mean_error &&
          (!told || std::abs(s.mean - mean) <= automatic_scale_sphere_agreement * c.mean_error))
         mean = s.mean;
-      else if(c.noise_climb && !(std::abs(e.mean - c.mean) <= automatic_scale_normals_disagree * c.mean_error))
+      else if(c.noise_climb && std::abs(e.mean - quadric_mean) > automatic_scale_quadric_agreement * c.mean_error)
       {
-        // the normals the wrapped estimator differentiates disagree with the positions (an
-        // estimated normal field bent at a scan's edge): the rung's quadric of positions
-        if(!quadric_estimate(chosen, c.mean, e))
-          return Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT);
-        e.neighbor_count = c.count;
-        e.mean_error = c.mean_error;
-        return e;
+        // the wrapped estimator's H is far from what the positions say (at a scan's first and
+        // last profiles): the quadric's curvatures. (A NaN standard error keeps the estimator's;
+        // one of 0 comes from a rung the quadric fits exactly, whose H is then exact.)
+        mean = quadric_mean;
+        set_quadric_curvatures(chosen, e);
       }
       const double half = 0.5 * (e.k_max - e.k_min);
       e.mean = mean;
