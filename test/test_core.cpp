@@ -2352,7 +2352,7 @@ TEST_CASE("Automatic scale: the quadric's H where the ASO's disagrees with it by
   const auto e = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
     cloud, PSC::parameters::neighbor_count(
              40, PSC::parameters::automatic_scale(640, PSC::parameters::position_fit_blend(0.5, maps()))));
-  double error = 0, edge_error = 0, worst_edge = 0;
+  double error = 0, edge_error = 0, worst_edge = 0, max_error = 0;
   std::size_t n = 0, edge = 0;
   for(std::size_t i = 0; i < samples.size(); ++i)
   {
@@ -2364,6 +2364,7 @@ TEST_CASE("Automatic scale: the quadric's H where the ASO's disagrees with it by
     {
       edge_error += d;
       worst_edge = std::max(worst_edge, d);
+      max_error = std::max(max_error, e[i].mean_curvature_error);
       ++edge;
     }
   }
@@ -2372,7 +2373,12 @@ TEST_CASE("Automatic scale: the quadric's H where the ASO's disagrees with it by
   measured("  mean |H - H*|", error / double(n));
   measured("  mean |H - H*| within 0.3 of the edge", edge_error / double(edge));
   measured("  largest |H - H*| there", worst_edge);
+  measured("  largest standard error there", max_error);
   REQUIRE(edge > 100);
+  // A point of the last-but-one profile whose 40 nearest are one line and whose 80 nearest
+  // cannot be fitted (the line and a few points off it) climbs on to 640 (H 0.123, H* 0.104):
+  // before, the line's rung was taken, valid with H 0.26 and a standard error of 83.
+  CHECK(max_error < 1);
   // (measured on these 19,500 points: 0.0213 within 0.3 of the edge and 0.0062 in all, against
   // 0.108 and 0.0194 without the quadric's H; one point at the very edge, kept at 40 neighbours,
   // is off by 2.8 with a standard error of 0.73 either way)
@@ -2952,6 +2958,29 @@ TEST_CASE("Automatic scale: the first test's cubic: its residual variance, and n
       CHECK(s2 < 1e-12);  // (an exact cubic: the rounding of sum w h² less the fitted part, 2e-16)
     else
       CHECK(s2 == Approx(sigma * sigma).epsilon(0.1));
+    // its coefficients (cubic_normal()'s slope is a1, a2) and the share of the quadratic's
+    // residual variance it leaves: 0 for an exact cubic, about 1 where the quadratic's
+    // residuals are noise (here the noise's 1e-4 against the quadratic's 4.6e-3: measured 0.022)
+    const double coefficients[10] = {0.1, 0.2, 0, 0, -0.3, 0, 0.4, 0, -0.2, 0};
+    double a[10], share = -1;
+    REQUIRE(fit.solve(I::cubic_normal_least_pivot, a, share));
+    for(int c = 0; c < 10; ++c)
+      CHECK(a[c] == Approx(coefficients[c]).margin(sigma > 0 ? 0.003 : 1e-12));
+    measured("cubic's share of the quadratic's residual variance (sigma " + std::to_string(sigma) + ")", share);
+    CHECK(share < (sigma > 0 ? 0.08 : 1e-9));
+  }
+  {
+    // a plane under noise: the cubic's terms explain nothing of the quadratic's residuals
+    I::Cubic_height_fit plane;
+    for(int i = 0; i < 4000; ++i)
+    {
+      const double u = disc(random), v = disc(random);
+      plane.add(u, v, 0.5 * u + 0.01 * gauss(random), 1 - 0.25 * (u * u + v * v));
+    }
+    double a[10], share = -1;
+    REQUIRE(plane.solve(I::cubic_normal_least_pivot, a, share));
+    CHECK(share == Approx(1).epsilon(0.01));
+    CHECK(a[1] == Approx(0.5).margin(0.002));
   }
   // few samples of equal weight, pure noise: the mean of the cubic's residual variance is the
   // noise's (the factor n_eff / (n_eff - 10); 0.75 without it, 0.88 with the quadric's 6);

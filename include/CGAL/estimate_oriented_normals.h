@@ -172,6 +172,44 @@ struct Normal_at_point
   Normal_record operator()(const Neighborhood& nb) const;
 };
 
+// The least relative pivot of the cubic of cubic_normal(): at 0.03 (the first test's) the cubic's
+// normals are taken on half the points of clean lines 5:1 with a wobble, and the ASO, which
+// differentiates the normal field, sees the step between them and the quadric's normals (mean
+// |H - H*| 0.81e-3 -> 0.86e-3); at 0.01 0.64e-3; at 0.003 scan lines 5:1 in a zigzag lose
+// (1.52e-3 -> 1.84e-3). benchmark/scan_experiments, clean, the default without normals.
+constexpr double cubic_normal_least_pivot = 0.01;
+// The ratio of the cubic's residual variance to the quadratic's (Cubic_height_fit::solve()) below
+// which cubic_normal() takes the cubic's normal: where the rung is kept as clean but noise is what
+// the quadratic leaves (ratio near 1), the cubic's slope only adds variance (without this bound:
+// lines 8:1 with a wobble under range noise of 0.1 and 0.3 spacings, normals' mean angle +6% and
+// +9%).
+constexpr double cubic_normal_share = 0.2;
+
+// Where the first rung is kept without noise (Scale_choice::clean), the normal of the weighted
+// cubic over the quadric's frame and weights (its frame cache): the quadric's slope carries the
+// surface's third-order terms, the cubic's does not. Left as it is where the cubic's monomials
+// are not well told apart (cubic_normal_least_pivot: scan lines) or where it fits no better
+// than the quadratic (cubic_normal_share).
+inline void cubic_normal(const Quadric_fit& quadric, double n[3])
+{
+  const std::vector<double>& frame = *quadric.frame_cache;
+  Cubic_height_fit cubic;
+  for(std::size_t b = 0; b + 7 < frame.size(); b += 8)
+    cubic.add(load_lanes(&frame[b + 2]), load_lanes(&frame[b + 4]), load_lanes(&frame[b + 6]), load_lanes(&frame[b]));
+  double a[10], share;
+  if(!cubic.solve(cubic_normal_least_pivot, a, share) || !(share < cubic_normal_share))
+    return;
+  double g[3];
+  for(int i = 0; i < 3; ++i)
+    g[i] = quadric.n0[i] - a[1] * quadric.t1[i] - a[2] * quadric.t2[i];
+  const double l2 = g[0] * g[0] + g[1] * g[1] + g[2] * g[2];
+  if(!(l2 > 0) || !std::isfinite(l2))
+    return;
+  const double inv = 1.0 / std::sqrt(l2);
+  for(int i = 0; i < 3; ++i)
+    n[i] = g[i] * inv;
+}
+
 inline Normal_record Normal_at_point::operator()(const Neighborhood& nb) const
 {
   Normal_record r;
@@ -194,7 +232,14 @@ inline Normal_record Normal_at_point::operator()(const Neighborhood& nb) const
     const bool climbs = ladder.climbs(c);
     // (as_first_rung: the ladder's plain quadric failed there, the penalised one may not, as
     // with a fixed count)
+    if(c.clean && !climbs)
+    {
+      thread_local std::vector<double> frame;
+      quadric.frame_cache = &frame;
+    }
     found = !climbs && (c.found || c.as_first_rung) && quadric.compute(scratch.chosen.nb) && quadric.normal(r.normal);
+    if(found && quadric.frame_cache)
+      cubic_normal(quadric, r.normal);
     if(curvatures)
     {
       // (the same scratch: its offsets and ranks are the neighbourhood's; its rungs not needed any more)

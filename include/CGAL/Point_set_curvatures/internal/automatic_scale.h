@@ -29,7 +29,9 @@
 // ones at the kernel's rim) tells little across the line, and under noise its fit is poor: it is
 // passed over, the first rung that spreads in two directions being the smallest (the top rung of
 // a pass is kept, so that a pass always ends with a choice, and so is the last line rung where the
-// rung above it cannot be fitted), and the first pass sends such a
+// pass's top rung cannot be fitted: below it, a rung that cannot be fitted is passed over too; in a
+// pass that is not the last, with automatic_scale above 640, such a point does not climb on), and
+// the first pass sends such a
 // point on, as it does where the nearest half of the first rung is such a line (its residuals
 // tell nothing of the noise across the line) and the cubic of the whole first rung does not keep
 // it (gate_cubic_least_pivot). (The normals' first pass sends a point on where the
@@ -422,6 +424,9 @@ struct Scale_choice
   // With Scale_ladder::gate: noise may dominate, the next pass decides (`count` is then twice
   // the smallest count, the neighbourhood that pass gives).
   bool climb = false;
+  // Kept by the normals' first test (choose_in_shared_frame()): the first rung's residuals are
+  // the surface's third-order terms, not noise.
+  bool clean = false;
   // The chosen rung (found or as_first_rung): the neighbour count that gives its neighbourhood
   // and that neighbourhood's radius (input units); the query normal its fit was oriented by
   // (`reference`: the neighbourhood's own where `reference_is_start`, else a lower rung's n0),
@@ -775,6 +780,7 @@ struct Scale_ladder
       chosen.take_attributes(whole);
     else
       send_on(c);
+    c.clean = kept;
     return c;
   }
 
@@ -804,8 +810,8 @@ struct Scale_ladder
     // until the second rung tells the noise
     double v0[2] = {0, 0}, factor0[2] = {0, 0}, residual0 = 0, radius0 = 0, noise2 = 0;
     // the last rung passed over for lying along one line (LINE; its neighbourhood kept in `trial`):
-    // a larger rung may spread in two directions; taken where the rung above it cannot be fitted
-    // (a lone noisy line, whose longer neighbourhoods are thinner)
+    // a larger rung may spread in two directions; taken where no rung above it is fitted up to
+    // the top one, which cannot be (a lone noisy line, whose longer neighbourhoods are thinner)
     Rung_fit passed;
     std::size_t passed_rank = 0, passed_k = 0;
     bool fitted = false;    // scratch.chosen_fit is the chosen rung's
@@ -818,12 +824,12 @@ struct Scale_ladder
         fit_rung(whole, offsets, ranks, k, reference, statistic, c.found ? trial : chosen, scratch.cache, j == 0);
       if(rung.outcome == Rung_fit::NO_RUNG)
         continue;
+      const bool top = 2 * k > whole.size || j + 1 == rungs();
       if(rung.outcome == Rung_fit::LINE)
       {
         if(c.found)
           break;
         // (the first pass's rung is its top one, passed over too: the point climbs)
-        const bool top = 2 * k > whole.size || j + 1 == rungs();
         if(gate || !top)
         {
           passed = rung;
@@ -838,6 +844,10 @@ struct Scale_ladder
       double v[2] = {0, 0}, n[3];
       if((rung.outcome != Rung_fit::FITTED && rung.outcome != Rung_fit::LINE) || !rung.fit.normal(n))
       {
+        // above a rung passed over as one line, one that cannot be fitted (the line and a few
+        // points off it) is passed over too; the line is taken only where the top one cannot be
+        if(!c.found && passed.outcome == Rung_fit::LINE && !top)
+          continue;
         if(c.found || passed.outcome != Rung_fit::LINE || !passed.fit.normal(n))
         {
           if(!c.found && j == 0)
@@ -938,7 +948,7 @@ struct Scale_ladder
       fitted = true;
       std::copy(fit.n0, fit.n0 + 3, reference);  // one side for every rung
       if(fallback)
-        break;  // (the rung above it could not be fitted)
+        break;  // (the pass's top rung could not be fitted)
     }
     const std::size_t half = smallest / 2;
     if(gate && c.found && half >= gate_least_half && half <= whole.size)

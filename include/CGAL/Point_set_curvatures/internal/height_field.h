@@ -199,7 +199,8 @@ struct Quadratic_moments : Quadratic_sums<double>
 // The weighted least-squares cubic height field (the quadratic's six monomials, then u³, u²v,
 // uv², v³), accumulated one sample at a time, for its residual variance: what is left of a
 // quadric's residuals once the third-order terms are fitted too (the second test of the automatic
-// scale's first pass, automatic_scale.h).
+// scale's first pass, automatic_scale.h); and for its slope, the normal where that pass keeps
+// the first rung as clean (cubic_normal(), estimate_oriented_normals.h).
 struct Cubic_height_fit
 {
   // Two lanes (lane_pair.h; add() takes two neighbours, a weight of 0 for none): w u^a v^b for
@@ -242,8 +243,53 @@ struct Cubic_height_fit
   // monomial's relative pivot (cholesky_factor()) is below `least_pivot`.
   bool residual_variance(double least_pivot, double& sigma2) const
   {
+    double L[10][10], y[10], n_eff;
+    if(!factor(least_pivot, L, y, n_eff))
+      return false;
+    double fitted = 0;
+    for(double x : y)
+      fitted += x * x;
+    sigma2 = std::max(0.0, fold(shh) - fitted) / fold(s[0]) * n_eff / (n_eff - 10.0);
+    return std::isfinite(sigma2);
+  }
+
+  // The coefficients of h = a0 + a1 u + a2 v + a3 u² + a4 u v + a5 v² + a6 u³ + a7 u² v + a8 u v²
+  // + a9 v³, under the conditions of residual_variance(), and the ratio of its residual variance
+  // to the quadratic's over the same points and weights (`share`: near 0 where the quadratic's
+  // residuals are the surface's third-order terms, about 1 where they are noise).
+  bool solve(double least_pivot, double a[10], double& share) const
+  {
+    double L[10][10], y[10], n_eff;
+    if(!factor(least_pivot, L, y, n_eff))
+      return false;
+    // (the quadratic's monomials come first: its fit is the first 6 of y)
+    double quadratic = fold(shh);
+    for(int i = 0; i < 6; ++i)
+      quadratic -= y[i] * y[i];
+    double cubic = quadratic;
+    for(int i = 6; i < 10; ++i)
+      cubic -= y[i] * y[i];
+    // (NaN where the quadratic fits exactly; where it nearly does, a ratio of rounding errors, but
+    // then both slopes are exact)
+    share = std::max(0.0, cubic) / (n_eff - 10.0) / (std::max(0.0, quadratic) / (n_eff - 6.0));
+    for(int i = 9; i >= 0; --i)  // Lᵀ a = y
+    {
+      double x = y[i];
+      for(int k = i + 1; k < 10; ++k)
+        x -= L[k][i] * a[k];
+      a[i] = x / L[i][i];
+      if(!std::isfinite(a[i]))
+        return false;
+    }
+    return true;
+  }
+
+private:
+  // The Cholesky factor L of the normal equations, y = L⁻¹ atb and n_eff (residual_variance()).
+  bool factor(double least_pivot, double (&L)[10][10], double (&y)[10], double& n_eff) const
+  {
     const double sw = fold(s[0]), sum_w2 = fold(sw2);
-    const double n_eff = sum_w2 > 0 ? sw * sw / sum_w2 : 0.0;
+    n_eff = sum_w2 > 0 ? sw * sw / sum_w2 : 0.0;
     // the normal equations: entry (i, j) is the monomial of the summed powers
     static constexpr int pu[10] = {0, 1, 0, 2, 1, 0, 3, 2, 1, 0}, pv[10] = {0, 0, 1, 0, 1, 2, 0, 1, 2, 3};
     double ata[10][10] = {}, atb[10];
@@ -256,16 +302,12 @@ struct Cubic_height_fit
       }
       atb[i] = fold(sh[i]);
     }
-    double L[10][10] = {};
+    for(auto& row : L)
+      std::fill(row, row + 10, 0.0);
     if(!(n_eff > 10.5) || !cholesky_factor(ata, L, least_pivot))
       return false;
-    double y[10];
     forward_substitution(L, atb, y);
-    double fitted = 0;
-    for(double x : y)
-      fitted += x * x;
-    sigma2 = std::max(0.0, fold(shh) - fitted) / sw * n_eff / (n_eff - 10.0);
-    return std::isfinite(sigma2);
+    return true;
   }
 };
 
