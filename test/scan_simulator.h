@@ -498,6 +498,16 @@ inline double median_spacing(const std::vector<Sample>& samples)
   return nearest[nearest.size() / 2];
 }
 
+// The samples `scan(noise)` gives with a range noise of `share` times the median spacing of the same
+// scan without noise (the unit of benchmark/scan_experiments' --noise); `scan` takes a Noise.
+template <class Scan>
+std::vector<Sample> with_range_noise(double share, const Scan& scan)
+{
+  Noise noise;
+  noise.range_sigma = share * median_spacing(scan(Noise()));
+  return scan(noise);
+}
+
 }  // namespace scan
 }  // namespace psc_test
 

@@ -2301,9 +2301,8 @@ TEST_CASE("Automatic scale: over noisy airborne scan lines the sphere's H only w
   // scan_experiments on 11,760 points of these lines: 0.0100 -> 0.0064).
   namespace scan = psc_test::scan;
   const scan::Height_field terrain = scan::wavy_terrain();
-  scan::Noise noise;
-  noise.range_sigma = 0.3 * scan::median_spacing(scan::airborne_lines(terrain, 6, 0.1, 0.5));
-  const std::vector<scan::Sample> samples = scan::airborne_lines(terrain, 6, 0.1, 0.5, noise);
+  const std::vector<scan::Sample> samples = scan::with_range_noise(
+    0.3, [&](const scan::Noise& noise) { return scan::airborne_lines(terrain, 6, 0.1, 0.5, noise); });
   const std::vector<Oriented_point> cloud = scan::with_true_normals(samples);
   const auto e = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
     cloud, PSC::parameters::neighbor_count(
@@ -2345,9 +2344,8 @@ TEST_CASE("Automatic scale: the quadric's H where the ASO's disagrees with it by
   namespace scan = psc_test::scan;
   const scan::Height_field terrain = scan::wavy_terrain();
   const double half_width = 2;
-  scan::Noise noise;
-  noise.range_sigma = 0.3 * scan::median_spacing(scan::mobile_profiles(terrain, half_width));
-  const std::vector<scan::Sample> samples = scan::mobile_profiles(terrain, half_width, 0.1, 0.0035, noise);
+  const std::vector<scan::Sample> samples = scan::with_range_noise(
+    0.3, [&](const scan::Noise& noise) { return scan::mobile_profiles(terrain, half_width, 0.1, 0.0035, noise); });
   const std::vector<Oriented_point> cloud = with_estimated_normals(scan::with_true_normals(samples), 640);
   const auto e = CGAL::estimate_aso_curvatures<CGAL::Parallel_tag>(
     cloud, PSC::parameters::neighbor_count(

@@ -169,10 +169,8 @@ TEST_CASE("automatic scale: the curvatures from the normals' scale choices are t
       samples = scan::airborne_lines(scan::wavy_terrain(), 4, 0.1, 0.25, noise);
     }
     else
-    {
-      noise.range_sigma = 0.3 * scan::median_spacing(scan::mobile_profiles(scan::wavy_terrain(), 1.5));
-      samples = scan::mobile_profiles(scan::wavy_terrain(), 1.5, 0.1, 0.0035, noise);
-    }
+      samples = scan::with_range_noise(
+        0.3, [](const scan::Noise& n) { return scan::mobile_profiles(scan::wavy_terrain(), 1.5, 0.1, 0.0035, n); });
     INFO((cloud == 0 ? "airborne lines" : "mobile profiles"));
     Point_set ps;
     ps.add_normal_map();

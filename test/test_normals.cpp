@@ -326,10 +326,8 @@ TEST_CASE("estimate_oriented_normals: one scan line gives no normal, never a sid
   // and the normal lay about the line, sideways (19% of them more than 60 degrees off on a
   // 16 x 16 m scan). The frame now comes from the unweighted neighbourhood there, and the
   // automatic scale (the default) climbs to a rung that spreads in two directions.
-  const std::vector<scan::Sample> clean_profiles = scan::mobile_profiles(scan::wavy_terrain(), 2.0);
-  scan::Noise range_noise;
-  range_noise.range_sigma = 0.3 * scan::median_spacing(clean_profiles);
-  const std::vector<scan::Sample> profiles = scan::mobile_profiles(scan::wavy_terrain(), 2.0, 0.1, 0.0035, range_noise);
+  const std::vector<scan::Sample> profiles = scan::with_range_noise(
+    0.3, [](const scan::Noise& noise) { return scan::mobile_profiles(scan::wavy_terrain(), 2.0, 0.1, 0.0035, noise); });
   // the share of the normals given that are more than `degrees` off
   const auto share_off = [&](const std::vector<Oriented_point>& estimated, double degrees) {
     std::size_t off = 0, given = 0;

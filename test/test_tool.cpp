@@ -828,9 +828,7 @@ TEST_CASE("tool: rgb columns are refused with a message naming --columns, and --
           "read the same cloud")
 {
   const std::vector<Oriented_point> pts = sphere(500, 1.0);
-  write_xyz(file("cols.xyz"), pts);
-  REQUIRE(run_tool(q(file("cols.xyz")) + " " + q(file("cols_ref.csv")) + " --radius 0.6").status == 0);
-  const std::string reference = read_text(file("cols_ref.csv"));
+  const std::string reference = csv_reference(pts, "cols");
 
   std::ostringstream rgb, nine, csv, cloudcompare, asc;
   for(std::ostringstream* s : {&rgb, &nine, &csv, &cloudcompare, &asc})
@@ -1098,9 +1096,7 @@ TEST_CASE("tool: readers accept trailing comments, a count before a header, OFF 
           "after binary PLY data, out-of-range numbers")
 {
   const std::vector<Oriented_point> pts = sphere(500, 1.0);
-  write_xyz(file("ref.xyz"), pts);
-  REQUIRE(run_tool(q(file("ref.xyz")) + " " + q(file("ref.csv")) + " --radius 0.6").status == 0);
-  const std::string reference = read_text(file("ref.csv"));
+  const std::string reference = csv_reference(pts, "ref");
   std::ostringstream commented, counted, off;
   for(std::ostringstream* s : {&commented, &counted, &off})
     s->precision(17);

@@ -272,6 +272,16 @@ std::string las_with_extra_bytes(const std::vector<Oriented_point>& pts, const d
   return with_vlrs(in, {vlr("LASF_Projection", 34735, geokeys(1)), vlr("LASF_Spec", 4, descriptors)});
 }
 
+// The LAS file the tool writes from `input` to `output` (names in the work directory) with
+// `options`; the run must succeed.
+psc_las_test::Las las_output(const std::string& input, const std::string& output, const std::string& options)
+{
+  const Run r = run_tool(q(file(input)) + " " + q(file(output)) + " " + options);
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  return psc_las_test::read_las_1_4(read_text(file(output)));
+}
+
 }  // namespace
 
 TEST_CASE("tool: LAS output is LAS 1.4 with the estimates as extra bytes, per an independent reader of the "
@@ -402,10 +412,7 @@ TEST_CASE("tool: LAS output is LAS 1.4 with the estimates as extra bytes, per an
   CHECK(read_text(file("eb_tiled.las")) == read_text(file("eb_whole.las")));
 
   // --float: float32 estimates with a NaN no_data (a double, as the specification upcasts floats)
-  REQUIRE(
-    run_tool(q(file("eb.las")) + " " + q(file("eb_float.las")) + " --radius 0.5 --float --quiet" + viewpoint).status ==
-    0);
-  const Las f = read_las_1_4(read_text(file("eb_float.las")));
+  const Las f = las_output("eb.las", "eb_float.las", "--radius 0.5 --float --quiet" + viewpoint);
   REQUIRE(f.descriptors.size() == names.size());
   CHECK(f.descriptors[5].data_type == 9);
   CHECK(f.descriptors[5].options == 1);
@@ -440,10 +447,7 @@ TEST_CASE("tool: LAS output is LAS 1.4 with the estimates as extra bytes, per an
   for(const Oriented_point& p : sphere(2000, 2.0))
     ball.emplace_back(Point(p.first.x() + 10.5, p.first.y() + 20.5, p.first.z() + 30.5), p.second);
   write_xyz(file("ball.xyz"), ball);
-  REQUIRE(
-    run_tool(q(file("ball.xyz")) + " " + q(file("ball.las")) + " --radius 0.5 --fields mean,valid --quiet").status ==
-    0);
-  const Las b = read_las_1_4(read_text(file("ball.las")));
+  const Las b = las_output("ball.xyz", "ball.las", "--radius 0.5 --fields mean,valid --quiet");
   CHECK(b.format == 6);
   CHECK(b.legacy_count == 0);  // formats 6-10: the legacy counts are 0
   CHECK(b.count == ball.size());
@@ -503,10 +507,8 @@ TEST_CASE("tool: LAS output is LAS 1.4 with the estimates as extra bytes, per an
     CHECK(bn.max[a] == b.max[a]);
   }
   // --drop-attributes: a LAS input's standard fields stay, its extra bytes go
-  REQUIRE(run_tool(q(file("eb.las")) + " " + q(file("eb_drop.las")) +
-                   " --radius 0.5 --fields mean --drop-attributes --quiet" + viewpoint)
-            .status == 0);
-  const Las dropped = read_las_1_4(read_text(file("eb_drop.las")));
+  const Las dropped =
+    las_output("eb.las", "eb_drop.las", "--radius 0.5 --fields mean --drop-attributes --quiet" + viewpoint);
   REQUIRE(dropped.descriptors.size() == 1);
   CHECK(dropped.descriptors[0].name == "mean");
   CHECK(dropped.format == 3);
@@ -551,11 +553,7 @@ TEST_CASE("tool: LAS output is LAS 1.4 with the estimates as extra bytes, per an
     const std::string mine(100, 'x');
     eb += evlr("LASF_Spec", 4, descriptor(9, "Amplitude")) + evlr("MyStuff", 7, mine);
     write_text(file("evlr_eb.las"), eb);
-    const Run r =
-      run_tool(q(file("evlr_eb.las")) + " " + q(file("evlr_eb_out.las")) + " --radius 0.5 --fields mean" + viewpoint);
-    INFO(r.err);
-    REQUIRE(r.status == 0);
-    const Las l = read_las_1_4(read_text(file("evlr_eb_out.las")));
+    const Las l = las_output("evlr_eb.las", "evlr_eb_out.las", "--radius 0.5 --fields mean" + viewpoint);
     REQUIRE(l.evlr_count == 1);
     REQUIRE(l.evlrs.size() == 1);
     CHECK(l.evlrs[0].user_id == "MyStuff");
@@ -587,11 +585,7 @@ TEST_CASE("tool: LAS output is LAS 1.4 with the estimates as extra bytes, per an
                                   1,
                                 std::uint64_t(1000 + 256 * i));
       write_text(file("fmt.las"), src);
-      const Run fr =
-        run_tool(q(file("fmt.las")) + " " + q(file("fmt_out.las")) + " --radius 0.5 --fields mean --quiet" + viewpoint);
-      INFO(fr.err);
-      REQUIRE(fr.status == 0);
-      const Las fl = read_las_1_4(read_text(file("fmt_out.las")));
+      const Las fl = las_output("fmt.las", "fmt_out.las", "--radius 0.5 --fields mean --quiet" + viewpoint);
       CHECK(fl.format == format);
       CHECK(fl.record_length == standard[format] + 8);
       CHECK(fl.legacy_count == (format <= 5 ? few.size() : 0));
@@ -752,10 +746,8 @@ TEST_CASE("tool: a truncated LAS is refused, and read to its last complete recor
   REQUIRE(CGAL::IO::read_PLY(file("cut.ply"), ps));
   CHECK(ps.size() == 1064);
   // to LAS: the count written is the points read
-  REQUIRE(
-    run_tool(q(file("cut.las")) + " " + q(file("cut_out.las")) + " --radius 0.5 --orient +z --allow-truncated --quiet")
-      .status == 0);
-  const psc_las_test::Las l = psc_las_test::read_las_1_4(read_text(file("cut_out.las")));
+  const psc_las_test::Las l =
+    las_output("cut.las", "cut_out.las", "--radius 0.5 --orient +z --allow-truncated --quiet");
   CHECK(l.count == 1064);
   CHECK(l.legacy_count == 1064);
   CHECK(l.file.size() == l.point_offset + 1064 * std::size_t(l.record_length));

@@ -170,6 +170,15 @@ inline Run run_tool(const std::string& args) { return run_tool_after("", args); 
 
 inline std::string q(const std::string& path) { return "'" + path + "'"; }
 
+// The tool's CSV output at --radius 0.6 on `pts`, written with their normals as <name>.xyz: the
+// reference that the same cloud in other formats and layouts must reproduce.
+inline std::string csv_reference(const std::vector<Oriented_point>& pts, const std::string& name)
+{
+  write_xyz(file(name + ".xyz"), pts);
+  REQUIRE(run_tool(q(file(name + ".xyz")) + " " + q(file(name + "_reference.csv")) + " --radius 0.6").status == 0);
+  return read_text(file(name + "_reference.csv"));
+}
+
 // (sanitizers whose shadow memory or quarantine makes the resident memory no measure of the tool's)
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
 #define PSC_TEST_MEMORY_SANITIZED
