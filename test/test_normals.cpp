@@ -211,6 +211,44 @@ TEST_CASE("scans without normals: quadric normals and the position blend as accu
   }
 }
 
+// The cubic's normal against the quadric's on a clean cubic surface sampled at random: where the
+// automatic scale keeps 40 as clean, the normal is the cubic's slope at the point, mapped back from
+// the fit's frame (a wrong sign or axis would be off by degrees); with the fixed count the quadric's.
+TEST_CASE("estimate_oriented_normals: on a clean cubic surface the automatic scale's normals are the cubic's")
+{
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> square(-2, 2);
+  std::vector<Oriented_point> exact;
+  for(int i = 0; i < 4000; ++i)
+  {
+    const double x = square(random), y = square(random);
+    // z = 0.04 x³ - 0.03 x² y + 0.02 y³ + 0.1 x y
+    const Vector n(-(0.12 * x * x - 0.06 * x * y + 0.1 * y), -(-0.03 * x * x + 0.06 * y * y + 0.1 * x), 1);
+    exact.emplace_back(Point(x, y, 0.04 * x * x * x - 0.03 * x * x * y + 0.02 * y * y * y + 0.1 * x * y),
+                       n / std::sqrt(n.squared_length()));
+  }
+  const auto mean_angle = [&](const std::vector<Oriented_point>& estimated) {
+    double sum = 0;
+    std::size_t n = 0;
+    for(std::size_t i = 0; i < exact.size(); ++i)
+      if(std::abs(exact[i].first.x()) < 1.5 && std::abs(exact[i].first.y()) < 1.5)  // (away from the border)
+      {
+        const double c = estimated[i].second * exact[i].second / std::sqrt(estimated[i].second.squared_length());
+        sum += std::acos(std::min(1.0, std::abs(c))) * 180 / M_PI;
+        ++n;
+      }
+    return sum / double(n);
+  };
+  std::vector<Oriented_point> automatic = exact, fixed = exact;
+  CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(
+    automatic, PSC::parameters::automatic_scale(640, PSC::parameters::neighbor_count(40, pair_maps)));
+  CGAL::estimate_oriented_normals<CGAL::Parallel_tag>(fixed, PSC::parameters::neighbor_count(40, pair_maps));
+  const double cubic = mean_angle(automatic), quadric = mean_angle(fixed);
+  measured("clean cubic surface: mean angle of the automatic scale's normals (degrees)", cubic);
+  measured("clean cubic surface: mean angle of the quadric's at 40 (degrees)", quadric);
+  CHECK(cubic < 0.1 * quadric);
+}
+
 // Clean zigzag airborne lines 3 times farther apart than the spacing along them (issue 44, item
 // 3). Where the normals' first test keeps the first rung as clean, its quadric's slope carries the
 // surface's third-order terms (0.24 degrees on average here) and the ASO, which differentiates the
