@@ -192,12 +192,9 @@ constexpr double cubic_normal_share = 0.2;
 // than the quadratic (cubic_normal_share).
 inline void cubic_normal(const Quadric_fit& quadric, double n[3])
 {
-  const std::vector<double>& frame = *quadric.frame_cache;
-  Cubic_height_fit cubic;
-  for(std::size_t b = 0; b + 7 < frame.size(); b += 8)
-    cubic.add(load_lanes(&frame[b + 2]), load_lanes(&frame[b + 4]), load_lanes(&frame[b + 6]), load_lanes(&frame[b]));
   double a[10], share;
-  if(!cubic.solve(cubic_normal_least_pivot, a, share) || !(share < cubic_normal_share))
+  if(!cubic_over_frame_cache(*quadric.frame_cache).solve(cubic_normal_least_pivot, a, share) ||
+     !(share < cubic_normal_share))
     return;
   double g[3];
   for(int i = 0; i < 3; ++i)
@@ -232,13 +229,11 @@ inline Normal_record Normal_at_point::operator()(const Neighborhood& nb) const
     const bool climbs = ladder.climbs(c);
     // (as_first_rung: the ladder's plain quadric failed there, the penalised one may not, as
     // with a fixed count)
-    if(c.clean && !climbs)
-    {
-      thread_local std::vector<double> frame;
+    thread_local std::vector<double> frame;  // (for cubic_normal())
+    if(c.clean)
       quadric.frame_cache = &frame;
-    }
     found = !climbs && (c.found || c.as_first_rung) && quadric.compute(scratch.chosen.nb) && quadric.normal(r.normal);
-    if(found && quadric.frame_cache)
+    if(found && c.clean)
       cubic_normal(quadric, r.normal);
     if(curvatures)
     {

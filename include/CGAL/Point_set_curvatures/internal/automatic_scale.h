@@ -639,12 +639,8 @@ struct Scale_ladder
   // (gate_cubic_least_pivot) or too few points weigh.
   static double cubic_residual(const std::vector<double>& frame, double radius)
   {
-    Cubic_height_fit cubic;
-    // (by pairs of neighbours; outside the kernel the weight and the values are 0: nothing added)
-    for(std::size_t b = 0; b + 7 < frame.size(); b += 8)
-      cubic.add(load_lanes(&frame[b + 2]), load_lanes(&frame[b + 4]), load_lanes(&frame[b + 6]), load_lanes(&frame[b]));
     double sigma2;
-    if(!cubic.residual_variance(gate_cubic_least_pivot, sigma2))
+    if(!cubic_over_frame_cache(frame).residual_variance(gate_cubic_least_pivot, sigma2))
       return std::numeric_limits<double>::quiet_NaN();
     return sigma2 * radius * radius;
   }

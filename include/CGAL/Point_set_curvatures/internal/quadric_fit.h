@@ -391,6 +391,17 @@ public:
   }
 };
 
+// The weighted cubic height field over the points of a quadric's fit, in its frame and with its
+// weights: the sums of Cubic_height_fit over its frame cache (Quadric_fit::frame_cache).
+inline Cubic_height_fit cubic_over_frame_cache(const std::vector<double>& frame)
+{
+  Cubic_height_fit cubic;
+  // (by pairs of neighbours; outside the kernel the weight and the values are 0: nothing added)
+  for(std::size_t b = 0; b + 7 < frame.size(); b += 8)
+    cubic.add(load_lanes(&frame[b + 2]), load_lanes(&frame[b + 4]), load_lanes(&frame[b + 6]), load_lanes(&frame[b]));
+  return cubic;
+}
+
 }  // namespace internal
 }  // namespace Point_set_curvatures
 }  // namespace CGAL
