@@ -37,7 +37,11 @@
 // it (gate_cubic_least_pivot). (The normals' first pass sends a point on where the
 // weights leave one line and the points do not.) For the mean curvature, a rung whose fit can
 // hardly tell it (two scan lines: ill_conditioned_curvature_factor) counts as such a line rung,
-// the nearest half of the first rung too; above a rung already chosen, one ends the climb.
+// the nearest half of the first rung too; above a rung already chosen, one ends the climb, unless
+// the rung chosen is the first kept and was itself that ill-conditioned, kept only because a
+// quadric nearly interpolated its few lines (residuals too small for the error's bound), and the
+// line rung is below the pass's top: where, with the line rung's residuals for the noise, its
+// error exceeds the bound, it is passed over too.
 //
 // The rule. Each rung's interval is its statistic plus or minus kappa standard errors; the
 // rule keeps the largest rung whose interval meets those of every smaller rung. Under noise
@@ -162,7 +166,13 @@ constexpr std::size_t gate_least_half = 12;
 // estimate in error by several times the surface's curvature (benchmark/scan_experiments, range
 // noise 0.3 spacings: `mobile` 0.0170 -> 0.0075, `airborne10` 0.0295 -> 0.0140; the factor
 // alone, without the error's bound, also moved clean scans' edges to larger one-sided rungs,
-// `wobbly8` 0.00198 -> 0.00211).
+// `wobbly8` 0.00198 -> 0.00211). The bound reads the rung's own residuals, which a quadric
+// through one or two noisy lines makes small: at the edge of a noisy mobile scan (test_core) a
+// first rung kept that way gave H 2.83 (truth 0.03); where the rung above it is a line rung, its
+// residuals are taken for the noise too (Scale_ladder::choose()), and the point climbs (H 0.24
+// off there; on the clean scans of benchmark/scan_experiments 14 edge points of `airborne10` and
+// `mobile` climb too, `airborne10` 3.07e-3 -> 3.09e-3; its noisy scans and the real tiles do not
+// change).
 constexpr double ill_conditioned_curvature_factor = 1e4;
 constexpr double ill_conditioned_curvature_error = 0.1;
 
@@ -516,6 +526,9 @@ struct Scale_ladder
     enum Outcome { NO_RUNG, FAILED, FITTED, LINE } outcome = FAILED;
     Quadric_fit fit;
     double factor[2] = {0, 0}, residual = 0, radius = 0;
+    // for the mean curvature, a fitted rung whose variance factor alone would make it untold
+    // (curvature_untold(): its residuals too small for the error's bound)
+    bool ill_conditioned = false;
   };
 
   // Whether a rung's fit can hardly tell the mean curvature (ill_conditioned_curvature_factor):
@@ -524,6 +537,13 @@ struct Scale_ladder
   {
     return factor * double(n) > ill_conditioned_curvature_factor &&
            factor * sigma2 > ill_conditioned_curvature_error * ill_conditioned_curvature_error;
+  }
+
+  // The error's bound of curvature_untold() in input units: the variance factor of H over r⁴
+  // (`factor`) and a noise variance `sigma2` for a rung of radius r.
+  static bool curvature_untold_with(double factor, double sigma2, double r)
+  {
+    return factor * sigma2 * r * r > ill_conditioned_curvature_error * ill_conditioned_curvature_error;
   }
 
   // A statistic's coefficient combinations, m rows g of the quadric's six coefficients: a3 + a5
@@ -626,6 +646,8 @@ struct Scale_ladder
       }
       const bool line = rung.fit.weighted_line || (statistic == Statistic::MEAN_CURVATURE &&
                                                    curvature_untold(rung.factor[0], sigma2, target.nb.size));
+      rung.ill_conditioned = statistic == Statistic::MEAN_CURVATURE &&
+                             rung.factor[0] * double(target.nb.size) > ill_conditioned_curvature_factor;
       rung.outcome = line ? Rung_fit::LINE : Rung_fit::FITTED;
       rung.radius = target.nb.radius;
       rung.residual = sigma2 * (rung.radius * rung.radius);
@@ -812,6 +834,7 @@ struct Scale_ladder
     std::size_t passed_rank = 0, passed_k = 0;
     bool fitted = false;    // scratch.chosen_fit is the chosen rung's
     bool kept_one = false;  // a rung was kept: `reference` is no longer the neighbourhood's
+    bool first_ill_conditioned = false;
     // (a cloud of fewer points than the smallest count: every point, as with neighbor_count)
     std::size_t k = std::min(smallest, whole.size);
     for(std::size_t j = 0; k > 0 && k <= whole.size && j < rungs(); ++j, k *= 2)
@@ -823,8 +846,27 @@ struct Scale_ladder
       const bool top = 2 * k > whole.size || j + 1 == rungs();
       if(rung.outcome == Rung_fit::LINE)
       {
+        // Above the first rung kept, a line rung ends the climb; but where that rung was kept
+        // only because its residuals were too small for the error's bound (ill-conditioned: one
+        // or two scan lines that a quadric nearly interpolates), this line rung is not the pass's
+        // top, and with its residuals taken for the noise the kept rung's standard error would
+        // exceed that bound, the kept rung is given up: both are passed over as line rungs and
+        // the climb goes on, on the side of the given-up rung's normal
+        // (ill_conditioned_curvature_factor).
         if(c.found)
-          break;
+        {
+          if(!first_ill_conditioned || compared || gate || top ||
+             !curvature_untold_with(factor0[0], std::max(residual0, rung.residual), radius0))
+            break;
+          const Scale_choice given_up = c;
+          c = Scale_choice();
+          std::copy(given_up.anchor, given_up.anchor + 3, c.anchor);  // (the side kept_one keeps)
+          fitted = false;
+          passed = rung;  // (fitted in `trial`, where a passed rung is kept)
+          passed_rank = j;
+          passed_k = k;
+          continue;
+        }
         // (the first pass's rung is its top one, passed over too: the point climbs)
         if(gate || !top)
         {
@@ -886,6 +928,7 @@ struct Scale_ladder
       }
       if(!c.found)
       {
+        first_ill_conditioned = rung.ill_conditioned;
         std::copy(v, v + 2, v0);
         std::copy(factor, factor + 2, factor0);
         residual0 = sigma2;
