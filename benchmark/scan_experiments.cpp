@@ -5,12 +5,14 @@
 // a terrestrial scan of a torus, airborne scan lines over a wavy terrain, two terrestrial scans
 // of that terrain merged, and more patterns over that terrain (airborne lines of other ratios,
 // oblique and zigzag sweeps, lines that are not straight, a mobile profiler, one terrestrial
-// station); clean, with range noise, with quantised coordinates. For each cloud,
+// station, a car-roof multi-beam scanner standing still, a drone's Risley-prism rosette); clean, with
+// range noise, with quantised coordinates. For each cloud,
 // the normals a user can get (exact, the package's estimates of each fit order, CGAL's jets)
 // and the curvature estimators on them, by count.
 //
 //   scan_experiments [--neighbors K] [--normal-neighbors K1,K2...] [--only torus,airborne,merged,
-//                    airborne2,airborne10,polygon5,zigzag5,zigzag3,wobbly5,wobbly8,mobile,terrestrial]
+//                    airborne2,airborne10,polygon5,zigzag5,zigzag3,wobbly5,wobbly8,mobile,terrestrial,
+//                    rings,rosette]
 //                    [--noise SIGMA_IN_SPACINGS] [--quantum Q] [--line-spacing S] [--dump PREFIX]
 //                    [--auto LARGEST]  (the automatic scale: normals and ASO, ladder 40 .. LARGEST;
 //                                       columns auto, with the position fit blended at 0.5 as for
@@ -104,6 +106,11 @@ std::vector<Named_cloud> clouds(const Options& o)
   make("mobile", [&](const scan::Noise& n) { return scan::mobile_profiles(terrain, 8, 0.1, 0.0035, n); });
   make("terrestrial",
        [&](const scan::Noise& n) { return scan::merged_terrestrial(terrain, 10, 0.006, 10, n, 1.8, 1); });
+  // more patterns (issue 44, measured on no tuning): a car-roof multi-beam scanner standing
+  // still (rings), a drone's Risley-prism rosette
+  make("rings",
+       [&](const scan::Noise& n) { return scan::multibeam_rings(terrain, 12, 32, -0.535, -0.023, 0.0035, n); });
+  make("rosette", [&](const scan::Noise& n) { return scan::rosette(terrain, 12, 160000, 400, n); });
   return list;
 }
 

@@ -419,6 +419,64 @@ inline std::vector<Sample> mobile_profiles(const Height_field& s, double half_wi
   return out;
 }
 
+// A spinning multi-beam scanner (a car-roof LiDAR) standing still `height` above the height
+// field at (x0, y0): `beams` lasers at elevations evenly spread over [elevation_min,
+// elevation_max] (radians, below the horizon), each turning through a full circle at the
+// azimuth step `azimuth_step`. Each beam draws a ring on the ground: points 1-4 cm apart along it,
+// rings 0.2 m apart near the car and more than 1 m apart at 10 m (the pattern whose
+// neighbourhoods lie along one ring). Points with |x|, |y| <= half_width are kept.
+inline std::vector<Sample> multibeam_rings(const Height_field& s, double half_width = 12, int beams = 32,
+                                           double elevation_min = -0.535, double elevation_max = -0.023,
+                                           double azimuth_step = 0.0035, const Noise& noise = Noise(),
+                                           double height = 2.0, double x0 = 0.3, double y0 = -0.7)
+{
+  std::mt19937_64 rng(noise.seed);
+  std::vector<Sample> out;
+  auto keep = [half_width](const double* x) { return std::abs(x[0]) <= half_width && std::abs(x[1]) <= half_width; };
+  const double o[3] = {x0, y0, s.f(x0, y0) + height};
+  const int n = int(std::floor(2 * M_PI / azimuth_step));
+  for(int b = 0; b < beams; ++b)
+  {
+    const double e = elevation_min + (elevation_max - elevation_min) * b / std::max(1, beams - 1);
+    for(int i = 0; i < n; ++i)
+    {
+      const double a = i * azimuth_step;
+      const double d[3] = {std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e)};
+      cast(s, o, d, noise, rng, keep, out);
+    }
+  }
+  return out;
+}
+
+// A Risley-prism scanner (the rosette of solid-state LiDARs) looking down from a drone
+// `altitude` above z = 0 at (x0, y0): the ray's tilt is the sum of two vectors of length
+// half_angle / 2 turning in opposite directions at slightly different rates, so that the
+// rosette's petals precess and cross one another at every angle; `points` rays at a fixed time
+// step over `petals` petals. Dense at the centre and at the petals' tips, sparser between
+// them. Points with |x|, |y| <= half_width are kept.
+inline std::vector<Sample> rosette(const Surface& s, double half_width = 12, std::size_t points = 160000,
+                                   double petals = 400, const Noise& noise = Noise(), double altitude = 40,
+                                   double half_angle = 0.33, double x0 = 0.2, double y0 = -0.4)
+{
+  std::mt19937_64 rng(noise.seed);
+  std::vector<Sample> out;
+  auto keep = [half_width](const double* x) { return std::abs(x[0]) <= half_width && std::abs(x[1]) <= half_width; };
+  const double o[3] = {x0, y0, altitude};
+  // a petal every pi / ((w1 - w2) / 2) of time; the pattern turns at (w1 + w2) / 2
+  const double w1 = 1.0, w2 = -1.0937;
+  const double duration = petals * M_PI / ((w1 - w2) / 2), dt = duration / double(points);
+  for(std::size_t i = 0; i < points; ++i)
+  {
+    const double t = i * dt;
+    const double tx = 0.5 * half_angle * (std::cos(w1 * t) + std::cos(w2 * t));
+    const double ty = 0.5 * half_angle * (std::sin(w1 * t) + std::sin(w2 * t));
+    const double norm = std::sqrt(1 + tx * tx + ty * ty);
+    const double d[3] = {tx / norm, ty / norm, -1 / norm};
+    cast(s, o, d, noise, rng, keep, out);
+  }
+  return out;
+}
+
 // Two terrestrial scans of a height field from tripods `height` above the ground at
 // (-6, -2) and (5, 4), merged: each keeps the points between 2 and `reach` (horizontally)
 // from it inside the square [-half_width, half_width]^2. Grazing rays: the spacing along a

@@ -25,20 +25,13 @@
 namespace psc_core_test {
 
 using psc_test::Kernel;
+using psc_test::measured;
 using psc_test::Oriented_point;
 using psc_test::Point;
 using psc_test::Vector;
 
 typedef CGAL::Curvature_estimate<Kernel> Estimate;
 typedef CGAL::Curvature_estimate_status Status;
-
-// Prints a measured quantity when PSC_TEST_PRINT is set in the environment, so that the
-// numbers quoted in the comments of test_core.cpp can be measured again.
-inline void measured(const std::string& what, double value)
-{
-  if(std::getenv("PSC_TEST_PRINT"))
-    std::printf("[measured] %-70s %.3e\n", what.c_str(), value);
-}
 
 inline std::uint64_t bits(double x)
 {

@@ -59,12 +59,6 @@ const char* name(Weight w)
   }
 }
 
-void measured(const std::string& what, double value)
-{
-  if(std::getenv("PSC_TEST_PRINT"))
-    std::printf("[measured] %-78s %.6g\n", what.c_str(), value);
-}
-
 auto maps() { return CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()); }
 auto maps(Weight w) { return PSC::parameters::weight_kernel(w, maps()); }
 

@@ -14,6 +14,8 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <cmath>
 #include <fstream>
@@ -25,6 +27,14 @@
 #include <vector>
 
 namespace psc_test {
+
+// Prints a measured quantity when PSC_TEST_PRINT is set in the environment, so that the
+// numbers quoted in the tests' comments can be measured again.
+inline void measured(const std::string& what, double value)
+{
+  if(std::getenv("PSC_TEST_PRINT"))
+    std::printf("[measured] %-70s %.3e\n", what.c_str(), value);
+}
 
 typedef CGAL::Simple_cartesian<double> Kernel;
 typedef Kernel::Point_3 Point;
@@ -162,6 +172,27 @@ inline Truth goursat_truth(const Point& p)
     h[4 * i] = -4 + 0.36 * x[i] * x[i];
   }
   return truth_from_implicit(g, h);
+}
+
+// `n` copies of `p` up to rounding: each coordinate moved by up to 4 rounding units (the same
+// point computed along different paths; a rosette scan's passes over nadir).
+inline std::vector<Point> near_copies(const Point& p, std::size_t n, unsigned seed = 7)
+{
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> steps(-4, 4);
+  auto moved = [&](double v) {
+    const int s = steps(rng);
+    for(int i = 0; i < std::abs(s); ++i)
+      v = std::nextafter(v, s > 0 ? 1e300 : -1e300);
+    return v;
+  };
+  std::vector<Point> out;
+  for(std::size_t j = 0; j < n; ++j)
+  {
+    const double x = moved(p.x()), y = moved(p.y()), z = moved(p.z());
+    out.emplace_back(x, y, z);
+  }
+  return out;
 }
 
 // Angle in degrees between two lines (directions up to sign).

@@ -66,14 +66,6 @@ namespace psc_tool_test {
 
 const auto pair_maps = CGAL::parameters::point_map(Point_map()).normal_map(Normal_map());
 
-// Prints a measured value when PSC_TEST_PRINT is set, to re-measure the numbers quoted in the
-// comments next to the tolerances.
-inline void measured(const std::string& what, double value)
-{
-  if(std::getenv("PSC_TEST_PRINT"))
-    std::printf("[measured] %-70s %.4g\n", what.c_str(), value);
-}
-
 // ---------------------------------------------------------------------------------------
 // Clouds
 

@@ -193,8 +193,17 @@ struct Sphere_features_at_point
   std::size_t min_count;
   Algebraic_sphere_features<GeomTraits> operator()(const Neighborhood& nb) const
   {
-    const Local_sphere_features f =
+    Local_sphere_features f =
       with_weight_kernel(kernel, [&](auto k) { return sphere_features<decltype(k)>(nb, min_count); });
+    if(f.is_valid() && neighborhood_below_precision(nb))
+    {
+      // (points that coincide up to rounding: no sphere)
+      const auto count = f.neighbor_count;
+      f = Local_sphere_features();
+      f.neighbor_count = count;
+      f.radius = nb.radius;
+      f.status = Curvature_estimate_status::DEGENERATE_FIT;
+    }
     return to_sphere_features<GeomTraits>(f, nb.center);
   }
 };

@@ -161,7 +161,8 @@ struct Normal_record
 };
 
 // The evaluation of the driver: the fit's normal (neighbourhoods spread along one line only,
-// such as one LiDAR scan line, have none: DEGENERATE_FIT) and the nearest neighbours.
+// such as one LiDAR scan line, or whose points coincide up to rounding,
+// neighborhood_below_precision(), have none: DEGENERATE_FIT) and the nearest neighbours.
 struct Normal_at_point
 {
   Normal_fit fit;
@@ -214,6 +215,11 @@ inline Normal_record Normal_at_point::operator()(const Neighborhood& nb) const
   if(nb.size < least)
   {
     r.status = Curvature_estimate_status::TOO_FEW_NEIGHBORS;
+    return r;
+  }
+  if(neighborhood_below_precision(nb))
+  {
+    r.status = Curvature_estimate_status::DEGENERATE_FIT;
     return r;
   }
   bool found = false;

@@ -41,7 +41,10 @@
 // the rung chosen is the first kept and was itself that ill-conditioned, kept only because a
 // quadric nearly interpolated its few lines (residuals too small for the error's bound), and the
 // line rung is below the pass's top: where, with the line rung's residuals for the noise, its
-// error exceeds the bound, it is passed over too.
+// error exceeds the bound, it is passed over too. Nor does the first pass keep a first rung
+// whose error, its own residuals taken for the noise, is beyond that bound; and where such a first
+// rung's interval misses the second rung's, the first is given up and the intervals start again
+// from the second (a first rung is trusted as unbiased only where it can tell the curvature).
 //
 // The rule. Each rung's interval is its statistic plus or minus kappa standard errors; the
 // rule keeps the largest rung whose interval meets those of every smaller rung. Under noise
@@ -526,24 +529,24 @@ struct Scale_ladder
     enum Outcome { NO_RUNG, FAILED, FITTED, LINE } outcome = FAILED;
     Quadric_fit fit;
     double factor[2] = {0, 0}, residual = 0, radius = 0;
-    // for the mean curvature, a fitted rung whose variance factor alone would make it untold
-    // (curvature_untold(): its residuals too small for the error's bound)
+    // for the mean curvature, a fitted rung ill-conditioned for H (curvature_ill_conditioned()),
+    // a line rung where its error is also beyond the bound (curvature_error_beyond_bound())
     bool ill_conditioned = false;
   };
 
-  // Whether a rung's fit can hardly tell the mean curvature (ill_conditioned_curvature_factor):
-  // its variance factor of H and residual variance in the rung's units (radius 1), n points.
-  static bool curvature_untold(double factor, double sigma2, std::size_t n)
+  // A rung's fit can hardly tell the mean curvature (ill_conditioned_curvature_factor) where it
+  // is ill-conditioned for H, its variance factor of H in the rung's units (radius 1) times its
+  // count n above the factor's limit, and its error beyond the bound, the variance of H in the
+  // rung's units (that factor times a residual variance, also in the rung's units) above
+  // ill_conditioned_curvature_error squared: fit_rung() reads both on the rung's own residuals,
+  // choose() the bound again on a larger rung's.
+  static bool curvature_ill_conditioned(double factor, std::size_t n)
   {
-    return factor * double(n) > ill_conditioned_curvature_factor &&
-           factor * sigma2 > ill_conditioned_curvature_error * ill_conditioned_curvature_error;
+    return factor * double(n) > ill_conditioned_curvature_factor;
   }
-
-  // The error's bound of curvature_untold() in input units: the variance factor of H over r⁴
-  // (`factor`) and a noise variance `sigma2` for a rung of radius r.
-  static bool curvature_untold_with(double factor, double sigma2, double r)
+  static bool curvature_error_beyond_bound(double variance)
   {
-    return factor * sigma2 * r * r > ill_conditioned_curvature_error * ill_conditioned_curvature_error;
+    return variance > ill_conditioned_curvature_error * ill_conditioned_curvature_error;
   }
 
   // A statistic's coefficient combinations, m rows g of the quadric's six coefficients: a3 + a5
@@ -573,7 +576,7 @@ struct Scale_ladder
   // with the variance factors of `statistic` (its coefficient combinations: combinations()).
   // NO_RUNG where the k-th nearest is at the query (copies of it); LINE where the rung's points
   // lie along one line, or, for the mean curvature, where its fit can hardly tell it
-  // (curvature_untold()).
+  // (curvature_ill_conditioned() and curvature_error_beyond_bound() on its residuals).
   static Rung_fit fit_rung(const Neighborhood& whole, const Neighbor_offsets& offsets, Distance_ranks& ranks,
                            std::size_t k, const double reference[3], Statistic statistic, Sub_neighborhood& target,
                            Rung_cache* cache = nullptr, bool keep_frame = false)
@@ -644,10 +647,10 @@ struct Scale_ladder
         rung.factor[0] = factor[1];
         rung.factor[1] = factor[2];
       }
-      const bool line = rung.fit.weighted_line || (statistic == Statistic::MEAN_CURVATURE &&
-                                                   curvature_untold(rung.factor[0], sigma2, target.nb.size));
-      rung.ill_conditioned = statistic == Statistic::MEAN_CURVATURE &&
-                             rung.factor[0] * double(target.nb.size) > ill_conditioned_curvature_factor;
+      rung.ill_conditioned =
+        statistic == Statistic::MEAN_CURVATURE && curvature_ill_conditioned(rung.factor[0], target.nb.size);
+      const bool line =
+        rung.fit.weighted_line || (rung.ill_conditioned && curvature_error_beyond_bound(rung.factor[0] * sigma2));
       rung.outcome = line ? Rung_fit::LINE : Rung_fit::FITTED;
       rung.radius = target.nb.radius;
       rung.residual = sigma2 * (rung.radius * rung.radius);
@@ -856,7 +859,7 @@ struct Scale_ladder
         if(c.found)
         {
           if(!first_ill_conditioned || compared || gate || top ||
-             !curvature_untold_with(factor0[0], std::max(residual0, rung.residual), radius0))
+             !curvature_error_beyond_bound(factor0[0] * std::max(residual0, rung.residual) * radius0 * radius0))
             break;
           const Scale_choice given_up = c;
           c = Scale_choice();
@@ -937,6 +940,7 @@ struct Scale_ladder
       }
       else
       {
+        const bool first_comparison = !compared;
         if(!compared)
         {
           // The residuals' variance is the noise's plus the surface's third-order terms,
@@ -964,6 +968,26 @@ struct Scale_ladder
           lo[i] = std::max(lo[i], v[i] - automatic_scale_kappa * s);
           hi[i] = std::min(hi[i], v[i] + automatic_scale_kappa * s);
           meet = meet && lo[i] <= hi[i];
+        }
+        // The intervals assume the first rung unbiased; where its own error is beyond the bound
+        // of a rung that can hardly tell the mean curvature (curvature_error_beyond_bound(), with
+        // the noise just separated), a disagreement says more of its estimate than of the larger
+        // rung's bias: the first rung is given up and the climb starts again from this one
+        // (benchmark/scan_experiments `rings` under noise: first rungs of two scan lines kept with
+        // H errors of 5 to 20 times the surface's curvature).
+        if(!meet && first_comparison && statistic == Statistic::MEAN_CURVATURE &&
+           curvature_error_beyond_bound(factor0[0] * noise2 * radius0 * radius0))
+        {
+          std::copy(v, v + 2, v0);
+          std::copy(factor, factor + 2, factor0);
+          residual0 = sigma2;
+          radius0 = r;
+          noise2 = sigma2;
+          first_ill_conditioned = rung.ill_conditioned;
+          compared = false;
+          std::fill(lo, lo + 2, -inf);
+          std::fill(hi, hi + 2, inf);
+          meet = true;
         }
         if(!meet)
           break;
@@ -1007,6 +1031,12 @@ struct Scale_ladder
                                                        : std::numeric_limits<double>::quiet_NaN();
         kept = kept_noise2 < automatic_scale_gate_share * residual0;
       }
+      // (nor where the rung's own residuals, taken for noise, put its error beyond the bound: the
+      // tests read no noise where a cubic, or the nearest half along one scan line, fits the
+      // noise itself; benchmark/scan_experiments `rings`)
+      if(kept && statistic == Statistic::MEAN_CURVATURE &&
+         curvature_error_beyond_bound(factor0[0] * residual0 * radius0 * radius0))
+        kept = false;
       if(kept)
         c.mean_error = std::sqrt(kept_noise2 * factor0[0]);
       else

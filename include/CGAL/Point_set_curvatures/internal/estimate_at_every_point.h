@@ -176,8 +176,9 @@ struct Pass_options
 };
 
 // The evaluation of estimate_at_every_point() at one point: TOO_FEW_NEIGHBORS below
-// `min_neighbors`, else the estimator (`refining_normals`: its normal fit, for a refinement pass),
-// DEGENERATE_FIT without tangent spread where the estimator asks for that test. With
+// `min_neighbors`, DEGENERATE_FIT where the neighbours coincide up to rounding
+// (neighborhood_below_precision()), else the estimator (`refining_normals`: its normal fit, for a
+// refinement pass), DEGENERATE_FIT without tangent spread where the estimator asks for that test. With
 // `neighbor_extent` (a tile by count, with sample weights), records how far from the core of
 // `tile` the neighbours lie.
 template <class Estimator, class GeomTraits>
@@ -195,6 +196,9 @@ struct Estimate_at_point
       neighbor_extent->update(nb.radius - tile->distance_inside_core(nb.center[0], nb.center[1], nb.center[2]));
     if(nb.size < min_neighbors)
       return to_curvature_estimate<GeomTraits>(Local_estimate::invalid(Curvature_estimate_status::TOO_FEW_NEIGHBORS),
+                                               nb.size);
+    if(neighborhood_below_precision(nb))
+      return to_curvature_estimate<GeomTraits>(Local_estimate::invalid(Curvature_estimate_status::DEGENERATE_FIT),
                                                nb.size);
     Local_estimate e = refining_normals ? refinement_estimate(*estimator, nb) : (*estimator)(nb);
     if(e.status == Curvature_estimate_status::VALID && estimator->check_tangent_spread &&

@@ -12,6 +12,7 @@
 #include <CGAL/Curvature_estimate.h>
 #include <CGAL/Point_set_curvatures/parameters.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -266,6 +267,25 @@ inline bool lacks_tangent_spread(const double M[6], const double normal[3])
   tangent_basis(n, t1, t2);
   const double a = symmetric_form(M, t1, t1), b = symmetric_form(M, t1, t2), c = symmetric_form(M, t2, t2);
   return !(a * c - b * b > 1e-12 * (a + c) * (a + c));
+}
+
+// The least radius of a neighbourhood, as a share of its query's largest absolute coordinate:
+// about 65,000 rounding units of that coordinate. Points closer together than that (the same
+// point computed twice, merged tiles with different offsets, a simulated scan whose rays meet
+// again) differ by rounding only; a neighbourhood of such near-copies has offsets that are
+// rounding errors, and a fit of them, however well conditioned it looks, gives curvatures of the
+// order of 1/radius (a drone's rosette scan whose 400 passes over nadir fall within 1e-15 of one
+// another: mean curvatures of 1e8 to 1e11 at `--neighbors 40`, reported valid before this bound).
+// Real coordinates never come that close but for copies: LAS at a scale of 1 mm and coordinates
+// of 1e6 m are 1e-9 apart, 70 times the bound.
+constexpr double least_radius_share = 0x1p-36;
+
+// Whether a neighbourhood's radius is below least_radius_share of its query's coordinates: its
+// points coincide up to rounding (DEGENERATE_FIT).
+inline bool neighborhood_below_precision(const Neighborhood& nb)
+{
+  const double m = std::max(std::max(std::abs(nb.center[0]), std::abs(nb.center[1])), std::abs(nb.center[2]));
+  return nb.radius < least_radius_share * m;
 }
 
 // lacks_tangent_spread() for a whole neighbourhood: its unweighted second moment around the

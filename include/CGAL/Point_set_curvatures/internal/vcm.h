@@ -123,7 +123,8 @@ bool spans_a_plane(const std::vector<Point>& points)
 }
 
 // Step 1 of estimate_vcm_at_every_point() at one point: its neighbour count, radius, and
-// whether the neighbours lack tangent spread.
+// whether the neighbours lack tangent spread or coincide up to rounding
+// (neighborhood_below_precision()).
 struct Vcm_neighborhood_record
 {
   std::uint32_t count = 0;
@@ -136,7 +137,7 @@ inline Vcm_neighborhood_record vcm_neighborhood_record(const Neighborhood& nb)
   Vcm_neighborhood_record r;
   r.count = static_cast<std::uint32_t>(nb.size);
   r.radius = nb.radius;
-  r.no_spread = neighborhood_lacks_tangent_spread(nb);
+  r.no_spread = neighborhood_below_precision(nb) || neighborhood_lacks_tangent_spread(nb);
   r.status = Curvature_estimate_status::VALID;
   return r;
 }
