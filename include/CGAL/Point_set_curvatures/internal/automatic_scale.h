@@ -45,6 +45,11 @@
 // whose error, its own residuals taken for the noise, is beyond that bound; and where such a first
 // rung's interval misses the second rung's, the first is given up and the intervals start again
 // from the second (a first rung is trusted as unbiased only where it can tell the curvature).
+// The normals likewise: the first pass does not keep a first rung whose slope's error, its own
+// residuals taken for the noise, is beyond that of a clean rung (clean_normal_slope_error); a
+// first rung that can hardly tell the slope (ill_conditioned_normal_factor) is given up where
+// it reads as noiseless or its interval misses the second's, if the second and third rungs say
+// the data are noisy (a clean scan line's first rung is its best one).
 //
 // The rule. Each rung's interval is its statistic plus or minus kappa standard errors; the
 // rule keeps the largest rung whose interval meets those of every smaller rung. Under noise
@@ -178,6 +183,25 @@ constexpr std::size_t gate_least_half = 12;
 // change).
 constexpr double ill_conditioned_curvature_factor = 1e4;
 constexpr double ill_conditioned_curvature_error = 0.1;
+
+// The normals' counterparts. A first rung whose slope its fit can hardly tell: the larger of
+// the two slopes' variance factors per unit of noise variance (in the rung's units), times its
+// point count, above ill_conditioned_normal_factor (4 to 30 where the points spread in two
+// directions; one or two scan lines, or one line whose range noise lies in the plane of the
+// line and the beams, above 100). Under noise a quadric through them follows the noise across the
+// lines: its residuals read as no noise, or its interval misses the next rung's, and the ladder
+// kept it with normals 5 to 15 degrees off (benchmark/scan_experiments `rings` at range noise 0.3
+// spacings: 4,961 points kept at 40 that way by the second pass, median error 12.6 degrees).
+// Such a rung is given up in those two cases (Scale_ladder::choose()) where the next two rungs
+// say that the data are noisy (their residuals do not grow as r⁶: separated_noise() leaves at
+// least automatic_scale_noise_share of the next rung's residual variance to noise); on clean
+// scan lines such a rung is the best one (clean `airborne10` without that look ahead: the
+// normals of the 453 points concerned 1.1 -> 3.7 degrees, the mean of all 0.36 -> 0.73). And the first pass's test does not keep a first rung as clean where
+// the standard error of its slope, its own residuals taken for the noise, exceeds
+// clean_normal_slope_error (0.3 degrees): a clean rung's is below 0.07 degrees at the 99th
+// percentile on the fourteen simulated scans, noisy `rings` gate rungs above 1 degree erred by 25.
+constexpr double ill_conditioned_normal_factor = 100;
+constexpr double clean_normal_slope_error = 0.0052360;  // tan(0.3 degrees)
 
 // How much faster than r⁶ the residual variance may grow from the smaller fit to the larger one
 // for separated_noise() to tell the noise (see there).
@@ -411,6 +435,7 @@ struct Ladder_scratch
   Neighbor_offsets offsets;
   Distance_ranks ranks;
   Sub_neighborhood chosen, trial;
+  Sub_neighborhood ahead;          // Scale_ladder::choose(): the rung fitted to look ahead
   std::vector<double> gate_frame;  // Scale_ladder::choose_in_shared_frame(): u, v, h, inner
   // The chosen rung's plain quadric (Scale_ladder::fit_rung()), where choose() fitted it:
   // `chosen.nb.plain_quadric` points to it then, for the estimate at that rung.
@@ -532,6 +557,8 @@ struct Scale_ladder
     // for the mean curvature, a fitted rung ill-conditioned for H (curvature_ill_conditioned()),
     // a line rung where its error is also beyond the bound (curvature_error_beyond_bound())
     bool ill_conditioned = false;
+    // for the normal, a fitted rung that can hardly tell its slope (ill_conditioned_normal_factor)
+    bool normal_ill_conditioned = false;
   };
 
   // A rung's fit can hardly tell the mean curvature (ill_conditioned_curvature_factor) where it
@@ -649,6 +676,9 @@ struct Scale_ladder
       }
       rung.ill_conditioned =
         statistic == Statistic::MEAN_CURVATURE && curvature_ill_conditioned(rung.factor[0], target.nb.size);
+      rung.normal_ill_conditioned =
+        statistic == Statistic::NORMAL &&
+        std::max(rung.factor[0], rung.factor[1]) * double(target.nb.size) > ill_conditioned_normal_factor;
       const bool line =
         rung.fit.weighted_line || (rung.ill_conditioned && curvature_error_beyond_bound(rung.factor[0] * sigma2));
       rung.outcome = line ? Rung_fit::LINE : Rung_fit::FITTED;
@@ -797,6 +827,12 @@ struct Scale_ladder
       kept = cubic.residual_variance(gate_cubic_least_pivot, sigma2) &&
              sigma2 * r * r < automatic_scale_gate_cubic_share * residual;
     }
+    // (nor where the slope's own standard error, its residuals taken for the noise, is beyond
+    // that of a clean rung: clean_normal_slope_error; both fits are in the scaled frame, where a
+    // slope is a ratio of lengths)
+    if(kept && !(all.slope_variance_factor() * ss_all / double(n - quadratic_height_coefficients) <=
+                 clean_normal_slope_error * clean_normal_slope_error))
+      kept = false;
     if(kept)
       chosen.take_attributes(whole);
     else
@@ -838,6 +874,18 @@ struct Scale_ladder
     bool fitted = false;    // scratch.chosen_fit is the chosen rung's
     bool kept_one = false;  // a rung was kept: `reference` is no longer the neighbourhood's
     bool first_ill_conditioned = false;
+    bool first_normal_ill_conditioned = false;
+    // Whether rung j (count k, radius r, residual variance sigma2 in input units) and the next
+    // one of this pass say that the data are noisy: the residuals do not grow as r⁶ from one to
+    // the other, at least automatic_scale_noise_share of rung j's being noise (separated_noise()).
+    const auto noisy_from = [&](std::size_t j, std::size_t k, double r, double sigma2) {
+      if(2 * k > whole.size || j + 1 >= rungs())
+        return false;
+      const Rung_fit next = fit_rung(whole, offsets, ranks, 2 * k, reference, statistic, scratch.ahead);
+      if(next.outcome != Rung_fit::FITTED && next.outcome != Rung_fit::LINE)
+        return false;
+      return separated_noise(sigma2, r, next.residual, next.radius) >= automatic_scale_noise_share * sigma2;
+    };
     // (a cloud of fewer points than the smallest count: every point, as with neighbor_count)
     std::size_t k = std::min(smallest, whole.size);
     for(std::size_t j = 0; k > 0 && k <= whole.size && j < rungs(); ++j, k *= 2)
@@ -932,6 +980,7 @@ struct Scale_ladder
       if(!c.found)
       {
         first_ill_conditioned = rung.ill_conditioned;
+        first_normal_ill_conditioned = rung.normal_ill_conditioned;
         std::copy(v, v + 2, v0);
         std::copy(factor, factor + 2, factor0);
         residual0 = sigma2;
@@ -941,6 +990,11 @@ struct Scale_ladder
       else
       {
         const bool first_comparison = !compared;
+        // A first rung that can hardly tell the normal (ill_conditioned_normal_factor) is given
+        // up where its residuals read as no noise or its interval misses this rung's, provided
+        // this rung and the next one say that the data are noisy.
+        const bool first_untrusted = first_comparison && first_normal_ill_conditioned && noisy_from(j, k, r, sigma2);
+        bool first_reads_no_noise = false;
         if(!compared)
         {
           // The residuals' variance is the noise's plus the surface's third-order terms,
@@ -959,7 +1013,11 @@ struct Scale_ladder
           // Without noise dominating the smallest scale's residuals, its fit is the best one
           // (the estimate of the noise, from about 20 effective points, is itself noisy).
           if(noise2 < automatic_scale_noise_share * residual0)
-            break;
+          {
+            if(!first_untrusted)
+              break;
+            first_reads_no_noise = true;
+          }
         }
         bool meet = true;
         for(int i = 0; i < m; ++i)
@@ -974,9 +1032,11 @@ struct Scale_ladder
         // the noise just separated), a disagreement says more of its estimate than of the larger
         // rung's bias: the first rung is given up and the climb starts again from this one
         // (benchmark/scan_experiments `rings` under noise: first rungs of two scan lines kept with
-        // H errors of 5 to 20 times the surface's curvature).
-        if(!meet && first_comparison && statistic == Statistic::MEAN_CURVATURE &&
-           curvature_error_beyond_bound(factor0[0] * noise2 * radius0 * radius0))
+        // H errors of 5 to 20 times the surface's curvature). So is a first rung that cannot tell
+        // the normal on noisy data (first_untrusted).
+        if((first_untrusted && (!meet || first_reads_no_noise)) ||
+           (!meet && first_comparison && statistic == Statistic::MEAN_CURVATURE &&
+            curvature_error_beyond_bound(factor0[0] * noise2 * radius0 * radius0)))
         {
           std::copy(v, v + 2, v0);
           std::copy(factor, factor + 2, factor0);
@@ -984,6 +1044,7 @@ struct Scale_ladder
           radius0 = r;
           noise2 = sigma2;
           first_ill_conditioned = rung.ill_conditioned;
+          first_normal_ill_conditioned = rung.normal_ill_conditioned;
           compared = false;
           std::fill(lo, lo + 2, -inf);
           std::fill(hi, hi + 2, inf);

@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 
 namespace CGAL {
 namespace Point_set_curvatures {
@@ -115,6 +116,28 @@ struct Quadratic_height_fit
       if(!std::isfinite(a[i]))
         return false;
     return true;
+  }
+
+  // The larger of the two slopes' (a1, a2) variance factors, the diagonal entries of
+  // (sum w m mᵀ)⁻¹ (infinite where solve() fails).
+  double slope_variance_factor() const
+  {
+    double L[6][6] = {};
+    if(!cholesky_factor(ata, L, 1e-10))
+      return std::numeric_limits<double>::infinity();
+    double largest = 0;
+    for(int i = 1; i < 3; ++i)
+    {
+      // (L⁻¹ e_i)ᵀ (L⁻¹ e_i)
+      double e[6] = {0, 0, 0, 0, 0, 0}, y[6];
+      e[i] = 1;
+      forward_substitution(L, e, y);
+      double f = 0;
+      for(double x : y)
+        f += x * x;
+      largest = std::max(largest, f);
+    }
+    return largest;
   }
 };
 
